@@ -1,0 +1,43 @@
+#pragma once
+// Shared pieces of the `lpv` command-line tool: exit codes and a small
+// argument reader. Each command lives in its own file and calls the libraries.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::cli {
+
+enum ExitCode : int { kOk = 0, kFailure = 1, kUsage = 2 };
+
+// Reads "--name value", "--name=value", flags and positionals in order.
+class Args {
+public:
+    explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
+
+    bool flag(const std::string& name);                          // removes it if present
+    std::optional<std::string> option(const std::string& name);  // last occurrence, removed
+    std::vector<std::string> options(const std::string& name);   // every occurrence, removed
+    // What is left once options are taken; anything starting with "--" is an unknown option.
+    std::vector<std::string> positionals() const { return args_; }
+    std::optional<std::string> unknownOption() const;
+    // Set when an option was given without its value.
+    const std::string& missingValue() const { return missingValue_; }
+
+private:
+    std::vector<std::string> args_;
+    std::string missingValue_;
+};
+
+int usageError(const std::string& message, const std::string& command);
+
+int runRender(Args args);
+int runParams(Args args);
+int runNew(Args args);
+int runInfo(Args args);
+
+void printRenderHelp();
+void printParamsHelp();
+void printNewHelp();
+void printInfoHelp();
+
+} // namespace lpv::cli

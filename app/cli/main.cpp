@@ -1,0 +1,70 @@
+// lpv: the command-line face of LPV Studio. A thin dispatcher; each command
+// is a function over the libraries (scene, importers, renderer).
+#include "Cli.h"
+
+#include <iostream>
+#include <map>
+
+namespace {
+
+void printHelp() {
+    std::cout << R"(lpv - LPV Studio command-line tool
+
+Usage: lpv <command> [options]
+       lpv <command> --help
+
+Commands:
+  render PROJECT -o OUT.png   Render a project to an image and print per-pass GPU times
+  params [--json]             List every parameter of the registry (key, type, default, range, unit)
+  new FILE.lpvproj            Create a project (--template cornell-box|empty)
+  info PROJECT                Validate a project and print what it contains
+
+Options:
+  -h, --help                  Show this help
+  --version                   Show the version
+
+Exit codes: 0 success, 1 failure (the message names the file and what was wrong), 2 usage error.
+)";
+}
+
+int dispatch(std::vector<std::string> args) {
+    using namespace lpv::cli;
+    if (args.empty())
+        return usageError("no command given", "");
+    const std::string command = args.front();
+    args.erase(args.begin());
+    if (command == "-h" || command == "--help" || command == "help") {
+        if (!args.empty()) // "lpv help render" == "lpv render --help"
+            return dispatch({args.front(), "--help"});
+        printHelp();
+        return kOk;
+    }
+    if (command == "--version") {
+        std::cout << "lpv " << LPV_VERSION << "\n";
+        return kOk;
+    }
+
+    struct Command {
+        int (*run)(Args);
+        void (*help)();
+    };
+    const std::map<std::string, Command> commands{
+        {"render", {runRender, printRenderHelp}},
+        {"params", {runParams, printParamsHelp}},
+        {"new", {runNew, printNewHelp}},
+        {"info", {runInfo, printInfoHelp}},
+    };
+    auto it = commands.find(command);
+    if (it == commands.end())
+        return usageError("unknown command '" + command + "'", "");
+    Args parsed(args);
+    if (parsed.flag("--help") || parsed.flag("-h")) {
+        it->second.help();
+        return kOk;
+    }
+    return it->second.run(std::move(parsed));
+}
+
+} // namespace
+
+int main(int argc, char** argv) { return dispatch(std::vector<std::string>(argv + 1, argv + argc)); }

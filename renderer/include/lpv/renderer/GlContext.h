@@ -1,0 +1,43 @@
+#pragma once
+// A headless OpenGL 4.5 core context through EGL: the NVIDIA EGL device where
+// present, Mesa surfaceless (llvmpipe) on CPU machines. The same renderer runs
+// in it as in the editor's QOpenGLWidget.
+#include "lpv/scene/Error.h"
+
+#include <memory>
+#include <string>
+
+namespace lpv::renderer {
+
+using scene::Expected;
+
+struct GlInfo {
+    std::string vendor;
+    std::string renderer;
+    std::string version;
+    std::string eglPlatform; // "device", "surfaceless" or "default"
+};
+
+class HeadlessContext {
+public:
+    // Env LPV_EGL_PLATFORM=device|surfaceless|default forces one platform.
+    static Expected<HeadlessContext> create();
+
+    HeadlessContext(HeadlessContext&&) noexcept;
+    HeadlessContext& operator=(HeadlessContext&&) noexcept;
+    ~HeadlessContext();
+
+    bool makeCurrent();
+    const GlInfo& info() const { return info_; }
+
+private:
+    HeadlessContext();
+    struct State;
+    std::unique_ptr<State> state_;
+    GlInfo info_;
+};
+
+// Vendor/renderer/version strings of the current context.
+GlInfo queryCurrentGlInfo();
+
+} // namespace lpv::renderer

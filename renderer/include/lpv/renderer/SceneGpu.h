@@ -1,0 +1,36 @@
+#pragma once
+// GPU copy of a scene's geometry: one vertex and one index buffer for all
+// meshes, and a flat draw list (object x submesh) with world matrices.
+#include "lpv/renderer/GlHandle.h"
+#include "lpv/scene/Scene.h"
+
+#include <vector>
+
+namespace lpv::renderer {
+
+struct DrawItem {
+    glm::mat4 model{1.0f};
+    glm::mat3 normalMatrix{1.0f};
+    GLsizei indexCount = 0;
+    std::size_t indexByteOffset = 0;
+    GLint baseVertex = 0;
+    std::uint32_t material = 0;
+};
+
+class SceneGpu {
+public:
+    explicit SceneGpu(const scene::Scene& scene);
+
+    void bindGeometry() const;
+    const std::vector<DrawItem>& draws() const { return draws_; }
+    std::size_t vertexBytes() const { return vertexBytes_; }
+
+private:
+    VertexArray vao_;
+    Buffer vertices_;
+    Buffer indices_;
+    std::vector<DrawItem> draws_;
+    std::size_t vertexBytes_ = 0;
+};
+
+} // namespace lpv::renderer

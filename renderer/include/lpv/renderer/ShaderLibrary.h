@@ -1,0 +1,34 @@
+#pragma once
+// GLSL sources from shaders/, embedded into the library at build time, and
+// program building with compile errors that name the file and line.
+#include "lpv/renderer/GlHandle.h"
+#include "lpv/scene/Error.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lpv::renderer {
+
+struct ShaderStageSource {
+    GLenum stage;          // GL_VERTEX_SHADER, ...
+    std::string fileName;  // shown in errors, e.g. "shaders/forward.frag"
+    std::string source;
+};
+
+// The embedded source of `shaders/<name>`, or nullopt.
+std::optional<std::string_view> embeddedShader(std::string_view name);
+std::vector<std::string> embeddedShaderNames();
+
+// Compiles and links; on failure the error lists "file:line: message" per
+// diagnostic, translated from the driver's log format (Mesa or NVIDIA).
+scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stages);
+// Convenience: stages from embedded files, chosen by extension (.vert, .frag, .geom, .comp).
+scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames);
+
+// Rewrites a driver info log ("0:12(5): error: ..." or "0(12) : error ...")
+// into "file:12: error: ..." lines. Exposed for tests.
+std::string formatShaderLog(std::string_view log, std::string_view fileName);
+
+} // namespace lpv::renderer

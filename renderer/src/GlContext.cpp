@@ -1,0 +1,143 @@
+#include "lpv/renderer/GlContext.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <cstdlib>
+#include <string_view>
+#include <vector>
+
+namespace lpv::renderer {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+struct HeadlessContext::State {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    EGLContext context = EGL_NO_CONTEXT;
+};
+
+namespace {
+
+bool hasExtension(const char* list, std::string_view ext) {
+    if (!list)
+        return false;
+    std::string_view all(list);
+    for (std::size_t pos = 0; (pos = all.find(ext, pos)) != std::string_view::npos; pos += ext.size()) {
+        const bool startOk = pos == 0 || all[pos - 1] == ' ';
+        const bool endOk = pos + ext.size() == all.size() || all[pos + ext.size()] == ' ';
+        if (startOk && endOk)
+            return true;
+    }
+    return false;
+}
+
+// Tries to bring up a 4.5 core context on `display`; leaves it current on success.
+EGLContext createCoreContext(EGLDisplay display) {
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display, &major, &minor))
+        return EGL_NO_CONTEXT;
+    if (!eglBindAPI(EGL_OPENGL_API))
+        return EGL_NO_CONTEXT;
+    const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    // Surfaceless contexts need no config on Mesa; NVIDIA wants one.
+    eglChooseConfig(display, configAttribs, &config, 1, &count);
+    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext ctx = eglCreateContext(display, count > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, ctxAttribs);
+    if (ctx == EGL_NO_CONTEXT)
+        return EGL_NO_CONTEXT;
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+        eglDestroyContext(display, ctx);
+        return EGL_NO_CONTEXT;
+    }
+    return ctx;
+}
+
+std::vector<EGLDisplay> deviceDisplays() {
+    std::vector<EGLDisplay> out;
+    const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!hasExtension(clientExts, "EGL_EXT_device_enumeration") || !hasExtension(clientExts, "EGL_EXT_platform_device"))
+        return out;
+    EGLDeviceEXT devices[16];
+    EGLint n = 0;
+    if (!eglQueryDevicesEXT(16, devices, &n))
+        return out;
+    for (EGLint i = 0; i < n; ++i) {
+        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (d != EGL_NO_DISPLAY)
+            out.push_back(d);
+    }
+    return out;
+}
+
+} // namespace
+
+HeadlessContext::HeadlessContext() : state_(std::make_unique<State>()) {}
+HeadlessContext::HeadlessContext(HeadlessContext&&) noexcept = default;
+HeadlessContext& HeadlessContext::operator=(HeadlessContext&&) noexcept = default;
+
+HeadlessContext::~HeadlessContext() {
+    if (state_ && state_->context != EGL_NO_CONTEXT) {
+        eglMakeCurrent(state_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(state_->display, state_->context);
+        eglTerminate(state_->display);
+    }
+}
+
+bool HeadlessContext::makeCurrent() {
+    return eglMakeCurrent(state_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, state_->context) == EGL_TRUE;
+}
+
+Expected<HeadlessContext> HeadlessContext::create() {
+    const char* forced = std::getenv("LPV_EGL_PLATFORM");
+    const std::string_view want = forced ? forced : "";
+    const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+
+    struct Candidate {
+        EGLDisplay display;
+        const char* platform;
+    };
+    std::vector<Candidate> candidates;
+    // A real GPU is found by enumerating EGL devices (NVIDIA's path). Mesa
+    // lists a software device there too, so surfaceless comes second only as a fallback.
+    if (want.empty() || want == "device")
+        for (EGLDisplay d : deviceDisplays())
+            candidates.push_back({d, "device"});
+    if ((want.empty() || want == "surfaceless") && hasExtension(clientExts, "EGL_MESA_platform_surfaceless"))
+        candidates.push_back(
+            {eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr), "surfaceless"});
+    if (want.empty() || want == "default")
+        candidates.push_back({eglGetDisplay(EGL_DEFAULT_DISPLAY), "default"});
+
+    for (const Candidate& c : candidates) {
+        if (c.display == EGL_NO_DISPLAY)
+            continue;
+        EGLContext ctx = createCoreContext(c.display);
+        if (ctx == EGL_NO_CONTEXT) {
+            eglTerminate(c.display);
+            continue;
+        }
+        HeadlessContext out;
+        out.state_->display = c.display;
+        out.state_->context = ctx;
+        out.info_ = queryCurrentGlInfo();
+        out.info_.eglPlatform = c.platform;
+        return out;
+    }
+    return makeError(ErrorCode::IoError, "EGL", want.empty() ? "" : "LPV_EGL_PLATFORM=" + std::string(want),
+                     "no EGL display could create an OpenGL 4.5 core context (is Mesa's libegl-mesa0 or the NVIDIA "
+                     "driver installed?)");
+}
+
+GlInfo queryCurrentGlInfo() {
+    auto str = [](GLenum e) {
+        const GLubyte* s = glGetString(e);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string();
+    };
+    return GlInfo{str(GL_VENDOR), str(GL_RENDERER), str(GL_VERSION), ""};
+}
+
+} // namespace lpv::renderer

@@ -1,0 +1,103 @@
+#include "lpv/renderer/GpuTimer.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace lpv::renderer {
+
+GpuTimer::GpuTimer(std::size_t historyFrames) : historyFrames_(historyFrames) {}
+
+GpuTimer::PassState& GpuTimer::state(const std::string& pass) {
+    for (PassState& p : passes_)
+        if (p.name == pass)
+            return p;
+    PassState& p = passes_.emplace_back();
+    p.name = pass;
+    for (Slot& s : p.slots) {
+        s.start = createQuery(GL_TIMESTAMP);
+        s.stop = createQuery(GL_TIMESTAMP);
+    }
+    return p;
+}
+
+void GpuTimer::collect(PassState& p, bool wait) {
+    // Oldest first, so history stays in frame order.
+    for (std::size_t k = 0; k < kLatency; ++k) {
+        Slot& s = p.slots[(p.next + k) % kLatency];
+        if (!s.pending)
+            continue;
+        GLint available = GL_FALSE;
+        glGetQueryObjectiv(s.stop.id(), GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available && !wait)
+            continue;
+        GLuint64 t0 = 0, t1 = 0;
+        glGetQueryObjectui64v(s.start.id(), GL_QUERY_RESULT, &t0);
+        glGetQueryObjectui64v(s.stop.id(), GL_QUERY_RESULT, &t1);
+        s.pending = false;
+        p.historyMs.push_back(t1 >= t0 ? double(t1 - t0) * 1e-6 : 0.0);
+        if (p.historyMs.size() > historyFrames_)
+            p.historyMs.pop_front();
+    }
+}
+
+void GpuTimer::beginFrame() {
+    for (PassState& p : passes_)
+        collect(p, false);
+}
+
+void GpuTimer::begin(const std::string& pass) {
+    PassState& p = state(pass);
+    Slot& s = p.slots[p.next];
+    if (s.pending) // all slots in flight: the GPU is kLatency frames behind; wait rather than lose a sample
+        collect(p, true);
+    glQueryCounter(s.start.id(), GL_TIMESTAMP);
+}
+
+void GpuTimer::end(const std::string& pass) {
+    PassState& p = state(pass);
+    Slot& s = p.slots[p.next];
+    glQueryCounter(s.stop.id(), GL_TIMESTAMP);
+    s.pending = true;
+    p.next = (p.next + 1) % kLatency;
+}
+
+void GpuTimer::resolveAll() {
+    for (PassState& p : passes_)
+        collect(p, true);
+}
+
+std::vector<PassTiming> GpuTimer::table() const {
+    std::vector<PassTiming> rows;
+    for (const PassState& p : passes_) {
+        PassTiming t;
+        t.pass = p.name;
+        t.samples = p.historyMs.size();
+        if (!p.historyMs.empty()) {
+            std::vector<double> v(p.historyMs.begin(), p.historyMs.end());
+            std::sort(v.begin(), v.end());
+            t.minMs = v.front();
+            t.maxMs = v.back();
+            t.medianMs = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+            t.lastMs = p.historyMs.back();
+        }
+        rows.push_back(t);
+    }
+    return rows;
+}
+
+std::string formatTimingTable(const std::vector<PassTiming>& rows) {
+    std::string out = "pass                    median ms    min ms    max ms  frames\n";
+    char line[160];
+    double total = 0.0;
+    for (const PassTiming& r : rows) {
+        std::snprintf(line, sizeof line, "%-22s %9.3f %9.3f %9.3f %7zu\n", r.pass.c_str(), r.medianMs, r.minMs, r.maxMs,
+                      r.samples);
+        out += line;
+        total += r.medianMs;
+    }
+    std::snprintf(line, sizeof line, "%-22s %9.3f\n", "total (sum of medians)", total);
+    out += line;
+    return out;
+}
+
+} // namespace lpv::renderer

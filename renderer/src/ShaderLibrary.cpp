@@ -1,0 +1,109 @@
+#include "lpv/renderer/ShaderLibrary.h"
+
+#include "EmbeddedShaders.h"
+
+#include <regex>
+#include <sstream>
+
+namespace lpv::renderer {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+std::optional<std::string_view> embeddedShader(std::string_view name) {
+    for (const EmbeddedShader& s : embeddedShaders())
+        if (s.name == name)
+            return s.source;
+    return std::nullopt;
+}
+
+std::vector<std::string> embeddedShaderNames() {
+    std::vector<std::string> out;
+    for (const EmbeddedShader& s : embeddedShaders())
+        out.emplace_back(s.name);
+    return out;
+}
+
+std::string formatShaderLog(std::string_view log, std::string_view fileName) {
+    // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
+    static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
+    std::istringstream in{std::string(log)};
+    std::ostringstream out;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty())
+            continue;
+        std::smatch m;
+        if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia))
+            out << fileName << ":" << m[1] << ": " << m[2] << "\n";
+        else
+            out << fileName << ": " << line << "\n";
+    }
+    return out.str();
+}
+
+namespace {
+
+std::string infoLog(GLuint object, bool isProgram) {
+    GLint length = 0;
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(length > 0 ? length : 0), '\0');
+    if (length > 0)
+        isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
+                  : glGetShaderInfoLog(object, length, nullptr, log.data());
+    while (!log.empty() && log.back() == '\0')
+        log.pop_back();
+    return log;
+}
+
+GLenum stageForFile(const std::string& name) {
+    auto ends = [&](std::string_view ext) { return name.ends_with(ext); };
+    if (ends(".vert")) return GL_VERTEX_SHADER;
+    if (ends(".frag")) return GL_FRAGMENT_SHADER;
+    if (ends(".geom")) return GL_GEOMETRY_SHADER;
+    if (ends(".comp")) return GL_COMPUTE_SHADER;
+    return GL_NONE;
+}
+
+} // namespace
+
+scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stages) {
+    Program program(glCreateProgram());
+    std::vector<Shader> shaders;
+    std::string names;
+    for (const ShaderStageSource& s : stages) {
+        Shader shader(glCreateShader(s.stage));
+        const char* src = s.source.c_str();
+        glShaderSource(shader.id(), 1, &src, nullptr);
+        glCompileShader(shader.id());
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+        if (!ok)
+            return makeError(ErrorCode::InvalidValue, s.fileName, "compile",
+                             "shader does not compile:\n" + formatShaderLog(infoLog(shader.id(), false), s.fileName));
+        glAttachShader(program.id(), shader.id());
+        shaders.push_back(std::move(shader));
+        names += (names.empty() ? "" : " + ") + s.fileName;
+    }
+    glLinkProgram(program.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok)
+        return makeError(ErrorCode::InvalidValue, names, "link", "program does not link:\n" + infoLog(program.id(), true));
+    return program;
+}
+
+scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames) {
+    std::vector<ShaderStageSource> stages;
+    for (const std::string& name : fileNames) {
+        auto src = embeddedShader(name);
+        const GLenum stage = stageForFile(name);
+        if (!src || stage == GL_NONE)
+            return makeError(ErrorCode::MissingAsset, "shaders/" + name, "", "no such embedded shader");
+        stages.push_back({stage, "shaders/" + name, std::string(*src)});
+    }
+    return buildProgram(stages);
+}
+
+} // namespace lpv::renderer

@@ -1,0 +1,41 @@
+#pragma once
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lpv::scene {
+
+struct Camera {
+    std::string name;
+    glm::vec3 position{0.0f, 0.0f, 5.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovY = 0.785398f; // radians
+    float nearPlane = 0.05f;
+    float farPlane = 500.0f;
+
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+
+    bool operator==(const Camera&) const = default;
+};
+
+struct CameraKeyframe {
+    float time = 0.0f; // seconds
+    glm::vec3 position{0.0f};
+    glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};
+    float fovY = 0.785398f;
+
+    bool operator==(const CameraKeyframe&) const = default;
+};
+
+struct CameraPath {
+    std::string name;
+    std::vector<CameraKeyframe> keyframes; // sorted by time
+
+    bool operator==(const CameraPath&) const = default;
+};
+
+} // namespace lpv::scene

@@ -1,0 +1,48 @@
+#pragma once
+// Errors as values: every load/parse/import returns std::expected<T, Error>.
+#include <expected>
+#include <string>
+
+namespace lpv::scene {
+
+enum class ErrorCode {
+    FileNotFound,
+    IoError,
+    Truncated,
+    NotJson,
+    UnknownFormat,
+    NewerVersion,
+    MissingField,
+    TypeMismatch,
+    MissingAsset,
+    CorruptAsset,
+    ChecksumMismatch,
+    NonFinite,
+    OutOfRange,
+    UnknownParameter,
+    IndexOutOfRange,
+    InvalidValue,
+};
+
+const char* toString(ErrorCode code);
+
+// An error names the file, where in it (a JSON field path such as
+// "materials[2].diffuseColor" or "byte offset 1234"), and what was wrong.
+struct Error {
+    ErrorCode code = ErrorCode::InvalidValue;
+    std::string file;
+    std::string location;
+    std::string message;
+
+    std::string describe() const;
+};
+
+template <class T>
+using Expected = std::expected<T, Error>;
+
+inline std::unexpected<Error> makeError(ErrorCode code, std::string file, std::string location,
+                                        std::string message) {
+    return std::unexpected(Error{code, std::move(file), std::move(location), std::move(message)});
+}
+
+} // namespace lpv::scene

@@ -1,0 +1,36 @@
+#pragma once
+// Project format v1 (docs/project-format.md): `Name.lpvproj` (JSON) plus a
+// `Name.assets/` folder holding meshes in the binary `.lpvmesh` form.
+#include "lpv/scene/Error.h"
+#include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace lpv::scene {
+
+inline constexpr const char* kProjectFormatName = "lpvstudio-project";
+inline constexpr int kProjectFormatVersion = 1;
+
+struct Project {
+    std::string name;
+    Scene scene;
+    ParameterSet parameters;
+
+    bool operator==(const Project&) const;
+};
+
+// Loads and validates everything (JSON structure, ranges, finiteness,
+// parameter keys, mesh assets with their checksums and indices). Never writes.
+Expected<Project> loadProject(const std::filesystem::path& file);
+
+// Writes the assets then the JSON, each to a temporary file in the same
+// folder that is flushed and renamed over the target: a failed save leaves
+// the previous project intact.
+Expected<void> saveProject(const Project& project, const std::filesystem::path& file);
+
+// Atomic write of one file (temp file, flush, fsync, rename).
+Expected<void> writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
+
+} // namespace lpv::scene

@@ -1,0 +1,132 @@
+// Every tunable of LPV Studio, declared once. Defaults follow the thesis
+// (4 cascades of 32^3 cells, 8 propagation steps, 6 shadow cascades, ...).
+#include "ParameterDeclarations.h"
+
+namespace lpv::scene {
+namespace {
+
+using P = Pass;
+
+ParameterInfo boolean(std::string key, bool def, std::string group, std::string desc, Pass inv) {
+    return ParameterInfo{std::move(key), ParameterType::Bool, def, 0.0, 1.0, {}, "", std::move(desc), std::move(group), inv};
+}
+
+ParameterInfo integer(std::string key, int def, int lo, int hi, std::string unit, std::string group, std::string desc,
+                      Pass inv) {
+    return ParameterInfo{std::move(key), ParameterType::Int, def,          double(lo),        double(hi), {},
+                         std::move(unit), std::move(desc), std::move(group), inv};
+}
+
+ParameterInfo real(std::string key, double def, double lo, double hi, std::string unit, std::string group,
+                   std::string desc, Pass inv) {
+    return ParameterInfo{std::move(key), ParameterType::Float, def, lo, hi, {}, std::move(unit), std::move(desc),
+                         std::move(group), inv};
+}
+
+ParameterInfo choice(std::string key, std::string def, std::vector<std::string> values, std::string group,
+                     std::string desc, Pass inv) {
+    return ParameterInfo{std::move(key), ParameterType::Enum, std::move(def), 0.0, 0.0, std::move(values), "",
+                         std::move(desc), std::move(group), inv};
+}
+
+// auto = the scene analysis decides; on/off force the pass.
+const std::vector<std::string> kAutoOnOff{"auto", "on", "off"};
+
+// What a change to the LPV volume layout throws away: everything from injection on.
+constexpr Pass kLpvAll = P::LpvInjection | P::GeometryVolume | P::LpvPropagation | P::Shading;
+
+} // namespace
+
+std::vector<ParameterInfo> declareParameters() {
+    return {
+        // --- LPV ---
+        choice("lpv.variant", "computeGather", {"computeGather", "computeScatter", "rasterGather", "rasterScatter"},
+               "LPV", "Propagation implementation; all give the same image within tolerance, they differ in time",
+               P::LpvPropagation | P::Shading),
+        integer("lpv.gridSize", 32, 8, 128, "cells", "LPV", "Cells along each axis of every LPV cascade", kLpvAll),
+        integer("lpv.cascades", 4, 1, 6, "", "LPV", "Number of nested LPV volumes, each cell twice the previous",
+                kLpvAll | P::Rsm),
+        real("lpv.cellSize", 0.25, 0.001, 100.0, "m", "LPV", "Cell size of the finest cascade", kLpvAll | P::Rsm),
+        integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
+                "Propagation iterations per cascade; light travels one cell per step", P::LpvPropagation | P::Shading),
+        real("lpv.injectionOffset", 1.0, 0.0, 4.0, "cells", "LPV",
+             "VPLs are moved this far along their normal before injection to avoid self-illumination",
+             P::LpvInjection | P::LpvPropagation | P::Shading),
+        real("lpv.intensity", 1.0, 0.0, 100.0, "", "LPV", "Scale of the indirect light read from the LPV", P::Shading),
+        boolean("lpv.occlusion", true, "LPV", "Geometry-volume occlusion during propagation",
+                P::GeometryVolume | P::LpvPropagation | P::Shading),
+        boolean("lpv.gvFromCamera", true, "LPV", "Also inject blocking potential from the camera G-buffer",
+                P::GeometryVolume | P::LpvPropagation | P::Shading),
+        real("lpv.bleedingDamping", 1.0, 0.0, 4.0, "", "LPV",
+             "Strength of light-bleeding damping from the SH directional derivative along the normal", P::Shading),
+        integer("lpv.cascadeBlendLevels", 2, 1, 6, "cascades", "LPV",
+                "Cascades blended at a lookup (2 = the two nearest; more adds coarser ones)", P::Shading),
+        choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",
+               "Directed propagation: a normals volume keeps light from flowing back onto its emitter",
+               P::LpvInjection | P::LpvPropagation | P::Shading),
+        boolean("lpv.cellSnapping", true, "LPV",
+                "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
+        // --- Effects (thesis extensions) ---
+        choice("effects.skyInjection", "auto", kAutoOnOff, "Effects",
+               "Inject sky light from above the highest occluder of each column (auto: only for open scenes)",
+               P::SkyInjection | P::LpvPropagation | P::Shading),
+        choice("effects.subsurface", "auto", kAutoOnOff, "Effects",
+               "Subsurface-scattering LPV for translucent materials (auto: only if the scene has one)",
+               P::Subsurface | P::Shading),
+        real("effects.subsurfaceAttenuation", 0.5, 0.0, 1.0, "1/cell", "Effects",
+             "Fraction of light absorbed per cell inside translucent material", P::Subsurface | P::Shading),
+        choice("effects.glossyReflections", "auto", kAutoOnOff, "Effects",
+               "Glossy reflections by ray-marching the LPV (auto: only if a material is glossy)",
+               P::GlossyReflections | P::Shading),
+        integer("effects.glossySteps", 16, 1, 128, "steps", "Effects", "Ray-march steps for glossy LPV reflections",
+                P::GlossyReflections | P::Shading),
+        choice("effects.sunRays", "auto", kAutoOnOff, "Effects",
+               "Screen-space sun rays (auto: only when the sun is on screen)", P::SunRays),
+        integer("effects.sunRaySamples", 64, 8, 256, "samples", "Effects", "Radial blur samples per pixel for sun rays",
+                P::SunRays),
+        real("effects.sunRayDecay", 0.96, 0.5, 1.0, "", "Effects", "Per-sample decay of the radial blur", P::SunRays),
+        real("effects.sunRayDensity", 0.8, 0.0, 2.0, "", "Effects",
+             "Length of the radial blur as a fraction of the distance to the sun", P::SunRays),
+        // --- RSM ---
+        integer("rsm.tileSize", 256, 32, 1024, "px", "RSM",
+                "Width and height of one reflective-shadow-map tile (one tile per LPV cascade)",
+                P::Rsm | kLpvAll),
+        integer("rsm.cascades", 4, 1, 6, "", "RSM", "Number of RSM tiles, normally one per LPV cascade",
+                P::Rsm | kLpvAll),
+        // --- Shadows ---
+        integer("shadow.cascades", 6, 1, 8, "", "Shadows", "Cascaded shadow map splits for the sun",
+                P::ShadowMaps | P::Shading),
+        integer("shadow.mapSize", 1024, 256, 8192, "px", "Shadows", "Width and height of each shadow map",
+                P::ShadowMaps | P::Shading),
+        real("shadow.softness", 1.0, 0.0, 8.0, "", "Shadows",
+             "Light size for soft shadows; the penumbra grows with blocker distance (0 = hard)", P::Shading),
+        real("shadow.bias", 1.0, 0.0, 10.0, "texels", "Shadows",
+             "Receiver offset along the normal, in shadow-map texels, against shadow acne", P::Shading),
+        boolean("shadow.stabilize", true, "Shadows",
+                "Snap each cascade to its texel grid in light space so shadow edges do not shimmer",
+                P::ShadowMaps | P::Shading),
+        // --- Output ---
+        real("output.exposure", 0.0, -16.0, 16.0, "EV", "Output", "Exposure compensation before tonemapping",
+             P::Tonemap),
+        choice("output.tonemapper", "aces", {"aces", "reinhard", "uncharted2", "linear"}, "Output",
+               "Operator that maps HDR radiance to display values", P::Tonemap),
+        // --- Radiosity ---
+        real("radiosity.maxPatchArea", 0.05, 0.0001, 100.0, "m^2", "Radiosity",
+             "Surfaces are subdivided until every patch is at most this large", P::Radiosity),
+        integer("radiosity.hemicubeResolution", 128, 16, 1024, "px", "Radiosity",
+                "Resolution of the hemicube's front face", P::Radiosity),
+        integer("radiosity.shootersPerBatch", 16, 1, 1024, "patches", "Radiosity",
+                "Patches that shoot their unshot energy in one GPU batch", P::Radiosity),
+        real("radiosity.convergenceThreshold", 0.01, 0.00001, 1.0, "", "Radiosity",
+             "Stop when the unshot energy falls below this fraction of the emitted energy", P::Radiosity),
+        boolean("radiosity.smoothing", true, "Radiosity", "Interpolate patch radiosity to vertices for display",
+                P::Shading),
+        // --- Reference ---
+        integer("reference.samplesPerPixel", 64, 1, 65536, "spp", "Reference",
+                "Path-traced reference: samples per pixel", P::Reference),
+        integer("reference.bounces", 4, 1, 64, "bounces", "Reference", "Path-traced reference: maximum bounces",
+                P::Reference),
+    };
+}
+
+} // namespace lpv::scene

@@ -1,0 +1,57 @@
+#include "lpv/scene/ParameterRegistry.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace lpv::scene {
+namespace {
+
+const ParameterInfo& infoOf(std::string_view key) {
+    const ParameterInfo* info = ParameterRegistry::instance().find(key);
+    assert(info && "parameter read from code must be declared in ParameterDeclarations.cpp");
+    return *info;
+}
+
+} // namespace
+
+Expected<void> ParameterSet::set(std::string_view key, const ParameterValue& value, const std::string& where) {
+    auto checked = ParameterRegistry::instance().validate(key, value, where);
+    if (!checked)
+        return std::unexpected(checked.error());
+    auto it = std::lower_bound(values_.begin(), values_.end(), key,
+                               [](const auto& kv, std::string_view k) { return kv.first < k; });
+    if (it != values_.end() && it->first == key)
+        it->second = *checked;
+    else
+        values_.insert(it, {std::string(key), *checked});
+    return {};
+}
+
+Expected<void> ParameterSet::setFromText(std::string_view key, std::string_view text, const std::string& where) {
+    auto parsed = ParameterRegistry::instance().parse(key, text, where);
+    if (!parsed)
+        return std::unexpected(parsed.error());
+    return set(key, *parsed, where);
+}
+
+void ParameterSet::reset(std::string_view key) {
+    std::erase_if(values_, [&](const auto& kv) { return kv.first == key; });
+}
+
+bool ParameterSet::isSet(std::string_view key) const {
+    return std::any_of(values_.begin(), values_.end(), [&](const auto& kv) { return kv.first == key; });
+}
+
+ParameterValue ParameterSet::get(std::string_view key) const {
+    for (const auto& [k, v] : values_)
+        if (k == key)
+            return v;
+    return infoOf(key).defaultValue;
+}
+
+bool ParameterSet::getBool(std::string_view key) const { return std::get<bool>(get(key)); }
+int ParameterSet::getInt(std::string_view key) const { return std::get<int>(get(key)); }
+float ParameterSet::getFloat(std::string_view key) const { return static_cast<float>(std::get<double>(get(key))); }
+std::string ParameterSet::getEnum(std::string_view key) const { return std::get<std::string>(get(key)); }
+
+} // namespace lpv::scene

@@ -1,0 +1,38 @@
+#version 450 core
+// HDR -> display: exposure, tonemapping operator, then sRGB encoding.
+in vec2 vUv;
+out vec4 outColor;
+
+uniform sampler2D uHdr;
+uniform float uExposure; // linear scale, 2^EV
+uniform int uOperator;   // 0 aces, 1 reinhard, 2 uncharted2, 3 linear
+
+vec3 acesFitted(vec3 x) {
+    // Narkowicz's fit of the ACES reference rendering transform.
+    const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
+    return clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
+}
+
+vec3 uncharted2Curve(vec3 x) {
+    const float A = 0.15, B = 0.50, C = 0.10, D = 0.20, E = 0.02, F = 0.30;
+    return ((x * (A * x + C * B) + D * E) / (x * (A * x + B) + D * F)) - E / F;
+}
+
+vec3 linearToSrgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+void main() {
+    vec3 hdr = texture(uHdr, vUv).rgb * uExposure;
+    vec3 mapped;
+    if (uOperator == 0)
+        mapped = acesFitted(hdr);
+    else if (uOperator == 1)
+        mapped = hdr / (1.0 + hdr);
+    else if (uOperator == 2)
+        mapped = uncharted2Curve(2.0 * hdr) / uncharted2Curve(vec3(11.2));
+    else
+        mapped = hdr;
+    outColor = vec4(linearToSrgb(mapped), 1.0);
+}

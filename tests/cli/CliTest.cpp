@@ -1,0 +1,96 @@
+#include "RunLpv.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/scene/ParameterRegistry.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace lpv::test;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tempDir(const std::string& name) {
+    fs::path p = fs::temp_directory_path() / ("lpv-cli-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+} // namespace
+
+TEST(Cli, HelpListsCommandsAndExitsZero) {
+    const RunResult r = runLpv("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* cmd : {"render", "params", "new", "info"})
+        EXPECT_NE(r.output.find(cmd), std::string::npos) << cmd;
+    EXPECT_EQ(runLpv("render --help").exitCode, 0);
+    EXPECT_NE(runLpv("help render").output.find("--set KEY=VALUE"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(runLpv("").exitCode, 2);
+    EXPECT_EQ(runLpv("frobnicate").exitCode, 2);
+    EXPECT_EQ(runLpv("render " + cornellProject()).exitCode, 2) << "missing -o";
+    EXPECT_EQ(runLpv("render " + cornellProject() + " -o x.png --width zero").exitCode, 2);
+    EXPECT_EQ(runLpv("params --bogus").exitCode, 2);
+}
+
+TEST(Cli, UnknownSetKeyIsAUsageErrorNamingTheKey) {
+    const RunResult r = runLpv("render " + cornellProject() + " -o /tmp/never.png --set lpv.propagationStep=3");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("lpv.propagationStep"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MissingProjectIsAFailureNamingTheFile) {
+    const RunResult r = runLpv("render /nonexistent/x.lpvproj -o /tmp/never.png");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("/nonexistent/x.lpvproj"), std::string::npos) << r.output;
+}
+
+TEST(Cli, ParamsPrintsEveryRegistryKey) {
+    const RunResult table = runLpv("params");
+    ASSERT_EQ(table.exitCode, 0);
+    for (const auto& p : lpv::scene::ParameterRegistry::instance().all())
+        EXPECT_NE(table.output.find(p.key), std::string::npos) << p.key;
+    const RunResult json = runLpv("params --json");
+    ASSERT_EQ(json.exitCode, 0);
+    auto back = lpv::scene::ParameterRegistry::fromJson(json.output, "lpv params --json");
+    ASSERT_TRUE(back.has_value()) << back.error().describe();
+    EXPECT_EQ(back->all().size(), lpv::scene::ParameterRegistry::instance().all().size());
+}
+
+TEST(Cli, RenderWritesACornellImageAndPrintsPassTimes) {
+    const fs::path dir = tempDir("render");
+    const fs::path png = dir / "cornell.png";
+    const RunResult r = runLpv("render " + cornellProject() + " -o " + png.string() +
+                               " --width 96 --height 96 --frames 3 --set lpv.propagationSteps=4");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* pass : {"shadowMap", "forward", "tonemap"})
+        EXPECT_NE(r.output.find(pass), std::string::npos) << pass;
+    auto image = lpv::importers::readImage8(png);
+    ASSERT_TRUE(image.has_value()) << image.error().describe();
+    EXPECT_EQ(image->width, 96);
+    // Left third of the middle row is the red wall.
+    long red = 0, green = 0;
+    for (int x = 0; x < 96 / 4; ++x) {
+        const std::size_t i = (std::size_t(48) * 96 + std::size_t(x + 8)) * std::size_t(image->channels);
+        red += image->pixels[i];
+        green += image->pixels[i + 1];
+    }
+    EXPECT_GT(red, 2 * green);
+    // No temporary files left behind by the atomic write.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+    fs::remove_all(dir);
+}
+
+TEST(Cli, NewCreatesAProjectThatInfoValidates) {
+    const fs::path dir = tempDir("new");
+    const std::string file = (dir / "box.lpvproj").string();
+    ASSERT_EQ(runLpv("new " + file).exitCode, 0);
+    EXPECT_EQ(runLpv("new " + file).exitCode, 1) << "refuses to overwrite without --force";
+    const RunResult info = runLpv("info " + file);
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("triangles   32"), std::string::npos) << info.output;
+    fs::remove_all(dir);
+}

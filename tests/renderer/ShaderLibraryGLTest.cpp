@@ -1,0 +1,34 @@
+#include "GlFixture.h"
+
+#include "lpv/renderer/ShaderLibrary.h"
+
+using namespace lpv::renderer;
+
+class ShaderLibrary : public GlTest {};
+
+TEST_F(ShaderLibrary, EveryEmbeddedStageCompiles) {
+    const auto names = embeddedShaderNames();
+    ASSERT_FALSE(names.empty());
+    for (const std::string& name : names) {
+        if (name.ends_with(".glsl"))
+            continue; // include snippets are compiled as part of their users
+        auto program = buildEmbeddedProgram({name});
+        // A lone stage links only for compute; what we check is that it compiles.
+        if (!program)
+            EXPECT_EQ(program.error().location, "link") << program.error().describe();
+    }
+}
+
+TEST_F(ShaderLibrary, CompileErrorNamesFileAndLine) {
+    const std::string src = "#version 450 core\nout vec4 c;\nvoid main() {\n  c = vec4(undefinedThing);\n}\n";
+    auto program = buildProgram({{GL_FRAGMENT_SHADER, "shaders/broken.frag", src}});
+    ASSERT_FALSE(program.has_value());
+    EXPECT_EQ(program.error().file, "shaders/broken.frag");
+    EXPECT_NE(program.error().message.find("shaders/broken.frag:4:"), std::string::npos) << program.error().message;
+}
+
+TEST_F(ShaderLibrary, MissingEmbeddedShaderIsAnError) {
+    auto program = buildEmbeddedProgram({"nope.frag"});
+    ASSERT_FALSE(program.has_value());
+    EXPECT_EQ(program.error().code, lpv::scene::ErrorCode::MissingAsset);
+}
