@@ -37,9 +37,12 @@ uniform vec3 uEmissive;
 uniform bool uTwoSided;
 
 float shadowFactor(vec3 worldPos, vec3 n, vec3 toLight, float dist) {
-    // Offset along the normal by the bias in world units of one texel at this distance.
+    // Offset along the normal by the bias in world units of one texel at this
+    // distance, growing at grazing angles where one texel spans more depth.
     float texelWorld = uShadowPerspective ? uShadowTexel * dist : uShadowTexel;
-    vec3 p = worldPos + n * (uShadowBias * texelWorld);
+    float cosTheta = clamp(dot(n, toLight), 0.0, 1.0);
+    float grazing = sqrt(1.0 - cosTheta * cosTheta);
+    vec3 p = worldPos + n * (uShadowBias * texelWorld * (1.0 + 2.0 * grazing));
     vec4 clip = uShadowViewProj * vec4(p, 1.0);
     if (clip.w <= 0.0)
         return 1.0;

@@ -172,10 +172,15 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         glDepthFunc(GL_LESS);
         glDisable(GL_CULL_FACE); // one-sided walls (the Cornell box) must still cast shadows
         glClear(GL_DEPTH_BUFFER_BIT);
+        // Slope-scaled depth bias: receivers nearly parallel to the light's rays
+        // (the Cornell walls under a ceiling light) otherwise show acne stripes.
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(2.0f, 2.0f);
         glUseProgram(d.shadowProgram.id());
         glProgramUniformMatrix4fv(d.shadowProgram.id(), loc(d.shadowProgram.id(), "uLightViewProj"), 1, GL_FALSE,
                                   glm::value_ptr(shadowView.viewProj));
         d.drawScene(d.shadowProgram.id(), scene, false);
+        glDisable(GL_POLYGON_OFFSET_FILL);
         d.timer.end("shadowMap");
     }
 

@@ -13,7 +13,7 @@ GpuTimer::PassState& GpuTimer::state(const std::string& pass) {
             return p;
     PassState& p = passes_.emplace_back();
     p.name = pass;
-    for (Slot& s : p.slots) {
+    for (Slot& s : p.ring) {
         s.start = createQuery(GL_TIMESTAMP);
         s.stop = createQuery(GL_TIMESTAMP);
     }
@@ -23,7 +23,7 @@ GpuTimer::PassState& GpuTimer::state(const std::string& pass) {
 void GpuTimer::collect(PassState& p, bool wait) {
     // Oldest first, so history stays in frame order.
     for (std::size_t k = 0; k < kLatency; ++k) {
-        Slot& s = p.slots[(p.next + k) % kLatency];
+        Slot& s = p.ring[(p.next + k) % kLatency];
         if (!s.pending)
             continue;
         GLint available = GL_FALSE;
@@ -47,15 +47,15 @@ void GpuTimer::beginFrame() {
 
 void GpuTimer::begin(const std::string& pass) {
     PassState& p = state(pass);
-    Slot& s = p.slots[p.next];
-    if (s.pending) // all slots in flight: the GPU is kLatency frames behind; wait rather than lose a sample
+    Slot& s = p.ring[p.next];
+    if (s.pending) // all ring in flight: the GPU is kLatency frames behind; wait rather than lose a sample
         collect(p, true);
     glQueryCounter(s.start.id(), GL_TIMESTAMP);
 }
 
 void GpuTimer::end(const std::string& pass) {
     PassState& p = state(pass);
-    Slot& s = p.slots[p.next];
+    Slot& s = p.ring[p.next];
     glQueryCounter(s.stop.id(), GL_TIMESTAMP);
     s.pending = true;
     p.next = (p.next + 1) % kLatency;

@@ -72,9 +72,9 @@ TEST_F(CornellRender, HdrBufferHasNoNaNOrInf) {
 
 TEST_F(CornellRender, LeftWallIsRedAndRightWallIsGreen) {
     const Hdr hdr = renderCornell(project.parameters);
-    // Mid-height points on each wall, half way back (metres).
-    const glm::vec3 red = sampleAround(hdr, camera(), {5.545f, 1.5f, 3.0f});
-    const glm::vec3 green = sampleAround(hdr, camera(), {0.005f, 1.5f, 3.0f});
+    // Points on each wall above the tall block (so outside its shadow), half way back.
+    const glm::vec3 red = sampleAround(hdr, camera(), {5.50f, 3.5f, 3.0f});
+    const glm::vec3 green = sampleAround(hdr, camera(), {0.02f, 3.5f, 3.0f});
     EXPECT_GT(red.r, 0.01f) << "left wall must receive direct light";
     EXPECT_GT(red.r, 3.0f * red.g);
     EXPECT_GT(red.r, 3.0f * red.b);
@@ -82,15 +82,16 @@ TEST_F(CornellRender, LeftWallIsRedAndRightWallIsGreen) {
     EXPECT_GT(green.g, 2.0f * green.r);
     EXPECT_GT(green.g, 2.0f * green.b);
     // And the image is not mirrored: red is on the left half.
-    EXPECT_LT(pixelOf(camera(), {5.545f, 1.5f, 3.0f}).x, kSize / 2);
+    EXPECT_LT(pixelOf(camera(), {5.50f, 3.5f, 3.0f}).x, kSize / 2);
 }
 
 TEST_F(CornellRender, FloorUnderLightIsBrighterThanFloorInBlockShadow) {
     const Hdr hdr = renderCornell(project.parameters);
-    // Straight below the light, between the blocks, vs. the floor just behind the
-    // tall block (far from the light, occluded by it).
-    const glm::vec3 lit = sampleAround(hdr, camera(), {2.78f, 0.001f, 2.2f});
-    const glm::vec3 shadowed = sampleAround(hdr, camera(), {4.3f, 0.001f, 4.9f});
+    // Floor left of the short block, in the open, vs. floor left of the tall
+    // block where the line to the light passes through the tall block's centre.
+    // Both are visible from the camera and about as far from the light.
+    const glm::vec3 lit = sampleAround(hdr, camera(), {3.5f, 0.001f, 1.5f});
+    const glm::vec3 shadowed = sampleAround(hdr, camera(), {5.2f, 0.001f, 4.2f});
     const float litLum = glm::dot(lit, glm::vec3(0.2126f, 0.7152f, 0.0722f));
     const float shadowLum = glm::dot(shadowed, glm::vec3(0.2126f, 0.7152f, 0.0722f));
     EXPECT_GT(litLum, 0.0f);
@@ -102,8 +103,8 @@ TEST_F(CornellRender, ShadowComesFromTheShadowMapNotFromDistance) {
     // darkness above is a shadow and not just fall-off.
     project.scene.lights[0].castShadows = false;
     const Hdr hdr = renderCornell(project.parameters);
-    const glm::vec3 p = sampleAround(hdr, camera(), {4.3f, 0.001f, 4.9f});
-    const glm::vec3 lit = sampleAround(hdr, camera(), {2.78f, 0.001f, 2.2f});
+    const glm::vec3 p = sampleAround(hdr, camera(), {5.2f, 0.001f, 4.2f});
+    const glm::vec3 lit = sampleAround(hdr, camera(), {3.5f, 0.001f, 1.5f});
     EXPECT_GT(glm::dot(p, glm::vec3(1.0f)), 0.25f * glm::dot(lit, glm::vec3(1.0f)));
 }
 

@@ -14,8 +14,9 @@ TEST_F(ShaderLibrary, EveryEmbeddedStageCompiles) {
             continue; // include snippets are compiled as part of their users
         auto program = buildEmbeddedProgram({name});
         // A lone stage links only for compute; what we check is that it compiles.
-        if (!program)
+        if (!program) {
             EXPECT_EQ(program.error().location, "link") << program.error().describe();
+        }
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace lpv::scene;
@@ -48,10 +49,12 @@ TEST(ParameterRegistry, EveryEntryIsComplete) {
         EXPECT_FALSE(passNames(p.invalidates).empty()) << "every parameter invalidates some pass";
         // The default must pass the registry's own validation.
         EXPECT_TRUE(reg().validate(p.key, p.defaultValue, "test").has_value());
-        if (p.type == ParameterType::Int || p.type == ParameterType::Float)
+        if (p.type == ParameterType::Int || p.type == ParameterType::Float) {
             EXPECT_LT(p.minValue, p.maxValue);
-        if (p.type == ParameterType::Enum)
+        }
+        if (p.type == ParameterType::Enum) {
             EXPECT_GE(p.enumValues.size(), 2u);
+        }
     }
 }
 

@@ -42,7 +42,7 @@ private:
     };
     struct PassState {
         std::string name;
-        std::array<Slot, kLatency> slots;
+        std::array<Slot, kLatency> ring;
         std::size_t next = 0;
         std::deque<double> historyMs;
     };

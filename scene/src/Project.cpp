@@ -1,0 +1,232 @@
+// Loading and saving projects (docs/project-format.md): `Name.lpvproj` plus
+// the mesh assets in `Name.assets/meshes/`.
+#include "lpv/scene/Project.h"
+
+#include "ProjectJson.h"
+#include "lpv/scene/MeshAsset.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace lpv::scene {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::Json;
+
+// JSON text is UTF-8; paths are converted explicitly so non-ASCII names also
+// work where the native encoding is not UTF-8 (Windows).
+std::string utf8(const fs::path& p) {
+    const std::u8string s = p.u8string();
+    return std::string(s.begin(), s.end());
+}
+
+fs::path fromUtf8(const std::string& s) { return fs::path(std::u8string(s.begin(), s.end())); }
+
+std::string hex16(std::uint64_t v) {
+    std::ostringstream out;
+    out << std::hex;
+    out.width(16);
+    out.fill('0');
+    out << v;
+    return out.str();
+}
+
+// The whole file. FileNotFound when there is none, IoError for anything else.
+Expected<std::string> readFileBytes(const fs::path& path) {
+    const std::string where = path.string();
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (status.type() == fs::file_type::not_found)
+        return makeError(ErrorCode::FileNotFound, where, "", "no such file");
+    if (ec)
+        return makeError(ErrorCode::IoError, where, "", "cannot read: " + ec.message());
+    if (fs::is_directory(status))
+        return makeError(ErrorCode::IoError, where, "", "is a folder, not a file");
+    std::ifstream in(path, std::ios::binary);
+    if (in)
+        in.seekg(0, std::ios::end);
+    const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
+    if (size < 0)
+        return makeError(ErrorCode::IoError, where, "", "cannot open the file for reading");
+    in.seekg(0, std::ios::beg);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), size);
+    if (in.gcount() != size)
+        return makeError(ErrorCode::IoError, where, "", "the file could not be read completely");
+    return bytes;
+}
+
+std::string meshLocation(std::size_t i) { return "meshes[" + std::to_string(i) + "]"; }
+
+Expected<Mesh> loadMesh(const fs::path& projectFile, const detail::MeshReference& ref, std::size_t i,
+                        std::size_t materialCount) {
+    const std::string where = projectFile.string();
+    // checkAssetPath has already confined ref.asset to the project's folder.
+    const fs::path assetFile = projectFile.parent_path() / fromUtf8(ref.asset);
+    const auto bytes = readFileBytes(assetFile);
+    if (!bytes && bytes.error().code == ErrorCode::FileNotFound)
+        return makeError(ErrorCode::MissingAsset, where, meshLocation(i) + ".asset",
+                         "mesh asset \"" + ref.asset + "\" does not exist (looked for " + assetFile.string() + ")");
+    if (!bytes)
+        return std::unexpected(bytes.error());
+    auto mesh = decodeMeshAsset(*bytes, assetFile.string(), materialCount);
+    if (!mesh)
+        return mesh;
+    // A mismatch means the asset is not the one this project file was saved with.
+    if (mesh->positions.size() != ref.vertices || mesh->triangleCount() != ref.triangles)
+        return makeError(ErrorCode::CorruptAsset, where, meshLocation(i),
+                         "the project records " + std::to_string(ref.vertices) + " vertices and " +
+                             std::to_string(ref.triangles) + " triangles, but " + ref.asset + " holds " +
+                             std::to_string(mesh->positions.size()) + " and " +
+                             std::to_string(mesh->triangleCount()));
+    // The project file's name wins: it is the one a user edits.
+    mesh->name = ref.name;
+    return mesh;
+}
+
+// Where mesh i goes, relative to the project's folder. The name carries a
+// checksum of the asset's bytes, so a save never overwrites a file the
+// previous project file refers to (unless with identical bytes): renaming
+// the new project file over the old one is the single moment the saved
+// project changes, and a save that fails before it changes nothing.
+std::string assetPathFor(const fs::path& projectFile, std::size_t i, std::string_view bytes) {
+    return utf8(projectFile.stem()) + ".assets/meshes/" + std::to_string(i) + "-" + hex16(fnv1a64(bytes)) +
+           ".lpvmesh";
+}
+
+bool hasContent(const fs::path& path, std::string_view bytes) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) != bytes.size() || ec)
+        return false;
+    const auto existing = readFileBytes(path);
+    return existing && *existing == bytes;
+}
+
+// Undoes the files and folders a failed save created; what existed before is untouched.
+struct CreatedPaths {
+    std::vector<fs::path> files;
+    std::vector<fs::path> folders; // innermost first
+
+    void remove() const {
+        std::error_code ignored;
+        for (const fs::path& f : files)
+            fs::remove(f, ignored);
+        for (const fs::path& d : folders)
+            fs::remove(d, ignored); // only if empty
+    }
+};
+
+// After a successful save: assets the new project file no longer refers to
+// are deleted. The project owns its `<stem>.assets/meshes` folder.
+void removeUnreferencedAssets(const fs::path& meshFolder, const std::set<std::string>& referenced) {
+    std::error_code ec;
+    std::vector<fs::path> stale;
+    for (fs::directory_iterator it(meshFolder, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".lpvmesh" && it->is_regular_file(ec) &&
+            !referenced.contains(utf8(it->path().filename())))
+            stale.push_back(it->path());
+    for (const fs::path& p : stale)
+        fs::remove(p, ec);
+}
+
+// Everything a save could object to, found before anything is written:
+// meshes (stream sizes, finite values, indices) and the document as the
+// loader will read it back.
+Expected<std::string> buildDocument(const Project& project, const fs::path& file,
+                                    const std::vector<std::string>& assetPaths) {
+    const std::string where = file.string();
+    for (std::size_t i = 0; i < project.scene.meshes.size(); ++i)
+        if (auto valid = validateMesh(project.scene.meshes[i], where, meshLocation(i), project.scene.materials.size());
+            !valid)
+            return std::unexpected(valid.error());
+    const Json document = detail::projectToJson(project, assetPaths);
+    if (auto valid = detail::projectFromJson(document, where); !valid)
+        return std::unexpected(valid.error());
+    try {
+        return document.dump(2) + "\n";
+    } catch (const Json::exception& e) {
+        // nlohmann refuses strings that are not UTF-8 (e.g. names from an old 8-bit file).
+        return makeError(ErrorCode::InvalidValue, where, "", std::string("cannot write the project: ") + e.what());
+    }
+}
+
+} // namespace
+
+bool Project::operator==(const Project& other) const {
+    return name == other.name && scene == other.scene && parameters == other.parameters;
+}
+
+Expected<Project> loadProject(const fs::path& file) {
+    const std::string where = file.string();
+    const auto text = readFileBytes(file);
+    if (!text)
+        return std::unexpected(text.error());
+    const auto json = detail::parseProjectText(*text, where);
+    if (!json)
+        return std::unexpected(json.error());
+    auto document = detail::projectFromJson(*json, where);
+    if (!document)
+        return std::unexpected(document.error());
+
+    Project project = std::move(document->project);
+    const std::size_t materialCount = project.scene.materials.size();
+    project.scene.meshes.reserve(document->meshes.size());
+    for (std::size_t i = 0; i < document->meshes.size(); ++i) {
+        auto mesh = loadMesh(file, document->meshes[i], i, materialCount);
+        if (!mesh)
+            return std::unexpected(mesh.error());
+        project.scene.meshes.push_back(std::move(*mesh));
+    }
+    return project;
+}
+
+Expected<void> saveProject(const Project& project, const fs::path& file) {
+    const std::string where = file.string();
+    if (file.filename().empty() || file.stem().empty())
+        return makeError(ErrorCode::InvalidValue, where, "", "not a project file name");
+
+    std::vector<std::string> assets;
+    std::vector<std::string> assetPaths;
+    for (std::size_t i = 0; i < project.scene.meshes.size(); ++i) {
+        assets.push_back(encodeMeshAsset(project.scene.meshes[i]));
+        assetPaths.push_back(assetPathFor(file, i, assets.back()));
+    }
+    const auto text = buildDocument(project, file, assetPaths);
+    if (!text)
+        return std::unexpected(text.error());
+
+    const fs::path folder = file.parent_path();
+    const fs::path assetFolder = folder / fromUtf8(utf8(file.stem()) + ".assets");
+    const fs::path meshFolder = assetFolder / "meshes";
+    CreatedPaths created;
+    std::error_code ec;
+    if (!fs::exists(meshFolder, ec))
+        created.folders.push_back(meshFolder);
+    if (!fs::exists(assetFolder, ec))
+        created.folders.push_back(assetFolder);
+
+    std::set<std::string> referenced;
+    for (std::size_t i = 0; i < assets.size(); ++i) {
+        const fs::path target = folder / fromUtf8(assetPaths[i]);
+        referenced.insert(utf8(target.filename()));
+        if (hasContent(target, assets[i]))
+            continue; // an unchanged mesh keeps its file
+        const bool existed = fs::exists(target, ec);
+        if (auto written = writeFileAtomically(target, assets[i]); !written) {
+            created.remove();
+            return written;
+        }
+        if (!existed)
+            created.files.push_back(target);
+    }
+    if (auto written = writeFileAtomically(file, *text); !written) {
+        created.remove();
+        return written;
+    }
+    removeUnreferencedAssets(meshFolder, referenced);
+    return {};
+}
+
+} // namespace lpv::scene

@@ -1,0 +1,855 @@
+// Project <-> JSON document, format v1 (docs/project-format.md).
+//
+// Reading validates everything a renderer would otherwise trip over later:
+// types, finiteness, ranges, enum names, parameter keys, indices and parent
+// chains. Each check names the JSON path of the offending value, so a user
+// editing the file by hand can find it.
+#include "ProjectJson.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <sstream>
+
+namespace lpv::scene::detail {
+namespace {
+
+template <class... Args>
+std::string concat(const Args&... args) {
+    std::ostringstream out;
+    (out << ... << args);
+    return out.str();
+}
+
+// Shortest text that reads back as the same value (so messages show what is in the file).
+template <class T>
+std::string formatNumber(T v) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+std::string atByte(std::size_t offset) { return concat("byte offset ", offset); }
+
+std::string fieldPath(const std::string& path, std::string_view key) {
+    return path.empty() ? std::string(key) : concat(path, ".", key);
+}
+
+std::string indexPath(const std::string& path, std::size_t i) { return concat(path, "[", i, "]"); }
+
+// --- value ranges -----------------------------------------------------------
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+struct Range {
+    double min = -kInfinity;
+    double max = kInfinity;
+    bool openMin = false;
+    bool openMax = false;
+
+    // Bounds are rounded to float first: the float nearest pi/2 is slightly
+    // above pi/2, and a value the program itself produces must pass.
+    bool contains(float v) const {
+        const float lo = static_cast<float>(min);
+        const float hi = static_cast<float>(max);
+        return (openMin ? v > lo : v >= lo) && (openMax ? v < hi : v <= hi);
+    }
+    std::string describe() const {
+        if (std::isinf(max))
+            return concat(openMin ? "> " : ">= ", formatNumber(min));
+        return concat(openMin ? "(" : "[", formatNumber(min), ", ", formatNumber(max), openMax ? ")" : "]");
+    }
+};
+
+const Range kAnyValue{};
+const Range kNonNegative{0.0, kInfinity};
+const Range kPositive{0.0, kInfinity, true, false};
+const Range kUnit{0.0, 1.0};
+// 0 and pi both give a degenerate projection.
+const Range kFieldOfView{0.0, kPi, true, true};
+// Spot cone half-angles as in glTF: 0 <= inner <= outer <= pi/2, outer > 0.
+const Range kInnerCone{0.0, kPi / 2};
+const Range kOuterCone{0.0, kPi / 2, true, false};
+
+// --- reading ----------------------------------------------------------------
+
+// The file being read and the first error found in it. Readers below stop
+// doing anything once an error is recorded, so a reading function can read
+// all its fields in sequence and the caller checks once.
+class Reader {
+public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    bool ok() const { return !error_.has_value(); }
+    const std::string& file() const { return file_; }
+    const Error& error() const { return *error_; }
+
+    void fail(ErrorCode code, std::string location, std::string message) {
+        if (!error_)
+            error_ = Error{code, file_, std::move(location), std::move(message)};
+    }
+    void fail(Error error) {
+        if (!error_)
+            error_ = std::move(error);
+    }
+
+private:
+    std::string file_;
+    std::optional<Error> error_;
+};
+
+std::string typeOf(const Json& v) {
+    if (v.is_number_float())
+        return "the number " + formatNumber(v.get<double>());
+    return std::string("a ") + v.type_name();
+}
+
+std::optional<float> readFloat(Reader& r, const Json& v, const std::string& path, const Range& range) {
+    if (!v.is_number()) {
+        r.fail(ErrorCode::TypeMismatch, path, "expected a number, got " + typeOf(v));
+        return std::nullopt;
+    }
+    const double d = v.get<double>();
+    // JSON has no NaN or infinity literal, but a document built in memory can hold them.
+    if (!std::isfinite(d)) {
+        r.fail(ErrorCode::NonFinite, path, formatNumber(d) + " is not a finite number");
+        return std::nullopt;
+    }
+    // Halfway between FLT_MAX and 2^128: from here on a double rounds to an
+    // infinite float (and converting it would be undefined behaviour).
+    constexpr double kFloatOverflow = 0x1.ffffffp+127;
+    if (std::abs(d) >= kFloatOverflow) {
+        r.fail(ErrorCode::NonFinite, path, formatNumber(d) + " is infinite as a 32-bit float");
+        return std::nullopt;
+    }
+    const float f = static_cast<float>(d);
+    if (!range.contains(f)) {
+        r.fail(ErrorCode::OutOfRange, path, concat(formatNumber(f), " is outside ", range.describe()));
+        return std::nullopt;
+    }
+    return f;
+}
+
+// An array of exactly N numbers, each checked against `range`; locations name the element ("diffuseColor[1]").
+template <std::size_t N>
+std::optional<std::array<float, N>> readFloats(Reader& r, const Json& v, const std::string& path,
+                                               const Range& range) {
+    if (!v.is_array() || v.size() != N) {
+        r.fail(ErrorCode::TypeMismatch, path,
+               concat("expected an array of ", N, " numbers, got ",
+                      v.is_array() ? concat("an array of ", v.size()) : typeOf(v)));
+        return std::nullopt;
+    }
+    std::array<float, N> out{};
+    for (std::size_t i = 0; i < N; ++i) {
+        const auto f = readFloat(r, v[i], indexPath(path, i), range);
+        if (!f)
+            return std::nullopt;
+        out[i] = *f;
+    }
+    return out;
+}
+
+std::optional<std::int64_t> readInteger(Reader& r, const Json& v, const std::string& path) {
+    if (v.is_number_unsigned()) {
+        const std::uint64_t u = v.get<std::uint64_t>();
+        // Too large for any index or count; clamped so the range check reports it.
+        return u > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())
+                   ? std::numeric_limits<std::int64_t>::max()
+                   : static_cast<std::int64_t>(u);
+    }
+    if (v.is_number_integer())
+        return v.get<std::int64_t>();
+    r.fail(ErrorCode::TypeMismatch, path, "expected an integer, got " + typeOf(v));
+    return std::nullopt;
+}
+
+// One JSON object at `path`; every field it is asked for is required.
+class Fields {
+public:
+    Fields(Reader& reader, const Json& json, std::string path) : r_(reader), path_(std::move(path)) {
+        if (!r_.ok())
+            return;
+        if (!json.is_object()) {
+            r_.fail(ErrorCode::TypeMismatch, path_.empty() ? "(top level)" : path_,
+                    "expected an object, got " + typeOf(json));
+            return;
+        }
+        json_ = &json;
+    }
+
+    Reader& reader() { return r_; }
+    bool ok() const { return r_.ok(); }
+    std::string pathOf(std::string_view key) const { return fieldPath(path_, key); }
+
+    // nullptr when the field is missing (recorded), or reading already failed.
+    const Json* get(const char* key) {
+        if (!json_ || !r_.ok())
+            return nullptr;
+        const auto it = json_->find(key);
+        if (it == json_->end()) {
+            r_.fail(ErrorCode::MissingField, pathOf(key), concat("required field \"", key, "\" is missing"));
+            return nullptr;
+        }
+        return &*it;
+    }
+
+    void text(const char* key, std::string& out) {
+        if (const Json* v = get(key)) {
+            if (v->is_string())
+                out = v->get<std::string>();
+            else
+                r_.fail(ErrorCode::TypeMismatch, pathOf(key), "expected a string, got " + typeOf(*v));
+        }
+    }
+
+    void flag(const char* key, bool& out) {
+        if (const Json* v = get(key)) {
+            if (v->is_boolean())
+                out = v->get<bool>();
+            else
+                r_.fail(ErrorCode::TypeMismatch, pathOf(key), "expected true or false, got " + typeOf(*v));
+        }
+    }
+
+    void number(const char* key, float& out, const Range& range) {
+        if (const Json* v = get(key))
+            if (const auto f = readFloat(r_, *v, pathOf(key), range))
+                out = *f;
+    }
+
+    template <glm::length_t L, glm::qualifier Q>
+    void vector(const char* key, glm::vec<L, float, Q>& out, const Range& range) {
+        if (const Json* v = get(key))
+            if (const auto a = readFloats<static_cast<std::size_t>(L)>(r_, *v, pathOf(key), range))
+                for (glm::length_t i = 0; i < L; ++i)
+                    out[i] = (*a)[static_cast<std::size_t>(i)];
+    }
+
+    // [x, y, z, w]; any non-zero quaternion (the renderer normalises).
+    void rotation(const char* key, glm::quat& out) {
+        const Json* v = get(key);
+        if (!v)
+            return;
+        const auto a = readFloats<4>(r_, *v, pathOf(key), kAnyValue);
+        if (!a)
+            return;
+        if ((*a)[0] == 0.0f && (*a)[1] == 0.0f && (*a)[2] == 0.0f && (*a)[3] == 0.0f) {
+            r_.fail(ErrorCode::InvalidValue, pathOf(key), "a rotation quaternion cannot be all zeros");
+            return;
+        }
+        out.x = (*a)[0];
+        out.y = (*a)[1];
+        out.z = (*a)[2];
+        out.w = (*a)[3];
+    }
+
+    // An index into a list of `size` things, or -1 for none.
+    void index(const char* key, int& out, std::size_t size, const char* thing, const char* things) {
+        const Json* v = get(key);
+        if (!v)
+            return;
+        const auto i = readInteger(r_, *v, pathOf(key));
+        if (!i)
+            return;
+        if (*i < -1 || *i >= static_cast<std::int64_t>(size)) {
+            r_.fail(ErrorCode::IndexOutOfRange, pathOf(key),
+                    concat(thing, " ", *i, " does not exist (the project has ", size, " ", things,
+                           "; -1 means none)"));
+            return;
+        }
+        out = static_cast<int>(*i);
+    }
+
+    void count(const char* key, std::uint64_t& out) {
+        const Json* v = get(key);
+        if (!v)
+            return;
+        const auto i = readInteger(r_, *v, pathOf(key));
+        if (!i)
+            return;
+        if (*i < 0) {
+            r_.fail(ErrorCode::OutOfRange, pathOf(key), concat("a count cannot be negative (", *i, ")"));
+            return;
+        }
+        out = static_cast<std::uint64_t>(*i);
+    }
+
+    template <class E>
+    void enumeration(const char* key, E& out, std::optional<E> (*parse)(std::string_view), const char* allowed) {
+        std::string name;
+        text(key, name);
+        if (!r_.ok())
+            return;
+        if (const auto e = parse(name))
+            out = *e;
+        else
+            r_.fail(ErrorCode::InvalidValue, pathOf(key), concat("\"", name, "\" is not one of: ", allowed));
+    }
+
+    const Json* array(const char* key) {
+        const Json* v = get(key);
+        if (v && !v->is_array()) {
+            r_.fail(ErrorCode::TypeMismatch, pathOf(key), "expected an array, got " + typeOf(*v));
+            return nullptr;
+        }
+        return v;
+    }
+
+private:
+    Reader& r_;
+    const Json* json_ = nullptr;
+    std::string path_;
+};
+
+template <class T, class ReadElement>
+std::vector<T> readArray(Fields& parent, const char* key, ReadElement readElement) {
+    std::vector<T> out;
+    const Json* a = parent.array(key);
+    if (!a)
+        return out;
+    out.reserve(a->size());
+    for (std::size_t i = 0; i < a->size() && parent.ok(); ++i) {
+        Fields element(parent.reader(), (*a)[i], indexPath(parent.pathOf(key), i));
+        out.push_back(readElement(element));
+    }
+    return out;
+}
+
+Material readMaterial(Fields& f) {
+    Material m;
+    f.text("name", m.name);
+    f.enumeration("shading", m.shading, parseShadingModel, "blinnPhong, metallicRoughness");
+    f.vector("diffuseColor", m.diffuseColor, kNonNegative);
+    f.text("diffuseTexture", m.diffuseTexture);
+    f.text("normalTexture", m.normalTexture);
+    f.text("heightTexture", m.heightTexture);
+    f.vector("specularColor", m.specularColor, kNonNegative);
+    f.text("specularTexture", m.specularTexture);
+    f.number("shininess", m.shininess, kNonNegative);
+    f.number("metallic", m.metallic, kUnit);
+    f.number("roughness", m.roughness, kUnit);
+    f.text("metallicRoughnessTexture", m.metallicRoughnessTexture);
+    f.text("occlusionTexture", m.occlusionTexture);
+    f.vector("emissive", m.emissive, kNonNegative);
+    f.text("emissiveTexture", m.emissiveTexture);
+    f.number("opacity", m.opacity, kUnit);
+    f.enumeration("alphaMode", m.alphaMode, parseAlphaMode, "opaque, mask, blend");
+    f.number("alphaCutoff", m.alphaCutoff, kUnit);
+    f.number("translucency", m.translucency, kUnit);
+    f.number("glossiness", m.glossiness, kUnit);
+    f.flag("twoSided", m.twoSided);
+    return m;
+}
+
+MeshReference readMeshReference(Fields& f) {
+    MeshReference m;
+    f.text("name", m.name);
+    f.text("asset", m.asset);
+    if (f.ok())
+        if (auto checked = checkAssetPath(m.asset, f.reader().file(), f.pathOf("asset")); !checked)
+            f.reader().fail(checked.error());
+    f.count("vertices", m.vertices);
+    f.count("triangles", m.triangles);
+    return m;
+}
+
+Object readObject(Fields& f, std::size_t meshCount, std::size_t objectCount) {
+    Object o;
+    f.text("name", o.name);
+    f.index("mesh", o.mesh, meshCount, "mesh", "meshes");
+    f.index("parent", o.parent, objectCount, "object", "objects");
+    f.vector("translation", o.transform.translation, kAnyValue);
+    f.rotation("rotation", o.transform.rotation);
+    f.vector("scale", o.transform.scale, kAnyValue);
+    f.flag("visible", o.visible);
+    return o;
+}
+
+Light readLight(Fields& f) {
+    Light l;
+    f.text("name", l.name);
+    f.enumeration("type", l.type, parseLightType, "directional, point, spot");
+    f.vector("color", l.color, kNonNegative);
+    f.number("intensity", l.intensity, kNonNegative);
+    f.vector("position", l.position, kAnyValue);
+    f.vector("direction", l.direction, kAnyValue);
+    f.number("range", l.range, kNonNegative);
+    f.number("innerConeAngle", l.innerConeAngle, kInnerCone);
+    f.number("outerConeAngle", l.outerConeAngle, kOuterCone);
+    f.flag("castShadows", l.castShadows);
+    if (!f.ok())
+        return l;
+    if (l.innerConeAngle > l.outerConeAngle)
+        f.reader().fail(ErrorCode::OutOfRange, f.pathOf("innerConeAngle"),
+                        concat("inner cone angle ", formatNumber(l.innerConeAngle), " exceeds the outer cone angle ",
+                               formatNumber(l.outerConeAngle)));
+    // A point light has no direction; the others need one.
+    if (l.type != LightType::Point && l.direction == glm::vec3(0.0f))
+        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("direction"),
+                        concat("a ", toString(l.type), " light needs a non-zero direction"));
+    return l;
+}
+
+Camera readCamera(Fields& f) {
+    Camera c;
+    f.text("name", c.name);
+    f.vector("position", c.position, kAnyValue);
+    f.vector("target", c.target, kAnyValue);
+    f.vector("up", c.up, kAnyValue);
+    f.number("fovY", c.fovY, kFieldOfView);
+    f.number("nearPlane", c.nearPlane, kPositive);
+    f.number("farPlane", c.farPlane, kPositive);
+    if (!f.ok())
+        return c;
+    if (c.farPlane <= c.nearPlane)
+        f.reader().fail(ErrorCode::OutOfRange, f.pathOf("farPlane"),
+                        concat("far plane ", formatNumber(c.farPlane), " is not beyond the near plane ",
+                               formatNumber(c.nearPlane)));
+    // Both would make the view matrix NaN.
+    if (c.position == c.target)
+        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("target"), "the camera looks at its own position");
+    if (c.up == glm::vec3(0.0f))
+        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("up"), "the up vector is zero");
+    return c;
+}
+
+CameraKeyframe readKeyframe(Fields& f) {
+    CameraKeyframe k;
+    f.number("time", k.time, kNonNegative);
+    f.vector("position", k.position, kAnyValue);
+    f.rotation("orientation", k.orientation);
+    f.number("fovY", k.fovY, kFieldOfView);
+    return k;
+}
+
+CameraPath readCameraPath(Fields& f) {
+    CameraPath p;
+    f.text("name", p.name);
+    p.keyframes = readArray<CameraKeyframe>(f, "keyframes", readKeyframe);
+    // Playback interpolates between neighbours, which needs them in time order.
+    for (std::size_t i = 1; i < p.keyframes.size() && f.ok(); ++i)
+        if (p.keyframes[i].time < p.keyframes[i - 1].time)
+            f.reader().fail(ErrorCode::InvalidValue, indexPath(f.pathOf("keyframes"), i) + ".time",
+                            concat("keyframe time ", formatNumber(p.keyframes[i].time),
+                                   " is earlier than the previous keyframe's ",
+                                   formatNumber(p.keyframes[i - 1].time), "; keyframes must be sorted by time"));
+    return p;
+}
+
+void readSky(Fields& top, Sky& sky) {
+    if (const Json* v = top.get("sky")) {
+        Fields f(top.reader(), *v, "sky");
+        f.vector("color", sky.color, kNonNegative);
+        f.number("intensity", sky.intensity, kNonNegative);
+    }
+}
+
+std::optional<ParameterValue> toParameterValue(Reader& r, const Json& v, const std::string& path) {
+    constexpr std::int64_t kIntMin = std::numeric_limits<int>::min();
+    constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
+    if (v.is_boolean())
+        return ParameterValue(v.get<bool>());
+    if (v.is_string())
+        return ParameterValue(v.get<std::string>());
+    // Integers beyond int are passed on as doubles so the registry reports them out of range.
+    if (v.is_number_unsigned()) {
+        const std::uint64_t u = v.get<std::uint64_t>();
+        return u <= static_cast<std::uint64_t>(kIntMax) ? ParameterValue(static_cast<int>(u))
+                                                          : ParameterValue(static_cast<double>(u));
+    }
+    if (v.is_number_integer()) {
+        const std::int64_t i = v.get<std::int64_t>();
+        return i >= kIntMin && i <= kIntMax ? ParameterValue(static_cast<int>(i))
+                                            : ParameterValue(static_cast<double>(i));
+    }
+    if (v.is_number_float()) {
+        const double d = v.get<double>();
+        if (!std::isfinite(d)) {
+            r.fail(ErrorCode::NonFinite, path, formatNumber(d) + " is not a finite number");
+            return std::nullopt;
+        }
+        return ParameterValue(d);
+    }
+    r.fail(ErrorCode::TypeMismatch, path, "expected true/false, a number or a string, got " + typeOf(v));
+    return std::nullopt;
+}
+
+// Keys and values are checked by the parameter registry: unknown keys, wrong
+// types and out-of-range values come back as its errors.
+void readParameters(Fields& top, ParameterSet& out) {
+    const Json* params = top.get("parameters");
+    if (!params)
+        return;
+    Reader& r = top.reader();
+    if (!params->is_object()) {
+        r.fail(ErrorCode::TypeMismatch, "parameters", "expected an object, got " + typeOf(*params));
+        return;
+    }
+    for (auto it = params->begin(); it != params->end() && r.ok(); ++it) {
+        const auto value = toParameterValue(r, it.value(), fieldPath("parameters", it.key()));
+        if (!value)
+            return;
+        if (auto set = out.set(it.key(), *value, r.file()); !set)
+            r.fail(set.error());
+    }
+}
+
+// Parent indices are already in range; a chain that comes back to an object
+// it passed would make world matrices undefined. Each object is walked once.
+void checkParentChains(Reader& r, const std::vector<Object>& objects) {
+    enum class State : unsigned char { Unvisited, OnChain, ReachesRoot };
+    std::vector<State> state(objects.size(), State::Unvisited);
+    std::vector<std::size_t> chain;
+    for (std::size_t start = 0; start < objects.size(); ++start) {
+        chain.clear();
+        std::size_t i = start;
+        while (state[i] == State::Unvisited) {
+            state[i] = State::OnChain;
+            chain.push_back(i);
+            if (objects[i].parent < 0)
+                break;
+            i = static_cast<std::size_t>(objects[i].parent);
+        }
+        if (state[i] == State::OnChain && objects[i].parent >= 0) {
+            std::string loop;
+            bool inLoop = false;
+            for (const std::size_t c : chain)
+                if (inLoop || c == i) {
+                    inLoop = true;
+                    loop += std::to_string(c) + " -> ";
+                }
+            r.fail(ErrorCode::InvalidValue, indexPath("objects", i) + ".parent",
+                   concat("object \"", objects[i].name, "\" is its own ancestor (parent chain ", loop, i, ")"));
+            return;
+        }
+        for (const std::size_t c : chain)
+            state[c] = State::ReachesRoot;
+    }
+}
+
+// --- versions -----------------------------------------------------------------
+
+// Format migrations: kMigrations[v - 1] turns a version-v document into a
+// version v+1 one. Version 1 is the first format, so the table is empty.
+// When the format changes: bump kProjectFormatVersion, append one step that
+// rewrites the JSON (rename fields, add new ones with the value that keeps the
+// old behaviour), and never edit or drop an older step, so that every file
+// ever written still loads. The result is then validated like any document of
+// the current version.
+using Migration = Json (*)(Json);
+constexpr std::array<Migration, static_cast<std::size_t>(kProjectFormatVersion - 1)> kMigrations{};
+
+Expected<Json> upgradeToCurrentVersion(const Json& document, const std::string& file) {
+    if (!document.is_object())
+        return makeError(ErrorCode::UnknownFormat, file, "(top level)",
+                         "not an LPV Studio project: the top level is " + typeOf(document) + ", not an object");
+    const auto format = document.find("format");
+    if (format == document.end())
+        return makeError(ErrorCode::UnknownFormat, file, "format",
+                         concat("not an LPV Studio project: no \"format\" field (expected \"", kProjectFormatName,
+                                "\")"));
+    if (!format->is_string() || format->get<std::string>() != kProjectFormatName)
+        return makeError(ErrorCode::UnknownFormat, file, "format",
+                         concat("format is ", format->dump(), ", expected \"", kProjectFormatName, "\""));
+
+    const auto version = document.find("version");
+    if (version == document.end())
+        return makeError(ErrorCode::MissingField, file, "version", "required field \"version\" is missing");
+    if (!version->is_number_integer())
+        return makeError(ErrorCode::TypeMismatch, file, "version", "expected an integer, got " + typeOf(*version));
+    // Unsigned first: a huge version must not wrap to a negative one.
+    const bool huge = version->is_number_unsigned() &&
+                      version->get<std::uint64_t>() > static_cast<std::uint64_t>(kProjectFormatVersion);
+    if (huge || version->get<std::int64_t>() > kProjectFormatVersion)
+        return makeError(ErrorCode::NewerVersion, file, "version",
+                         concat("project format version ", version->dump(), " is newer than this build reads (up to "
+                                "version ", kProjectFormatVersion, "); open it with a newer LPV Studio"));
+    const std::int64_t from = version->get<std::int64_t>();
+    if (from < 1)
+        return makeError(ErrorCode::OutOfRange, file, "version",
+                         concat("project format version ", from, " does not exist (the first is 1)"));
+
+    Json current = document;
+    const std::span<const Migration> steps(kMigrations);
+    for (std::int64_t v = from; v < kProjectFormatVersion; ++v)
+        current = steps[static_cast<std::size_t>(v - 1)](std::move(current));
+    current["version"] = kProjectFormatVersion;
+    return current;
+}
+
+// --- writing ------------------------------------------------------------------
+
+// The shortest decimal that reads back as `f` ("0.8", not 0.800000011920929),
+// as a double that nlohmann prints exactly that way. Falls back to the exact
+// double value in the unlikely case the decimal rounds differently through
+// double than directly to float.
+Json number(float f) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, f);
+    double d = 0.0;
+    if (ec == std::errc() && std::from_chars(buffer, end, d).ec == std::errc() && static_cast<float>(d) == f)
+        return d;
+    return static_cast<double>(f);
+}
+
+template <glm::length_t L, glm::qualifier Q>
+Json numbers(const glm::vec<L, float, Q>& v) {
+    Json out = Json::array();
+    for (glm::length_t i = 0; i < L; ++i)
+        out.push_back(number(v[i]));
+    return out;
+}
+
+Json numbers(const glm::quat& q) { return Json::array({number(q.x), number(q.y), number(q.z), number(q.w)}); }
+
+Json toJson(const Material& m) {
+    Json j = Json::object();
+    j["name"] = m.name;
+    j["shading"] = toString(m.shading);
+    j["diffuseColor"] = numbers(m.diffuseColor);
+    j["diffuseTexture"] = m.diffuseTexture;
+    j["normalTexture"] = m.normalTexture;
+    j["heightTexture"] = m.heightTexture;
+    j["specularColor"] = numbers(m.specularColor);
+    j["specularTexture"] = m.specularTexture;
+    j["shininess"] = number(m.shininess);
+    j["metallic"] = number(m.metallic);
+    j["roughness"] = number(m.roughness);
+    j["metallicRoughnessTexture"] = m.metallicRoughnessTexture;
+    j["occlusionTexture"] = m.occlusionTexture;
+    j["emissive"] = numbers(m.emissive);
+    j["emissiveTexture"] = m.emissiveTexture;
+    j["opacity"] = number(m.opacity);
+    j["alphaMode"] = toString(m.alphaMode);
+    j["alphaCutoff"] = number(m.alphaCutoff);
+    j["translucency"] = number(m.translucency);
+    j["glossiness"] = number(m.glossiness);
+    j["twoSided"] = m.twoSided;
+    return j;
+}
+
+Json toJson(const Mesh& m, const std::string& asset) {
+    Json j = Json::object();
+    j["name"] = m.name;
+    j["asset"] = asset;
+    j["vertices"] = m.positions.size();
+    j["triangles"] = m.triangleCount();
+    return j;
+}
+
+Json toJson(const Object& o) {
+    Json j = Json::object();
+    j["name"] = o.name;
+    j["mesh"] = o.mesh;
+    j["parent"] = o.parent;
+    j["translation"] = numbers(o.transform.translation);
+    j["rotation"] = numbers(o.transform.rotation);
+    j["scale"] = numbers(o.transform.scale);
+    j["visible"] = o.visible;
+    return j;
+}
+
+Json toJson(const Light& l) {
+    Json j = Json::object();
+    j["name"] = l.name;
+    j["type"] = toString(l.type);
+    j["color"] = numbers(l.color);
+    j["intensity"] = number(l.intensity);
+    j["position"] = numbers(l.position);
+    j["direction"] = numbers(l.direction);
+    j["range"] = number(l.range);
+    j["innerConeAngle"] = number(l.innerConeAngle);
+    j["outerConeAngle"] = number(l.outerConeAngle);
+    j["castShadows"] = l.castShadows;
+    return j;
+}
+
+Json toJson(const Camera& c) {
+    Json j = Json::object();
+    j["name"] = c.name;
+    j["position"] = numbers(c.position);
+    j["target"] = numbers(c.target);
+    j["up"] = numbers(c.up);
+    j["fovY"] = number(c.fovY);
+    j["nearPlane"] = number(c.nearPlane);
+    j["farPlane"] = number(c.farPlane);
+    return j;
+}
+
+Json toJson(const CameraPath& p) {
+    Json keyframes = Json::array();
+    for (const CameraKeyframe& k : p.keyframes) {
+        Json j = Json::object();
+        j["time"] = number(k.time);
+        j["position"] = numbers(k.position);
+        j["orientation"] = numbers(k.orientation);
+        j["fovY"] = number(k.fovY);
+        keyframes.push_back(std::move(j));
+    }
+    Json j = Json::object();
+    j["name"] = p.name;
+    j["keyframes"] = std::move(keyframes);
+    return j;
+}
+
+template <class T>
+Json arrayOf(const std::vector<T>& items) {
+    Json out = Json::array();
+    for (const T& item : items)
+        out.push_back(toJson(item));
+    return out;
+}
+
+} // namespace
+
+Expected<void> checkAssetPath(const std::string& path, const std::string& file, const std::string& location) {
+    const auto invalid = [&](const std::string& why) {
+        return makeError(ErrorCode::InvalidValue, file, location,
+                         concat("asset path \"", path, "\" ", why, "; assets must lie inside the project's folder"));
+    };
+    if (path.empty())
+        return invalid("is empty");
+    if (path.front() == '/')
+        return invalid("is absolute");
+    // ':' would be a drive letter or stream name on Windows, '\' a separator
+    // there; control characters (NUL above all) could cut the name short.
+    for (const char c : path)
+        if (c == '\\' || c == ':' || static_cast<unsigned char>(c) < 0x20)
+            return invalid("contains '\\', ':' or a control character");
+    std::size_t start = 0;
+    while (start <= path.size()) {
+        const std::size_t end = std::min(path.find('/', start), path.size());
+        const std::string_view part = std::string_view(path).substr(start, end - start);
+        if (part.empty() || part == "." || part == "..")
+            return invalid(part.empty() ? "has an empty component" : concat("has a \"", part, "\" component"));
+        start = end + 1;
+    }
+    return {};
+}
+
+Expected<ProjectDocument> projectFromJson(const Json& document, const std::string& file) {
+    const auto current = upgradeToCurrentVersion(document, file);
+    if (!current)
+        return std::unexpected(current.error());
+
+    Reader r(file);
+    ProjectDocument out;
+    Scene& scene = out.project.scene;
+    Fields top(r, *current, "");
+    top.text("name", out.project.name);
+    readSky(top, scene.sky);
+    scene.materials = readArray<Material>(top, "materials", readMaterial);
+    out.meshes = readArray<MeshReference>(top, "meshes", readMeshReference);
+    const Json* objects = top.array("objects");
+    const std::size_t objectCount = objects ? objects->size() : 0;
+    scene.objects = readArray<Object>(
+        top, "objects", [&](Fields& f) { return readObject(f, out.meshes.size(), objectCount); });
+    scene.lights = readArray<Light>(top, "lights", readLight);
+    scene.cameras = readArray<Camera>(top, "cameras", readCamera);
+    scene.cameraPaths = readArray<CameraPath>(top, "cameraPaths", readCameraPath);
+    readParameters(top, out.project.parameters);
+    if (r.ok())
+        checkParentChains(r, scene.objects);
+    if (!r.ok())
+        return std::unexpected(r.error());
+    return out;
+}
+
+Json projectToJson(const Project& project, const std::vector<std::string>& assetPaths) {
+    const Scene& scene = project.scene;
+    Json doc = Json::object();
+    doc["format"] = kProjectFormatName;
+    doc["version"] = kProjectFormatVersion;
+    doc["name"] = project.name;
+    Json sky = Json::object();
+    sky["color"] = numbers(scene.sky.color);
+    sky["intensity"] = number(scene.sky.intensity);
+    doc["sky"] = std::move(sky);
+    doc["materials"] = arrayOf(scene.materials);
+    Json meshes = Json::array();
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i)
+        meshes.push_back(toJson(scene.meshes[i], i < assetPaths.size() ? assetPaths[i] : std::string()));
+    doc["meshes"] = std::move(meshes);
+    doc["objects"] = arrayOf(scene.objects);
+    doc["lights"] = arrayOf(scene.lights);
+    doc["cameras"] = arrayOf(scene.cameras);
+    doc["cameraPaths"] = arrayOf(scene.cameraPaths);
+    Json params = Json::object();
+    for (const auto& [key, value] : project.parameters.overrides())
+        params[key] = std::visit([](const auto& v) { return Json(v); }, value);
+    doc["parameters"] = std::move(params);
+    return doc;
+}
+
+namespace {
+
+// Only records where parsing stopped. nlohmann reports a number overflow
+// (1e999) as out_of_range without a byte offset; a second pass with this
+// finds it.
+class ErrorLocator final : public nlohmann::json_sax<Json> {
+public:
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t position, const std::string& lastToken, const Json::exception&) override {
+        // `position` counts the bytes read, which ends after the bad token.
+        offset = position >= lastToken.size() ? position - lastToken.size() : 0;
+        token = lastToken;
+        return false;
+    }
+
+    std::size_t offset = 0;
+    std::string token;
+};
+
+// "[json.exception.parse_error.101] parse error at line 1, column 8: ..." -> "line 1, column 8: ..."
+std::string withoutExceptionPrefix(const std::string& what) {
+    const std::string marker = "parse error at ";
+    const std::size_t at = what.find(marker);
+    return at == std::string::npos ? what : what.substr(at + marker.size());
+}
+
+} // namespace
+
+Expected<Json> parseProjectText(const std::string& text, const std::string& file) {
+    if (text.empty())
+        return makeError(ErrorCode::Truncated, file, atByte(0), "the file is empty");
+    try {
+        return Json::parse(text);
+    } catch (const Json::parse_error& e) {
+        // nlohmann counts bytes from 1; an error past the last byte means the text stopped early.
+        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+        if (offset >= text.size())
+            return makeError(ErrorCode::Truncated, file, atByte(text.size()),
+                             "the file ends in the middle of the JSON (cut off?): " + withoutExceptionPrefix(e.what()));
+        return makeError(ErrorCode::NotJson, file, atByte(offset), "not valid JSON: " + withoutExceptionPrefix(e.what()));
+    } catch (const Json::out_of_range&) {
+        ErrorLocator locator;
+        try {
+            Json::sax_parse(text, &locator);
+        } catch (const Json::exception&) {
+            // The locator stops at the first error; anything else leaves offset 0.
+        }
+        return makeError(ErrorCode::NonFinite, file, atByte(locator.offset),
+                         "the number " + locator.token + " is too large to be finite");
+    } catch (const Json::exception& e) {
+        return makeError(ErrorCode::NotJson, file, "", e.what());
+    }
+}
+
+} // namespace lpv::scene::detail
