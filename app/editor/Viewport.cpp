@@ -29,6 +29,7 @@ void Viewport::setProject(const scene::Project* project) {
 }
 
 void Viewport::initializeGL() {
+    renderer::installDebugOutputIfRequested();
     const renderer::GlInfo info = renderer::queryCurrentGlInfo();
     glRenderer_ = QString::fromStdString(info.renderer + " | " + info.version);
     auto created = renderer::ForwardRenderer::create();

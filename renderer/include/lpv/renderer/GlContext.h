@@ -40,4 +40,8 @@ private:
 // Vendor/renderer/version strings of the current context.
 GlInfo queryCurrentGlInfo();
 
+// Routes GL debug messages (errors and performance warnings) to stderr.
+// On in debug builds, or when LPV_GL_DEBUG=1; needs a debug context to see everything.
+void installDebugOutputIfRequested();
+
 } // namespace lpv::renderer

@@ -1,0 +1,38 @@
+#pragma once
+// One interface for every scene format: a file in, a scene::Scene or an error
+// out. The format is chosen by content (magic bytes) first, extension second.
+#include "lpv/scene/Error.h"
+#include "lpv/scene/Scene.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lpv::importers {
+
+using ImportError = scene::Error;
+
+struct ImportOptions {
+    // Extra folders searched for textures after the model's own folder and its maps/ folder.
+    std::vector<std::filesystem::path> textureSearchPaths;
+};
+
+struct ImportStats {
+    std::size_t objects = 0;
+    std::size_t triangles = 0;
+    std::size_t materials = 0;
+    std::size_t texturesFound = 0;
+    std::size_t texturesMissing = 0;
+    std::size_t degenerateTrianglesDropped = 0;
+};
+
+struct ImportResult {
+    scene::Scene scene;
+    // Non-fatal problems, each naming the file and what was skipped or replaced.
+    std::vector<std::string> warnings;
+    ImportStats stats;
+};
+
+scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options = {});
+
+} // namespace lpv::importers
