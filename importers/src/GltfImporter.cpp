@@ -1,0 +1,369 @@
+#include "lpv/importers/GltfImporter.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace lpv::importers {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+namespace {
+
+// Images are decoded later through OpenImageIO; tinygltf only records the URI.
+bool keepUriOnly(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+// glTF URIs are percent-encoded ("my%20texture.png").
+std::string percentDecode(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+struct Context {
+    const tinygltf::Model& model;
+    std::filesystem::path file;
+    ImportResult& result;
+};
+
+// Reads accessor `index` as `components` floats (or integer indices) per element, bounds checked.
+scene::Expected<std::vector<float>> readFloats(const Context& ctx, int index, int components, const std::string& what) {
+    const auto& m = ctx.model;
+    const std::string where = what + " (accessor " + std::to_string(index) + ")";
+    if (index < 0 || std::size_t(index) >= m.accessors.size())
+        return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where, "no such accessor");
+    const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || tinygltf::GetNumComponentsInType(std::uint32_t(a.type)) != components)
+        return makeError(ErrorCode::TypeMismatch, ctx.file.string(), where,
+                         "expected " + std::to_string(components) + " floats per element");
+    if (a.bufferView < 0) {
+        // All zeros by the specification (sparse accessors are not supported); the
+        // cap keeps a lying count from allocating gigabytes.
+        if (a.count > (std::size_t(1) << 26))
+            return makeError(ErrorCode::OutOfRange, ctx.file.string(), where, "implausible element count");
+        return std::vector<float>(a.count * std::size_t(components), 0.0f);
+    }
+    if (std::size_t(a.bufferView) >= m.bufferViews.size())
+        return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where, "buffer view out of range");
+    const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+    if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size())
+        return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where, "buffer out of range");
+    const auto& data = m.buffers[std::size_t(v.buffer)].data;
+    const std::size_t elementSize = std::size_t(components) * sizeof(float);
+    const std::size_t stride = v.byteStride ? v.byteStride : elementSize;
+    const std::size_t start = v.byteOffset + a.byteOffset;
+    if (a.count > 0 && (start + stride * (a.count - 1) + elementSize > data.size() ||
+                        a.byteOffset + stride * (a.count - 1) + elementSize > v.byteLength))
+        return makeError(ErrorCode::Truncated, ctx.file.string(), where, "accessor reads past the end of its buffer");
+    std::vector<float> out(a.count * std::size_t(components));
+    for (std::size_t i = 0; i < a.count; ++i)
+        std::memcpy(&out[i * std::size_t(components)], data.data() + start + i * stride, elementSize);
+    return out;
+}
+
+scene::Expected<std::vector<std::uint32_t>> readIndices(const Context& ctx, int index, std::size_t vertexCount) {
+    const auto& m = ctx.model;
+    const std::string where = "indices (accessor " + std::to_string(index) + ")";
+    if (std::size_t(index) >= m.accessors.size())
+        return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where, "no such accessor");
+    const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
+    const int size = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+    if (a.bufferView < 0 || std::size_t(a.bufferView) >= m.bufferViews.size() || (size != 1 && size != 2 && size != 4))
+        return makeError(ErrorCode::InvalidValue, ctx.file.string(), where, "unsupported index accessor");
+    const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+    if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size())
+        return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where, "buffer out of range");
+    const auto& data = m.buffers[std::size_t(v.buffer)].data;
+    const std::size_t stride = v.byteStride ? v.byteStride : std::size_t(size);
+    const std::size_t start = v.byteOffset + a.byteOffset;
+    if (a.count > 0 && start + stride * (a.count - 1) + std::size_t(size) > data.size())
+        return makeError(ErrorCode::Truncated, ctx.file.string(), where, "indices read past the end of their buffer");
+    std::vector<std::uint32_t> out(a.count);
+    for (std::size_t i = 0; i < a.count; ++i) {
+        std::uint32_t value = 0;
+        std::memcpy(&value, data.data() + start + i * stride, std::size_t(size)); // little-endian hosts
+        if (value >= vertexCount)
+            return makeError(ErrorCode::IndexOutOfRange, ctx.file.string(), where,
+                             "index " + std::to_string(i) + " is " + std::to_string(value) + ", but there are " +
+                                 std::to_string(vertexCount) + " vertices");
+        out[i] = value;
+    }
+    return out;
+}
+
+std::string texturePath(const Context& ctx, int textureIndex) {
+    const auto& m = ctx.model;
+    if (textureIndex < 0 || std::size_t(textureIndex) >= m.textures.size())
+        return {};
+    const int source = m.textures[std::size_t(textureIndex)].source;
+    if (source < 0 || std::size_t(source) >= m.images.size()) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": texture " + std::to_string(textureIndex) +
+                                      " has no image (placeholder used)");
+        ++ctx.result.stats.texturesMissing;
+        return {};
+    }
+    const tinygltf::Image& image = m.images[std::size_t(source)];
+    if (image.uri.empty() || image.uri.starts_with("data:")) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": image " + std::to_string(source) +
+                                      " is embedded; embedded images are not imported yet (placeholder used)");
+        ++ctx.result.stats.texturesMissing;
+        return {};
+    }
+    const std::string decoded = percentDecode(image.uri);
+    const std::filesystem::path p = ctx.file.parent_path() / decoded;
+    if (!std::filesystem::exists(p)) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + decoded + "' not found (placeholder used)");
+        ++ctx.result.stats.texturesMissing;
+        return decoded;
+    }
+    ++ctx.result.stats.texturesFound;
+    return p.string();
+}
+
+glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
+    return v.size() >= 3 ? glm::vec3(float(v[0]), float(v[1]), float(v[2])) : fallback;
+}
+
+scene::Material convertMaterial(const Context& ctx, const tinygltf::Material& in) {
+    scene::Material out;
+    out.name = in.name;
+    out.shading = scene::ShadingModel::MetallicRoughness;
+    const auto& pbr = in.pbrMetallicRoughness;
+    out.diffuseColor = vec3Of(pbr.baseColorFactor, glm::vec3(1.0f));
+    out.opacity = pbr.baseColorFactor.size() >= 4 ? float(pbr.baseColorFactor[3]) : 1.0f;
+    out.metallic = float(pbr.metallicFactor);
+    out.roughness = float(pbr.roughnessFactor);
+    out.glossiness = 1.0f - out.roughness;
+    out.diffuseTexture = texturePath(ctx, pbr.baseColorTexture.index);
+    out.metallicRoughnessTexture = texturePath(ctx, pbr.metallicRoughnessTexture.index);
+    out.normalTexture = texturePath(ctx, in.normalTexture.index);
+    out.occlusionTexture = texturePath(ctx, in.occlusionTexture.index);
+    out.emissiveTexture = texturePath(ctx, in.emissiveTexture.index);
+    out.emissive = vec3Of(in.emissiveFactor, glm::vec3(0.0f));
+    if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end() &&
+                                                                          it->second.Has("emissiveStrength"))
+        out.emissive *= float(it->second.Get("emissiveStrength").GetNumberAsDouble());
+    if (auto it = in.extensions.find("KHR_materials_transmission"); it != in.extensions.end()) {
+        const tinygltf::Value& t = it->second;
+        out.translucency = t.Has("transmissionFactor") ? float(t.Get("transmissionFactor").GetNumberAsDouble()) : 0.0f;
+    }
+    out.alphaMode = in.alphaMode == "MASK"    ? scene::AlphaMode::Mask
+                    : in.alphaMode == "BLEND" ? scene::AlphaMode::Blend
+                                              : scene::AlphaMode::Opaque;
+    out.alphaCutoff = float(in.alphaCutoff);
+    out.twoSided = in.doubleSided;
+    // Out-of-range factors in a file are clamped rather than rejected: the scene stays usable.
+    out.opacity = std::clamp(out.opacity, 0.0f, 1.0f);
+    out.metallic = std::clamp(out.metallic, 0.0f, 1.0f);
+    out.roughness = std::clamp(out.roughness, 0.0f, 1.0f);
+    out.translucency = std::clamp(out.translucency, 0.0f, 1.0f);
+    out.alphaCutoff = std::clamp(out.alphaCutoff, 0.0f, 1.0f);
+    out.diffuseColor = glm::max(out.diffuseColor, glm::vec3(0.0f));
+    out.emissive = glm::max(out.emissive, glm::vec3(0.0f));
+    return out;
+}
+
+scene::Expected<scene::Mesh> convertMesh(const Context& ctx, const tinygltf::Mesh& in, std::uint32_t defaultMaterial) {
+    scene::Mesh out;
+    out.name = in.name;
+    bool allHaveNormals = true, allHaveTangents = true, allHaveUvs = true;
+    for (const tinygltf::Primitive& p : in.primitives)
+        if (p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == -1) {
+            allHaveNormals &= p.attributes.count("NORMAL") > 0;
+            allHaveTangents &= p.attributes.count("TANGENT") > 0;
+            allHaveUvs &= p.attributes.count("TEXCOORD_0") > 0;
+        }
+    for (const tinygltf::Primitive& p : in.primitives) {
+        if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) {
+            ctx.result.warnings.push_back(ctx.file.string() + ": mesh '" + in.name +
+                                          "': a non-triangle primitive (mode " + std::to_string(p.mode) + ") was skipped");
+            continue;
+        }
+        auto pos = p.attributes.find("POSITION");
+        if (pos == p.attributes.end())
+            return makeError(ErrorCode::MissingField, ctx.file.string(), "mesh '" + in.name + "'", "primitive without POSITION");
+        auto positions = readFloats(ctx, pos->second, 3, "POSITION");
+        if (!positions)
+            return std::unexpected(positions.error());
+        const std::size_t count = positions->size() / 3;
+        const std::uint32_t base = std::uint32_t(out.positions.size());
+        for (std::size_t i = 0; i < count; ++i)
+            out.positions.emplace_back((*positions)[3 * i], (*positions)[3 * i + 1], (*positions)[3 * i + 2]);
+        auto readInto = [&](const char* name, int comps, auto&& push) -> scene::Expected<void> {
+            auto it = p.attributes.find(name);
+            if (it == p.attributes.end())
+                return {};
+            auto values = readFloats(ctx, it->second, comps, name);
+            if (!values)
+                return std::unexpected(values.error());
+            if (values->size() != count * std::size_t(comps))
+                return makeError(ErrorCode::CorruptAsset, ctx.file.string(), name, "count differs from POSITION");
+            for (std::size_t i = 0; i < count; ++i)
+                push(&(*values)[i * std::size_t(comps)]);
+            return {};
+        };
+        scene::Expected<void> ok;
+        if (allHaveNormals && !(ok = readInto("NORMAL", 3, [&](const float* v) { out.normals.emplace_back(v[0], v[1], v[2]); })))
+            return std::unexpected(ok.error());
+        if (allHaveTangents &&
+            !(ok = readInto("TANGENT", 4, [&](const float* v) { out.tangents.emplace_back(v[0], v[1], v[2], v[3]); })))
+            return std::unexpected(ok.error());
+        if (allHaveUvs && !(ok = readInto("TEXCOORD_0", 2, [&](const float* v) { out.uvs.emplace_back(v[0], v[1]); })))
+            return std::unexpected(ok.error());
+        scene::Submesh sub;
+        sub.firstIndex = std::uint32_t(out.indices.size());
+        sub.materialIndex = p.material >= 0 ? std::uint32_t(p.material) : defaultMaterial;
+        if (p.indices >= 0) {
+            auto indices = readIndices(ctx, p.indices, count);
+            if (!indices)
+                return std::unexpected(indices.error());
+            for (std::uint32_t i : *indices)
+                out.indices.push_back(base + i);
+        } else {
+            for (std::uint32_t i = 0; i < count; ++i)
+                out.indices.push_back(base + i);
+        }
+        out.indices.resize(sub.firstIndex + (out.indices.size() - sub.firstIndex) / 3 * 3);
+        sub.indexCount = std::uint32_t(out.indices.size()) - sub.firstIndex;
+        out.submeshes.push_back(sub);
+    }
+    return out;
+}
+
+scene::Transform localTransform(const tinygltf::Node& n) {
+    scene::Transform t;
+    if (n.matrix.size() == 16) {
+        glm::dmat4 m;
+        std::memcpy(glm::value_ptr(m), n.matrix.data(), 16 * sizeof(double)); // column-major, like glTF
+        const glm::mat4 f(m);
+        t.translation = glm::vec3(f[3]);
+        t.scale = {glm::length(glm::vec3(f[0])), glm::length(glm::vec3(f[1])), glm::length(glm::vec3(f[2]))};
+        const glm::mat3 r{glm::vec3(f[0]) / t.scale.x, glm::vec3(f[1]) / t.scale.y, glm::vec3(f[2]) / t.scale.z};
+        t.rotation = glm::quat_cast(r);
+        return t;
+    }
+    if (n.translation.size() == 3)
+        t.translation = vec3Of(n.translation, glm::vec3(0.0f));
+    if (n.rotation.size() == 4)
+        t.rotation = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
+    if (n.scale.size() == 3)
+        t.scale = vec3Of(n.scale, glm::vec3(1.0f));
+    return t;
+}
+
+void addLightAndCamera(const Context& ctx, const tinygltf::Node& node, const glm::mat4& world) {
+    const glm::vec3 position(world[3]);
+    const glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end() && it->second.Has("light")) {
+        const int index = it->second.Get("light").GetNumberAsInt();
+        if (index >= 0 && std::size_t(index) < ctx.model.lights.size()) {
+            const tinygltf::Light& l = ctx.model.lights[std::size_t(index)];
+            scene::Light light;
+            light.name = l.name.empty() ? node.name : l.name;
+            light.type = l.type == "directional" ? scene::LightType::Directional
+                         : l.type == "spot"      ? scene::LightType::Spot
+                                                 : scene::LightType::Point;
+            light.color = vec3Of(l.color, glm::vec3(1.0f));
+            // KHR_lights_punctual: lux for directional, candela (lm/sr) for point and spot.
+            light.intensity = float(l.intensity);
+            light.position = position;
+            light.direction = forward;
+            light.range = float(l.range);
+            light.innerConeAngle = float(l.spot.innerConeAngle);
+            light.outerConeAngle = float(l.spot.outerConeAngle);
+            ctx.result.scene.lights.push_back(light);
+        }
+    }
+    if (node.camera >= 0 && std::size_t(node.camera) < ctx.model.cameras.size()) {
+        const tinygltf::Camera& c = ctx.model.cameras[std::size_t(node.camera)];
+        if (c.type == "perspective") {
+            scene::Camera cam;
+            cam.name = c.name.empty() ? node.name : c.name;
+            cam.position = position;
+            cam.target = position + forward;
+            cam.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+            cam.fovY = float(c.perspective.yfov);
+            cam.nearPlane = float(c.perspective.znear);
+            cam.farPlane = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 1000.0f;
+            ctx.result.scene.cameras.push_back(cam);
+        }
+    }
+}
+
+void addNode(const Context& ctx, int index, int parent, const glm::mat4& parentWorld, int depth) {
+    // Node graphs are trees by specification; the depth guard stops a malformed cyclic one.
+    if (index < 0 || std::size_t(index) >= ctx.model.nodes.size() || depth > 256)
+        return;
+    const tinygltf::Node& node = ctx.model.nodes[std::size_t(index)];
+    scene::Object obj;
+    obj.name = node.name;
+    obj.parent = parent;
+    obj.transform = localTransform(node);
+    if (node.mesh >= 0 && std::size_t(node.mesh) < ctx.model.meshes.size())
+        obj.mesh = node.mesh;
+    const int self = int(ctx.result.scene.objects.size());
+    ctx.result.scene.objects.push_back(obj);
+    const glm::mat4 world = parentWorld * obj.transform.matrix();
+    addLightAndCamera(ctx, node, world);
+    for (int child : node.children)
+        addNode(ctx, child, self, world, depth + 1);
+}
+
+} // namespace
+
+scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, const ImportOptions&) {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(keepUriOnly, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+    if (!ok)
+        return makeError(ErrorCode::CorruptAsset, file.string(), "", "glTF: " + (err.empty() ? warn : err));
+    ImportResult result;
+    if (!warn.empty())
+        result.warnings.push_back(file.string() + ": " + warn);
+    Context ctx{model, file, result};
+    for (const tinygltf::Material& m : model.materials)
+        result.scene.materials.push_back(convertMaterial(ctx, m));
+    // Primitives without a material use the glTF default material.
+    const std::uint32_t defaultMaterial = std::uint32_t(result.scene.materials.size());
+    scene::Material fallback;
+    fallback.name = "default";
+    fallback.shading = scene::ShadingModel::MetallicRoughness;
+    fallback.diffuseColor = glm::vec3(1.0f);
+    result.scene.materials.push_back(fallback);
+    for (const tinygltf::Mesh& m : model.meshes) {
+        auto mesh = convertMesh(ctx, m, defaultMaterial);
+        if (!mesh)
+            return std::unexpected(mesh.error());
+        result.scene.meshes.push_back(std::move(*mesh));
+    }
+    const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (std::size_t(sceneIndex) < model.scenes.size())
+        for (int root : model.scenes[std::size_t(sceneIndex)].nodes)
+            addNode(ctx, root, -1, glm::mat4(1.0f), 0);
+    result.stats.objects = result.scene.objects.size();
+    result.stats.triangles = result.scene.triangleCount();
+    result.stats.materials = result.scene.materials.size();
+    return result;
+}
+
+} // namespace lpv::importers
