@@ -1,5 +1,7 @@
 // The binary mesh asset (.lpvmesh): exact layout, lossless round trips, and
 // a precise error (never a crash) for every kind of damage.
+#include "ProjectTestSupport.h"
+
 #include "lpv/scene/MeshAsset.h"
 
 #include <gtest/gtest.h>
@@ -9,10 +11,6 @@
 #include <cstring>
 #include <limits>
 #include <random>
-
-namespace lpv::scene {
-inline void PrintTo(ErrorCode code, std::ostream* os) { *os << toString(code); }
-} // namespace lpv::scene
 
 using namespace lpv::scene;
 

@@ -2,45 +2,27 @@
 // project in one way and checks the error's code, file and location, and that
 // the folder (the damaged project, its assets and a good project beside it)
 // is byte-for-byte the same afterwards, with no new files.
+#include "ProjectTestSupport.h"
+
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
 
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #ifndef _WIN32
 #include <sys/stat.h>
-#include <unistd.h>
 #endif
 
-namespace lpv::scene {
-inline void PrintTo(ErrorCode code, std::ostream* os) { *os << toString(code); }
-inline void PrintTo(const Project& p, std::ostream* os) { *os << "Project \"" << p.name << "\""; }
-} // namespace lpv::scene
-
 using namespace lpv::scene;
+using namespace lpv::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    if (in)
-        bytes << in.rdbuf();
-    return bytes.str();
-}
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -130,27 +112,15 @@ Project goodProject() {
     return p;
 }
 
-class ProjectBadInput : public testing::Test {
+class ProjectBadInput : public TempDirTest {
 protected:
+    ProjectBadInput() : TempDirTest("lpv-bad-") {}
+
     void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::path(testing::TempDir()) / (std::string("lpv-bad-") + info->name() + "-" + pidText());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        TempDirTest::SetUp();
         // A good project beside the damaged one must survive every failed load.
         ASSERT_TRUE(saveProject(goodProject(), dir_ / "good.lpvproj"));
         ASSERT_TRUE(saveProject(goodProject(), bad_ = dir_ / "bad.lpvproj"));
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-    static std::string pidText() {
-#ifdef _WIN32
-        return "0";
-#else
-        return std::to_string(::getpid());
-#endif
     }
 
     // The damaged project's only mesh asset.
@@ -186,7 +156,6 @@ protected:
         return loaded.error();
     }
 
-    fs::path dir_;
     fs::path bad_;
 };
 

@@ -1,5 +1,7 @@
 // Project format v1: what is saved loads back exactly, the file looks as
 // documented, and saving is deterministic, atomic and tidy.
+#include "ProjectTestSupport.h"
+
 #include "lpv/scene/CornellBox.h"
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
@@ -7,67 +9,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <numbers>
 #include <set>
-#include <sstream>
-
-#ifndef _WIN32
-#include <unistd.h>
-#endif
-
-namespace lpv::scene {
-inline void PrintTo(ErrorCode code, std::ostream* os) { *os << toString(code); }
-// Projects are large; gtest would otherwise dump their bytes.
-inline void PrintTo(const Project& p, std::ostream* os) { *os << "Project \"" << p.name << "\""; }
-} // namespace lpv::scene
 
 using namespace lpv::scene;
+using namespace lpv::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    if (in)
-        bytes << in.rdbuf();
-    return bytes.str();
-}
-
-// Every file under `root`, relative, sorted.
-std::set<std::string> listFiles(const fs::path& root) {
-    std::set<std::string> out;
-    for (const auto& entry : fs::recursive_directory_iterator(root))
-        if (entry.is_regular_file())
-            out.insert(entry.path().lexically_relative(root).generic_string());
-    return out;
-}
-
-class ProjectRoundTrip : public testing::Test {
+class ProjectRoundTrip : public TempDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::path(testing::TempDir()) /
-               (std::string("lpv-") + info->test_suite_name() + "-" + info->name() + "-" + std::to_string(pid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-    static long pid() {
-#ifdef _WIN32
-        return 0;
-#else
-        return static_cast<long>(::getpid());
-#endif
-    }
-
-    fs::path dir_;
+    ProjectRoundTrip() : TempDirTest("lpv-ProjectRoundTrip-") {}
 };
 
 Mesh quadMesh(const std::string& name, float offset, std::uint32_t material) {
