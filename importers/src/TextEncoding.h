@@ -1,0 +1,19 @@
+#pragma once
+// Legacy 8-bit names (game formats written on Windows) to valid UTF-8, so a
+// name read from any file can go straight into the project (JSON) and the UI.
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace lpv::importers {
+
+// Windows-1250 (Central European: Mafia is a Czech game, its names use
+// č, š, ř, ...) to UTF-8. ASCII is kept; the five undefined bytes become
+// U+FFFD; C0 control characters (and DEL) become '?' so a name stays
+// printable. The result is always valid UTF-8, whatever the input.
+std::string windows1250ToUtf8(std::span<const std::uint8_t> bytes);
+
+// Appends the UTF-8 encoding of a code point (at most U+FFFF here).
+void appendUtf8(std::string& out, char32_t codePoint);
+
+} // namespace lpv::importers
