@@ -119,7 +119,7 @@ Project makeCornellBoxProject() {
 
     scene.meshes = {room, shortBlock, tallBlock, lightQuad};
     for (int i = 0; i < int(scene.meshes.size()); ++i)
-        scene.objects.push_back(Object{scene.meshes[std::size_t(i)].name, i, -1, Transform{}, true});
+        scene.objects.push_back(Object{scene.meshes[std::size_t(i)].name, i, -1, Transform{}, true, {}});
 
     // The area light (130 x 105 mm, radiance (17, 12, 4)) as a downward spot:
     // a Lambertian emitter of area A and radiance L has intensity L*A*cos(theta).

@@ -2,6 +2,7 @@
 // the mesh assets in `Name.assets/meshes/`.
 #include "lpv/scene/Project.h"
 
+#include "FileText.h"
 #include "ProjectJson.h"
 #include "lpv/scene/MeshAsset.h"
 
@@ -15,48 +16,10 @@ namespace {
 namespace fs = std::filesystem;
 using detail::Json;
 
-// JSON text is UTF-8; paths are converted explicitly so non-ASCII names also
-// work where the native encoding is not UTF-8 (Windows).
-std::string utf8(const fs::path& p) {
-    const std::u8string s = p.u8string();
-    return std::string(s.begin(), s.end());
-}
-
-fs::path fromUtf8(const std::string& s) { return fs::path(std::u8string(s.begin(), s.end())); }
-
-std::string hex16(std::uint64_t v) {
-    std::ostringstream out;
-    out << std::hex;
-    out.width(16);
-    out.fill('0');
-    out << v;
-    return out.str();
-}
-
-// The whole file. FileNotFound when there is none, IoError for anything else.
-Expected<std::string> readFileBytes(const fs::path& path) {
-    const std::string where = path.string();
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (status.type() == fs::file_type::not_found)
-        return makeError(ErrorCode::FileNotFound, where, "", "no such file");
-    if (ec)
-        return makeError(ErrorCode::IoError, where, "", "cannot read: " + ec.message());
-    if (fs::is_directory(status))
-        return makeError(ErrorCode::IoError, where, "", "is a folder, not a file");
-    std::ifstream in(path, std::ios::binary);
-    if (in)
-        in.seekg(0, std::ios::end);
-    const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
-    if (size < 0)
-        return makeError(ErrorCode::IoError, where, "", "cannot open the file for reading");
-    in.seekg(0, std::ios::beg);
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.read(bytes.data(), size);
-    if (in.gcount() != size)
-        return makeError(ErrorCode::IoError, where, "", "the file could not be read completely");
-    return bytes;
-}
+using detail::fromUtf8;
+using detail::hex16;
+using detail::readFileBytes;
+using detail::utf8;
 
 std::string meshLocation(std::size_t i) { return "meshes[" + std::to_string(i) + "]"; }
 

@@ -199,6 +199,9 @@ public:
         return &*it;
     }
 
+    // For fields added after version 1 was published: absent means the default.
+    bool has(const char* key) const { return json_ && r_.ok() && json_->contains(key); }
+
     void text(const char* key, std::string& out) {
         if (const Json* v = get(key)) {
             if (v->is_string())
@@ -344,6 +347,17 @@ Material readMaterial(Fields& f) {
     f.number("translucency", m.translucency, kUnit);
     f.number("glossiness", m.glossiness, kUnit);
     f.flag("twoSided", m.twoSided);
+    // Optional (added in 1.1, see docs/project-format.md).
+    if (f.has("alphaTexture"))
+        f.text("alphaTexture", m.alphaTexture);
+    if (f.has("colorKey"))
+        f.flag("colorKey", m.colorKey);
+    if (f.has("additive"))
+        f.flag("additive", m.additive);
+    if (f.has("environmentTexture"))
+        f.text("environmentTexture", m.environmentTexture);
+    if (f.has("environmentRatio"))
+        f.number("environmentRatio", m.environmentRatio, kUnit);
     return m;
 }
 
@@ -368,6 +382,13 @@ Object readObject(Fields& f, std::size_t meshCount, std::size_t objectCount) {
     f.rotation("rotation", o.transform.rotation);
     f.vector("scale", o.transform.scale, kAnyValue);
     f.flag("visible", o.visible);
+    if (f.has("lods")) // optional, added in 1.1
+        o.lods = readArray<LodLevel>(f, "lods", [&](Fields& lod) {
+            LodLevel level;
+            lod.index("mesh", level.mesh, meshCount, "mesh", "meshes");
+            lod.number("distance", level.distance, kNonNegative);
+            return level;
+        });
     return o;
 }
 
@@ -631,6 +652,11 @@ Json toJson(const Material& m) {
     j["translucency"] = number(m.translucency);
     j["glossiness"] = number(m.glossiness);
     j["twoSided"] = m.twoSided;
+    j["alphaTexture"] = m.alphaTexture;
+    j["colorKey"] = m.colorKey;
+    j["additive"] = m.additive;
+    j["environmentTexture"] = m.environmentTexture;
+    j["environmentRatio"] = number(m.environmentRatio);
     return j;
 }
 
@@ -652,6 +678,12 @@ Json toJson(const Object& o) {
     j["rotation"] = numbers(o.transform.rotation);
     j["scale"] = numbers(o.transform.scale);
     j["visible"] = o.visible;
+    if (!o.lods.empty()) {
+        Json lods = Json::array();
+        for (const LodLevel& level : o.lods)
+            lods.push_back({{"mesh", level.mesh}, {"distance", number(level.distance)}});
+        j["lods"] = lods;
+    }
     return j;
 }
 

@@ -99,7 +99,7 @@ Project goodProject() {
     quad.submeshes = {{0, 6, 0}};
     p.scene.meshes = {quad};
 
-    p.scene.objects = {Object{"base", 0, -1, {}, true}, Object{"child", -1, 0, {}, true}};
+    p.scene.objects = {Object{"base", 0, -1, {}, true, {}}, Object{"child", -1, 0, {}, true, {}}};
     Light sun;
     sun.name = "sun";
     p.scene.lights = {sun};

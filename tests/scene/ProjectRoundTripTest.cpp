@@ -78,6 +78,11 @@ Project richProject() {
     phong.alphaMode = AlphaMode::Blend;
     phong.translucency = 0.6f;
     phong.twoSided = true;
+    phong.alphaTexture = "textures/brick_a.bmp";
+    phong.colorKey = true;
+    phong.additive = true;
+    phong.environmentTexture = "env.bmp";
+    phong.environmentRatio = 0.4f;
 
     Material pbr;
     pbr.name = "pbr";
@@ -102,14 +107,15 @@ Project richProject() {
     positionsOnly.indices = {0, 2, 1};
     s.meshes = {quadMesh("quad a", 0.0f, 1), positionsOnly, quadMesh("quad b", 3.0f, 2), Mesh{}};
 
-    Object root{"root", 0, -1, {}, true};
+    Object root{"root", 0, -1, {}, true, {}};
     root.transform.translation = {1.5f, -2.0f, 3.25f};
     root.transform.rotation = glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, 3)));
     root.transform.scale = {2.0f, 2.0f, -1.0f};
-    Object child{"child", 2, 0, {}, false};
+    Object child{"child", 2, 0, {}, false, {}};
     child.transform.rotation = glm::quat(0.5f, 0.5f, -0.5f, 0.5f);
-    Object group{"group (no mesh)", -1, 1, {}, true};
-    Object other{"other", 1, -1, {}, true};
+    Object group{"group (no mesh)", -1, 1, {}, true, {}};
+    Object other{"other", 1, -1, {}, true, {}};
+    other.lods = {{2, 10.0f}, {0, 25.5f}};
     s.objects = {root, child, group, other};
 
     Light sun;
@@ -209,7 +215,7 @@ TEST_F(ProjectRoundTrip, FloatsSurviveExactly) {
     p.name = "floats";
     const float tiny = std::numeric_limits<float>::denorm_min();
     const float huge = std::numeric_limits<float>::max();
-    Object o{"o", -1, -1, {}, true};
+    Object o{"o", -1, -1, {}, true, {}};
     o.transform.translation = {tiny, -huge, 0.1f};
     o.transform.scale = {-0.0f, 1.0f / 3.0f, 16777217.0f};
     o.transform.rotation = glm::quat(1e-30f, -1e-30f, 0.0f, 0.0f);
@@ -235,6 +241,9 @@ TEST_F(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
         {"object parent", [](Project& p) { p.scene.objects[2].parent = -1; }},
         {"object rotation", [](Project& p) { p.scene.objects[0].transform.rotation.w *= -1.0f; }},
         {"object visibility", [](Project& p) { p.scene.objects[1].visible = true; }},
+        {"object lod", [](Project& p) { p.scene.objects[3].lods[1].distance = 26.0f; }},
+        {"material colour key", [](Project& p) { p.scene.materials[0].colorKey = false; }},
+        {"material alpha map", [](Project& p) { p.scene.materials[0].alphaTexture.clear(); }},
         {"light cone", [](Project& p) { p.scene.lights[2].innerConeAngle = 0.3f; }},
         {"camera", [](Project& p) { p.scene.cameras[1].farPlane = 999.0f; }},
         {"keyframe", [](Project& p) { p.scene.cameraPaths[0].keyframes[3].time = 8.0f; }},

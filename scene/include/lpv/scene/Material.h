@@ -41,6 +41,16 @@ struct Material {
 
     float opacity = 1.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
+    // A separate coverage map (4ds alpha map, OBJ map_d); its red channel is alpha.
+    std::string alphaTexture;
+    // The first palette colour (8-bit maps) or black (others) of the diffuse
+    // map becomes transparent when the map is loaded (4ds COLOR_KEY).
+    bool colorKey = false;
+    // Blended by adding to what is behind (4ds ADDITIVE: glows, flares).
+    bool additive = false;
+    // A reflection texture (4ds environment map) mixed in by environmentRatio.
+    std::string environmentTexture;
+    float environmentRatio = 0.0f;
     float alphaCutoff = 0.5f;
     // Fraction of light that passes through the surface (subsurface LPV).
     float translucency = 0.0f;

@@ -32,11 +32,16 @@ struct Submesh {
 
 // Indexed triangle mesh. All vertex streams have positions.size() entries;
 // normals/tangents/uvs may be empty when the source had none.
+// Conventions: right-handed, counter-clockwise front faces; uv (0, 0) is the
+// bottom-left corner of the image (OBJ/OpenGL; importers of top-left formats
+// such as glTF store 1 - v).
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
-    std::vector<glm::vec4> tangents; // xyz tangent, w handedness (+1/-1)
+    // xyz = direction of increasing u; w = +1/-1 such that w * cross(normal, xyz)
+    // points along increasing v (image up), the normal map's green axis.
+    std::vector<glm::vec4> tangents;
     std::vector<glm::vec2> uvs;
     std::vector<std::uint32_t> indices;
     std::vector<Submesh> submeshes;

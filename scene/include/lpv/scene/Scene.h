@@ -22,6 +22,15 @@ struct Transform {
     bool operator==(const Transform&) const = default;
 };
 
+// A coarser version of an object's mesh, used from `distance` on. Imported
+// and stored (4ds LOD 1..n) but not drawn yet: the renderer draws `mesh`.
+struct LodLevel {
+    int mesh = -1;
+    float distance = 0.0f;
+
+    bool operator==(const LodLevel&) const = default;
+};
+
 // A node of the scene graph; mesh and parent are indices (-1 = none).
 struct Object {
     std::string name;
@@ -29,6 +38,7 @@ struct Object {
     int parent = -1;
     Transform transform;
     bool visible = true;
+    std::vector<LodLevel> lods; // further LODs by increasing distance
 
     bool operator==(const Object&) const = default;
 };
