@@ -34,10 +34,14 @@ int runRender(Args args);
 int runParams(Args args);
 int runNew(Args args);
 int runInfo(Args args);
+int runImport(Args args);
+int runBench(Args args);
 
 void printRenderHelp();
 void printParamsHelp();
 void printNewHelp();
 void printInfoHelp();
+void printImportHelp();
+void printBenchHelp();
 
 } // namespace lpv::cli

@@ -17,6 +17,8 @@ Commands:
   render PROJECT -o OUT.png   Render a project to an image and print per-pass GPU times
   params [--json]             List every parameter of the registry (key, type, default, range, unit)
   new FILE.lpvproj            Create a project (--template cornell-box|empty)
+  import FILE... -o PROJECT   Import 4ds, glTF, OBJ, 3DS ... scenes into a new or existing project
+  bench import FILE...        Time importing scene files against loading the projects they become
   info PROJECT                Validate a project and print what it contains
 
 Options:
@@ -52,6 +54,8 @@ int dispatch(std::vector<std::string> args) {
         {"render", {runRender, printRenderHelp}},
         {"params", {runParams, printParamsHelp}},
         {"new", {runNew, printNewHelp}},
+        {"import", {runImport, printImportHelp}},
+        {"bench", {runBench, printBenchHelp}},
         {"info", {runInfo, printInfoHelp}},
     };
     auto it = commands.find(command);

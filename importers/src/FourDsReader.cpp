@@ -119,6 +119,7 @@ struct RawFaceGroup {
 };
 
 struct RawLod {
+    float distance = 0.0f; // the camera distance from which this LOD is used
     std::vector<RawVertex> vertices;
     std::vector<RawFaceGroup> groups;
 };
@@ -138,6 +139,7 @@ struct RawFrame {
     std::size_t instanceOffset = 0;
     scene::Transform transform;
     std::optional<RawLod> lod0;
+    std::vector<RawLod> furtherLods; // LOD 1..n: stored in the scene, not drawn
 };
 
 std::string frameLabel(std::size_t index, const std::string& name) {
@@ -254,7 +256,13 @@ class FourDsParser {
                  "material " + std::to_string(index + 1) +
                      " has a colour or opacity that is not a finite number");
         if (m.flags & MaterialFlag::EnvironmentMap) {
+            const std::size_t ratioOffset = r_.offset();
             m.envRatio = r_.f32("environment map ratio");
+            // NaN would pass std::clamp into the glossiness (found by fuzz_4ds).
+            if (!std::isfinite(m.envRatio))
+                fail(ErrorCode::NonFinite, ratioOffset,
+                     "material " + std::to_string(index + 1) +
+                         " has an environment map ratio that is not a finite number");
             m.envMap = readString("environment map name");
         }
         m.diffuseMap = readString("diffuse map name");
@@ -410,19 +418,18 @@ class FourDsParser {
             RawLod data = readLod(index, f.name, lod);
             if (lod == 0)
                 f.lod0 = std::move(data);
+            else
+                f.furtherLods.push_back(std::move(data));
         }
         if (lodCount == 0)
             warn(frameLabel(index, f.name) + ": the mesh has no LOD; nothing to import");
-        else if (lodCount > 1)
-            warn(frameLabel(index, f.name) + ": " + std::to_string(lodCount - 1) +
-                 " further LOD(s) were read and checked but only LOD 0 was imported");
         return lodCount;
     }
 
     RawLod readLod(std::size_t index, const std::string& frameName, std::size_t lod) {
         const std::string where = "LOD " + std::to_string(lod) + " of " + frameLabel(index, frameName);
-        r_.f32("LOD distance");
         RawLod out;
+        out.distance = r_.f32("LOD distance");
         const std::uint16_t vertexCount = r_.u16("vertex count");
         r_.requireArray(vertexCount, kVertexSize, "vertices of " + where);
         out.vertices.reserve(vertexCount);
@@ -597,15 +604,33 @@ class FourDsParser {
             }
             f.lod0.reset();
             o.mesh = meshOfFrame[i];
+            if (o.mesh >= 0)
+                addFurtherLods(f, o);
             s.objects.push_back(std::move(o));
         }
         resolveInstances(meshOfFrame);
         buildMaterials();
         result_.stats.objects = s.objects.size();
-        result_.stats.triangles = s.triangleCount();
+        result_.stats.triangles = s.triangleCount(); // drawn objects: instances count, further LODs do not
         result_.stats.materials = s.materials.size();
         result_.stats.texturesFound = foundTextures_.size();
         result_.stats.texturesMissing = missingTextures_.size();
+    }
+
+    // LOD 1..n become meshes of their own that the object lists by distance;
+    // only LOD 0 is drawn (and counted in the summary's triangles).
+    void addFurtherLods(RawFrame& f, scene::Object& o) {
+        scene::Scene& s = result_.scene;
+        for (std::size_t k = 0; k < f.furtherLods.size(); ++k) {
+            const RawLod& lod = f.furtherLods[k];
+            if (!hasFaces(lod) || !std::isfinite(lod.distance))
+                continue;
+            o.lods.push_back({int(s.meshes.size()), std::max(lod.distance, 0.0f)});
+            s.meshes.push_back(toSceneMesh(lod, f.name + " LOD " + std::to_string(k + 1)));
+        }
+        f.furtherLods.clear();
+        std::stable_sort(o.lods.begin(), o.lods.end(),
+                         [](const scene::LodLevel& a, const scene::LodLevel& b) { return a.distance < b.distance; });
     }
 
     // An instance reuses the mesh of another frame (Mafia's way to repeat a
@@ -685,26 +710,23 @@ class FourDsParser {
         m.emissive = raw.emission;
         m.opacity = std::clamp(raw.opacity, 0.0f, 1.0f);
         m.twoSided = (raw.flags & MaterialFlag::TwoSided) != 0;
-        if ((raw.flags & MaterialFlag::AdditiveMixing) || !raw.alphaMap.empty() || m.opacity < 1.0f)
+        m.additive = (raw.flags & MaterialFlag::AdditiveMixing) != 0;
+        m.colorKey = (raw.flags & MaterialFlag::ColorKey) != 0;
+        if (m.additive || !raw.alphaMap.empty() || m.opacity < 1.0f)
             m.alphaMode = scene::AlphaMode::Blend;
-        else if (raw.flags & MaterialFlag::ColorKey)
+        else if (m.colorKey)
             m.alphaMode = scene::AlphaMode::Mask; // the key colour becomes alpha when the map is loaded
         if (textured)
             resolveDiffuse(raw, label, m);
-        if (!raw.alphaMap.empty()) {
-            resolveTexture(raw.alphaMap, "alpha map of " + label);
-            warn(label + ": its alpha map '" + raw.alphaMap +
-                 "' has no slot in the scene model; the material is alpha-blended instead");
-        }
+        if (!raw.alphaMap.empty())
+            m.alphaTexture = resolvedOrName(raw.alphaMap, "alpha map of " + label);
         if (raw.flags & MaterialFlag::EnvironmentMap) {
             // The environment map is Mafia's fake reflection; its strength is
-            // what our glossy LPV reflections need.
-            m.glossiness = std::clamp(raw.envRatio, 0.0f, 1.0f);
-            if (!raw.envMap.empty()) {
-                resolveTexture(raw.envMap, "environment map of " + label);
-                warn(label + ": its environment map '" + raw.envMap +
-                     "' has no slot in the scene model; its ratio became the glossiness");
-            }
+            // also what our glossy LPV reflections need.
+            m.environmentRatio = std::clamp(raw.envRatio, 0.0f, 1.0f);
+            m.glossiness = m.environmentRatio;
+            if (!raw.envMap.empty())
+                m.environmentTexture = resolvedOrName(raw.envMap, "environment map of " + label);
         }
         if (raw.flags & MaterialFlag::AnimatedDiffuse)
             warn(label + ": texture animation (" + std::to_string(raw.animationFrames) +
@@ -728,6 +750,13 @@ class FourDsParser {
             m.specularColor = glm::vec3(1.0f); // the map carries the strength
             foundTextures_.insert(*specular);
         }
+    }
+
+    // The absolute path when found, else the name as stored (a placeholder
+    // is drawn for it; resolveTexture has warned).
+    std::string resolvedOrName(const std::string& name, const std::string& role) {
+        const std::optional<fs::path> found = resolveTexture(name, role);
+        return found ? found->string() : name;
     }
 
     // Found: the absolute path. Missing: counted once per name, with a warning

@@ -224,7 +224,7 @@ scene::Expected<scene::Mesh> convertMesh(const Context& ctx, const tinygltf::Mes
         if (allHaveTangents &&
             !(ok = readInto("TANGENT", 4, [&](const float* v) { out.tangents.emplace_back(v[0], v[1], v[2], v[3]); })))
             return std::unexpected(ok.error());
-        if (allHaveUvs && !(ok = readInto("TEXCOORD_0", 2, [&](const float* v) { out.uvs.emplace_back(v[0], v[1]); })))
+        if (allHaveUvs && !(ok = readInto("TEXCOORD_0", 2, [&](const float* v) { out.uvs.emplace_back(v[0], 1.0f - v[1]); })))
             return std::unexpected(ok.error());
         scene::Submesh sub;
         sub.firstIndex = std::uint32_t(out.indices.size());

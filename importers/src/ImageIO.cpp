@@ -23,6 +23,9 @@ scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8
     if (!out)
         return makeError(ErrorCode::IoError, file.string(), "", "no image writer for this extension: " + OIIO::geterror());
     OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
+    // Our pixels are straight (not premultiplied) alpha; say so, or formats
+    // with associated alpha (TGA, TIFF) would change the colours.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
         !out->close()) {
         std::string err = out->geterror();
@@ -44,13 +47,16 @@ scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8
 scene::Expected<Image8> readImage8(const std::filesystem::path& file) {
     if (!std::filesystem::exists(file))
         return makeError(ErrorCode::FileNotFound, file.string(), "", "no such file");
-    auto in = OIIO::ImageInput::open(file.string());
+    // Textures are used with straight alpha: keep the file's values as they are.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(file.string(), &config);
     if (!in)
         return makeError(ErrorCode::UnknownFormat, file.string(), "", "not a readable image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     // Guards against headers that claim absurd sizes before we allocate.
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > 65536 || spec.height > 65536 ||
-        spec.nchannels > 4)
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > kMaxImageSide ||
+        spec.height > kMaxImageSide || spec.nchannels > 4)
         return makeError(ErrorCode::OutOfRange, file.string(), "header",
                          "unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                              "x" + std::to_string(spec.nchannels));
@@ -62,6 +68,54 @@ scene::Expected<Image8> readImage8(const std::filesystem::path& file) {
     if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::UINT8, img.pixels.data()))
         return makeError(ErrorCode::CorruptAsset, file.string(), "", "could not decode: " + in->geterror());
     return img;
+}
+
+scene::Expected<Image8> readTextureRgba8(const std::filesystem::path& file) {
+    auto img = readImage8(file);
+    if (!img || img->channels == 4)
+        return img;
+    Image8 rgba;
+    rgba.width = img->width;
+    rgba.height = img->height;
+    rgba.channels = 4;
+    const std::size_t count = std::size_t(img->width) * std::size_t(img->height);
+    rgba.pixels.resize(count * 4);
+    const int c = img->channels;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint8_t* src = &img->pixels[i * std::size_t(c)];
+        std::uint8_t* dst = &rgba.pixels[i * 4];
+        // grey, grey + alpha, or RGB
+        dst[0] = src[0];
+        dst[1] = c >= 3 ? src[1] : src[0];
+        dst[2] = c >= 3 ? src[2] : src[0];
+        dst[3] = c == 2 ? src[1] : 255;
+    }
+    return rgba;
+}
+
+Image8 placeholderTexture() {
+    constexpr int kSize = 64, kCheck = 8;
+    Image8 img;
+    img.width = img.height = kSize;
+    img.channels = 4;
+    img.pixels.resize(std::size_t(kSize) * kSize * 4);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const bool magenta = ((x / kCheck) + (y / kCheck)) % 2 == 0;
+            std::uint8_t* p = &img.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+            p[0] = magenta ? 255 : 0;
+            p[1] = 0;
+            p[2] = magenta ? 255 : 0;
+            p[3] = 255;
+        }
+    return img;
+}
+
+LoadedTexture loadTextureOrPlaceholder(const std::filesystem::path& file) {
+    auto img = readTextureRgba8(file);
+    if (img)
+        return {std::move(*img), false, {}};
+    return {placeholderTexture(), true, img.error().describe() + "; drawn as a magenta checkerboard"};
 }
 
 } // namespace lpv::importers

@@ -1,9 +1,13 @@
 #include "lpv/importers/Importer.h"
 
+#include "lpv/importers/AssimpImporter.h"
+#include "lpv/importers/FourDsReader.h"
 #include "lpv/importers/GltfImporter.h"
+#include "lpv/importers/MeshCleanup.h"
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <fstream>
 
 namespace lpv::importers {
@@ -13,33 +17,103 @@ using scene::makeError;
 
 namespace {
 
+enum class Format { FourDs, Gltf, Assimp, Unknown };
+
 std::string lowerExtension(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
-// The first bytes decide where they are unambiguous ("glTF" binary header), the extension otherwise.
-std::string sniff(const std::filesystem::path& file) {
+// Magic bytes decide where a format has them ("4DS\0" + version, "glTF"),
+// the extension otherwise.
+Format detectFormat(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    if (in.gcount() == 4 && std::string_view(magic, 4) == "glTF")
-        return ".glb";
-    return lowerExtension(file);
+    std::uint8_t head[8] = {};
+    in.read(reinterpret_cast<char*>(head), sizeof head);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (looksLikeFourDs({head, got}))
+        return Format::FourDs;
+    if (got >= 4 && std::string_view(reinterpret_cast<const char*>(head), 4) == "glTF")
+        return Format::Gltf;
+    const std::string ext = lowerExtension(file);
+    if (ext == ".4ds")
+        return Format::FourDs; // wrong magic or version: the reader says which
+    if (ext == ".gltf" || ext == ".glb")
+        return Format::Gltf;
+    if (assimpReads(file))
+        return Format::Assimp;
+    return Format::Unknown;
+}
+
+scene::Expected<std::vector<std::uint8_t>> readAllBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    if (!in)
+        return makeError(ErrorCode::IoError, file.string(), "", "cannot open the file for reading");
+    const std::streamoff size = in.tellg();
+    if (size < 0)
+        return makeError(ErrorCode::IoError, file.string(), "", "cannot tell the file's size");
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(bytes.data()), size);
+    if (in.gcount() != size)
+        return makeError(ErrorCode::IoError, file.string(), "", "the file could not be read completely");
+    return bytes;
+}
+
+scene::Expected<ImportResult> readFormat(Format format, const std::filesystem::path& file,
+                                         const ImportOptions& options) {
+    switch (format) {
+    case Format::FourDs: {
+        auto bytes = readAllBytes(file);
+        if (!bytes)
+            return std::unexpected(bytes.error());
+        return readFourDs(*bytes, file, options);
+    }
+    case Format::Gltf:
+        return importGltf(file, options);
+    case Format::Assimp:
+        return importWithAssimp(file, options);
+    case Format::Unknown:
+        break;
+    }
+    return makeError(ErrorCode::UnknownFormat, file.string(), "",
+                     "no importer reads '" + lowerExtension(file) +
+                         "' files (4ds, glTF .gltf/.glb, and what Assimp reads: .obj, .3ds, .fbx, .dae, .ply, ...)");
+}
+
+// The same clean-up for every format, then the summary's counts.
+void finishImport(const std::filesystem::path& file, ImportResult& result) {
+    std::size_t repairedNormals = 0;
+    for (scene::Mesh& mesh : result.scene.meshes) {
+        const MeshCleanupStats s = cleanupMesh(mesh);
+        result.stats.degenerateTrianglesDropped += s.degenerateTrianglesDropped;
+        repairedNormals += s.invalidNormalsRepaired;
+    }
+    if (result.stats.degenerateTrianglesDropped > 0)
+        result.warnings.push_back(file.string() + ": " + std::to_string(result.stats.degenerateTrianglesDropped) +
+                                  " degenerate triangle(s) (zero area, repeated or non-finite corners) dropped");
+    if (repairedNormals > 0)
+        result.warnings.push_back(file.string() + ": " + std::to_string(repairedNormals) +
+                                  " invalid normal(s) (zero length or non-finite) recomputed");
+    result.stats.objects = result.scene.objects.size();
+    result.stats.triangles = result.scene.triangleCount();
+    result.stats.materials = result.scene.materials.size();
 }
 
 } // namespace
 
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec))
         return makeError(ErrorCode::FileNotFound, file.string(), "", "no such file");
-    const std::string kind = sniff(file);
-    if (kind == ".gltf" || kind == ".glb")
-        return importGltf(file, options);
-    return makeError(ErrorCode::UnknownFormat, file.string(), "",
-                     "no importer for '" + lowerExtension(file) + "' files in this build (glTF: .gltf, .glb)");
+    auto result = readFormat(detectFormat(file), file, options);
+    if (!result)
+        return result;
+    finishImport(file, *result);
+    result->stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
 }
 
 } // namespace lpv::importers

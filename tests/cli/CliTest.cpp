@@ -22,7 +22,7 @@ fs::path tempDir(const std::string& name) {
 TEST(Cli, HelpListsCommandsAndExitsZero) {
     const RunResult r = runLpv("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* cmd : {"render", "params", "new", "info"})
+    for (const char* cmd : {"render", "params", "new", "info", "import", "bench"})
         EXPECT_NE(r.output.find(cmd), std::string::npos) << cmd;
     EXPECT_EQ(runLpv("render --help").exitCode, 0);
     EXPECT_NE(runLpv("help render").output.find("--set KEY=VALUE"), std::string::npos);

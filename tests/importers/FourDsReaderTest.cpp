@@ -185,7 +185,7 @@ struct RealModel {
 // Counts measured with this reader and cross-checked with SOURCE.md.
 const RealModel kRealModels[] = {
     {"bunny00.4ds", 2092, 1, 1, 1, 3, 0},       {"cube00.4ds", 12, 1, 1, 1, 3, 0},
-    {"denjasno2.4ds", 22, 13, 5, 3, 14, 3}, // 2 glow frames skipped, 1 alpha map without a slot
+    {"denjasno2.4ds", 22, 13, 5, 3, 14, 2}, // 2 glow frames skipped
     {"scene.4ds", 60, 3, 10, 10, 6, 0},         {"sibenik.4ds", 72524, 10, 9, 9, 9, 0},
     {"sphere00.4ds", 256, 1, 1, 1, 1, 0},       {"sphere01.4ds", 256, 1, 1, 1, 1, 0},
     {"test00.4ds", 308, 1, 7, 7, 3, 1},                                                   // 1 trailing byte
@@ -311,7 +311,8 @@ TEST(FourDsReader, OddTextureNamesResolve) {
     const auto& sun = sky->scene.materials[12];
     EXPECT_EQ(fs::path(sun.diffuseTexture).filename(), "2sun1.bmp");
     EXPECT_EQ(sun.alphaMode, lpv::scene::AlphaMode::Blend) << "it has the alpha map 2SUN1+.BMP";
-    EXPECT_EQ(countWarnings(*sky, "2SUN1+.BMP"), 1u);
+    EXPECT_EQ(fs::path(sun.alphaTexture).filename(), "2sun1+.bmp");
+    EXPECT_EQ(countWarnings(*sky, "2SUN1+.BMP"), 0u) << "found, so nothing to warn about";
     EXPECT_EQ(countWarnings(*sky, "visual type 6 (glow)"), 2u);
     EXPECT_EQ(countWarnings(*sky, "'lensflere'"), 1u);
 
@@ -425,9 +426,15 @@ TEST(FourDsReader, FurtherLodsAreReadButOnlyLodZeroImported) {
     w.u8(0);
     const auto r = parse(w.b);
     ASSERT_TRUE(r.has_value()) << r.error().describe();
-    EXPECT_EQ(r->scene.meshes.size(), 1u);
+    // LOD 1 and 2 are kept as meshes the object lists; only LOD 0 is drawn.
+    ASSERT_EQ(r->scene.meshes.size(), 3u);
     EXPECT_EQ(r->stats.triangles, 1u);
-    EXPECT_EQ(countWarnings(*r, "2 further LOD(s)"), 1u);
+    const auto& lods = r->scene.objects[0].lods;
+    ASSERT_EQ(lods.size(), 2u);
+    EXPECT_EQ(lods[0].mesh, 1);
+    EXPECT_EQ(lods[1].mesh, 2);
+    EXPECT_EQ(r->scene.meshes[1].name, "lods LOD 1");
+    EXPECT_EQ(r->scene.meshes[2].triangleCount(), 1u);
 }
 
 TEST(FourDsReader, FacesWithoutMaterialGetADefault) {
@@ -461,7 +468,13 @@ TEST(FourDsReader, MaterialFlagsMapToOurModel) {
     EXPECT_EQ(m[2].diffuseColor, glm::vec3(0.5f, 0.25f, 0.125f));
     EXPECT_FLOAT_EQ(m[2].opacity, 0.25f);
     EXPECT_EQ(m[2].alphaMode, lpv::scene::AlphaMode::Blend);
+    EXPECT_TRUE(m[1].additive);
+    EXPECT_FALSE(m[0].additive);
     EXPECT_FLOAT_EQ(m[3].glossiness, 0.75f);
+    EXPECT_FLOAT_EQ(m[3].environmentRatio, 0.75f);
+    EXPECT_EQ(m[3].environmentTexture, "ENV.BMP") << "not found: the stored name is kept";
+    EXPECT_TRUE(m[3].colorKey);
+    EXPECT_FALSE(m[0].colorKey);
     EXPECT_EQ(m[3].alphaMode, lpv::scene::AlphaMode::Mask);
 }
 
@@ -808,6 +821,19 @@ TEST(FourDsReader, NonFiniteTransformIsAnError) {
     dummyBox(w);
     w.u8(0);
     expectError(parse(w.b), ErrorCode::NonFinite, at.transform, "transform");
+}
+
+// Found by fuzz_4ds (docs/fuzzing.md): a NaN ratio passed std::clamp into the
+// material's glossiness and environment ratio.
+TEST(FourDsReader, NonFiniteEnvironmentMapRatioIsAnError) {
+    Writer w;
+    header(w);
+    w.u16(1);
+    w.u32(kEnvMap).vec3(0.1f, 0.1f, 0.1f).vec3(0.5f, 0.25f, 0.125f).vec3(0, 0, 0).f32(1.0f);
+    const std::size_t at = w.size();
+    w.f32(std::nanf("")).str("ENV.BMP").str("");
+    w.u16(0).u8(0);
+    expectError(parse(w.b), ErrorCode::NonFinite, at, "material 1 has an environment map ratio");
 }
 
 // Random damage to small real files: an answer (scene or error) every time.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace lpv::importers {
@@ -16,8 +17,27 @@ struct Image8 {
     std::vector<std::uint8_t> pixels; // rows top to bottom
 };
 
+// Larger sides are refused before anything is allocated (a corrupt header
+// must not cost gigabytes).
+inline constexpr int kMaxImageSide = 16384;
+
 // Format from the extension (.png, .jpg, .bmp, .tga, .exr...).
 scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8& image);
 scene::Expected<Image8> readImage8(const std::filesystem::path& file);
+
+// Four channels for use as a texture: grey, grey + alpha and RGB are expanded
+// (palettised BMPs already arrive expanded from OpenImageIO).
+scene::Expected<Image8> readTextureRgba8(const std::filesystem::path& file);
+
+// 64x64 magenta and black checks: what a missing or unreadable texture looks like.
+Image8 placeholderTexture();
+
+struct LoadedTexture {
+    Image8 image;            // RGBA8, rows top to bottom
+    bool placeholder = false;
+    std::string warning;     // names the file and why, when placeholder
+};
+// Never fails: a texture that cannot be read becomes the placeholder plus a warning.
+LoadedTexture loadTextureOrPlaceholder(const std::filesystem::path& file);
 
 } // namespace lpv::importers

@@ -24,6 +24,7 @@ struct ImportStats {
     std::size_t texturesFound = 0;
     std::size_t texturesMissing = 0;
     std::size_t degenerateTrianglesDropped = 0;
+    double seconds = 0.0; // wall time of importScene
 };
 
 struct ImportResult {
@@ -33,6 +34,10 @@ struct ImportResult {
     ImportStats stats;
 };
 
+// Reads the file with the importer its content (or extension) calls for,
+// then cleans every mesh (cleanupMesh: weld, degenerate triangles, normals,
+// tangents). Texture paths in the result are absolute where the file was
+// found, the stored name where it was not (counted and warned about).
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options = {});
 
 } // namespace lpv::importers

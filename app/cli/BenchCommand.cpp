@@ -1,0 +1,135 @@
+// `lpv bench`: measured figures, printed, never asserted (machines are shared
+// and noisy). `lpv bench import` compares importing a source file with
+// loading the project it becomes.
+#include "Cli.h"
+
+#include "lpv/importers/Importer.h"
+#include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectTextures.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace lpv::cli {
+
+namespace fs = std::filesystem;
+
+void printBenchHelp() {
+    std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
+
+Times, for each scene file: importing it (parse, mesh clean-up, texture
+lookup), saving the project it becomes, and loading that project again;
+prints the median of N runs (default 5) of each and the ratio import/load.
+Loading a saved project is meant to be at least 10x faster than importing
+the source. Nothing is asserted: the figures depend on the machine.
+
+Example:
+  lpv bench import ../shared/scenes/sponza/sponza.obj ../shared/scenes/sibenik/sibenik.obj
+)";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+struct ImportFigures {
+    std::size_t triangles = 0;
+    double importMs = 0, saveMs = 0, loadMs = 0;
+};
+
+scene::Expected<ImportFigures> benchOne(const fs::path& file, int repeat, const fs::path& scratch) {
+    ImportFigures f;
+    std::vector<double> imports, loads;
+    scene::Project project;
+    for (int i = 0; i < repeat; ++i) {
+        const auto start = Clock::now();
+        auto imported = importers::importScene(file);
+        if (!imported)
+            return std::unexpected(imported.error());
+        imports.push_back(msSince(start));
+        project.scene = std::move(imported->scene);
+    }
+    f.triangles = project.scene.triangleCount();
+    project.name = file.stem().string();
+    const fs::path projectFile = scratch / (file.stem().string() + ".lpvproj");
+    const auto saveStart = Clock::now();
+    if (auto t = scene::copyTexturesIntoProject(project.scene, projectFile); !t)
+        return std::unexpected(t.error());
+    if (auto saved = scene::saveProject(project, projectFile); !saved)
+        return std::unexpected(saved.error());
+    f.saveMs = msSince(saveStart);
+    for (int i = 0; i < repeat; ++i) {
+        const auto start = Clock::now();
+        auto loaded = scene::loadProject(projectFile);
+        if (!loaded)
+            return std::unexpected(loaded.error());
+        loads.push_back(msSince(start));
+    }
+    f.importMs = median(imports);
+    f.loadMs = median(loads);
+    return f;
+}
+
+int benchImport(Args& args) {
+    const int repeat = std::stoi(args.option("--repeat").value_or("5"));
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "bench");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "bench");
+    auto files = args.positionals();
+    files.erase(files.begin()); // "import"
+    if (files.empty())
+        return usageError("bench import needs at least one scene file", "bench");
+    if (repeat < 1 || repeat > 1000)
+        return usageError("--repeat must be 1..1000", "bench");
+
+    const fs::path scratch = fs::temp_directory_path() / ("lpv-bench-import-" + std::to_string(::getpid()));
+    fs::create_directories(scratch);
+    std::printf("%-28s %12s %12s %10s %10s %14s\n", "file", "triangles", "import ms", "save ms", "load ms",
+                "import/load");
+    int status = kOk;
+    for (const std::string& file : files) {
+        auto f = benchOne(file, repeat, scratch);
+        if (!f) {
+            std::cerr << "lpv: " << f.error().describe() << "\n";
+            status = kFailure;
+            continue;
+        }
+        std::printf("%-28s %12zu %12.1f %10.1f %10.1f %13.1fx\n", fs::path(file).filename().string().c_str(),
+                    f->triangles, f->importMs, f->saveMs, f->loadMs, f->importMs / std::max(f->loadMs, 1e-3));
+    }
+    std::printf("(median of %d runs; one process, one thread)\n", repeat);
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    return status;
+}
+
+} // namespace
+
+int runBench(Args args) {
+    const auto pos = args.positionals();
+    if (pos.empty())
+        return usageError("which benchmark? (import)", "bench");
+    if (pos.front() == "import") {
+        try {
+            return benchImport(args);
+        } catch (const std::exception&) { // std::stoi on a bad --repeat
+            return usageError("--repeat needs a whole number", "bench");
+        }
+    }
+    return usageError("unknown benchmark '" + pos.front() + "' (import)", "bench");
+}
+
+} // namespace lpv::cli

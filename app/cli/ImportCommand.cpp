@@ -1,0 +1,153 @@
+#include "Cli.h"
+
+#include "lpv/importers/Importer.h"
+#include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectTextures.h"
+#include "lpv/scene/SceneMerge.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace lpv::cli {
+
+namespace fs = std::filesystem;
+
+void printImportHelp() {
+    std::cout << R"(Usage: lpv import FILE... -o PROJECT.lpvproj [options]
+
+Imports scene files into a project: creates PROJECT.lpvproj, or adds to it
+when it exists. Formats: Mafia .4ds (version 29), glTF 2.0 (.gltf, .glb), and
+what Assimp reads (.obj, .3ds, .fbx, .dae, .ply, ...), chosen by content, then
+by extension. Every mesh is cleaned (duplicate vertices welded, degenerate
+triangles dropped, normals and tangents generated where missing), textures
+are copied into PROJECT.assets/textures/, and a missing texture is reported
+and drawn as a placeholder instead of failing the import.
+
+  -o, --output FILE         The project to create or add to (required)
+  --texture-path DIR        Also look for textures in DIR (and DIR/maps); repeatable
+  --no-sun                  Do not add a sun when the project ends up without lights
+  --verbose                 Print every warning (default: the first 20)
+
+Prints per file: objects, triangles, materials, textures found/missing,
+degenerate triangles dropped, time. Exit code 1 when a file cannot be
+imported or the project cannot be saved; the project is then unchanged.
+)";
+}
+
+namespace {
+
+std::string withCommas(std::size_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0)
+            out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", s);
+    return text;
+}
+
+void printSummary(const fs::path& file, const importers::ImportResult& r, bool verbose) {
+    const auto& s = r.stats;
+    std::cout << file.string() << ": " << withCommas(s.objects) << " objects, " << withCommas(s.triangles)
+              << " triangles, " << s.materials << " materials, textures " << s.texturesFound << " found / "
+              << s.texturesMissing << " missing, " << s.degenerateTrianglesDropped
+              << " degenerate triangles dropped, " << seconds(s.seconds) << "\n";
+    const std::size_t shown = verbose ? r.warnings.size() : std::min<std::size_t>(r.warnings.size(), 20);
+    for (std::size_t i = 0; i < shown; ++i)
+        std::cerr << "  warning: " << r.warnings[i] << "\n";
+    if (shown < r.warnings.size())
+        std::cerr << "  ... and " << r.warnings.size() - shown << " more warnings (--verbose shows them)\n";
+}
+
+// An imported scene without lights would render black; scenes such as
+// Sponza ship none. The sun comes from above, slightly from the side.
+void addDefaultSun(scene::Scene& s) {
+    scene::Light sun;
+    sun.name = "sun (added by lpv import)";
+    sun.type = scene::LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
+    sun.color = glm::vec3(1.0f, 0.95f, 0.85f);
+    sun.intensity = 3.0f;
+    s.lights.push_back(sun);
+}
+
+} // namespace
+
+int runImport(Args args) {
+    auto output = args.option("--output");
+    if (auto shortOutput = args.option("-o"))
+        output = shortOutput;
+    importers::ImportOptions options;
+    for (const std::string& dir : args.options("--texture-path"))
+        options.textureSearchPaths.emplace_back(dir);
+    const bool noSun = args.flag("--no-sun");
+    const bool verbose = args.flag("--verbose");
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "import");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "import");
+    const auto inputs = args.positionals();
+    if (inputs.empty())
+        return usageError("no file to import", "import");
+    if (!output)
+        return usageError("-o PROJECT.lpvproj is required", "import");
+    const fs::path projectFile = *output;
+    if (projectFile.extension() != ".lpvproj")
+        return usageError("the project file must end in .lpvproj", "import");
+
+    const auto start = std::chrono::steady_clock::now();
+    scene::Project project;
+    const bool adding = fs::exists(projectFile);
+    if (adding) {
+        auto loaded = scene::loadProject(projectFile);
+        if (!loaded) {
+            std::cerr << "lpv: cannot add to it: " << loaded.error().describe() << "\n";
+            return kFailure;
+        }
+        project = std::move(*loaded);
+    } else {
+        project.name = projectFile.stem().string();
+    }
+
+    for (const std::string& input : inputs) {
+        auto imported = importers::importScene(input, options);
+        if (!imported) {
+            std::cerr << "lpv: " << imported.error().describe() << "\n";
+            std::cerr << "lpv: nothing was saved" << (adding ? "; " + projectFile.string() + " is unchanged" : "")
+                      << "\n";
+            return kFailure;
+        }
+        printSummary(input, *imported, verbose);
+        scene::appendScene(project.scene, std::move(imported->scene));
+    }
+    if (project.scene.lights.empty() && !noSun) {
+        addDefaultSun(project.scene);
+        std::cout << "no lights in the scene: added a sun (--no-sun to leave it dark)\n";
+    }
+
+    auto textures = scene::copyTexturesIntoProject(project.scene, projectFile);
+    if (!textures) {
+        std::cerr << "lpv: " << textures.error().describe() << "\n";
+        return kFailure;
+    }
+    if (auto saved = scene::saveProject(project, projectFile); !saved) {
+        std::cerr << "lpv: " << saved.error().describe() << "\n";
+        return kFailure;
+    }
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << (adding ? "added to " : "created ") << projectFile.string() << ": "
+              << withCommas(project.scene.objects.size()) << " objects, "
+              << withCommas(project.scene.triangleCount()) << " triangles, " << project.scene.materials.size()
+              << " materials; textures " << textures->copied << " copied, " << textures->alreadyThere
+              << " already there, " << textures->missing << " missing (placeholder); " << seconds(total) << "\n";
+    return kOk;
+}
+
+} // namespace lpv::cli

@@ -1,0 +1,347 @@
+// OBJ, 3DS and the other formats Assimp reads. Assimp only parses and
+// triangulates here; welding, degenerate triangles, normals and tangents are
+// left to cleanupMesh (importScene runs it for every format alike).
+#include "lpv/importers/AssimpImporter.h"
+
+#include "AssimpLog.h"
+#include "TextureResolver.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace lpv::importers {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+namespace {
+
+glm::vec3 toVec3(const aiColor3D& c) { return {c.r, c.g, c.b}; }
+glm::vec3 toVec3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Resolves texture names case-insensitively and keeps the counts and
+// warnings of one import (each missing name is reported once).
+class TextureSlots {
+  public:
+    TextureSlots(const std::filesystem::path& file, TextureResolver& resolver, ImportResult& result)
+        : file_(file), resolver_(resolver), result_(result) {}
+
+    // The absolute path, or the name as stored when the file is missing (the
+    // renderer draws a placeholder for it).
+    std::string resolve(const aiMaterial& m, aiTextureType type, const std::string& materialName) {
+        aiString name;
+        if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &name) != AI_SUCCESS || name.length == 0)
+            return {};
+        const std::string raw(name.C_Str());
+        if (auto found = resolver_.find(raw)) {
+            found_.insert(*found);
+            return found->string();
+        }
+        if (missing_.insert(asciiLower(textureFileName(raw))).second)
+            result_.warnings.push_back(file_.string() + ": texture '" + raw + "' of material '" + materialName +
+                                       "' was not found; a placeholder is drawn instead");
+        return raw;
+    }
+
+    std::size_t foundCount() const { return found_.size(); }
+    std::size_t missingCount() const { return missing_.size(); }
+
+  private:
+    const std::filesystem::path& file_;
+    TextureResolver& resolver_;
+    ImportResult& result_;
+    std::set<std::filesystem::path> found_;
+    std::set<std::string> missing_;
+};
+
+void readColours(const aiMaterial& m, scene::Material& out) {
+    aiColor3D c;
+    if (m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+        out.diffuseColor = toVec3(c);
+    if (m.Get(AI_MATKEY_COLOR_SPECULAR, c) == AI_SUCCESS)
+        out.specularColor = toVec3(c);
+    if (m.Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS)
+        out.emissive = toVec3(c);
+    float f = 0.0f;
+    if (m.Get(AI_MATKEY_SHININESS, f) == AI_SUCCESS && std::isfinite(f))
+        out.shininess = std::clamp(f, 1.0f, 4096.0f);
+    if (m.Get(AI_MATKEY_OPACITY, f) == AI_SUCCESS && std::isfinite(f))
+        out.opacity = std::clamp(f, 0.0f, 1.0f);
+    // MTL's Tf (transmission filter): light passing through coloured glass.
+    if (m.Get(AI_MATKEY_COLOR_TRANSPARENT, c) == AI_SUCCESS) {
+        const float t = (c.r + c.g + c.b) / 3.0f;
+        if (std::isfinite(t) && t < 1.0f - 1e-4f)
+            out.translucency = std::clamp(1.0f - t, 0.0f, 1.0f);
+    }
+    int two = 0;
+    if (m.Get(AI_MATKEY_TWOSIDED, two) == AI_SUCCESS)
+        out.twoSided = two != 0;
+}
+
+scene::Material convertMaterial(const aiMaterial& m, const std::filesystem::path& file, TextureSlots& textures,
+                                ImportResult& result) {
+    scene::Material out;
+    aiString name;
+    if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS)
+        out.name = name.C_Str();
+    readColours(m, out);
+    if (out.opacity < 1.0f)
+        out.alphaMode = scene::AlphaMode::Blend;
+    // Normalised to [0, 1] over the usual Phong exponent range.
+    out.glossiness = std::clamp(std::log2(out.shininess) / 12.0f, 0.0f, 1.0f);
+    if (!finite(out.diffuseColor) || !finite(out.specularColor) || !finite(out.emissive)) {
+        result.warnings.push_back(file.string() + ": material '" + out.name + "' has non-finite colours; reset");
+        out.diffuseColor = glm::vec3(0.8f);
+        out.specularColor = out.emissive = glm::vec3(0.0f);
+    }
+    out.diffuseColor = glm::max(out.diffuseColor, glm::vec3(0.0f));
+    out.specularColor = glm::max(out.specularColor, glm::vec3(0.0f));
+    out.emissive = glm::max(out.emissive, glm::vec3(0.0f));
+    out.diffuseTexture = textures.resolve(m, aiTextureType_DIFFUSE, out.name);
+    out.normalTexture = textures.resolve(m, aiTextureType_NORMALS, out.name);
+    // OBJ's map_bump and 3DS bump maps arrive as HEIGHT: turned into normals by the renderer.
+    out.heightTexture = textures.resolve(m, aiTextureType_HEIGHT, out.name);
+    out.specularTexture = textures.resolve(m, aiTextureType_SPECULAR, out.name);
+    out.emissiveTexture = textures.resolve(m, aiTextureType_EMISSIVE, out.name);
+    out.alphaTexture = textures.resolve(m, aiTextureType_OPACITY, out.name);
+    if (!out.alphaTexture.empty() && out.alphaMode == scene::AlphaMode::Opaque)
+        out.alphaMode = scene::AlphaMode::Mask;
+    return out;
+}
+
+// Assimp's vertices as they are (one per face corner for OBJ); cleanupMesh
+// welds them and drops degenerate triangles afterwards.
+scene::Mesh convertMesh(const aiMesh& in) {
+    scene::Mesh out;
+    out.name = in.mName.C_Str();
+    out.positions.reserve(in.mNumVertices);
+    for (unsigned i = 0; i < in.mNumVertices; ++i)
+        out.positions.push_back(toVec3(in.mVertices[i]));
+    if (in.HasNormals())
+        for (unsigned i = 0; i < in.mNumVertices; ++i)
+            out.normals.push_back(toVec3(in.mNormals[i]));
+    if (in.HasTextureCoords(0))
+        for (unsigned i = 0; i < in.mNumVertices; ++i)
+            out.uvs.emplace_back(in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y);
+    out.indices.reserve(std::size_t(in.mNumFaces) * 3);
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+        const aiFace& face = in.mFaces[f];
+        if (face.mNumIndices == 3) // points and lines are removed by SortByPType
+            out.indices.insert(out.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    if (!out.indices.empty())
+        out.submeshes.push_back({0, std::uint32_t(out.indices.size()), in.mMaterialIndex});
+    return out;
+}
+
+scene::Transform toTransform(const aiMatrix4x4& m) {
+    aiVector3D s, p;
+    aiQuaternion q;
+    m.Decompose(s, q, p);
+    scene::Transform t;
+    t.translation = toVec3(p);
+    t.rotation = glm::normalize(glm::quat(q.w, q.x, q.y, q.z));
+    t.scale = toVec3(s);
+    return t;
+}
+
+glm::mat4 toGlm(const aiMatrix4x4& m) { return glm::transpose(glm::make_mat4(&m.a1)); }
+
+// Assimp nodes become objects; a node with several meshes gets one child
+// object per mesh, since an object references at most one mesh. Meshes
+// without triangles (an OBJ object with vertices and no faces) are skipped.
+class NodeConverter {
+  public:
+    NodeConverter(const std::vector<int>& meshIndex, scene::Scene& out) : meshIndex_(meshIndex), out_(out) {}
+
+    void add(const aiNode& node, int parent, const glm::mat4& parentWorld) {
+        scene::Object obj;
+        obj.name = node.mName.C_Str();
+        obj.parent = parent;
+        obj.transform = toTransform(node.mTransformation);
+        const glm::mat4 world = parentWorld * toGlm(node.mTransformation);
+        worldOf_[obj.name] = world;
+        localTranslationOf_[obj.name] = obj.transform.translation;
+        const int self = int(out_.objects.size());
+        out_.objects.push_back(obj);
+        std::vector<int> meshes;
+        for (unsigned i = 0; i < node.mNumMeshes; ++i)
+            if (node.mMeshes[i] < meshIndex_.size() && meshIndex_[node.mMeshes[i]] >= 0)
+                meshes.push_back(meshIndex_[node.mMeshes[i]]);
+        if (meshes.size() == 1)
+            out_.objects[std::size_t(self)].mesh = meshes[0];
+        else
+            for (std::size_t i = 0; i < meshes.size(); ++i) {
+                scene::Object part;
+                part.name = out_.meshes[std::size_t(meshes[i])].name;
+                if (part.name.empty())
+                    part.name = obj.name + " #" + std::to_string(i + 1);
+                part.parent = self;
+                part.mesh = meshes[i];
+                out_.objects.push_back(part);
+            }
+        for (unsigned c = 0; c < node.mNumChildren; ++c)
+            add(*node.mChildren[c], self, world);
+    }
+
+    // Lights and cameras are placed by the node of the same name.
+    glm::mat4 worldOf(const aiString& name) const {
+        const auto it = worldOf_.find(name.C_Str());
+        return it == worldOf_.end() ? glm::mat4(1.0f) : it->second;
+    }
+
+    // A camera's or light's position relative to its node. Assimp documents
+    // it as relative, but its 3DS reader also puts the same position into the
+    // node's translation; counting it twice would move the camera away.
+    glm::vec3 localPosition(const aiString& name, const aiVector3D& position) const {
+        const auto it = localTranslationOf_.find(name.C_Str());
+        const glm::vec3 p = toVec3(position);
+        if (it != localTranslationOf_.end() && glm::length(p) > 0.0f &&
+            glm::length(it->second - p) <= 1e-5f * glm::length(p))
+            return glm::vec3(0.0f);
+        return p;
+    }
+
+  private:
+    const std::vector<int>& meshIndex_;
+    scene::Scene& out_;
+    std::map<std::string, glm::mat4> worldOf_;
+    std::map<std::string, glm::vec3> localTranslationOf_;
+};
+
+// Our point lights fall off with the squared distance. A point light outside
+// the scene's bounds is meant as the sun (3ds Max omni lights have no falloff
+// by default, and 3DS stores none: Assimp reports its default attenuation), as
+// Sponza's "Sun01" 60 units above the atrium: it becomes a directional light
+// shining from where it is towards the scene's centre.
+void sunFromDistantOmni(scene::Light& light, const scene::Bounds& bounds, const std::filesystem::path& file,
+                        ImportResult& result) {
+    if (light.type != scene::LightType::Point || bounds.empty())
+        return;
+    const glm::vec3 p = light.position;
+    const bool outside = glm::any(glm::lessThan(p, bounds.min)) || glm::any(glm::greaterThan(p, bounds.max));
+    const glm::vec3 towardsScene = bounds.center() - p;
+    if (!outside || glm::length(towardsScene) <= 0.0f)
+        return;
+    light.type = scene::LightType::Directional;
+    light.direction = glm::normalize(towardsScene);
+    result.warnings.push_back(file.string() + ": light '" + light.name +
+                              "' is a point light outside the scene; imported as a "
+                              "directional light (a sun) shining towards the scene's centre");
+}
+
+scene::Light convertLight(const aiLight& l, const glm::mat4& world, const glm::vec3& localPosition) {
+    scene::Light light;
+    light.name = l.mName.C_Str();
+    light.type = l.mType == aiLightSource_DIRECTIONAL ? scene::LightType::Directional
+                 : l.mType == aiLightSource_SPOT      ? scene::LightType::Spot
+                                                      : scene::LightType::Point;
+    const glm::vec3 colour = toVec3(l.mColorDiffuse);
+    const float peak = std::max({colour.r, colour.g, colour.b});
+    light.intensity = peak > 0.0f && std::isfinite(peak) ? peak : 1.0f;
+    light.color = peak > 0.0f && std::isfinite(peak) ? colour / peak : glm::vec3(1.0f);
+    light.position = glm::vec3(world * glm::vec4(localPosition, 1.0f));
+    const glm::vec3 direction = glm::mat3(world) * toVec3(l.mDirection);
+    if (glm::length(direction) > 0.0f && finite(direction))
+        light.direction = glm::normalize(direction);
+    if (light.type == scene::LightType::Spot) {
+        light.outerConeAngle = std::clamp(l.mAngleOuterCone, 0.0f, 1.5707f);
+        light.innerConeAngle = std::clamp(l.mAngleInnerCone, 0.0f, light.outerConeAngle);
+    }
+    return light;
+}
+
+scene::Camera convertCamera(const aiCamera& c, const glm::mat4& world, const glm::vec3& localPosition) {
+    scene::Camera cam;
+    cam.name = c.mName.C_Str();
+    cam.position = glm::vec3(world * glm::vec4(localPosition, 1.0f));
+    const glm::vec3 look = glm::mat3(world) * toVec3(c.mLookAt);
+    cam.target = cam.position + (glm::length(look) > 0.0f ? glm::normalize(look) : glm::vec3(0, 0, -1));
+    // Some readers leave mUp at its default in the file's own axes (3DS is Z up,
+    // so (0, 1, 0) ends up horizontal): an up more than 60 degrees from +Y is
+    // not believed, and +Y, our up, is used instead.
+    const glm::vec3 up = glm::mat3(world) * toVec3(c.mUp);
+    const bool believable = glm::length(up) > 0.0f && finite(up) && glm::normalize(up).y > 0.5f;
+    cam.up = believable ? glm::normalize(up) : glm::vec3(0, 1, 0);
+    // Assimp's mHorizontalFOV is the half angle, centre line to the left border.
+    const float aspect = c.mAspect > 0.0f ? c.mAspect : 16.0f / 9.0f;
+    const float fovY = 2.0f * std::atan(std::tan(c.mHorizontalFOV) / aspect);
+    if (std::isfinite(fovY) && fovY > 0.0f && fovY < 3.1f)
+        cam.fovY = fovY;
+    return cam;
+}
+
+} // namespace
+
+bool assimpReads(const std::filesystem::path& file) {
+    Assimp::Importer importer;
+    return importer.IsExtensionSupported(file.extension().string());
+}
+
+scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file, const ImportOptions& options) {
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_LINE | aiPrimitiveType_POINT);
+    AssimpLogCapture log; // Assimp's own warnings ("failed to locate material ...") become ours
+    const aiScene* in = importer.ReadFile(
+        file.string(), aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!in || !in->mRootNode)
+        return makeError(ErrorCode::UnknownFormat, file.string(), "",
+                         std::string("Assimp could not read it: ") + importer.GetErrorString());
+    ImportResult result;
+    for (const std::string& message : log.messages())
+        result.warnings.push_back(file.string() + ": " + message);
+
+    TextureResolver resolver(textureFoldersFor(file, options.textureSearchPaths));
+    TextureSlots textures(file, resolver, result);
+    for (unsigned i = 0; i < in->mNumMaterials; ++i)
+        result.scene.materials.push_back(convertMaterial(*in->mMaterials[i], file, textures, result));
+    if (result.scene.materials.empty()) {
+        scene::Material fallback;
+        fallback.name = "default";
+        result.scene.materials.push_back(fallback);
+    }
+
+    std::vector<int> meshIndex(in->mNumMeshes, -1);
+    for (unsigned i = 0; i < in->mNumMeshes; ++i) {
+        scene::Mesh mesh = convertMesh(*in->mMeshes[i]);
+        if (mesh.indices.empty()) {
+            result.warnings.push_back(file.string() + ": mesh '" + mesh.name + "' has " +
+                                      std::to_string(mesh.positions.size()) + " vertices but no faces; skipped");
+            continue;
+        }
+        for (scene::Submesh& s : mesh.submeshes)
+            s.materialIndex = std::min<std::uint32_t>(s.materialIndex, std::uint32_t(result.scene.materials.size() - 1));
+        meshIndex[i] = int(result.scene.meshes.size());
+        result.scene.meshes.push_back(std::move(mesh));
+    }
+    NodeConverter nodes(meshIndex, result.scene);
+    nodes.add(*in->mRootNode, -1, glm::mat4(1.0f));
+    const scene::Bounds bounds = result.scene.worldBounds();
+    for (unsigned i = 0; i < in->mNumLights; ++i) {
+        const aiLight& l = *in->mLights[i];
+        scene::Light light = convertLight(l, nodes.worldOf(l.mName), nodes.localPosition(l.mName, l.mPosition));
+        sunFromDistantOmni(light, bounds, file, result);
+        result.scene.lights.push_back(light);
+    }
+    for (unsigned i = 0; i < in->mNumCameras; ++i) {
+        const aiCamera& c = *in->mCameras[i];
+        result.scene.cameras.push_back(
+            convertCamera(c, nodes.worldOf(c.mName), nodes.localPosition(c.mName, c.mPosition)));
+    }
+
+    result.stats.texturesFound = textures.foundCount();
+    result.stats.texturesMissing = textures.missingCount();
+    return result;
+}
+
+} // namespace lpv::importers
