@@ -1,5 +1,7 @@
 #include "lpv/importers/GltfImporter.h"
 
+#include "EmbeddedImages.h"
+
 #include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <map>
 
 namespace lpv::importers {
 
@@ -16,8 +20,15 @@ using scene::makeError;
 
 namespace {
 
-// Images are decoded later through OpenImageIO; tinygltf only records the URI.
-bool keepUriOnly(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are decoded later through OpenImageIO: tinygltf only records the
+// URI of external images; the bytes of embedded ones (data: URIs, .glb
+// buffer views) are kept to be written to the embedded-image cache.
+using EmbeddedBytes = std::map<int, std::vector<std::uint8_t>>;
+
+bool keepUriOrEmbeddedBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                            const unsigned char* bytes, int size, void* embedded) {
+    if (image->uri.empty() && bytes && size > 0)
+        (*static_cast<EmbeddedBytes*>(embedded))[index].assign(bytes, bytes + size);
     return true;
 }
 
@@ -40,7 +51,28 @@ struct Context {
     const tinygltf::Model& model;
     std::filesystem::path file;
     ImportResult& result;
+    const EmbeddedBytes& embedded;
 };
+
+// The cache file of an embedded image, or "" (counted as missing, with a warning).
+std::string embeddedImagePath(const Context& ctx, int source, const tinygltf::Image& image) {
+    const auto bytes = ctx.embedded.find(source);
+    if (bytes == ctx.embedded.end()) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": embedded image " + std::to_string(source) +
+                                      " has no data (placeholder used)");
+        ++ctx.result.stats.texturesMissing;
+        return {};
+    }
+    auto stored = storeEmbeddedImage(bytes->second, image.mimeType);
+    if (!stored) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": embedded image " + std::to_string(source) +
+                                      " could not be stored: " + stored.error().describe() + " (placeholder used)");
+        ++ctx.result.stats.texturesMissing;
+        return {};
+    }
+    ++ctx.result.stats.texturesFound;
+    return stored->string();
+}
 
 // Reads accessor `index` as `components` floats (or integer indices) per element, bounds checked.
 scene::Expected<std::vector<float>> readFloats(const Context& ctx, int index, int components, const std::string& what) {
@@ -119,12 +151,8 @@ std::string texturePath(const Context& ctx, int textureIndex) {
         return {};
     }
     const tinygltf::Image& image = m.images[std::size_t(source)];
-    if (image.uri.empty() || image.uri.starts_with("data:")) {
-        ctx.result.warnings.push_back(ctx.file.string() + ": image " + std::to_string(source) +
-                                      " is embedded; embedded images are not imported yet (placeholder used)");
-        ++ctx.result.stats.texturesMissing;
-        return {};
-    }
+    if (image.uri.empty() || image.uri.starts_with("data:"))
+        return embeddedImagePath(ctx, source, image);
     const std::string decoded = percentDecode(image.uri);
     const std::filesystem::path p = ctx.file.parent_path() / decoded;
     if (!std::filesystem::exists(p)) {
@@ -329,10 +357,14 @@ void addNode(const Context& ctx, int index, int parent, const glm::mat4& parentW
 
 scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, const ImportOptions&) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(keepUriOnly, nullptr);
+    EmbeddedBytes embedded;
+    loader.SetImageLoader(keepUriOrEmbeddedBytes, &embedded);
     tinygltf::Model model;
     std::string err, warn;
-    const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
+    // Binary by content ("glTF" magic), whatever the extension says.
+    char magic[4] = {};
+    std::ifstream(file, std::ios::binary).read(magic, 4);
+    const bool binary = std::string_view(magic, 4) == "glTF";
     const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
                            : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
     if (!ok)
@@ -340,7 +372,7 @@ scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, cons
     ImportResult result;
     if (!warn.empty())
         result.warnings.push_back(file.string() + ": " + warn);
-    Context ctx{model, file, result};
+    Context ctx{model, file, result, embedded};
     for (const tinygltf::Material& m : model.materials)
         result.scene.materials.push_back(convertMaterial(ctx, m));
     // Primitives without a material use the glTF default material.

@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace lpv;
 namespace fs = std::filesystem;
@@ -96,5 +100,106 @@ TEST(Importer, UnknownFormatAndMissingFile) {
     const fs::path dir = scratch("unknown");
     std::ofstream(dir / "notes.txt") << "hello";
     EXPECT_EQ(importers::importScene(dir / "notes.txt").error().code, scene::ErrorCode::UnknownFormat);
+    fs::remove_all(dir);
+}
+
+namespace {
+
+std::string readBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+std::string base64(const std::string& in) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t i = 0;
+    for (; i + 2 < in.size(); i += 3) {
+        const unsigned v = unsigned(std::uint8_t(in[i])) << 16 | unsigned(std::uint8_t(in[i + 1])) << 8 |
+                           unsigned(std::uint8_t(in[i + 2]));
+        out += {table[v >> 18], table[(v >> 12) & 63], table[(v >> 6) & 63], table[v & 63]};
+    }
+    if (i + 1 == in.size()) {
+        const unsigned v = unsigned(std::uint8_t(in[i])) << 16;
+        out += {table[v >> 18], table[(v >> 12) & 63], '=', '='};
+    } else if (i + 2 == in.size()) {
+        const unsigned v = unsigned(std::uint8_t(in[i])) << 16 | unsigned(std::uint8_t(in[i + 1])) << 8;
+        out += {table[v >> 18], table[(v >> 12) & 63], table[(v >> 6) & 63], '='};
+    }
+    return out;
+}
+
+void appendU32(std::string& out, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k)
+        out += char((v >> (8 * k)) & 0xff);
+}
+
+// Keeps the embedded-image cache of these tests out of the user's home.
+struct CacheDir {
+    fs::path path = scratch("cache");
+    CacheDir() { ::setenv("LPV_CACHE_DIR", path.c_str(), 1); }
+    ~CacheDir() {
+        ::unsetenv("LPV_CACHE_DIR");
+        fs::remove_all(path);
+    }
+};
+
+} // namespace
+
+TEST(GltfImporter, ImageInADataUriIsStoredAndFound) {
+    CacheDir cache;
+    const fs::path source = scenes() / "gltf-small/BoxTextured/glTF";
+    const fs::path dir = scratch("datauri");
+    nlohmann::json j = nlohmann::json::parse(readBytes(source / "BoxTextured.gltf"));
+    const std::string png = readBytes(source / "CesiumLogoFlat.png");
+    j["images"][0] = {{"uri", "data:image/png;base64," + base64(png)}};
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(readBytes(source / "BoxTextured0.bin"));
+    std::ofstream(dir / "embedded.gltf") << j.dump();
+    const auto r = importOk(dir / "embedded.gltf");
+    EXPECT_EQ(r.scene.triangleCount(), 12u);
+    EXPECT_EQ(r.stats.texturesFound, 1u);
+    EXPECT_EQ(r.stats.texturesMissing, 0u);
+    const fs::path texture = r.scene.materials.front().diffuseTexture;
+    EXPECT_EQ(texture.parent_path(), cache.path / "embedded-images");
+    EXPECT_EQ(texture.extension(), ".png");
+    EXPECT_EQ(readBytes(texture), png) << "the image's bytes, unchanged";
+    fs::remove_all(dir);
+}
+
+TEST(GltfImporter, GlbWithItsImageInTheBinaryChunk) {
+    CacheDir cache;
+    const fs::path source = scenes() / "gltf-small/BoxTextured/glTF";
+    std::string bin = readBytes(source / "BoxTextured0.bin");
+    const std::string png = readBytes(source / "CesiumLogoFlat.png");
+    while (bin.size() % 4)
+        bin += '\0';
+    nlohmann::json j = nlohmann::json::parse(readBytes(source / "BoxTextured.gltf"));
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", png.size()}});
+    j["images"][0] = {{"bufferView", j["bufferViews"].size() - 1}, {"mimeType", "image/png"}};
+    bin += png;
+    while (bin.size() % 4)
+        bin += '\0';
+    j["buffers"][0] = {{"byteLength", bin.size()}};
+    std::string json = j.dump();
+    while (json.size() % 4)
+        json += ' ';
+    std::string glb = "glTF";
+    appendU32(glb, 2);
+    appendU32(glb, std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    appendU32(glb, std::uint32_t(json.size()));
+    glb += "JSON" + json;
+    appendU32(glb, std::uint32_t(bin.size()));
+    glb += std::string("BIN\0", 4) + bin;
+    const fs::path dir = scratch("glb");
+    std::ofstream(dir / "box.glb", std::ios::binary) << glb;
+    const auto r = importOk(dir / "box.glb");
+    EXPECT_EQ(r.scene.triangleCount(), 12u);
+    EXPECT_EQ(r.stats.texturesFound, 1u);
+    EXPECT_EQ(readBytes(r.scene.materials.front().diffuseTexture), png);
+    // The same file named .gltf is still read as binary: the content decides.
+    fs::copy_file(dir / "box.glb", dir / "misnamed.gltf");
+    EXPECT_EQ(importOk(dir / "misnamed.gltf").scene.triangleCount(), 12u);
     fs::remove_all(dir);
 }
