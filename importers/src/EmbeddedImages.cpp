@@ -54,7 +54,7 @@ fs::path embeddedImageFolder() {
 scene::Expected<fs::path> storeEmbeddedImage(std::span<const std::uint8_t> bytes, const std::string& mimeType) {
     const std::string_view content(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     char name[32];
-    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(scene::fnv1a64(content)));
+    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(scene::contentHash64(content)));
     const fs::path folder = embeddedImageFolder();
     const fs::path file = folder / (std::string(name) + extensionFor(bytes, mimeType));
     std::error_code ec;

@@ -5,6 +5,8 @@
 // costs at most a copy of itself and yields an Error, never a crash.
 #include "lpv/scene/MeshAsset.h"
 
+#include <xxhash.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -319,6 +321,12 @@ Expected<Mesh> decodePayload(std::string_view bytes, const Header& h, const Layo
 
 } // namespace
 
+std::uint64_t contentHash64(std::string_view bytes) { return XXH3_64bits(bytes.data(), bytes.size()); }
+
+std::uint64_t payloadChecksum(std::uint32_t version, std::string_view payload) {
+    return version == 1 ? fnv1a64(payload) : contentHash64(payload);
+}
+
 std::uint64_t fnv1a64(std::string_view bytes) {
     std::uint64_t hash = 0xcbf29ce484222325ull; // FNV-1a 64-bit offset basis
     for (const char c : bytes) {
@@ -364,7 +372,7 @@ std::string encodeMeshAsset(const Mesh& mesh) {
     storeAt(out, kSubmeshCountOffset, static_cast<std::uint32_t>(mesh.submeshes.size()));
     storeAt(out, kReservedOffset, std::uint32_t{0});
     storeAt(out, kPayloadSizeOffset, static_cast<std::uint64_t>(payload.size()));
-    storeAt(out, kChecksumOffset, fnv1a64(payload));
+    storeAt(out, kChecksumOffset, payloadChecksum(kMeshAssetVersion, payload));
     return out;
 }
 
@@ -377,10 +385,11 @@ Expected<Mesh> decodeMeshAsset(std::string_view bytes, const std::string& fileNa
         return std::unexpected(r.error());
     // The checksum comes before any structural check of the payload, so
     // damage reads as damage and not as some odd value it happens to produce.
-    const std::uint64_t actual = fnv1a64(bytes.substr(kMeshAssetHeaderSize));
+    const std::uint64_t actual = payloadChecksum(header->version, bytes.substr(kMeshAssetHeaderSize));
     if (actual != header->checksum)
         return makeError(ErrorCode::ChecksumMismatch, fileName, atByte(kChecksumOffset),
-                         concat("the payload's FNV-1a checksum is ", hex64(actual), ", but the header records ",
+                         concat("the payload's ", header->version == 1 ? "FNV-1a" : "XXH3", " checksum is ",
+                                hex64(actual), ", but the header records ",
                                 hex64(header->checksum), "; the file is damaged"));
     return decodePayload(bytes, *header, layout, fileName, materialCount);
 }

@@ -55,7 +55,7 @@ Expected<Mesh> loadMesh(const fs::path& projectFile, const detail::MeshReference
 // the new project file over the old one is the single moment the saved
 // project changes, and a save that fails before it changes nothing.
 std::string assetPathFor(const fs::path& projectFile, std::size_t i, std::string_view bytes) {
-    return utf8(projectFile.stem()) + ".assets/meshes/" + std::to_string(i) + "-" + hex16(fnv1a64(bytes)) +
+    return utf8(projectFile.stem()) + ".assets/meshes/" + std::to_string(i) + "-" + hex16(contentHash64(bytes)) +
            ".lpvmesh";
 }
 

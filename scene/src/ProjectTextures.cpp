@@ -69,7 +69,7 @@ Expected<TextureCopyStats> copyTexturesIntoProject(Scene& scene, const fs::path&
             if (!bytes)
                 return std::unexpected(bytes.error());
             // One copy per content: the first name it was met under is kept.
-            const std::uint64_t hash = fnv1a64(*bytes);
+            const std::uint64_t hash = contentHash64(*bytes);
             const auto [stored, isNew] =
                 storedAs.try_emplace(hash, relativeFolder + hex16(hash) + "-" + utf8(source.filename()));
             const std::string& relative = stored->second;

@@ -54,7 +54,7 @@ std::uint32_t readU32(const std::string& bytes, std::size_t at) {
 }
 
 struct RawAsset {
-    std::uint32_t version = 1;
+    std::uint32_t version = kMeshAssetVersion;
     std::uint32_t flags = 0;
     std::uint32_t vertexCount = 0;
     std::uint32_t indexCount = 0;
@@ -70,7 +70,7 @@ struct RawAsset {
         putU32(out, submeshCount);
         putU32(out, 0); // reserved
         putU64(out, payload.size());
-        putU64(out, fnv1a64(payload));
+        putU64(out, payloadChecksum(version, payload));
         return out + payload;
     }
 };
@@ -207,8 +207,29 @@ TEST(MeshAsset, NewerVersionIsRejectedWithBothVersions) {
     const Error e = decodeError(a.bytes());
     EXPECT_EQ(e.code, ErrorCode::NewerVersion);
     EXPECT_EQ(e.location, "byte offset 8");
-    EXPECT_NE(e.message.find("version 2"), std::string::npos) << e.message;
-    EXPECT_NE(e.message.find("version 1"), std::string::npos) << e.message;
+    EXPECT_NE(e.message.find("version " + std::to_string(kMeshAssetVersion + 1)), std::string::npos) << e.message;
+    EXPECT_NE(e.message.find("version " + std::to_string(kMeshAssetVersion)), std::string::npos) << e.message;
+}
+
+TEST(MeshAsset, VersionOneAssetsWithTheirFnvChecksumStillLoad) {
+    RawAsset a = triangleAsset();
+    a.version = 1;
+    ASSERT_EQ(payloadChecksum(1, a.payload), fnv1a64(a.payload));
+    const auto decoded = decodeMeshAsset(a.bytes(), "old.lpvmesh", 1);
+    ASSERT_TRUE(decoded.has_value()) << decoded.error().describe();
+    EXPECT_EQ(*decoded, triangleMesh());
+    std::string damaged = a.bytes();
+    damaged.back() ^= 1;
+    const auto bad = decodeMeshAsset(damaged, "old.lpvmesh", 1);
+    ASSERT_FALSE(bad.has_value());
+    EXPECT_EQ(bad.error().code, ErrorCode::ChecksumMismatch);
+    EXPECT_NE(bad.error().message.find("FNV-1a"), std::string::npos) << bad.error().message;
+}
+
+TEST(MeshAsset, ContentHashIsXxh3) {
+    // Reference values of XXH3_64bits with seed 0 (xxHash's own test vectors).
+    EXPECT_EQ(contentHash64(""), 0x2D06800538D394C2ull);
+    EXPECT_NE(contentHash64("a"), contentHash64("b"));
 }
 
 TEST(MeshAsset, AnyFlippedPayloadByteIsChecksumMismatch) {

@@ -33,7 +33,7 @@ void putU32(std::string& bytes, std::size_t at, std::uint32_t v) {
 
 // After editing an asset's payload: a valid checksum, so only the edit is wrong.
 void resealChecksum(std::string& asset) {
-    const std::uint64_t sum = fnv1a64(std::string_view(asset).substr(kMeshAssetHeaderSize));
+    const std::uint64_t sum = contentHash64(std::string_view(asset).substr(kMeshAssetHeaderSize));
     putU32(asset, 40, static_cast<std::uint32_t>(sum));
     putU32(asset, 44, static_cast<std::uint32_t>(sum >> 32));
 }
@@ -458,7 +458,7 @@ TEST_F(ProjectBadInput, FailedSaveLeavesThePreviousProjectIntact) {
     // Block the second mesh's asset with a folder, so the save fails after
     // it has written the first one.
     const std::string blocked =
-        "1-" + hex16(fnv1a64(encodeMeshAsset(next.scene.meshes[1]))) + ".lpvmesh";
+        "1-" + hex16(contentHash64(encodeMeshAsset(next.scene.meshes[1]))) + ".lpvmesh";
     fs::create_directories(dir_ / "good.assets" / "meshes" / blocked / "inside");
     const Snapshot before = snapshot(dir_);
 

@@ -9,7 +9,10 @@
 
 namespace lpv::scene {
 
-inline constexpr std::uint32_t kMeshAssetVersion = 1;
+// Version 2 checksums the payload with XXH3-64 (xxHash), which reads memory
+// about 10x faster than version 1's byte-wise FNV-1a 64; version 1 assets
+// still load.
+inline constexpr std::uint32_t kMeshAssetVersion = 2;
 // Bytes before the payload: magic, version, flags, four counts, payload size, checksum.
 inline constexpr std::size_t kMeshAssetHeaderSize = 48;
 
@@ -18,6 +21,12 @@ std::string encodeMeshAsset(const Mesh& mesh);
 Expected<Mesh> decodeMeshAsset(std::string_view bytes, const std::string& fileName,
                                std::size_t materialCount);
 
+// XXH3-64: the asset checksum (version 2) and the content hash in asset and
+// texture file names.
+std::uint64_t contentHash64(std::string_view bytes);
+// The checksum an asset of `version` records for its payload.
+std::uint64_t payloadChecksum(std::uint32_t version, std::string_view payload);
+// Version 1's checksum.
 std::uint64_t fnv1a64(std::string_view bytes);
 
 // The checks decodeMeshAsset makes, on a mesh in memory: vertex streams empty
