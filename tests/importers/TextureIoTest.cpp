@@ -100,3 +100,44 @@ TEST(TextureIo, MissingOrCorruptFileBecomesThePlaceholderWithAWarning) {
     EXPECT_FALSE(good.placeholder);
     EXPECT_TRUE(good.warning.empty());
 }
+
+// An uncompressed 32-bit DDS written from the format's documentation (no
+// DDS sample exists in ../shared/scenes): header, then BGRA pixels.
+TEST(TextureIo, UncompressedDds) {
+    auto u32 = [](std::string& out, std::uint32_t v) {
+        for (int k = 0; k < 4; ++k)
+            out += char((v >> (8 * k)) & 0xff);
+    };
+    std::string dds = "DDS ";
+    u32(dds, 124);                            // header size
+    u32(dds, 0x1 | 0x2 | 0x4 | 0x1000);       // CAPS | HEIGHT | WIDTH | PIXELFORMAT
+    u32(dds, 2);                              // height
+    u32(dds, 2);                              // width
+    u32(dds, 2 * 4);                          // pitch
+    u32(dds, 0);                              // depth
+    u32(dds, 0);                              // mip levels
+    for (int i = 0; i < 11; ++i)
+        u32(dds, 0);                          // reserved
+    u32(dds, 32);                             // pixel format size
+    u32(dds, 0x40 | 0x1);                     // RGB | ALPHAPIXELS
+    u32(dds, 0);                              // no FourCC
+    u32(dds, 32);                             // bits per pixel
+    u32(dds, 0x00ff0000);                     // red mask
+    u32(dds, 0x0000ff00);                     // green mask
+    u32(dds, 0x000000ff);                     // blue mask
+    u32(dds, 0xff000000);                     // alpha mask
+    u32(dds, 0x1000);                         // caps: texture
+    for (int i = 0; i < 4; ++i)
+        u32(dds, 0);                          // caps2..4, reserved
+    // Pixels (r, g, b, a) = (200, 100, 50, 255), (0, 255, 0, 128), (0, 0, 255, 255), (10, 20, 30, 40).
+    for (std::uint32_t argb : {0xffc86432u, 0x8000ff00u, 0xff0000ffu, 0x280a141eu})
+        u32(dds, argb);
+    const fs::path file = fs::temp_directory_path() / ("lpv-texture-" + std::to_string(::getpid()) + ".dds");
+    std::ofstream(file, std::ios::binary) << dds;
+    const auto img = readOk(file);
+    EXPECT_EQ(img.width, 2);
+    EXPECT_EQ(img.height, 2);
+    const std::vector<std::uint8_t> expected = {200, 100, 50, 255, 0, 255, 0, 128, 0, 0, 255, 255, 10, 20, 30, 40};
+    EXPECT_EQ(img.pixels, expected);
+    fs::remove(file);
+}
