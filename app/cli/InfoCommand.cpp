@@ -1,9 +1,12 @@
 #include "Cli.h"
 
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectTextures.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <set>
 
 namespace lpv::cli {
 
@@ -33,6 +36,16 @@ int runInfo(Args args) {
                 "cameras     %zu\npaths       %zu\n",
                 s.objects.size(), s.meshes.size(), s.triangleCount(), s.materials.size(), s.lights.size(),
                 s.cameras.size(), s.cameraPaths.size());
+    // Texture references, and those whose file is not there (drawn as a placeholder).
+    std::set<std::string> textures, missing;
+    const std::filesystem::path folder = std::filesystem::path(pos.front()).parent_path();
+    for (const scene::Material& m : s.materials)
+        for (const std::string* slot : scene::textureSlots(m))
+            if (!slot->empty() && textures.insert(*slot).second && !std::filesystem::is_regular_file(folder / *slot))
+                missing.insert(*slot);
+    std::printf("textures    %zu (%zu missing)\n", textures.size(), missing.size());
+    for (const std::string& name : missing)
+        std::printf("missing     %s\n", name.c_str());
     const scene::Bounds b = s.worldBounds();
     if (!b.empty())
         std::printf("bounds      (%.3f, %.3f, %.3f) .. (%.3f, %.3f, %.3f)\n", b.min.x, b.min.y, b.min.z, b.max.x,

@@ -72,6 +72,9 @@ TEST(ImportCommand, SibenikFourDsWithAllItsTexturesRenders) {
             EXPECT_TRUE(fs::is_regular_file(dir / m.diffuseTexture)) << m.diffuseTexture;
         }
     EXPECT_GE(textures, 4u);
+    const RunResult info = runLpv("info " + quoted(project));
+    // The 9 files the importer found: 3 diffuse maps with their _ddn and _spec companions.
+    EXPECT_NE(info.output.find("textures    9 (0 missing)"), std::string::npos) << info.output;
 
     const fs::path png = dir / "sibenik.png";
     const RunResult render = runLpv("render " + quoted(project) + " -o " + quoted(png) + " --width 96 --height 64");
