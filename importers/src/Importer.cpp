@@ -82,8 +82,25 @@ scene::Expected<ImportResult> readFormat(Format format, const std::filesystem::p
                          "' files (4ds, glTF .gltf/.glb, and what Assimp reads: .obj, .3ds, .fbx, .dae, .ply, ...)");
 }
 
+// Colours below zero (a 4ds or MTL can store them) mean nothing to a
+// renderer and the project format refuses them: they become 0, with a warning.
+void clampNegativeColours(const std::filesystem::path& file, ImportResult& result) {
+    for (scene::Material& m : result.scene.materials) {
+        bool clamped = false;
+        for (glm::vec3* colour : {&m.diffuseColor, &m.specularColor, &m.emissive}) {
+            const glm::vec3 fixed = glm::max(*colour, glm::vec3(0.0f));
+            clamped |= fixed != *colour;
+            *colour = fixed;
+        }
+        if (clamped)
+            result.warnings.push_back(file.string() + ": material '" + m.name +
+                                      "' has negative colour components; they were set to 0");
+    }
+}
+
 // The same clean-up for every format, then the summary's counts.
 void finishImport(const std::filesystem::path& file, ImportResult& result) {
+    clampNegativeColours(file, result);
     std::size_t repairedNormals = 0;
     for (scene::Mesh& mesh : result.scene.meshes) {
         const MeshCleanupStats s = cleanupMesh(mesh);

@@ -849,6 +849,36 @@ public:
     std::string token;
 };
 
+// Far deeper than any project file (the format nests 6 levels). nlohmann
+// parses any depth without recursion, but copying or dumping a document
+// recurses once per level: 50,000 nested arrays (100 KB) overflowed the stack
+// in upgradeToCurrentVersion (docs/fuzzing.md).
+constexpr std::size_t kMaxJsonDepth = 64;
+
+// The byte offset of the first '[' or '{' of valid JSON text that opens level
+// kMaxJsonDepth + 1, if there is one.
+std::optional<std::size_t> findTooDeep(const std::string& text) {
+    std::size_t depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i; // the escaped character cannot end the string
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth)
+                return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
 // "[json.exception.parse_error.101] parse error at line 1, column 8: ..." -> "line 1, column 8: ..."
 std::string withoutExceptionPrefix(const std::string& what) {
     const std::string marker = "parse error at ";
@@ -862,7 +892,12 @@ Expected<Json> parseProjectText(const std::string& text, const std::string& file
     if (text.empty())
         return makeError(ErrorCode::Truncated, file, atByte(0), "the file is empty");
     try {
-        return Json::parse(text);
+        Json document = Json::parse(text);
+        if (const auto at = findTooDeep(text))
+            return makeError(ErrorCode::InvalidValue, file, atByte(*at),
+                             concat("the JSON nests more than ", kMaxJsonDepth,
+                                    " arrays and objects inside each other; no project file does"));
+        return document;
     } catch (const Json::parse_error& e) {
         // nlohmann counts bytes from 1; an error past the last byte means the text stopped early.
         const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;

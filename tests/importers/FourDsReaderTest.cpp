@@ -857,3 +857,26 @@ TEST(FourDsReader, RandomByteDamageNeverThrowsOrCrashes) {
 }
 
 } // namespace
+
+// A stored colour below zero would make the project unsavable (colours are
+// >= 0 there); importScene sets it to 0 and says so.
+TEST(FourDsReader, NegativeColourIsClampedByTheImportWithAWarning) {
+    Writer w;
+    header(w);
+    w.u16(1);
+    w.u32(0).vec3(0.1f, 0.1f, 0.1f).vec3(-0.5f, 0.25f, 0.125f).vec3(0, -1, 0).f32(1.0f);
+    w.str("");
+    w.u16(1);
+    frame(w, 1, 0, 0, "tri");
+    standardMesh(w);
+    w.u8(0);
+    TempDir dir;
+    const fs::path file = dir.path / "negative.4ds";
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(w.b.data()), std::streamsize(w.b.size()));
+    const auto r = lpv::importers::importScene(file);
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    ASSERT_FALSE(r->scene.materials.empty());
+    EXPECT_EQ(r->scene.materials[0].diffuseColor, glm::vec3(0.0f, 0.25f, 0.125f));
+    EXPECT_EQ(r->scene.materials[0].emissive, glm::vec3(0.0f));
+    EXPECT_EQ(countWarnings(*r, "negative colour"), 1u);
+}

@@ -217,6 +217,25 @@ TEST_F(ProjectBadInput, JsonArrayIsUnknownFormat) {
     EXPECT_EQ(e.file, bad_.string());
 }
 
+// Found while fuzzing the loader (docs/fuzzing.md): copying the document
+// recursed once per nesting level, so deeply nested arrays overflowed the stack.
+TEST_F(ProjectBadInput, DeeplyNestedJsonIsInvalidValue) {
+    const std::string start = "{\"format\": \"lpvstudio-project\", \"version\": 1, \"name\": ";
+    writeFile(bad_, start + std::string(200000, '[') + std::string(200000, ']') + "}");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::InvalidValue);
+    EXPECT_EQ(e.file, bad_.string());
+    EXPECT_EQ(e.location, "byte offset " + std::to_string(start.size() + 63)) << "the 65th level";
+    EXPECT_TRUE(contains(e.message, "more than 64")) << e.message;
+}
+
+TEST_F(ProjectBadInput, BracketsInStringsAreNotNesting) {
+    editBad("\"good\"", "\"\\\"" + std::string(100, '[') + "\"");
+    const auto loaded = loadProject(bad_);
+    ASSERT_TRUE(loaded) << loaded.error().describe();
+    EXPECT_EQ(loaded->name, "\"" + std::string(100, '['));
+}
+
 TEST_F(ProjectBadInput, NewerVersionSaysWhichVersionsThisBuildReads) {
     editBad("\"version\": 1,", "\"version\": 2,");
     const Error e = loadFails(bad_);

@@ -1,0 +1,120 @@
+#pragma once
+// What a successful load promises the renderer, checked on every scene a
+// fuzz target gets back: finite numbers in materials, lights and cameras;
+// meshes that pass validateMesh (indices below the vertex count, submeshes
+// inside the index buffer with existing materials, finite values); object
+// mesh/LOD/parent indices in range, parent chains without cycles, finite
+// transforms. A broken promise aborts, so libFuzzer reports the input like
+// any crash.
+#include "lpv/scene/MeshAsset.h"
+#include "lpv/scene/Scene.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace lpv::fuzz {
+
+[[noreturn]] inline void invariantBroken(const std::string& what) {
+    std::fprintf(stderr, "==fuzz== invariant broken: %s\n", what.c_str());
+    std::abort();
+}
+
+inline bool isIndexOf(int index, std::size_t size) {
+    return index >= -1 && (index < 0 || static_cast<std::size_t>(index) < size);
+}
+
+inline void checkFinite(float v, const std::string& what) {
+    if (!std::isfinite(v))
+        invariantBroken(what + " = " + std::to_string(v) + " is not finite");
+}
+
+inline void checkFinite(const glm::vec3& v, const std::string& what) {
+    for (int c = 0; c < 3; ++c)
+        checkFinite(v[c], what + "[" + std::to_string(c) + "]");
+}
+
+inline void checkScene(const scene::Scene& s, const std::string& file) {
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+        const scene::Material& m = s.materials[i];
+        const std::string at = "materials[" + std::to_string(i) + "].";
+        checkFinite(m.diffuseColor, at + "diffuseColor");
+        checkFinite(m.specularColor, at + "specularColor");
+        checkFinite(m.emissive, at + "emissive");
+        checkFinite(m.shininess, at + "shininess");
+        checkFinite(m.metallic, at + "metallic");
+        checkFinite(m.roughness, at + "roughness");
+        checkFinite(m.opacity, at + "opacity");
+        checkFinite(m.alphaCutoff, at + "alphaCutoff");
+        checkFinite(m.translucency, at + "translucency");
+        checkFinite(m.glossiness, at + "glossiness");
+    }
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const scene::Light& l = s.lights[i];
+        const std::string at = "lights[" + std::to_string(i) + "].";
+        checkFinite(l.color, at + "color");
+        checkFinite(l.intensity, at + "intensity");
+        checkFinite(l.position, at + "position");
+        checkFinite(l.direction, at + "direction");
+        checkFinite(l.range, at + "range");
+        checkFinite(l.innerConeAngle, at + "innerConeAngle");
+        checkFinite(l.outerConeAngle, at + "outerConeAngle");
+    }
+    for (std::size_t i = 0; i < s.cameras.size(); ++i) {
+        const scene::Camera& c = s.cameras[i];
+        const std::string at = "cameras[" + std::to_string(i) + "].";
+        checkFinite(c.position, at + "position");
+        checkFinite(c.target, at + "target");
+        checkFinite(c.up, at + "up");
+        checkFinite(c.fovY, at + "fovY");
+        checkFinite(c.nearPlane, at + "nearPlane");
+        checkFinite(c.farPlane, at + "farPlane");
+    }
+
+    for (std::size_t i = 0; i < s.meshes.size(); ++i)
+        if (auto valid = scene::validateMesh(s.meshes[i], file, "meshes[" + std::to_string(i) + "]",
+                                             s.materials.size());
+            !valid)
+            invariantBroken("loaded mesh fails validateMesh: " + valid.error().describe());
+
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        const scene::Object& o = s.objects[i];
+        const std::string label = "objects[" + std::to_string(i) + "]";
+        if (!isIndexOf(o.mesh, s.meshes.size()))
+            invariantBroken(label + ".mesh = " + std::to_string(o.mesh) + " of " + std::to_string(s.meshes.size()));
+        for (const scene::LodLevel& lod : o.lods)
+            if (!isIndexOf(lod.mesh, s.meshes.size()))
+                invariantBroken(label + " has a LOD with mesh " + std::to_string(lod.mesh));
+        if (!isIndexOf(o.parent, s.objects.size()))
+            invariantBroken(label + ".parent = " + std::to_string(o.parent));
+        const scene::Transform& t = o.transform;
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(t.translation[c]) || !std::isfinite(t.scale[c]))
+                invariantBroken(label + " has a non-finite translation or scale");
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(t.rotation[c]))
+                invariantBroken(label + " has a non-finite rotation");
+    }
+
+    // Parent chains end at a root: each object is walked once (0 = unvisited,
+    // 1 = on the chain being walked, 2 = reaches a root).
+    std::vector<unsigned char> state(s.objects.size(), 0);
+    std::vector<std::size_t> chain;
+    for (std::size_t start = 0; start < s.objects.size(); ++start) {
+        chain.clear();
+        int at = static_cast<int>(start);
+        while (at >= 0 && state[static_cast<std::size_t>(at)] == 0) {
+            state[static_cast<std::size_t>(at)] = 1;
+            chain.push_back(static_cast<std::size_t>(at));
+            at = s.objects[static_cast<std::size_t>(at)].parent;
+        }
+        if (at >= 0 && state[static_cast<std::size_t>(at)] == 1)
+            invariantBroken("objects[" + std::to_string(at) + "] is its own ancestor");
+        for (const std::size_t c : chain)
+            state[c] = 2;
+    }
+}
+
+} // namespace lpv::fuzz
