@@ -7,11 +7,7 @@ in vec2 vUv;
 
 out vec4 outColor;
 
-const int MAX_LIGHTS = 8;
-const int LIGHT_DIRECTIONAL = 0;
-const int LIGHT_POINT = 1;
-const int LIGHT_SPOT = 2;
-const float PI = 3.14159265358979;
+#include "common.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];

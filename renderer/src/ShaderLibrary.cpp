@@ -25,9 +25,20 @@ std::vector<std::string> embeddedShaderNames() {
 }
 
 std::string formatShaderLog(std::string_view log, std::string_view fileName) {
-    // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...".
-    static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\):\s*(.*)$)");
-    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
+    return formatShaderLog(log, std::vector<std::string>{std::string(fileName)});
+}
+
+std::string formatShaderLog(std::string_view log, const std::vector<std::string>& fileNames) {
+    // Mesa: "0:12(5): error: ...", NVIDIA: "0(12) : error C0000: ...". The
+    // leading number is the source-string number that `#line N K` sets: 0 is
+    // the stage file itself, K >= 1 the K-th file it includes.
+    static const std::regex mesa(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    const std::string fallback = fileNames.empty() ? std::string("shader") : fileNames.front();
+    auto nameOf = [&](const std::string& number) -> const std::string& {
+        const std::size_t k = std::size_t(std::stoul(number));
+        return k < fileNames.size() ? fileNames[k] : fallback;
+    };
     std::istringstream in{std::string(log)};
     std::ostringstream out;
     std::string line;
@@ -36,9 +47,9 @@ std::string formatShaderLog(std::string_view log, std::string_view fileName) {
             continue;
         std::smatch m;
         if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia))
-            out << fileName << ":" << m[1] << ": " << m[2] << "\n";
+            out << nameOf(m[1]) << ":" << m[2] << ": " << m[3] << "\n";
         else
-            out << fileName << ": " << line << "\n";
+            out << fallback << ": " << line << "\n";
     }
     return out.str();
 }
@@ -68,20 +79,56 @@ GLenum stageForFile(const std::string& name) {
 
 } // namespace
 
+scene::Expected<std::string> expandIncludes(std::string_view source, std::vector<std::string>& fileNames) {
+    // One level of `#include "name.glsl"` from the embedded shaders. Each
+    // included file gets its own source-string number, so errors inside it
+    // name it; `#line` restores the including file's numbering after it.
+    static const std::regex includeLine(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
+    std::istringstream in{std::string(source)};
+    std::ostringstream out;
+    std::string line;
+    int lineNumber = 0;
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        std::smatch m;
+        if (!std::regex_match(line, m, includeLine)) {
+            out << line << "\n";
+            continue;
+        }
+        const std::string name = m[1];
+        auto included = embeddedShader(name);
+        if (!included)
+            return makeError(ErrorCode::MissingAsset, fileNames.front() + ":" + std::to_string(lineNumber), "#include",
+                             "no embedded shader named '" + name + "'");
+        const std::string includedText(*included);
+        if (std::regex_search(includedText, std::regex(R"re((^|\n)\s*#\s*include\s)re")))
+            return makeError(ErrorCode::InvalidValue, "shaders/" + name, "#include",
+                             "included files may not include others (one level only)");
+        fileNames.push_back("shaders/" + name);
+        out << "#line 1 " << fileNames.size() - 1 << "\n" << *included << "\n";
+        out << "#line " << lineNumber + 1 << " 0\n";
+    }
+    return out.str();
+}
+
 scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stages) {
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
     std::string names;
     for (const ShaderStageSource& s : stages) {
+        std::vector<std::string> fileNames{s.fileName};
+        auto expanded = expandIncludes(s.source, fileNames);
+        if (!expanded)
+            return std::unexpected(expanded.error());
         Shader shader(glCreateShader(s.stage));
-        const char* src = s.source.c_str();
+        const char* src = expanded->c_str();
         glShaderSource(shader.id(), 1, &src, nullptr);
         glCompileShader(shader.id());
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
         if (!ok)
             return makeError(ErrorCode::InvalidValue, s.fileName, "compile",
-                             "shader does not compile:\n" + formatShaderLog(infoLog(shader.id(), false), s.fileName));
+                             "shader does not compile:\n" + formatShaderLog(infoLog(shader.id(), false), fileNames));
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
         names += (names.empty() ? "" : " + ") + s.fileName;

@@ -25,10 +25,18 @@ std::vector<std::string> embeddedShaderNames();
 // diagnostic, translated from the driver's log format (Mesa or NVIDIA).
 scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stages);
 // Convenience: stages from embedded files, chosen by extension (.vert, .frag, .geom, .comp).
+// Shared code lives in shaders/*.glsl and is pulled in with #include "name.glsl".
 scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames);
 
 // Rewrites a driver info log ("0:12(5): error: ..." or "0(12) : error ...")
 // into "file:12: error: ..." lines. Exposed for tests.
 std::string formatShaderLog(std::string_view log, std::string_view fileName);
+// The same with one name per GLSL source-string number (0 = the stage file,
+// K = the K-th file it #includes).
+std::string formatShaderLog(std::string_view log, const std::vector<std::string>& fileNames);
+
+// Replaces each `#include "name.glsl"` line with that embedded file, appending
+// its name to `fileNames` (whose first entry names the including file).
+scene::Expected<std::string> expandIncludes(std::string_view source, std::vector<std::string>& fileNames);
 
 } // namespace lpv::renderer
