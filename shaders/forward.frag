@@ -5,9 +5,14 @@ in vec3 vWorldPos;
 in vec3 vNormal;
 in vec2 vUv;
 
-out vec4 outColor;
+// Colour plus the camera G-buffer (normal, albedo) in one pass; depth is the
+// shared depth attachment.
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outNormal; // world normal, xyz in -1..1
+layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear
 
 #include "common.glsl"
+#include "shadow_sampling.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -16,14 +21,6 @@ uniform vec3 uLightPosition[MAX_LIGHTS];
 uniform vec3 uLightDirection[MAX_LIGHTS];    // direction the light travels
 uniform float uLightRange[MAX_LIGHTS];
 uniform vec2 uLightCosCone[MAX_LIGHTS];      // cos(outer), cos(inner)
-uniform int uShadowLight;                    // index of the light with the shadow map, -1 = none
-
-uniform sampler2DShadow uShadowMap;
-uniform mat4 uShadowViewProj;
-uniform float uShadowTexel;     // world-space size of one shadow texel at unit distance (or absolute for ortho)
-uniform float uShadowBias;      // in texels
-uniform float uShadowSoftness;  // PCF radius in texels
-uniform bool uShadowPerspective;
 
 uniform vec3 uCameraPos;
 uniform vec3 uDiffuse;
@@ -31,34 +28,6 @@ uniform vec3 uSpecular;
 uniform float uShininess;
 uniform vec3 uEmissive;
 uniform bool uTwoSided;
-
-float shadowFactor(vec3 worldPos, vec3 n, vec3 toLight, float dist) {
-    // Offset along the normal by the bias in world units of one texel at this
-    // distance, growing at grazing angles where one texel spans more depth.
-    float texelWorld = uShadowPerspective ? uShadowTexel * dist : uShadowTexel;
-    float cosTheta = clamp(dot(n, toLight), 0.0, 1.0);
-    float grazing = sqrt(1.0 - cosTheta * cosTheta);
-    vec3 p = worldPos + n * (uShadowBias * texelWorld * (1.0 + 2.0 * grazing));
-    vec4 clip = uShadowViewProj * vec4(p, 1.0);
-    if (clip.w <= 0.0)
-        return 1.0;
-    vec3 ndc = clip.xyz / clip.w;
-    vec3 uvz = ndc * 0.5 + 0.5;
-    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0)
-        return 1.0;
-    vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
-    float radius = max(uShadowSoftness, 0.0);
-    int taps = radius > 0.0 ? 2 : 0;
-    float sum = 0.0;
-    float count = 0.0;
-    for (int y = -taps; y <= taps; ++y)
-        for (int x = -taps; x <= taps; ++x) {
-            vec2 offset = vec2(x, y) * texel * (radius / 2.0);
-            sum += texture(uShadowMap, vec3(uvz.xy + offset, uvz.z));
-            count += 1.0;
-        }
-    return sum / count;
-}
 
 void main() {
     vec3 n = normalize(vNormal);
@@ -93,11 +62,13 @@ void main() {
         float ndotl = max(dot(n, l), 0.0);
         if (ndotl <= 0.0)
             continue;
-        float visibility = (i == uShadowLight) ? shadowFactor(vWorldPos, n, l, dist) : 1.0;
+        float visibility = shadowVisibility(i, vWorldPos, n, l, dist);
         vec3 h = normalize(l + v);
         // Normalised Blinn-Phong so the specular lobe conserves energy as shininess grows.
         float spec = (uShininess + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), uShininess);
         radiance += (uDiffuse / PI + uSpecular * spec) * irradianceColor * ndotl * visibility;
     }
     outColor = vec4(radiance, 1.0);
+    outNormal = vec4(n, 1.0);
+    outAlbedo = vec4(uDiffuse, 1.0);
 }

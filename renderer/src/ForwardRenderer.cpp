@@ -1,12 +1,15 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
+#include "FrameContext.h"
+#include "MaterialGpu.h"
+#include "ShadowPass.h"
 #include "lpv/renderer/ShaderLibrary.h"
-#include "ShadowView.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace lpv::renderer {
@@ -27,178 +30,7 @@ int tonemapperIndex(const std::string& name) {
     return 3;
 }
 
-} // namespace
-
-struct ForwardRenderer::Impl {
-    Program shadowProgram, forwardProgram, tonemapProgram;
-    std::unique_ptr<SceneGpu> sceneGpu;
-    GpuTimer timer;
-    VertexArray emptyVao;
-
-    int width = 0, height = 0;
-    Texture hdrColor, depth, display;
-    Framebuffer hdrFbo, displayFbo;
-
-    int shadowSize = 0;
-    Texture shadowMap;
-    Framebuffer shadowFbo;
-
-    Expected<void> ensureTargets(int w, int h) {
-        GLint maxSize = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-        if (w <= 0 || h <= 0 || w > maxSize || h > maxSize)
-            return makeError(ErrorCode::OutOfRange, "render", "size",
-                             std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(maxSize) +
-                                 " (GL_MAX_TEXTURE_SIZE)");
-        if (w == width && h == height)
-            return {};
-        width = w;
-        height = h;
-        hdrColor = createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(hdrColor.id(), 1, GL_RGBA16F, w, h);
-        depth = createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
-        display = createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(display.id(), 1, GL_RGBA8, w, h);
-        for (GLuint t : {hdrColor.id(), display.id()}) {
-            glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        }
-        hdrFbo = createFramebuffer();
-        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT0, hdrColor.id(), 0);
-        glNamedFramebufferTexture(hdrFbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-        displayFbo = createFramebuffer();
-        glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display.id(), 0);
-        return checkTargets("HDR/display targets");
-    }
-
-    Expected<void> ensureShadowMap(int size) {
-        GLint maxSize = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-        if (size > maxSize)
-            return makeError(ErrorCode::OutOfRange, "render", "parameters.shadow.mapSize",
-                             std::to_string(size) + " exceeds this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
-        if (size == shadowSize)
-            return {};
-        shadowSize = size;
-        shadowMap = createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(shadowMap.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTextureParameteri(shadowMap.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        shadowFbo = createFramebuffer();
-        glNamedFramebufferTexture(shadowFbo.id(), GL_DEPTH_ATTACHMENT, shadowMap.id(), 0);
-        glNamedFramebufferDrawBuffer(shadowFbo.id(), GL_NONE);
-        return checkTargets("shadow map");
-    }
-
-    static Expected<void> checkTargets(const char* what) {
-        if (glGetError() == GL_OUT_OF_MEMORY)
-            return makeError(ErrorCode::OutOfRange, "render", what, "the GPU ran out of memory allocating it");
-        return {};
-    }
-
-    void drawScene(GLuint program, const scene::Scene& scene, bool withMaterials) {
-        sceneGpu->bindGeometry();
-        const GLint model = loc(program, "uModel");
-        const GLint normalMatrix = loc(program, "uNormalMatrix");
-        for (const DrawItem& d : sceneGpu->draws()) {
-            glProgramUniformMatrix4fv(program, model, 1, GL_FALSE, glm::value_ptr(d.model));
-            if (withMaterials) {
-                glProgramUniformMatrix3fv(program, normalMatrix, 1, GL_FALSE, glm::value_ptr(d.normalMatrix));
-                const scene::Material& m = d.material < scene.materials.size() ? scene.materials[d.material]
-                                                                               : scene::Material{};
-                glProgramUniform3fv(program, loc(program, "uDiffuse"), 1, glm::value_ptr(m.diffuseColor));
-                glProgramUniform3fv(program, loc(program, "uSpecular"), 1, glm::value_ptr(m.specularColor));
-                glProgramUniform1f(program, loc(program, "uShininess"), std::max(m.shininess, 1.0f));
-                glProgramUniform3fv(program, loc(program, "uEmissive"), 1, glm::value_ptr(m.emissive));
-                glProgramUniform1i(program, loc(program, "uTwoSided"), m.twoSided ? 1 : 0);
-            }
-            glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
-                                     reinterpret_cast<const void*>(d.indexByteOffset), d.baseVertex);
-        }
-    }
-};
-
-ForwardRenderer::ForwardRenderer() : impl_(std::make_unique<Impl>()) {}
-ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
-ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
-ForwardRenderer::~ForwardRenderer() = default;
-
-Expected<ForwardRenderer> ForwardRenderer::create() {
-    ForwardRenderer r;
-    auto shadow = buildEmbeddedProgram({"shadow.vert", "shadow.frag"});
-    if (!shadow) return std::unexpected(shadow.error());
-    auto forward = buildEmbeddedProgram({"forward.vert", "forward.frag"});
-    if (!forward) return std::unexpected(forward.error());
-    auto tonemap = buildEmbeddedProgram({"fullscreen.vert", "tonemap.frag"});
-    if (!tonemap) return std::unexpected(tonemap.error());
-    r.impl_->shadowProgram = std::move(*shadow);
-    r.impl_->forwardProgram = std::move(*forward);
-    r.impl_->tonemapProgram = std::move(*tonemap);
-    r.impl_->emptyVao = createVertexArray();
-    return r;
-}
-
-void ForwardRenderer::setScene(const scene::Scene& scene) { impl_->sceneGpu = std::make_unique<SceneGpu>(scene); }
-
-GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
-int ForwardRenderer::width() const { return impl_->width; }
-int ForwardRenderer::height() const { return impl_->height; }
-
-Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::ParameterSet& params,
-                                       const scene::Camera& camera, int width, int height) {
-    Impl& d = *impl_;
-    if (!d.sceneGpu)
-        setScene(scene);
-    if (auto ok = d.ensureTargets(width, height); !ok)
-        return ok;
-    d.timer.beginFrame();
-
-    // --- Shadow map for the first shadow-casting directional or spot light ---
-    const int shadowLight = findShadowLight(scene);
-    ShadowView shadowView;
-    if (shadowLight >= 0) {
-        if (auto ok = d.ensureShadowMap(params.getInt("shadow.mapSize")); !ok)
-            return ok;
-        shadowView = makeShadowView(scene.lights[std::size_t(shadowLight)], scene.worldBounds(), d.shadowSize);
-        d.timer.begin("shadowMap");
-        glBindFramebuffer(GL_FRAMEBUFFER, d.shadowFbo.id());
-        glViewport(0, 0, d.shadowSize, d.shadowSize);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_CULL_FACE); // one-sided walls (the Cornell box) must still cast shadows
-        glClear(GL_DEPTH_BUFFER_BIT);
-        // Slope-scaled depth bias: receivers nearly parallel to the light's rays
-        // (the Cornell walls under a ceiling light) otherwise show acne stripes.
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(2.0f, 2.0f);
-        glUseProgram(d.shadowProgram.id());
-        glProgramUniformMatrix4fv(d.shadowProgram.id(), loc(d.shadowProgram.id(), "uLightViewProj"), 1, GL_FALSE,
-                                  glm::value_ptr(shadowView.viewProj));
-        d.drawScene(d.shadowProgram.id(), scene, false);
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        d.timer.end("shadowMap");
-    }
-
-    // --- Forward pass into HDR ---
-    d.timer.begin("forward");
-    const GLuint fp = d.forwardProgram.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, d.hdrFbo.id());
-    glViewport(0, 0, width, height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    const glm::vec3 sky = scene.sky.color * scene.sky.intensity;
-    glClearColor(sky.r, sky.g, sky.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(fp);
-    const glm::mat4 viewProj = camera.projection(float(width) / float(height)) * camera.view();
-    glProgramUniformMatrix4fv(fp, loc(fp, "uViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
-    glProgramUniform3fv(fp, loc(fp, "uCameraPos"), 1, glm::value_ptr(camera.position));
+void setLightUniforms(GLuint fp, const scene::Scene& scene) {
     const int lightCount = std::min<int>(int(scene.lights.size()), kMaxLights);
     glProgramUniform1i(fp, loc(fp, "uLightCount"), lightCount);
     for (int i = 0; i < lightCount; ++i) {
@@ -213,31 +45,150 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         glProgramUniform2f(fp, loc(fp, "uLightCosCone" + idx), std::cos(l.outerConeAngle),
                            std::cos(std::min(l.innerConeAngle, l.outerConeAngle - 1e-3f)));
     }
-    glProgramUniform1i(fp, loc(fp, "uShadowLight"), shadowLight);
-    glProgramUniformMatrix4fv(fp, loc(fp, "uShadowViewProj"), 1, GL_FALSE, glm::value_ptr(shadowView.viewProj));
-    glProgramUniform1f(fp, loc(fp, "uShadowTexel"), shadowView.texelWorld);
-    glProgramUniform1i(fp, loc(fp, "uShadowPerspective"), shadowView.perspective ? 1 : 0);
-    glProgramUniform1f(fp, loc(fp, "uShadowBias"), params.getFloat("shadow.bias"));
-    glProgramUniform1f(fp, loc(fp, "uShadowSoftness"), params.getFloat("shadow.softness"));
-    glProgramUniform1i(fp, loc(fp, "uShadowMap"), 0);
-    glBindTextureUnit(0, d.shadowMap.id());
-    d.drawScene(fp, scene, true);
-    d.timer.end("forward");
+}
 
-    // --- Tonemap to the display target ---
-    d.timer.begin("tonemap");
-    const GLuint tp = d.tonemapProgram.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, d.displayFbo.id());
-    glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(tp);
-    glProgramUniform1f(tp, loc(tp, "uExposure"), std::exp2(params.getFloat("output.exposure")));
-    glProgramUniform1i(tp, loc(tp, "uOperator"), tonemapperIndex(params.getEnum("output.tonemapper")));
-    glProgramUniform1i(tp, loc(tp, "uHdr"), 0);
-    glBindTextureUnit(0, d.hdrColor.id());
-    glBindVertexArray(d.emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    d.timer.end("tonemap");
+} // namespace
+
+struct ForwardRenderer::Impl {
+    Program forwardProgram, tonemapProgram;
+    std::optional<ShadowPass> shadows;
+    std::unique_ptr<SceneGpu> sceneGpu;
+    std::unique_ptr<MaterialGpu> materialGpu;
+    GpuTimer timer;
+    VertexArray emptyVao;
+    DrawListStats cameraStats;
+
+    // Camera targets: HDR colour + G-buffer (normal, albedo) + depth, and the display image.
+    int width = 0, height = 0;
+    Texture hdrColor, gNormal, gAlbedo, depth, display;
+    Framebuffer hdrFbo, displayFbo;
+
+    Expected<void> ensureTargets(int w, int h) {
+        GLint maxSize = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+        if (w <= 0 || h <= 0 || w > maxSize || h > maxSize)
+            return makeError(ErrorCode::OutOfRange, "render", "size",
+                             std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(maxSize) +
+                                 " (GL_MAX_TEXTURE_SIZE)");
+        if (w == width && h == height)
+            return {};
+        width = w;
+        height = h;
+        auto target = [&](Texture& t, GLenum format) {
+            t = createTexture(GL_TEXTURE_2D);
+            glTextureStorage2D(t.id(), 1, format, w, h);
+            glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        };
+        target(hdrColor, GL_RGBA16F);
+        target(gNormal, GL_RGBA16F);
+        target(gAlbedo, GL_RGBA8);
+        target(depth, GL_DEPTH_COMPONENT32F);
+        target(display, GL_RGBA8);
+        hdrFbo = createFramebuffer();
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT0, hdrColor.id(), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT1, gNormal.id(), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT2, gAlbedo.id(), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glNamedFramebufferDrawBuffers(hdrFbo.id(), 3, buffers);
+        displayFbo = createFramebuffer();
+        glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display.id(), 0);
+        if (glGetError() == GL_OUT_OF_MEMORY)
+            return makeError(ErrorCode::OutOfRange, "render", "camera targets", "the GPU ran out of memory allocating them");
+        return {};
+    }
+
+    void renderForward(const FrameContext& frame) {
+        frame.timer.begin("forward");
+        const GLuint fp = forwardProgram.id();
+        glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
+        glViewport(0, 0, frame.width, frame.height);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDisable(GL_CULL_FACE);
+        const glm::vec3 sky = frame.scene.sky.color * frame.scene.sky.intensity;
+        const float background[] = {sky.r, sky.g, sky.b, 1.0f};
+        const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 0, background);
+        glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 1, zero);
+        glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 2, zero);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glUseProgram(fp);
+        glProgramUniformMatrix4fv(fp, loc(fp, "uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        glProgramUniform3fv(fp, loc(fp, "uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+        setLightUniforms(fp, frame.scene);
+        shadows->bindForShading(fp, frame, 0);
+        const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
+        sceneGpu->draw(fp, items, [&](std::uint32_t m) { materialGpu->bind(fp, m, MaterialBindMode::Full); });
+        frame.timer.end("forward");
+    }
+
+    void renderTonemap(const FrameContext& frame) {
+        frame.timer.begin("tonemap");
+        const GLuint tp = tonemapProgram.id();
+        glBindFramebuffer(GL_FRAMEBUFFER, displayFbo.id());
+        glViewport(0, 0, frame.width, frame.height);
+        glDisable(GL_DEPTH_TEST);
+        glUseProgram(tp);
+        glProgramUniform1f(tp, loc(tp, "uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
+        glProgramUniform1i(tp, loc(tp, "uOperator"), tonemapperIndex(frame.params.getEnum("output.tonemapper")));
+        glProgramUniform1i(tp, loc(tp, "uHdr"), 0);
+        glBindTextureUnit(0, hdrColor.id());
+        glBindVertexArray(emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        frame.timer.end("tonemap");
+    }
+};
+
+ForwardRenderer::ForwardRenderer() : impl_(std::make_unique<Impl>()) {}
+ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
+ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
+ForwardRenderer::~ForwardRenderer() = default;
+
+Expected<ForwardRenderer> ForwardRenderer::create() {
+    ForwardRenderer r;
+    auto shadows = ShadowPass::create();
+    if (!shadows) return std::unexpected(shadows.error());
+    auto forward = buildEmbeddedProgram({"forward.vert", "forward.frag"});
+    if (!forward) return std::unexpected(forward.error());
+    auto tonemap = buildEmbeddedProgram({"fullscreen.vert", "tonemap.frag"});
+    if (!tonemap) return std::unexpected(tonemap.error());
+    r.impl_->shadows.emplace(std::move(*shadows));
+    r.impl_->forwardProgram = std::move(*forward);
+    r.impl_->tonemapProgram = std::move(*tonemap);
+    r.impl_->emptyVao = createVertexArray();
+    return r;
+}
+
+void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
+    impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
+    impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
+}
+
+GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
+int ForwardRenderer::width() const { return impl_->width; }
+int ForwardRenderer::height() const { return impl_->height; }
+DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
+
+Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::ParameterSet& params,
+                                       const scene::Camera& camera, int width, int height) {
+    Impl& d = *impl_;
+    if (!d.sceneGpu)
+        setScene(scene);
+    if (auto ok = d.ensureTargets(width, height); !ok)
+        return ok;
+    d.timer.beginFrame();
+    const glm::mat4 view = camera.view();
+    const glm::mat4 projection = camera.projection(float(width) / float(height));
+    const FrameContext frame{scene, params, camera, width, height, view, projection, projection * view, d.timer};
+
+    if (auto ok = d.shadows->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
+        return ok;
+    d.renderForward(frame);
+    d.renderTonemap(frame);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (GLenum err = glGetError(); err != GL_NO_ERROR)
@@ -261,13 +212,26 @@ void flipRows(std::vector<T>& pixels, int width, int height, int channels) {
                          pixels.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row));
 }
 
+std::vector<float> readFloats(GLuint texture, GLenum format, int channels, int width, int height) {
+    std::vector<float> px(std::size_t(width) * std::size_t(height) * std::size_t(channels));
+    glGetTextureImage(texture, 0, format, GL_FLOAT, GLsizei(px.size() * sizeof(float)), px.data());
+    flipRows(px, width, height, channels);
+    return px;
+}
+
 } // namespace
 
 std::vector<float> ForwardRenderer::readHdr() const {
-    std::vector<float> px(std::size_t(impl_->width) * std::size_t(impl_->height) * 4);
-    glGetTextureImage(impl_->hdrColor.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(px.size() * sizeof(float)), px.data());
-    flipRows(px, impl_->width, impl_->height, 4);
-    return px;
+    return readFloats(impl_->hdrColor.id(), GL_RGBA, 4, impl_->width, impl_->height);
+}
+std::vector<float> ForwardRenderer::readGBufferNormal() const {
+    return readFloats(impl_->gNormal.id(), GL_RGBA, 4, impl_->width, impl_->height);
+}
+std::vector<float> ForwardRenderer::readGBufferAlbedo() const {
+    return readFloats(impl_->gAlbedo.id(), GL_RGBA, 4, impl_->width, impl_->height);
+}
+std::vector<float> ForwardRenderer::readDepth() const {
+    return readFloats(impl_->depth.id(), GL_DEPTH_COMPONENT, 1, impl_->width, impl_->height);
 }
 
 std::vector<std::uint8_t> ForwardRenderer::readDisplay() const {

@@ -1,6 +1,9 @@
 #include "lpv/renderer/SceneGpu.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
 
 namespace lpv::renderer {
 namespace {
@@ -13,7 +16,37 @@ struct Vertex {
     glm::vec2 uv;
 };
 
+scene::Bounds transformBounds(const scene::Bounds& b, const glm::mat4& m) {
+    scene::Bounds out;
+    if (b.empty())
+        return out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p{corner & 1 ? b.max.x : b.min.x, corner & 2 ? b.max.y : b.min.y,
+                          corner & 4 ? b.max.z : b.min.z};
+        out.extend(glm::vec3(m * glm::vec4(p, 1.0f)));
+    }
+    return out;
+}
+
+// Bounds of the vertices one submesh's triangles use.
+scene::Bounds submeshBounds(const scene::Mesh& mesh, const scene::Submesh& sub) {
+    scene::Bounds b;
+    const std::size_t end = std::min<std::size_t>(std::size_t(sub.firstIndex) + sub.indexCount, mesh.indices.size());
+    for (std::size_t i = sub.firstIndex; i < end; ++i)
+        if (mesh.indices[i] < mesh.positions.size())
+            b.extend(mesh.positions[mesh.indices[i]]);
+    return b;
+}
+
 } // namespace
+
+DrawBucket bucketOf(const scene::Material& m) {
+    if (m.alphaMode == scene::AlphaMode::Blend || m.additive)
+        return DrawBucket::Blended;
+    if (m.alphaMode == scene::AlphaMode::Mask || m.colorKey || !m.alphaTexture.empty())
+        return DrawBucket::Masked;
+    return DrawBucket::Opaque;
+}
 
 SceneGpu::SceneGpu(const scene::Scene& scene) {
     std::vector<Vertex> vertices;
@@ -50,10 +83,15 @@ SceneGpu::SceneGpu(const scene::Scene& scene) {
         const glm::mat4 model = scene.worldMatrix(int(o));
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
         const MeshRange& r = ranges[std::size_t(obj.mesh)];
-        for (const scene::Submesh& sub : scene.meshes[std::size_t(obj.mesh)].submeshes)
+        const scene::Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
+        for (const scene::Submesh& sub : mesh.submeshes) {
+            const scene::Material material =
+                sub.materialIndex < scene.materials.size() ? scene.materials[sub.materialIndex] : scene::Material{};
             draws_.push_back(DrawItem{model, normalMatrix, GLsizei(sub.indexCount),
                                       (r.firstIndex + sub.firstIndex) * sizeof(std::uint32_t), r.baseVertex,
-                                      sub.materialIndex});
+                                      sub.materialIndex, transformBounds(submeshBounds(mesh, sub), model),
+                                      bucketOf(material)});
+        }
     }
 
     vao_ = createVertexArray();
@@ -78,5 +116,24 @@ SceneGpu::SceneGpu(const scene::Scene& scene) {
 }
 
 void SceneGpu::bindGeometry() const { glBindVertexArray(vao_.id()); }
+
+void SceneGpu::draw(GLuint program, const std::vector<const DrawItem*>& items,
+                    const std::function<void(std::uint32_t material)>& bindMaterial) const {
+    bindGeometry();
+    const GLint model = glGetUniformLocation(program, "uModel");
+    const GLint normalMatrix = glGetUniformLocation(program, "uNormalMatrix");
+    std::int64_t boundMaterial = -1;
+    for (const DrawItem* d : items) {
+        glProgramUniformMatrix4fv(program, model, 1, GL_FALSE, glm::value_ptr(d->model));
+        if (normalMatrix >= 0)
+            glProgramUniformMatrix3fv(program, normalMatrix, 1, GL_FALSE, glm::value_ptr(d->normalMatrix));
+        if (bindMaterial && std::int64_t(d->material) != boundMaterial) {
+            bindMaterial(d->material);
+            boundMaterial = d->material;
+        }
+        glDrawElementsBaseVertex(GL_TRIANGLES, d->indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(d->indexByteOffset), d->baseVertex);
+    }
+}
 
 } // namespace lpv::renderer

@@ -2,6 +2,7 @@
 // Image files in and out through OpenImageIO. Writes are atomic (temporary
 // file beside the target, then rename) like every other save.
 #include "lpv/scene/Error.h"
+#include "lpv/scene/Image.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -10,12 +11,7 @@
 
 namespace lpv::importers {
 
-struct Image8 {
-    int width = 0;
-    int height = 0;
-    int channels = 4;
-    std::vector<std::uint8_t> pixels; // rows top to bottom
-};
+using Image8 = scene::Image8;
 
 // Larger sides are refused before anything is allocated (a corrupt header
 // must not cost gigabytes).

@@ -1,9 +1,12 @@
 #pragma once
-// The first forward pass (issue #2): direct light with one shadow map for the
-// first shadow-casting light, HDR accumulation, exposure and tonemapping to
-// sRGB. Later passes (CSM, RSM, LPV) slot in around it.
+// One frame: shadow maps, then a forward pass that shades direct light into
+// HDR and writes the camera G-buffer (depth, normal, albedo) at the same time,
+// then exposure and tonemapping to sRGB. Each pass lives in its own file
+// (ShadowPass, ...); this class owns the targets and the order.
+#include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/SceneGpu.h"
+#include "lpv/scene/Image.h"
 #include "lpv/scene/ParameterRegistry.h"
 #include "lpv/scene/Scene.h"
 
@@ -23,8 +26,10 @@ public:
     ForwardRenderer& operator=(ForwardRenderer&&) noexcept;
     ~ForwardRenderer();
 
-    // Uploads the scene's geometry; call again after the scene changes.
-    void setScene(const scene::Scene& scene);
+    // Uploads the scene's geometry, materials and the decoded textures its
+    // materials name (a path missing from `textures` draws untextured); call
+    // again after the scene changes.
+    void setScene(const scene::Scene& scene, const scene::TextureImages& textures = {});
 
     // Renders one frame into the internal HDR and display targets.
     Expected<void> render(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera& camera,
@@ -36,6 +41,14 @@ public:
     // Read-backs for tests and PNG output: rows top to bottom, RGBA.
     std::vector<float> readHdr() const;
     std::vector<std::uint8_t> readDisplay() const;
+    // The camera G-buffer of the last frame, rows top to bottom: world normal
+    // (xyz, w = 1 where geometry, 0 for background), albedo (rgb, a = coverage),
+    // and window-space depth (0..1, 1 = background).
+    std::vector<float> readGBufferNormal() const;
+    std::vector<float> readGBufferAlbedo() const;
+    std::vector<float> readDepth() const;
+    // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
+    DrawListStats cameraDrawStats() const;
     int width() const;
     int height() const;
 
