@@ -2,6 +2,7 @@
 
 #include "FrameContext.h"
 #include "MaterialGpu.h"
+#include "RsmPass.h"
 #include "ShadowPass.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
@@ -52,6 +53,7 @@ void setLightUniforms(GLuint fp, const scene::Scene& scene) {
 struct ForwardRenderer::Impl {
     Program forwardProgram, tonemapProgram;
     std::optional<ShadowPass> shadows;
+    std::optional<RsmPass> rsm;
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
@@ -156,7 +158,10 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     if (!forward) return std::unexpected(forward.error());
     auto tonemap = buildEmbeddedProgram({"fullscreen.vert", "tonemap.frag"});
     if (!tonemap) return std::unexpected(tonemap.error());
+    auto rsm = RsmPass::create();
+    if (!rsm) return std::unexpected(rsm.error());
     r.impl_->shadows.emplace(std::move(*shadows));
+    r.impl_->rsm.emplace(std::move(*rsm));
     r.impl_->forwardProgram = std::move(*forward);
     r.impl_->tonemapProgram = std::move(*tonemap);
     r.impl_->emptyVao = createVertexArray();
@@ -173,6 +178,14 @@ int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 
+std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) const {
+    if (what == "shadow")
+        return impl_->shadows->debugImages();
+    if (what == "rsm")
+        return impl_->rsm->debugImages();
+    return {};
+}
+
 Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::ParameterSet& params,
                                        const scene::Camera& camera, int width, int height) {
     Impl& d = *impl_;
@@ -186,6 +199,8 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     const FrameContext frame{scene, params, camera, width, height, view, projection, projection * view, d.timer};
 
     if (auto ok = d.shadows->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
+        return ok;
+    if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
     d.renderForward(frame);
     d.renderTonemap(frame);

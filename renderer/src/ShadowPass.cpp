@@ -88,4 +88,14 @@ int ShadowPass::bindForShading(GLuint program, const FrameContext& frame, int fi
     return firstUnit + 1;
 }
 
+std::vector<DebugImage> ShadowPass::debugImages() const {
+    if (lightIndex_ < 0 || size_ == 0)
+        return {};
+    DebugImage image{"shadow-map", size_, size_, 1, {}};
+    image.pixels.resize(std::size_t(size_) * std::size_t(size_));
+    glGetTextureImage(map_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(image.pixels.size() * sizeof(float)),
+                      image.pixels.data());
+    return {image};
+}
+
 } // namespace lpv::renderer

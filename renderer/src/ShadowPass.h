@@ -4,6 +4,7 @@
 #include "FrameContext.h"
 #include "MaterialGpu.h"
 #include "ShadowView.h"
+#include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/Error.h"
@@ -20,6 +21,9 @@ public:
     // Sets the uniforms of shadow_sampling.glsl in `program` and binds its
     // textures from unit `firstUnit` on; returns the next free unit.
     int bindForShading(GLuint program, const FrameContext& frame, int firstUnit) const;
+
+    // The depth of every shadow map of the last frame.
+    std::vector<DebugImage> debugImages() const;
 
 private:
     ShadowPass() = default;

@@ -11,11 +11,22 @@
 #include "lpv/scene/Scene.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace lpv::renderer {
 
 using scene::Expected;
+
+// A float image of one pass's internals (a shadow cascade's depth, an RSM
+// tile's flux...), rows top to bottom, for dumps, visualizers and tests.
+struct DebugImage {
+    std::string name; // e.g. "shadow-cascade-0", "rsm-1-flux"
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<float> pixels;
+};
 
 class ForwardRenderer {
 public:
@@ -47,6 +58,9 @@ public:
     std::vector<float> readGBufferNormal() const;
     std::vector<float> readGBufferAlbedo() const;
     std::vector<float> readDepth() const;
+    // Internals of the last frame: "shadow" (every shadow map / cascade) or
+    // "rsm" (position, normal and flux of every RSM tile). Unknown: empty.
+    std::vector<DebugImage> debugImages(const std::string& what) const;
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     int width() const;
