@@ -19,7 +19,15 @@ namespace fs = std::filesystem;
 
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
+       lpv bench render PROJECT [--width N --height N --frames N --warmup N
+                                 --camera NAME --set KEY=VALUE --per-frame]
 
+bench render: renders the project headless at the given size (default
+1280x720) for --warmup frames (default 5, not counted) and then --frames
+frames (default 60), and prints each pass's GPU time (timer queries):
+median, min and max, plus every frame with --per-frame.
+
+bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture
 lookup), saving the project it becomes, and loading that project again;
 prints the median of N runs (default 5) of each and the ratio import/load.
@@ -121,7 +129,9 @@ int benchImport(Args& args) {
 int runBench(Args args) {
     const auto pos = args.positionals();
     if (pos.empty())
-        return usageError("which benchmark? (import)", "bench");
+        return usageError("which benchmark? (import, render)", "bench");
+    if (pos.front() == "render")
+        return benchRender(std::move(args));
     if (pos.front() == "import") {
         try {
             return benchImport(args);
@@ -129,7 +139,7 @@ int runBench(Args args) {
             return usageError("--repeat needs a whole number", "bench");
         }
     }
-    return usageError("unknown benchmark '" + pos.front() + "' (import)", "bench");
+    return usageError("unknown benchmark '" + pos.front() + "' (import, render)", "bench");
 }
 
 } // namespace lpv::cli

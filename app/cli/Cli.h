@@ -36,6 +36,7 @@ int runNew(Args args);
 int runInfo(Args args);
 int runImport(Args args);
 int runBench(Args args);
+int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 
 void printRenderHelp();
 void printParamsHelp();

@@ -1,9 +1,8 @@
 #include "Cli.h"
 
 #include "lpv/importers/ImageIO.h"
-#include "lpv/renderer/ForwardRenderer.h"
-#include "lpv/renderer/GlContext.h"
-#include "lpv/scene/Project.h"
+#include "DebugDump.h"
+#include "RenderSetup.h"
 
 #include <charconv>
 #include <cstdio>
@@ -15,8 +14,8 @@ void printRenderHelp() {
     std::cout << R"(Usage: lpv render PROJECT.lpvproj -o OUT.png [options]
 
 Renders the project headless (EGL: the GPU where present, Mesa llvmpipe
-otherwise), writes the image and prints per-pass GPU times (timer queries;
-median/min/max over the frames rendered).
+otherwise), writes the image and prints per-pass GPU times (timer queries):
+one row per frame, then median/min/max over the frames rendered.
 
   -o, --output FILE     Image to write (.png, .jpg, .exr, ...), required
   --width N             Image width in pixels (default 1280)
@@ -25,6 +24,10 @@ median/min/max over the frames rendered).
   --set KEY=VALUE       Override a registry parameter for this run; repeatable
                         (see `lpv params` for keys, types and ranges)
   --frames N            Frames to render for the timing table (default 5)
+  --dump LIST           Also write the renderer's internal images beside OUT,
+                        comma-separated: shadow (every shadow map / cascade
+                        depth), rsm (position, normal and flux of every RSM
+                        tile). Each as OUT-<name>.exr (exact) and .png (scaled)
 )";
 }
 
@@ -38,6 +41,18 @@ std::optional<int> parsePositive(const std::string& s) {
     return v;
 }
 
+std::vector<std::string> splitCommas(const std::string& s) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start <= s.size()) {
+        const std::size_t comma = std::min(s.find(',', start), s.size());
+        if (comma > start)
+            out.push_back(s.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
 } // namespace
 
 int runRender(Args args) {
@@ -47,8 +62,10 @@ int runRender(Args args) {
     const auto widthText = args.option("--width");
     const auto heightText = args.option("--height");
     const auto framesText = args.option("--frames");
-    const auto cameraName = args.option("--camera");
-    const auto sets = args.options("--set");
+    const auto dumpText = args.option("--dump");
+    RenderRequest request;
+    request.cameraName = args.option("--camera");
+    request.sets = args.options("--set");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "render");
     if (auto unknown = args.unknownOption())
@@ -65,76 +82,42 @@ int runRender(Args args) {
         return usageError("--width and --height must be positive integers", "render");
     if (!frames)
         return usageError("--frames must be a positive integer", "render");
+    const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
+    for (const std::string& d : dumps)
+        if (d != "rsm" && d != "shadow")
+            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow)", "render");
+    if (dumpText && dumps.empty())
+        return usageError("--dump needs a list such as rsm,shadow", "render");
 
-    auto project = scene::loadProject(pos.front());
-    if (!project) {
-        std::cerr << "lpv: " << project.error().describe() << "\n";
+    request.projectFile = pos.front();
+    int exitCode = kOk;
+    auto setup = prepareRender(request, "render", exitCode);
+    if (!setup)
+        return exitCode;
+    if (!renderFrames(*setup, *width, *height, *frames))
         return kFailure;
-    }
-    for (const std::string& kv : sets) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos)
-            return usageError("--set expects KEY=VALUE, got '" + kv + "'", "render");
-        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok)
-            return usageError(ok.error().describe(), "render");
-    }
 
-    const scene::Scene& s = project->scene;
-    scene::Camera camera;
-    if (cameraName) {
-        const scene::Camera* c = s.findCamera(*cameraName);
-        if (!c) {
-            std::string names;
-            for (const auto& cam : s.cameras)
-                names += (names.empty() ? "" : ", ") + cam.name;
-            std::cerr << "lpv: " << pos.front() << ": no camera named '" << *cameraName
-                      << "' (cameras: " << (names.empty() ? "none" : names) << ")\n";
-            return kFailure;
-        }
-        camera = *c;
-    } else if (!s.cameras.empty()) {
-        camera = s.cameras.front();
-    } else {
-        // No camera: look at the scene's bounds from the front.
-        const scene::Bounds b = s.worldBounds();
-        const glm::vec3 c = b.empty() ? glm::vec3(0.0f) : b.center();
-        const float r = b.empty() ? 1.0f : glm::length(b.size()) * 0.5f;
-        camera.position = c + glm::vec3(0.0f, 0.0f, 2.5f * r);
-        camera.target = c;
-        camera.farPlane = 10.0f * r;
-        camera.nearPlane = 0.01f * r;
-    }
-
-    auto context = renderer::HeadlessContext::create();
-    if (!context) {
-        std::cerr << "lpv: " << context.error().describe() << "\n";
-        return kFailure;
-    }
-    const renderer::GlInfo& gl = context->info();
-    std::printf("GL: %s | %s | %s (EGL %s)\n", gl.renderer.c_str(), gl.version.c_str(), gl.vendor.c_str(),
-                gl.eglPlatform.c_str());
-    auto renderer = renderer::ForwardRenderer::create();
-    if (!renderer) {
-        std::cerr << "lpv: " << renderer.error().describe() << "\n";
-        return kFailure;
-    }
-    renderer->setScene(s);
-    for (int f = 0; f < *frames; ++f)
-        if (auto ok = renderer->render(s, project->parameters, camera, *width, *height); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return kFailure;
-        }
-    renderer->timer().resolveAll();
-
-    importers::Image8 image{*width, *height, 4, renderer->readDisplay()};
+    importers::Image8 image{*width, *height, 4, setup->renderer->readDisplay()};
     if (auto ok = importers::writeImage(*output, image); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;
     }
-    std::printf("%s: %zu triangles, %dx%d, %d frames\n", pos.front().c_str(), s.triangleCount(), *width, *height,
-                *frames);
-    std::printf("%s", renderer::formatTimingTable(renderer->timer().table()).c_str());
+    const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
+    std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
+                setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
+    std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
+    std::printf("%s", renderer::formatTimingTable(setup->renderer->timer().table()).c_str());
     std::printf("wrote %s\n", output->c_str());
+    for (const std::string& what : dumps) {
+        const auto images = setup->renderer->debugImages(what);
+        if (images.empty())
+            std::printf("--dump %s: nothing to write (the scene has no light this pass renders for)\n", what.c_str());
+        bool ok = true;
+        for (const auto& file : writeDebugImages(images, *output, ok))
+            std::printf("wrote %s\n", file.string().c_str());
+        if (!ok)
+            return kFailure;
+    }
     return kOk;
 }
 

@@ -19,6 +19,7 @@ Commands:
   new FILE.lpvproj            Create a project (--template cornell-box|empty)
   import FILE... -o PROJECT   Import 4ds, glTF, OBJ, 3DS ... scenes into a new or existing project
   bench import FILE...        Time importing scene files against loading the projects they become
+  bench render PROJECT        Per-pass GPU times over many frames (default 1280x720, 60 frames)
   info PROJECT                Validate a project and print what it contains
 
 Options:

@@ -10,10 +10,12 @@ namespace lpv::importers {
 using scene::ErrorCode;
 using scene::makeError;
 
-scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8& image) {
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
-        return makeError(ErrorCode::InvalidValue, file.string(), "", "image size and pixel count disagree");
+namespace {
+
+// Writes through a temporary beside the target, then renames: a failed or
+// interrupted write never leaves a half-written image at `file`.
+scene::Expected<void> writeAtomically(const std::filesystem::path& file, int width, int height, int channels,
+                                      OIIO::TypeDesc type, const void* pixels) {
     static std::atomic<unsigned> counter{0};
     // The temporary keeps the real extension last so OpenImageIO picks the same format.
     std::filesystem::path tmp = file;
@@ -22,12 +24,11 @@ scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out)
         return makeError(ErrorCode::IoError, file.string(), "", "no image writer for this extension: " + OIIO::geterror());
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(width, height, channels, type);
     // Our pixels are straight (not premultiplied) alpha; say so, or formats
     // with associated alpha (TGA, TIFF) would change the colours.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
-        !out->close()) {
+    if (!out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close()) {
         std::string err = out->geterror();
         out.reset();
         std::error_code ec;
@@ -42,6 +43,24 @@ scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8
         return makeError(ErrorCode::IoError, file.string(), "", "could not move the image into place: " + ec.message());
     }
     return {};
+}
+
+} // namespace
+
+scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
+        return makeError(ErrorCode::InvalidValue, file.string(), "", "image size and pixel count disagree");
+    return writeAtomically(file, image.width, image.height, image.channels, OIIO::TypeDesc::UINT8,
+                           image.pixels.data());
+}
+
+scene::Expected<void> writeImageFloat(const std::filesystem::path& file, int width, int height, int channels,
+                                      const std::vector<float>& pixels) {
+    if (width <= 0 || height <= 0 || channels <= 0 ||
+        pixels.size() != std::size_t(width) * std::size_t(height) * std::size_t(channels))
+        return makeError(ErrorCode::InvalidValue, file.string(), "", "image size and pixel count disagree");
+    return writeAtomically(file, width, height, channels, OIIO::TypeDesc::FLOAT, pixels.data());
 }
 
 scene::Expected<Image8> readImage8(const std::filesystem::path& file) {

@@ -66,6 +66,18 @@ void GpuTimer::resolveAll() {
         collect(p, true);
 }
 
+void GpuTimer::clearHistory() {
+    for (PassState& p : passes_)
+        p.historyMs.clear();
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> GpuTimer::history() const {
+    std::vector<std::pair<std::string, std::vector<double>>> out;
+    for (const PassState& p : passes_)
+        out.emplace_back(p.name, std::vector<double>(p.historyMs.begin(), p.historyMs.end()));
+    return out;
+}
+
 std::vector<PassTiming> GpuTimer::table() const {
     std::vector<PassTiming> rows;
     for (const PassState& p : passes_) {

@@ -19,6 +19,9 @@ inline constexpr int kMaxImageSide = 16384;
 
 // Format from the extension (.png, .jpg, .bmp, .tga, .exr...).
 scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8& image);
+// Floating-point pixels (rows top to bottom), for EXR and other HDR formats.
+scene::Expected<void> writeImageFloat(const std::filesystem::path& file, int width, int height, int channels,
+                                      const std::vector<float>& pixels);
 scene::Expected<Image8> readImage8(const std::filesystem::path& file);
 
 // Four channels for use as a texture: grey, grey + alpha and RGB are expanded

@@ -7,6 +7,7 @@
 #include <array>
 #include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lpv::renderer {
@@ -28,11 +29,15 @@ public:
     void beginFrame();
     void begin(const std::string& pass);
     void end(const std::string& pass);
+    // Forgets the collected times (e.g. after warm-up frames); queries in flight are kept.
+    void clearHistory();
     // Blocks until every query issued so far has a result (use at exit, not per frame).
     void resolveAll();
 
     // In the order passes were first seen.
     std::vector<PassTiming> table() const;
+    // Each pass's time per frame (ms), oldest first, over the last N frames.
+    std::vector<std::pair<std::string, std::vector<double>>> history() const;
 
 private:
     static constexpr std::size_t kLatency = 4; // frames in flight per pass

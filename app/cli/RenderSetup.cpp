@@ -1,0 +1,120 @@
+#include "RenderSetup.h"
+
+#include "Cli.h"
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace lpv::cli {
+
+namespace {
+
+// No camera in the project: look at the scene's bounds from the front.
+scene::Camera framingCamera(const scene::Scene& s) {
+    scene::Camera camera;
+    const scene::Bounds b = s.worldBounds();
+    const glm::vec3 c = b.empty() ? glm::vec3(0.0f) : b.center();
+    const float r = b.empty() ? 1.0f : glm::length(b.size()) * 0.5f;
+    camera.position = c + glm::vec3(0.0f, 0.0f, 2.5f * r);
+    camera.target = c;
+    camera.farPlane = 10.0f * r;
+    camera.nearPlane = 0.01f * r;
+    return camera;
+}
+
+} // namespace
+
+std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
+    exitCode = kFailure;
+    auto project = scene::loadProject(request.projectFile);
+    if (!project) {
+        std::cerr << "lpv: " << project.error().describe() << "\n";
+        return std::nullopt;
+    }
+    for (const std::string& kv : request.sets) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos) {
+            exitCode = usageError("--set expects KEY=VALUE, got '" + kv + "'", command);
+            return std::nullopt;
+        }
+        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok) {
+            exitCode = usageError(ok.error().describe(), command);
+            return std::nullopt;
+        }
+    }
+
+    RenderSetup setup;
+    const scene::Scene& s = project->scene;
+    if (request.cameraName) {
+        const scene::Camera* c = s.findCamera(*request.cameraName);
+        if (!c) {
+            std::string names;
+            for (const auto& cam : s.cameras)
+                names += (names.empty() ? "" : ", ") + cam.name;
+            std::cerr << "lpv: " << request.projectFile << ": no camera named '" << *request.cameraName
+                      << "' (cameras: " << (names.empty() ? "none" : names) << ")\n";
+            return std::nullopt;
+        }
+        setup.camera = *c;
+    } else {
+        setup.camera = s.cameras.empty() ? framingCamera(s) : s.cameras.front();
+    }
+
+    auto context = renderer::HeadlessContext::create();
+    if (!context) {
+        std::cerr << "lpv: " << context.error().describe() << "\n";
+        return std::nullopt;
+    }
+    const renderer::GlInfo& gl = context->info();
+    std::printf("GL: %s | %s | %s (EGL %s)\n", gl.renderer.c_str(), gl.version.c_str(), gl.vendor.c_str(),
+                gl.eglPlatform.c_str());
+    auto renderer = renderer::ForwardRenderer::create();
+    if (!renderer) {
+        std::cerr << "lpv: " << renderer.error().describe() << "\n";
+        return std::nullopt;
+    }
+    setup.project = std::move(*project);
+    setup.context.emplace(std::move(*context));
+    setup.renderer.emplace(std::move(*renderer));
+    setup.renderer->setScene(setup.project.scene);
+    exitCode = kOk;
+    return setup;
+}
+
+bool renderFrames(RenderSetup& setup, int width, int height, int frames) {
+    for (int f = 0; f < frames; ++f)
+        if (auto ok = setup.renderer->render(setup.project.scene, setup.project.parameters, setup.camera, width, height);
+            !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return false;
+        }
+    setup.renderer->timer().resolveAll();
+    return true;
+}
+
+std::string formatPerFrameTimes(const renderer::GpuTimer& timer) {
+    const auto history = timer.history();
+    std::ostringstream out;
+    out << "frame";
+    std::size_t frames = 0;
+    for (const auto& [pass, ms] : history) {
+        out << "  " << pass;
+        frames = std::max(frames, ms.size());
+    }
+    out << "  (ms)\n";
+    for (std::size_t f = 0; f < frames; ++f) {
+        char cell[32];
+        std::snprintf(cell, sizeof cell, "%5zu", f + 1);
+        out << cell;
+        for (const auto& [pass, ms] : history) {
+            // Right-align each figure under its pass name.
+            std::snprintf(cell, sizeof cell, "%*.3f", int(pass.size()) + 2, f < ms.size() ? ms[f] : 0.0);
+            out << cell;
+        }
+        out << "\n";
+    }
+    return out.str();
+}
+
+} // namespace lpv::cli

@@ -1,0 +1,39 @@
+#pragma once
+// What `lpv render` and `lpv bench render` share: load a project, apply
+// --set overrides, pick the camera, open a headless GL context and create
+// the renderer with the scene uploaded.
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/GlContext.h"
+#include "lpv/scene/Project.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::cli {
+
+struct RenderSetup {
+    scene::Project project;
+    scene::Camera camera;
+    std::optional<renderer::HeadlessContext> context;
+    std::optional<renderer::ForwardRenderer> renderer;
+};
+
+struct RenderRequest {
+    std::string projectFile;
+    std::optional<std::string> cameraName;
+    std::vector<std::string> sets; // KEY=VALUE
+};
+
+// On failure prints the message (naming the file or the option) and returns
+// the exit code in `exitCode`.
+std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode);
+
+// Renders `frames` frames and resolves every timer query; false (message printed) on error.
+bool renderFrames(RenderSetup& setup, int width, int height, int frames);
+
+// Per-pass GPU time of every frame, one row per frame (the summary table is
+// renderer::formatTimingTable).
+std::string formatPerFrameTimes(const renderer::GpuTimer& timer);
+
+} // namespace lpv::cli
