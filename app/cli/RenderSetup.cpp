@@ -2,28 +2,14 @@
 
 #include "Cli.h"
 
+#include "lpv/scene/FramingCamera.h"
+
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 namespace lpv::cli {
 
-namespace {
-
-// No camera in the project: look at the scene's bounds from the front.
-scene::Camera framingCamera(const scene::Scene& s) {
-    scene::Camera camera;
-    const scene::Bounds b = s.worldBounds();
-    const glm::vec3 c = b.empty() ? glm::vec3(0.0f) : b.center();
-    const float r = b.empty() ? 1.0f : glm::length(b.size()) * 0.5f;
-    camera.position = c + glm::vec3(0.0f, 0.0f, 2.5f * r);
-    camera.target = c;
-    camera.farPlane = 10.0f * r;
-    camera.nearPlane = 0.01f * r;
-    return camera;
-}
-
-} // namespace
 
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
     exitCode = kFailure;
@@ -58,7 +44,7 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
         }
         setup.camera = *c;
     } else {
-        setup.camera = s.cameras.empty() ? framingCamera(s) : s.cameras.front();
+        setup.camera = s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front();
     }
 
     auto context = renderer::HeadlessContext::create();

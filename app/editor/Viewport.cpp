@@ -1,5 +1,7 @@
 #include "Viewport.h"
 
+#include "lpv/scene/FramingCamera.h"
+
 #include "lpv/renderer/GlContext.h"
 
 #include <QSurfaceFormat>
@@ -51,10 +53,11 @@ void Viewport::paintGL() {
     }
     if (sceneDirty_) {
         renderer_->setScene(project_->scene);
+        framingCamera_ = scene::framingCamera(project_->scene);
         sceneDirty_ = false;
     }
     const scene::Scene& s = project_->scene;
-    scene::Camera camera = s.cameras.empty() ? scene::Camera{} : s.cameras.front();
+    const scene::Camera& camera = s.cameras.empty() ? framingCamera_ : s.cameras.front();
     const int w = int(width() * devicePixelRatio()), h = int(height() * devicePixelRatio());
     auto ok = renderer_->render(s, project_->parameters, camera, w, h);
     if (!ok) {

@@ -34,6 +34,7 @@ protected:
 private:
     const scene::Project* project_ = nullptr;
     std::optional<renderer::ForwardRenderer> renderer_;
+    scene::Camera framingCamera_; // used while the project has no camera
     bool sceneDirty_ = true;
     QString lastError_;
     QString glRenderer_;
