@@ -1,3 +1,12 @@
 #version 450 core
-// Depth is written by the fixed function; nothing to shade.
-void main() {}
+// Sun cascades: depth comes from the fixed function; alpha-masked
+// materials (leaves, fences) cut holes so they cast masked shadows.
+#include "coverage.glsl"
+
+in vec3 vWorldPos;
+in vec2 vUv;
+
+void main() {
+    if (materialCutOut(vUv))
+        discard;
+}

@@ -1,42 +1,218 @@
-// Shadow-map sampling for forward shading. ShadowPass::bindForShading sets
-// these uniforms; shading calls shadowVisibility() per light.
-uniform int uShadowLight;                    // index of the light with the shadow map, -1 = none
-uniform sampler2DShadow uShadowMap;
-uniform mat4 uShadowViewProj;
-uniform float uShadowTexel;     // world-space size of one shadow texel at unit distance (or absolute for ortho)
-uniform float uShadowBias;      // in texels
-uniform float uShadowSoftness;  // PCF radius in texels
-uniform bool uShadowPerspective;
+// Soft shadows for forward shading (include after common.glsl). ShadowPass::
+// bindForShading sets these uniforms; shading calls shadowVisibility() per light.
+//
+// PCSS (Fernando 2005): a blocker search over a region that grows with the
+// light's size, the mean blocker depth, then a percentage-closer filter as
+// wide as the penumbra that blocker casts: it grows with the blocker-receiver
+// distance. The sun is an angular disc (tan of its half angle), local lights
+// are spheres of radius uLocalLightRadius. Taps are a fixed Poisson disc
+// (16 + 16, modest for llvmpipe); hardware 2x2 compare filtering smooths each.
+const int MAX_CASCADES = 8;
+const int MAX_LOCAL_SHADOWS = 4;
+const float MAX_FILTER_TEXELS = 24.0;
 
-float shadowFactor(vec3 worldPos, vec3 n, vec3 toLight, float dist) {
-    // Offset along the normal by the bias in world units of one texel at this
-    // distance, growing at grazing angles where one texel spans more depth.
-    float texelWorld = uShadowPerspective ? uShadowTexel * dist : uShadowTexel;
-    float cosTheta = clamp(dot(n, toLight), 0.0, 1.0);
-    float grazing = sqrt(1.0 - cosTheta * cosTheta);
-    vec3 p = worldPos + n * (uShadowBias * texelWorld * (1.0 + 2.0 * grazing));
-    vec4 clip = uShadowViewProj * vec4(p, 1.0);
-    if (clip.w <= 0.0)
-        return 1.0;
-    vec3 ndc = clip.xyz / clip.w;
-    vec3 uvz = ndc * 0.5 + 0.5;
-    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0)
-        return 1.0;
-    vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
-    float radius = max(uShadowSoftness, 0.0);
-    int taps = radius > 0.0 ? 2 : 0;
-    float sum = 0.0;
-    float count = 0.0;
-    for (int y = -taps; y <= taps; ++y)
-        for (int x = -taps; x <= taps; ++x) {
-            vec2 offset = vec2(x, y) * texel * (radius / 2.0);
-            sum += texture(uShadowMap, vec3(uvz.xy + offset, uvz.z));
-            count += 1.0;
-        }
-    return sum / count;
+uniform float uShadowBias;            // shadow.bias, in texels
+uniform mat4 uShadowCameraView;       // view depth selects the cascade
+
+// The sun's cascades.
+uniform int uSunShadowLight;          // light index, -1 = no sun shadows
+uniform int uCascadeCount;
+uniform mat4 uCascadeViewProj[MAX_CASCADES];
+uniform float uCascadeSplitFar[MAX_CASCADES];   // view distance each cascade ends at
+uniform float uCascadeTexel[MAX_CASCADES];      // world size of one texel
+uniform float uCascadeDepthRange[MAX_CASCADES]; // world distance from depth 0 to depth 1
+uniform float uSunTanHalfAngle;                 // 0 = hard shadows
+uniform sampler2DArrayShadow uCascadeCompare;
+uniform sampler2DArray uCascadeDepth;
+
+// Spot and point lights: which layer each light index uses (-1 = none).
+uniform int uSpotShadowLayer[MAX_LIGHTS];
+uniform int uPointShadowLayer[MAX_LIGHTS];
+uniform mat4 uSpotViewProj[MAX_LOCAL_SHADOWS];
+uniform float uSpotTanHalfFov[MAX_LOCAL_SHADOWS];
+uniform vec3 uSpotPosition[MAX_LOCAL_SHADOWS];
+uniform float uSpotFar[MAX_LOCAL_SHADOWS];
+uniform vec3 uPointPosition[MAX_LOCAL_SHADOWS];
+uniform float uPointFar[MAX_LOCAL_SHADOWS];
+uniform float uLocalLightRadius;                // 0 = hard shadows
+uniform sampler2DArrayShadow uSpotCompare;      // stores distance / far
+uniform sampler2DArray uSpotDepth;
+uniform samplerCubeArrayShadow uPointCompare;   // stores distance / far
+uniform samplerCubeArray uPointDepth;
+
+const vec2 SHADOW_POISSON[16] = vec2[](
+    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
+    vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
+    vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379), vec2(0.44323325, -0.97511554),
+    vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
+    vec2(0.14383161, -0.14100790));
+
+// tan of the angle between the normal and the light, for slope-scaled bias.
+float shadowSlope(vec3 n, vec3 toLight) {
+    float c = clamp(dot(n, toLight), 0.0, 1.0);
+    return min(sqrt(1.0 - c * c) / max(c, 1e-3), 8.0);
 }
 
-// 1 = lit, 0 = in shadow, for light `lightIndex` seen along `toLight` from `worldPos`.
+// Visibility of `worldPos` in cascade k, or -1 when it falls outside the cascade.
+float cascadeVisibility(int k, vec3 worldPos, vec3 n, vec3 toLight) {
+    float texel = uCascadeTexel[k];
+    float range = uCascadeDepthRange[k];
+    float slope = shadowSlope(n, toLight);
+    // Normal offset: a texel's worth along the normal, more at grazing angles.
+    vec3 p = worldPos + n * (uShadowBias * texel * (1.0 + min(slope, 2.0)));
+    vec3 uvz = (uCascadeViewProj[k] * vec4(p, 1.0)).xyz * 0.5 + 0.5;
+    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))))
+        return -1.0;
+    if (uvz.z >= 1.0)
+        return 1.0;
+    float receiver = uvz.z - uShadowBias * texel * 0.5 / range;
+    float texelUv = 1.0 / float(textureSize(uCascadeCompare, 0).x);
+    if (uSunTanHalfAngle <= 0.0)
+        return texture(uCascadeCompare, vec4(uvz.xy, float(k), receiver));
+
+    // Blockers can be anywhere between the receiver and the map's near plane;
+    // the disc they must fall into grows with that distance.
+    float searchTexels = clamp(uSunTanHalfAngle * uvz.z * range / texel, 1.0, MAX_FILTER_TEXELS);
+    float blockerSum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        float d = texture(uCascadeDepth, vec3(uvz.xy + SHADOW_POISSON[i] * searchTexels * texelUv, float(k))).r;
+        if (d < receiver) {
+            blockerSum += d;
+            blockers += 1.0;
+        }
+    }
+    if (blockers == 0.0)
+        return 1.0;
+    float blocker = blockerSum / blockers;
+    // Half-width of the penumbra: the sun's half angle over the blocker-receiver distance.
+    float filterTexels = clamp(uSunTanHalfAngle * (uvz.z - blocker) * range / texel, 1.0, MAX_FILTER_TEXELS);
+    // Taps away from the centre meet a tilted receiver at other depths.
+    float reference = receiver - filterTexels * texel * min(slope, 2.0) / range;
+    float lit = 0.0;
+    for (int i = 0; i < 16; ++i)
+        lit += texture(uCascadeCompare,
+                       vec4(uvz.xy + SHADOW_POISSON[i] * filterTexels * texelUv, float(k), reference));
+    return lit / 16.0;
+}
+
+// Cascade by view depth; the last 10% of each cascade blends into the next.
+float sunVisibility(vec3 worldPos, vec3 n, vec3 toLight) {
+    float depth = -(uShadowCameraView * vec4(worldPos, 1.0)).z;
+    for (int k = 0; k < uCascadeCount && k < MAX_CASCADES; ++k) {
+        if (depth > uCascadeSplitFar[k])
+            continue;
+        float v = cascadeVisibility(k, worldPos, n, toLight);
+        if (v < 0.0)
+            continue;
+        float start = k == 0 ? 0.0 : uCascadeSplitFar[k - 1];
+        float band = 0.1 * (uCascadeSplitFar[k] - start);
+        float t = (depth - (uCascadeSplitFar[k] - band)) / band;
+        if (t > 0.0 && k + 1 < uCascadeCount) {
+            float next = cascadeVisibility(k + 1, worldPos, n, toLight);
+            if (next >= 0.0)
+                v = mix(v, next, t);
+        }
+        return v;
+    }
+    return 1.0;
+}
+
+// Spot maps store distance / far: the blocker search region is the light's
+// radius at the receiver, the penumbra radius * (receiver - blocker) / blocker.
+float spotVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
+    float size = float(textureSize(uSpotCompare, 0).x);
+    float far = uSpotFar[layer];
+    float slope = shadowSlope(n, toLight);
+    float dist = distance(worldPos, uSpotPosition[layer]);
+    float texel = 2.0 * uSpotTanHalfFov[layer] * dist / size; // world size of a texel at the receiver
+    vec3 p = worldPos + n * (uShadowBias * texel * (1.0 + min(slope, 2.0)));
+    vec4 clip = uSpotViewProj[layer] * vec4(p, 1.0);
+    if (clip.w <= 0.0)
+        return 1.0;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
+        return 1.0;
+    float receiver = distance(p, uSpotPosition[layer]);
+    float reference = (receiver - uShadowBias * texel * (1.0 + min(slope, 4.0))) / far;
+    float texelUv = 1.0 / size;
+    if (uLocalLightRadius <= 0.0)
+        return texture(uSpotCompare, vec4(uv, float(layer), reference));
+    float searchTexels = clamp(uLocalLightRadius / texel, 1.0, MAX_FILTER_TEXELS);
+    float blockerSum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        float d = texture(uSpotDepth, vec3(uv + SHADOW_POISSON[i] * searchTexels * texelUv, float(layer))).r;
+        if (d < reference) {
+            blockerSum += d;
+            blockers += 1.0;
+        }
+    }
+    if (blockers == 0.0)
+        return 1.0;
+    float blocker = max(blockerSum / blockers * far, 1e-4);
+    float penumbra = uLocalLightRadius * (receiver - blocker) / blocker; // world, at the receiver
+    float filterTexels = clamp(penumbra / texel, 1.0, MAX_FILTER_TEXELS);
+    reference -= filterTexels * texel * min(slope, 2.0) / far;
+    float lit = 0.0;
+    for (int i = 0; i < 16; ++i)
+        lit += texture(uSpotCompare, vec4(uv + SHADOW_POISSON[i] * filterTexels * texelUv, float(layer), reference));
+    return lit / 16.0;
+}
+
+float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
+    float size = float(textureSize(uPointCompare, 0).x);
+    float far = uPointFar[layer];
+    float slope = shadowSlope(n, toLight);
+    float dist = distance(worldPos, uPointPosition[layer]);
+    float texel = 2.0 * dist / size; // world size of a cube texel at the receiver (face centre)
+    vec3 p = worldPos + n * (uShadowBias * texel * (1.0 + min(slope, 2.0)));
+    vec3 d = p - uPointPosition[layer];
+    float receiver = length(d);
+    vec3 dir = d / max(receiver, 1e-6);
+    float reference = (receiver - uShadowBias * texel * (1.0 + min(slope, 4.0))) / far;
+    if (uLocalLightRadius <= 0.0)
+        return texture(uPointCompare, vec4(dir, float(layer)), reference);
+    // Offsets on the plane perpendicular to the direction, in radians ~ world / distance.
+    vec3 t = normalize(cross(abs(dir.y) < 0.99 ? vec3(0, 1, 0) : vec3(1, 0, 0), dir));
+    vec3 b = cross(dir, t);
+    float texelAngle = texel / receiver;
+    float searchTexels = clamp(uLocalLightRadius / texel, 1.0, MAX_FILTER_TEXELS);
+    float blockerSum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        vec2 o = SHADOW_POISSON[i] * searchTexels * texelAngle;
+        float s = texture(uPointDepth, vec4(dir + t * o.x + b * o.y, float(layer))).r;
+        if (s < reference) {
+            blockerSum += s;
+            blockers += 1.0;
+        }
+    }
+    if (blockers == 0.0)
+        return 1.0;
+    float blocker = max(blockerSum / blockers * far, 1e-4);
+    float penumbra = uLocalLightRadius * (receiver - blocker) / blocker;
+    float filterTexels = clamp(penumbra / texel, 1.0, MAX_FILTER_TEXELS);
+    reference -= filterTexels * texel * min(slope, 2.0) / far;
+    float lit = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        vec2 o = SHADOW_POISSON[i] * filterTexels * texelAngle;
+        lit += texture(uPointCompare, vec4(dir + t * o.x + b * o.y, float(layer)), reference);
+    }
+    return lit / 16.0;
+}
+
+// 1 = lit, 0 = in shadow, for light `lightIndex` seen along `toLight` from
+// `worldPos` (`dist` = distance to a local light; unused for the sun).
 float shadowVisibility(int lightIndex, vec3 worldPos, vec3 n, vec3 toLight, float dist) {
-    return lightIndex == uShadowLight ? shadowFactor(worldPos, n, toLight, dist) : 1.0;
+    if (lightIndex == uSunShadowLight)
+        return sunVisibility(worldPos, n, toLight);
+    if (lightIndex < 0 || lightIndex >= MAX_LIGHTS)
+        return 1.0;
+    if (uSpotShadowLayer[lightIndex] >= 0)
+        return spotVisibility(uSpotShadowLayer[lightIndex], worldPos, n, toLight);
+    if (uPointShadowLayer[lightIndex] >= 0)
+        return pointVisibility(uPointShadowLayer[lightIndex], worldPos, n, toLight);
+    return 1.0;
 }

@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace lpv::renderer {
@@ -11,91 +13,294 @@ namespace lpv::renderer {
 using scene::ErrorCode;
 using scene::makeError;
 
+namespace {
+
+// The geometry shader's invocation count: one layer per invocation.
+constexpr int kMaxLayersPerPass = 8;
+
+GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
+
+void setDepthSampling(GLuint texture, bool compare) {
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, compare ? GL_LINEAR : GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, compare ? GL_LINEAR : GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
+// A cube face of a point light's map is half the size of the other maps:
+// six of them per light would otherwise cost 6x the memory and fill.
+int pointFaceSize(int mapSize) { return std::max(mapSize / 2, 128); }
+
+CascadeCamera cascadeCamera(const FrameContext& frame) {
+    CascadeCamera c;
+    c.position = frame.camera.position;
+    const glm::vec3 forward = frame.camera.target - frame.camera.position;
+    c.forward = glm::length(forward) > 0.0f ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, -1.0f);
+    c.fovY = frame.camera.fovY;
+    c.aspect = frame.height > 0 ? float(frame.width) / float(frame.height) : 1.0f;
+    c.nearPlane = frame.camera.nearPlane;
+    c.farPlane = frame.camera.farPlane;
+    return c;
+}
+
+// A box around a point light that contains its whole cube (for culling).
+glm::mat4 sphereBoxViewProj(const glm::vec3& center, float radius) {
+    const glm::mat4 translate{1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f,
+                              -center.x, -center.y, -center.z, 1.0f};
+    return glm::mat4{1.0f / radius, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f / radius, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f / radius,
+                     0.0f, 0.0f, 0.0f, 0.0f, 1.0f} *
+           translate;
+}
+
+} // namespace
+
 scene::Expected<ShadowPass> ShadowPass::create() {
-    auto program = buildEmbeddedProgram({"shadow.vert", "shadow.frag"});
-    if (!program)
-        return std::unexpected(program.error());
+    auto cascade = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow.frag"});
+    if (!cascade)
+        return std::unexpected(cascade.error());
+    auto distance = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow_distance.frag"});
+    if (!distance)
+        return std::unexpected(distance.error());
     ShadowPass pass;
-    pass.depthProgram_ = std::move(*program);
+    pass.cascadeProgram_ = std::move(*cascade);
+    pass.distanceProgram_ = std::move(*distance);
     return pass;
 }
 
-scene::Expected<void> ShadowPass::ensureMap(int size) {
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+scene::Expected<void> ShadowPass::ensureTarget(LayeredTarget& t, GLenum target, int size, int layers) {
+    if (layers == 0) {
+        t = LayeredTarget{}; // free what a light that is gone used
+        return {};
+    }
+    GLint maxSize = 0, maxLayers = 0;
+    glGetIntegerv(target == GL_TEXTURE_CUBE_MAP_ARRAY ? GL_MAX_CUBE_MAP_TEXTURE_SIZE : GL_MAX_TEXTURE_SIZE, &maxSize);
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
     if (size > maxSize)
         return makeError(ErrorCode::OutOfRange, "render", "parameters.shadow.mapSize",
                          std::to_string(size) + " exceeds this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
-    if (size == size_)
+    if (layers > maxLayers)
+        return makeError(ErrorCode::OutOfRange, "render", "shadow maps",
+                         std::to_string(layers) + " layers exceed GL_MAX_ARRAY_TEXTURE_LAYERS " +
+                             std::to_string(maxLayers));
+    if (t.target == target && t.size == size && t.layers == layers)
         return {};
-    size_ = size;
-    map_ = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(map_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
-    glTextureParameteri(map_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(map_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    fbo_ = createFramebuffer();
-    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, map_.id(), 0);
-    glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
-    if (glGetError() == GL_OUT_OF_MEMORY)
-        return makeError(ErrorCode::OutOfRange, "render", "shadow map", "the GPU ran out of memory allocating it");
+    t.target = target;
+    t.size = size;
+    t.layers = layers;
+    t.texture = createTexture(target);
+    glTextureStorage3D(t.texture.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+    setDepthSampling(t.texture.id(), false);
+    GLuint view = 0;
+    glGenTextures(1, &view); // a view needs a name that was never bound
+    glTextureView(view, target, t.texture.id(), GL_DEPTH_COMPONENT32F, 0, 1, 0, GLuint(layers));
+    t.compareView = Texture(view);
+    setDepthSampling(view, true);
+    t.fbo = createFramebuffer();
+    glNamedFramebufferTexture(t.fbo.id(), GL_DEPTH_ATTACHMENT, t.texture.id(), 0); // layered: gl_Layer picks
+    glNamedFramebufferDrawBuffer(t.fbo.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(t.fbo.id(), GL_NONE);
+    if (glGetError() == GL_OUT_OF_MEMORY) {
+        t = LayeredTarget{};
+        return makeError(ErrorCode::OutOfRange, "render", "shadow maps", "the GPU ran out of memory allocating them");
+    }
     return {};
+}
+
+void ShadowPass::drawLayers(GLuint p, const SceneGpu& geometry, const MaterialGpu& materials,
+                            const std::vector<const DrawItem*>& items, const glm::mat4* viewProj, int layerCount,
+                            int firstLayer) const {
+    glProgramUniform1i(p, loc(p, "uLayerCount"), layerCount);
+    glProgramUniform1i(p, loc(p, "uFirstLayer"), firstLayer);
+    glProgramUniformMatrix4fv(p, loc(p, "uLayerViewProj"), layerCount, GL_FALSE, glm::value_ptr(viewProj[0]));
+    geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
 }
 
 scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneGpu& geometry,
                                          const MaterialGpu& materials) {
-    lightIndex_ = findShadowLight(frame.scene);
-    if (lightIndex_ < 0)
-        return {};
-    if (auto ok = ensureMap(frame.params.getInt("shadow.mapSize")); !ok)
+    const scene::Scene& s = frame.scene;
+    lights_ = selectShadowLights(s);
+    const int mapSize = frame.params.getInt("shadow.mapSize");
+    const int cascadeCount = std::clamp(frame.params.getInt("shadow.cascades"), 1, kMaxLayersPerPass);
+    const scene::Bounds bounds = s.worldBounds();
+
+    if (auto ok = ensureTarget(cascadeMap_, GL_TEXTURE_2D_ARRAY, mapSize, lights_.sun >= 0 ? cascadeCount : 0); !ok)
         return ok;
-    view_ = makeShadowView(frame.scene.lights[std::size_t(lightIndex_)], frame.scene.worldBounds(), size_);
+    if (auto ok = ensureTarget(spotMap_, GL_TEXTURE_2D_ARRAY, mapSize, int(lights_.spots.size())); !ok)
+        return ok;
+    if (auto ok = ensureTarget(pointMap_, GL_TEXTURE_CUBE_MAP_ARRAY, pointFaceSize(mapSize),
+                               6 * int(lights_.points.size()));
+        !ok)
+        return ok;
+
+    cascades_.clear();
+    spotViews_.clear();
+    pointViews_.clear();
+    spotPositions_.clear();
+    pointPositions_.clear();
+    localLightRadius_ = 0.5f * frame.params.getFloat("shadow.softness");
+    if (lights_.sun >= 0) {
+        const CascadeSettings settings{cascadeCount, mapSize, frame.params.getBool("shadow.stabilize"),
+                                       kCascadeSplitLambda};
+        cascades_ = buildCascades(cascadeCamera(frame), s.lights[std::size_t(lights_.sun)].direction, bounds, settings);
+    }
+    for (int i : lights_.spots) {
+        spotViews_.push_back(spotShadowView(s.lights[std::size_t(i)], bounds));
+        spotPositions_.push_back(s.lights[std::size_t(i)].position);
+    }
+    for (int i : lights_.points) {
+        pointViews_.push_back(pointShadowView(s.lights[std::size_t(i)], bounds));
+        pointPositions_.push_back(s.lights[std::size_t(i)].position);
+    }
+    if (cascades_.empty() && spotViews_.empty() && pointViews_.empty())
+        return {};
+
     frame.timer.begin("shadowMap");
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, size_, size_);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE); // one-sided walls (the Cornell box) must still cast shadows
-    glClear(GL_DEPTH_BUFFER_BIT);
-    // Slope-scaled depth bias: receivers nearly parallel to the light's rays
-    // (the Cornell walls under a ceiling light) otherwise show acne stripes.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 2.0f);
-    const GLuint p = depthProgram_.id();
-    glUseProgram(p);
-    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uLightViewProj"), 1, GL_FALSE,
-                              glm::value_ptr(view_.viewProj));
-    const auto items = buildDrawList(geometry.draws(), view_.viewProj, glm::vec3(0.0f));
-    geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
-    glDisable(GL_POLYGON_OFFSET_FILL);
+
+    if (!cascades_.empty()) {
+        glBindFramebuffer(GL_FRAMEBUFFER, cascadeMap_.fbo.id());
+        glViewport(0, 0, mapSize, mapSize);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        // Slope-scaled depth bias: receivers nearly parallel to the light's rays
+        // otherwise show acne stripes.
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(2.0f, 2.0f);
+        const GLuint p = cascadeProgram_.id();
+        glUseProgram(p);
+        // Cull once against the box around all cascades; shadow.geom drops
+        // triangles outside each cascade.
+        const glm::mat4 unionBox =
+            cascadeUnionViewProj(cascades_, s.lights[std::size_t(lights_.sun)].direction, bounds);
+        const auto items = buildDrawList(geometry.draws(), unionBox, glm::vec3(0.0f));
+        std::vector<glm::mat4> matrices;
+        for (const ShadowCascade& c : cascades_)
+            matrices.push_back(c.viewProj);
+        drawLayers(p, geometry, materials, items, matrices.data(), int(matrices.size()), 0);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+
+    // Local lights write distance / far from the fragment shader (no polygon
+    // offset applies to it; shadow_sampling.glsl biases the comparison instead).
+    const GLuint dp = distanceProgram_.id();
+    glUseProgram(dp);
+    auto drawLocal = [&](const LayeredTarget& target, const std::vector<LocalShadowView>& views,
+                         const std::vector<glm::vec3>& positions, bool cube) {
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
+        glViewport(0, 0, target.size, target.size);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            const LocalShadowView& v = views[i];
+            glProgramUniform3fv(dp, loc(dp, "uLightPos"), 1, glm::value_ptr(positions[i]));
+            glProgramUniform1f(dp, loc(dp, "uFar"), v.farPlane);
+            const glm::mat4 cullBox = cube ? sphereBoxViewProj(positions[i], v.farPlane) : v.viewProj[0];
+            const auto items = buildDrawList(geometry.draws(), cullBox, positions[i]);
+            drawLayers(dp, geometry, materials, items, v.viewProj.data(), v.faces, int(i) * v.faces);
+        }
+    };
+    if (!spotViews_.empty())
+        drawLocal(spotMap_, spotViews_, spotPositions_, false);
+    if (!pointViews_.empty())
+        drawLocal(pointMap_, pointViews_, pointPositions_, true);
     frame.timer.end("shadowMap");
     return {};
 }
 
 int ShadowPass::bindForShading(GLuint program, const FrameContext& frame, int firstUnit) const {
-    auto loc = [&](const char* name) { return glGetUniformLocation(program, name); };
-    glProgramUniform1i(program, loc("uShadowLight"), lightIndex_);
-    glProgramUniformMatrix4fv(program, loc("uShadowViewProj"), 1, GL_FALSE, glm::value_ptr(view_.viewProj));
-    glProgramUniform1f(program, loc("uShadowTexel"), view_.texelWorld);
-    glProgramUniform1i(program, loc("uShadowPerspective"), view_.perspective ? 1 : 0);
-    glProgramUniform1f(program, loc("uShadowBias"), frame.params.getFloat("shadow.bias"));
-    glProgramUniform1f(program, loc("uShadowSoftness"), frame.params.getFloat("shadow.softness"));
-    glProgramUniform1i(program, loc("uShadowMap"), firstUnit);
-    glBindTextureUnit(GLuint(firstUnit), map_.id());
-    return firstUnit + 1;
+    const GLuint p = program;
+    glProgramUniform1f(p, loc(p, "uShadowBias"), frame.params.getFloat("shadow.bias"));
+    glProgramUniformMatrix4fv(p, loc(p, "uShadowCameraView"), 1, GL_FALSE, glm::value_ptr(frame.view));
+
+    // The sun: shadow.softness is its angular diameter in degrees.
+    glProgramUniform1i(p, loc(p, "uSunShadowLight"), cascades_.empty() ? -1 : lights_.sun);
+    glProgramUniform1i(p, loc(p, "uCascadeCount"), int(cascades_.size()));
+    for (std::size_t k = 0; k < cascades_.size(); ++k) {
+        const std::string idx = "[" + std::to_string(k) + "]";
+        const ShadowCascade& c = cascades_[k];
+        glProgramUniformMatrix4fv(p, loc(p, "uCascadeViewProj" + idx), 1, GL_FALSE, glm::value_ptr(c.viewProj));
+        glProgramUniform1f(p, loc(p, "uCascadeSplitFar" + idx), c.splitFar);
+        glProgramUniform1f(p, loc(p, "uCascadeTexel" + idx), c.texelWorld);
+        glProgramUniform1f(p, loc(p, "uCascadeDepthRange" + idx), c.depthRange);
+    }
+    const float softness = frame.params.getFloat("shadow.softness");
+    glProgramUniform1f(p, loc(p, "uSunTanHalfAngle"), std::tan(glm::radians(0.5f * softness)));
+
+    // Point and spot lights: shadow.softness is their diameter in scene units.
+    glProgramUniform1f(p, loc(p, "uLocalLightRadius"), localLightRadius_);
+    for (int i = 0; i < kMaxShadedLights; ++i) {
+        const std::string idx = "[" + std::to_string(i) + "]";
+        const auto spot = std::find(lights_.spots.begin(), lights_.spots.end(), i);
+        const auto point = std::find(lights_.points.begin(), lights_.points.end(), i);
+        glProgramUniform1i(p, loc(p, "uSpotShadowLayer" + idx),
+                           spot == lights_.spots.end() ? -1 : int(spot - lights_.spots.begin()));
+        glProgramUniform1i(p, loc(p, "uPointShadowLayer" + idx),
+                           point == lights_.points.end() ? -1 : int(point - lights_.points.begin()));
+    }
+    for (std::size_t i = 0; i < spotViews_.size(); ++i) {
+        const std::string idx = "[" + std::to_string(i) + "]";
+        glProgramUniformMatrix4fv(p, loc(p, "uSpotViewProj" + idx), 1, GL_FALSE,
+                                  glm::value_ptr(spotViews_[i].viewProj[0]));
+        glProgramUniform1f(p, loc(p, "uSpotTanHalfFov" + idx), spotViews_[i].tanHalfFov);
+        glProgramUniform3fv(p, loc(p, "uSpotPosition" + idx), 1, glm::value_ptr(spotPositions_[i]));
+        glProgramUniform1f(p, loc(p, "uSpotFar" + idx), spotViews_[i].farPlane);
+    }
+    for (std::size_t i = 0; i < pointViews_.size(); ++i) {
+        const std::string idx = "[" + std::to_string(i) + "]";
+        glProgramUniform3fv(p, loc(p, "uPointPosition" + idx), 1, glm::value_ptr(pointPositions_[i]));
+        glProgramUniform1f(p, loc(p, "uPointFar" + idx), pointViews_[i].farPlane);
+    }
+
+    // Every sampler gets its own unit even when its map does not exist:
+    // samplers of different types may not share a unit.
+    struct Binding {
+        const char* name;
+        GLuint texture;
+    };
+    const Binding bindings[] = {{"uCascadeCompare", cascadeMap_.compareView.id()},
+                                {"uCascadeDepth", cascadeMap_.texture.id()},
+                                {"uSpotCompare", spotMap_.compareView.id()},
+                                {"uSpotDepth", spotMap_.texture.id()},
+                                {"uPointCompare", pointMap_.compareView.id()},
+                                {"uPointDepth", pointMap_.texture.id()}};
+    int unit = firstUnit;
+    for (const Binding& b : bindings) {
+        glProgramUniform1i(p, loc(p, b.name), unit);
+        glBindTextureUnit(GLuint(unit), b.texture);
+        ++unit;
+    }
+    return unit;
 }
 
 std::vector<DebugImage> ShadowPass::debugImages() const {
-    if (lightIndex_ < 0 || size_ == 0)
-        return {};
-    DebugImage image{"shadow-map", size_, size_, 1, {}};
-    image.pixels.resize(std::size_t(size_) * std::size_t(size_));
-    glGetTextureImage(map_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(image.pixels.size() * sizeof(float)),
-                      image.pixels.data());
-    return {image};
+    std::vector<DebugImage> images;
+    auto readLayer = [&](const LayeredTarget& t, int layer, std::string name) {
+        DebugImage image{std::move(name), t.size, t.size, 1, {}};
+        image.pixels.resize(std::size_t(t.size) * std::size_t(t.size));
+        glGetTextureSubImage(t.texture.id(), 0, 0, 0, layer, t.size, t.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             GLsizei(image.pixels.size() * sizeof(float)), image.pixels.data());
+        // GL rows are bottom to top; DebugImage rows top to bottom.
+        const std::size_t row = std::size_t(t.size);
+        for (int y = 0; y < t.size / 2; ++y)
+            std::swap_ranges(image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                             image.pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                             image.pixels.begin() + std::ptrdiff_t(std::size_t(t.size - 1 - y) * row));
+        images.push_back(std::move(image));
+    };
+    for (std::size_t k = 0; k < cascades_.size() && cascadeMap_.texture; ++k)
+        readLayer(cascadeMap_, int(k), "shadow-cascade-" + std::to_string(k));
+    for (std::size_t i = 0; i < spotViews_.size() && spotMap_.texture; ++i)
+        readLayer(spotMap_, int(i), "shadow-spot-" + std::to_string(i));
+    static const char* faces[] = {"px", "nx", "py", "ny", "pz", "nz"};
+    for (std::size_t i = 0; i < pointViews_.size() && pointMap_.texture; ++i)
+        for (int f = 0; f < 6; ++f)
+            readLayer(pointMap_, int(i) * 6 + f, "shadow-point-" + std::to_string(i) + "-" + faces[f]);
+    return images;
 }
 
 } // namespace lpv::renderer

@@ -1,13 +1,22 @@
 #pragma once
-// Shadow maps for the scene's lights, and what forward shading needs to
-// sample them (shaders/shadow_sampling.glsl).
+// Shadow maps of one frame and what forward shading needs to sample them
+// (shaders/shadow_sampling.glsl):
+//  - the sun: shadow.cascades cascades (ShadowCascades.h) rendered in ONE pass
+//    into the layers of a 2D-array depth texture (shadow.geom, invocation per layer);
+//  - spot lights: one perspective layer each of a 2D-array texture;
+//  - point lights: one cube of a cube-map array each, its six faces in one pass.
+// Spot and point maps store distance / far. At most kMaxShadowedLocalLights
+// local lights are shadowed; nothing is allocated for lights the scene lacks.
 #include "FrameContext.h"
 #include "MaterialGpu.h"
-#include "ShadowView.h"
+#include "ShadowCascades.h"
+#include "ShadowLights.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/Error.h"
+
+#include <vector>
 
 namespace lpv::renderer {
 
@@ -19,22 +28,46 @@ public:
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials);
 
     // Sets the uniforms of shadow_sampling.glsl in `program` and binds its
-    // textures from unit `firstUnit` on; returns the next free unit.
+    // textures to units firstUnit.. firstUnit + 5; returns the next free unit.
     int bindForShading(GLuint program, const FrameContext& frame, int firstUnit) const;
 
-    // The depth of every shadow map of the last frame.
+    // One image per cascade ("shadow-cascade-K", depth 0..1), per spot light
+    // ("shadow-spot-K", distance / far) and per point-light cube face
+    // ("shadow-point-K-FACE", distance / far) of the last frame.
     std::vector<DebugImage> debugImages() const;
+
+    // The sun's cascades of the last frame (empty without a shadowed sun).
+    const std::vector<ShadowCascade>& cascades() const { return cascades_; }
 
 private:
     ShadowPass() = default;
-    scene::Expected<void> ensureMap(int size);
 
-    Program depthProgram_;
-    int lightIndex_ = -1;
-    ShadowView view_;
-    int size_ = 0;
-    Texture map_;
-    Framebuffer fbo_;
+    // A layered depth texture and its framebuffer, reallocated when its shape
+    // changes. `texture` reads raw depth (blocker search); `compareView`, a
+    // texture view of the same storage, compares with linear filtering (PCF).
+    // Views rather than sampler objects, so no sampler state leaks into later passes.
+    struct LayeredTarget {
+        GLenum target = 0;
+        int size = 0;
+        int layers = 0;
+        Texture texture;
+        Texture compareView;
+        Framebuffer fbo;
+    };
+    static scene::Expected<void> ensureTarget(LayeredTarget& t, GLenum target, int size, int layers);
+    void drawLayers(GLuint program, const SceneGpu& geometry, const MaterialGpu& materials,
+                    const std::vector<const DrawItem*>& items, const glm::mat4* viewProj, int layerCount,
+                    int firstLayer) const;
+
+    Program cascadeProgram_;  // shadow.vert + shadow.geom + shadow.frag
+    Program distanceProgram_; // shadow.vert + shadow.geom + shadow_distance.frag
+
+    ShadowLightSelection lights_;
+    std::vector<ShadowCascade> cascades_;
+    std::vector<LocalShadowView> spotViews_, pointViews_;
+    std::vector<glm::vec3> spotPositions_, pointPositions_;
+    float localLightRadius_ = 0.0f;
+    LayeredTarget cascadeMap_, spotMap_, pointMap_;
 };
 
 } // namespace lpv::renderer

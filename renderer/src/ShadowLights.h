@@ -1,0 +1,40 @@
+#pragma once
+// Which lights get shadow maps, and the light-space views of spot and point
+// lights (the sun's cascades are in ShadowCascades.h). Plain math, no GL.
+#include "lpv/scene/Scene.h"
+
+#include <array>
+#include <vector>
+
+namespace lpv::renderer {
+
+// Shading reads at most this many lights (common.glsl MAX_LIGHTS).
+inline constexpr int kMaxShadedLights = 8;
+// At most this many point and spot lights together get a shadow map; each
+// costs a full scene pass (six cube faces for a point light), so the first
+// four shadow-casting local lights in scene order get them, the rest are unshadowed.
+inline constexpr int kMaxShadowedLocalLights = 4;
+
+struct ShadowLightSelection {
+    int sun = -1;            // first shadow-casting directional light, -1 = none
+    std::vector<int> spots;  // light indices, in scene order
+    std::vector<int> points; // light indices, in scene order
+};
+
+ShadowLightSelection selectShadowLights(const scene::Scene& scene);
+
+// Perspective view of one local light: 1 face for a spot, 6 cube faces for a
+// point light (in GL cube-map face order +X, -X, +Y, -Y, +Z, -Z). The map
+// stores distance to the light divided by `far`.
+struct LocalShadowView {
+    std::array<glm::mat4, 6> viewProj{};
+    int faces = 1;
+    float nearPlane = 0.01f;
+    float farPlane = 1.0f;
+    float tanHalfFov = 1.0f; // of one face
+};
+
+LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);
+LocalShadowView pointShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);
+
+} // namespace lpv::renderer
