@@ -7,6 +7,13 @@
 
 namespace lpv::renderer {
 
+int findSun(const scene::Scene& scene) {
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].type == scene::LightType::Directional)
+            return int(i);
+    return -1;
+}
+
 LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& settings) {
     LpvCascade c;
     c.gridSize = std::max(settings.gridSize, 1);
@@ -79,9 +86,25 @@ RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection, co
         nearDepth = std::min(nearDepth, -all.max.z);
     t.nearDepth = nearDepth - margin;
     t.farDepth = -cube.min.z + margin;
+    t.windowMin = glm::vec2(lo);
+    t.windowMax = glm::vec2(hi);
     t.projection = glm::ortho(float(lo.x), float(hi.x), float(lo.y), float(hi.y), t.nearDepth, t.farDepth);
     t.viewProj = t.projection * t.view;
     return t;
+}
+
+glm::mat4 rsmUnionViewProj(const std::vector<RsmTile>& tiles) {
+    if (tiles.empty())
+        return glm::mat4(1.0f);
+    glm::vec2 lo = tiles.front().windowMin, hi = tiles.front().windowMax;
+    float nearDepth = tiles.front().nearDepth, farDepth = tiles.front().farDepth;
+    for (const RsmTile& t : tiles) {
+        lo = glm::min(lo, t.windowMin);
+        hi = glm::max(hi, t.windowMax);
+        nearDepth = std::min(nearDepth, t.nearDepth);
+        farDepth = std::max(farDepth, t.farDepth);
+    }
+    return glm::ortho(lo.x, hi.x, lo.y, hi.y, nearDepth, farDepth) * tiles.front().view;
 }
 
 } // namespace lpv::renderer

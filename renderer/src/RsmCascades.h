@@ -14,7 +14,7 @@
 // same piece of the world while the cube stays put. Its depth range reaches
 // back toward the sun to the scene's bounds, so a caster above the cube
 // still shadows (and hides) what lies below it.
-#include "lpv/scene/Mesh.h"
+#include "lpv/scene/Scene.h"
 
 #include <glm/glm.hpp>
 
@@ -25,6 +25,9 @@ namespace lpv::renderer {
 // The most cascades an RSM renders in one pass (rsm.cascades' upper bound;
 // also the geometry shader's invocation count in shaders/rsm.geom).
 inline constexpr int kMaxRsmCascades = 6;
+
+// The sun: the scene's first directional light; -1 if it has none.
+int findSun(const scene::Scene& scene);
 
 struct LpvCascade {
     glm::vec3 origin{0.0f}; // world-space minimum corner
@@ -53,6 +56,8 @@ struct RsmTile {
     glm::mat4 viewProj{1.0f};
     float texelSize = 0.0f;   // width = height of one texel in world units, across the sun's rays
     float texelArea = 0.0f;   // texelSize^2: area of a texel on a plane facing the sun
+    glm::vec2 windowMin{0.0f}; // light-space x, y of the tile's edges (a whole number of texels)
+    glm::vec2 windowMax{0.0f};
     float nearDepth = 0.0f;   // light-space depth range of the projection (distance along the rays)
     float farDepth = 0.0f;
 };
@@ -66,6 +71,10 @@ glm::mat4 sunView(const glm::vec3& direction);
 // toward the sun; `tileSize` is the tile's width and height in texels (>= 2).
 RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection, const scene::Bounds& sceneBounds,
                     int tileSize);
+
+// One orthographic view-projection holding every tile (they share the sun's
+// rotation): draw items outside it are culled before the single RSM pass.
+glm::mat4 rsmUnionViewProj(const std::vector<RsmTile>& tiles);
 
 // The light-space bounding box (view space of sunView) of `box`.
 scene::Bounds lightSpaceBounds(const glm::mat4& view, const scene::Bounds& box);

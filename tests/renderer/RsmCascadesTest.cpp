@@ -115,10 +115,47 @@ TEST(RsmCascades, TileTexelsAreStableInLightSpace) {
     const auto t0 = renderer::makeRsmTile(c0, kSun, {}, 64);
     const auto t1 = renderer::makeRsmTile(c1, kSun, {}, 64);
     EXPECT_FLOAT_EQ(t0.texelSize, t1.texelSize);
-    // Light-space x of the window's left edge: ndc -1 -> x = (-1 - p[3][0]) / p[0][0].
-    auto left = [](const renderer::RsmTile& t) { return (-1.0f - t.projection[3][0]) / t.projection[0][0]; };
-    auto bottom = [](const renderer::RsmTile& t) { return (-1.0f - t.projection[3][1]) / t.projection[1][1]; };
+    auto left = [](const renderer::RsmTile& t) { return t.windowMin.x; };
+    auto bottom = [](const renderer::RsmTile& t) { return t.windowMin.y; };
+    EXPECT_NEAR((t0.windowMax.x - t0.windowMin.x) / t0.texelSize, 64.0f, 1e-3f);
+    // The window's edges are those of the projection.
+    const glm::vec4 corner = t1.viewProj * glm::inverse(t1.view) * glm::vec4(t1.windowMin, -t1.nearDepth, 1.0f);
+    EXPECT_NEAR(corner.x, -1.0f, 1e-4f);
+    EXPECT_NEAR(corner.y, -1.0f, 1e-4f);
+    EXPECT_NEAR(corner.z, -1.0f, 1e-4f);
     EXPECT_LT(offGrid(left(t1) - left(t0), t0.texelSize), 2e-3f) << (left(t1) - left(t0)) / t0.texelSize << " texels";
     EXPECT_LT(offGrid(bottom(t1) - bottom(t0), t0.texelSize), 2e-3f)
         << (bottom(t1) - bottom(t0)) / t0.texelSize << " texels";
+}
+
+TEST(RsmCascades, UnionViewHoldsEveryTile) {
+    const scene::Bounds sceneBounds{{-10.0f, 0.0f, -10.0f}, {10.0f, 8.0f, 10.0f}};
+    std::vector<renderer::RsmTile> tiles;
+    for (const auto& c : renderer::lpvCascades({1.0f, 2.0f, 3.0f}, kSettings))
+        tiles.push_back(renderer::makeRsmTile(c, kSun, sceneBounds, 64));
+    const glm::mat4 all = renderer::rsmUnionViewProj(tiles);
+    for (const auto& t : tiles) {
+        const glm::mat4 tileToUnion = all * glm::inverse(t.viewProj);
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec4 ndc((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
+            const glm::vec4 p = tileToUnion * ndc;
+            EXPECT_LE(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}), 1.0f + 1e-4f)
+                << "cell " << t.cascade.cellSize << " corner " << i;
+        }
+    }
+}
+
+TEST(RsmCascades, SunIsTheFirstDirectionalLight) {
+    scene::Scene s;
+    EXPECT_EQ(renderer::findSun(s), -1);
+    auto light = [](scene::LightType type) {
+        scene::Light l;
+        l.type = type;
+        return l;
+    };
+    s.lights.push_back(light(scene::LightType::Point));
+    EXPECT_EQ(renderer::findSun(s), -1);
+    s.lights.push_back(light(scene::LightType::Directional));
+    s.lights.push_back(light(scene::LightType::Directional));
+    EXPECT_EQ(renderer::findSun(s), 1);
 }
