@@ -6,6 +6,7 @@
 #include "MaterialGpu.h"
 #include "RsmPass.h"
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/scene/CornellBox.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -322,6 +323,54 @@ TEST_F(Rsm, CastersAboveTheCascadeOcclude) {
         }
     });
     EXPECT_NEAR(areaHigh, 4.0f, 0.4f) << high << " texels see the caster 12 m up";
+}
+
+// Whether MaterialGpu sets coverage uniforms (alpha mode, opacity) for the RSM:
+// the stub before the materials work (issue #4, deliverable 1) sets only uDiffuse.
+bool materialGpuBindsCoverage(const scene::Scene& scene, std::uint32_t maskedMaterial) {
+    auto program = renderer::buildEmbeddedProgram({"rsm.vert", "rsm.geom", "rsm.frag"});
+    EXPECT_TRUE(program.has_value()) << (program ? "" : program.error().describe());
+    if (!program)
+        return false;
+    renderer::MaterialGpu materials(scene, {});
+    materials.bind(program->id(), maskedMaterial, renderer::MaterialBindMode::Reflectance);
+    GLint mode = 0;
+    glGetUniformiv(program->id(), glGetUniformLocation(program->id(), "uAlphaMode"), &mode);
+    return mode != 0;
+}
+
+// Alpha-masked surfaces are holes where their coverage is below the cut-off;
+// blended ones reflect (and intercept) only the light they cover.
+TEST_F(Rsm, MaskedSurfacesAreCutOutAndBlendedOnesScaleTheFlux) {
+    SceneBuilder b;
+    b.add(rectangle({0.0f, 0.0f, 0.0f}, {1, 0, 0}, {0, 0, -1}, 10.0f, 10.0f, b.material(glm::vec3(kWhite))));
+    const auto masked = b.material(glm::vec3(0.5f));
+    b.scene.materials[masked].alphaMode = scene::AlphaMode::Mask;
+    b.scene.materials[masked].opacity = 0.2f; // below the 0.5 cut-off everywhere
+    const auto blended = b.material(glm::vec3(0.5f));
+    b.scene.materials[blended].alphaMode = scene::AlphaMode::Blend;
+    b.scene.materials[blended].opacity = 0.5f;
+    b.add(rectangle({-1.0f, 2.0f, 0.0f}, {1, 0, 0}, {0, 0, -1}, 0.8f, 0.8f, masked));
+    b.add(rectangle({1.0f, 2.0f, 0.0f}, {1, 0, 0}, {0, 0, -1}, 0.8f, 0.8f, blended));
+    b.sun(kDown);
+    if (!materialGpuBindsCoverage(b.scene, masked))
+        GTEST_SKIP() << "MaterialGpu does not bind coverage uniforms yet";
+    const auto r = render(b.scene, rsmParams(64, 1));
+    ASSERT_TRUE(r);
+    const float perTexel = kIrradiance * r->tiles[0].texelArea;
+    int maskedSeen = 0, blendedSeen = 0;
+    float worstBlend = 0.0f;
+    r->forEachCovered(0, [&](int, int, const Texel& t) {
+        if (t.position.y > 1.0f && t.position.x < 0.0f)
+            ++maskedSeen;
+        if (t.position.y > 1.0f && t.position.x > 0.0f) {
+            ++blendedSeen;
+            worstBlend = std::max(worstBlend, std::abs(t.flux.g / (perTexel * 0.5f * 0.5f) - 1.0f));
+        }
+    });
+    EXPECT_EQ(maskedSeen, 0) << "texels on the masked-out plane";
+    EXPECT_GT(blendedSeen, 300);
+    EXPECT_LT(worstBlend, 0.01f) << "blended flux = albedo x opacity x E x A, worst error " << worstBlend;
 }
 
 TEST_F(Rsm, WithoutSunNothingIsAllocated) {
