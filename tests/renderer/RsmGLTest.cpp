@@ -305,6 +305,45 @@ TEST_F(Rsm, CascadeTilesNestAndQuadrupleTexelArea) {
     }
 }
 
+// The tiles do not swim: a camera move inside a cell leaves the tile unchanged,
+// a move across cells shifts its content by whole texels.
+TEST_F(Rsm, TilesDoNotSwimWhenTheCameraMoves) {
+    SceneBuilder b;
+    b.add(rectangle({0.0f, 0.0f, 0.0f}, {1, 0, 0}, {0, 0, -1}, 30.0f, 30.0f, b.material(glm::vec3(kWhite))));
+    b.add(rectangle({0.4f, 0.6f, -0.3f}, {1, 0, 0}, glm::normalize(glm::vec3(0, 1, -1)), 0.7f, 0.5f,
+                    b.material(glm::vec3(0.3f, 0.6f, 0.2f))));
+    b.sun(glm::normalize(glm::vec3(0.35f, -1.0f, 0.25f)));
+    const auto params = rsmParams(64, 1); // cells of 0.5 m
+    const auto before = render(b.scene, params, {0.1f, 1.0f, 0.1f});
+    const auto inside = render(b.scene, params, {0.2f, 1.05f, 0.15f}); // same cell-rounded corner
+    const auto across = render(b.scene, params, {1.1f, 1.0f, -0.4f});  // two cells +x, one cell -z
+    ASSERT_TRUE(before && inside && across);
+    EXPECT_EQ(before->image(0, 0).pixels, inside->image(0, 0).pixels) << "positions changed within a cell";
+    EXPECT_EQ(before->image(0, 2).pixels, inside->image(0, 2).pixels) << "flux changed within a cell";
+
+    const glm::vec2 shift = (across->tiles[0].windowMin - before->tiles[0].windowMin) / before->tiles[0].texelSize;
+    const glm::ivec2 d = glm::ivec2(glm::round(shift));
+    EXPECT_LT(glm::length(shift - glm::vec2(d)), 1e-2f) << "window moved by " << shift.x << ", " << shift.y << " texels";
+    ASSERT_TRUE(d != glm::ivec2(0)) << "the move must shift the tile";
+    float worst = 0.0f;
+    int compared = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            // Texel (x, y) of `across` (rows top to bottom) is texel (x + dx, y - dy) of `before`.
+            const int bx = x + d.x, by = y - d.y;
+            if (bx < 0 || by < 0 || bx >= 64 || by >= 64)
+                continue;
+            const Texel a = across->at(0, x, y), o = before->at(0, bx, by);
+            worst = std::max({worst, glm::length(glm::vec3(a.position) - glm::vec3(o.position)),
+                              glm::length(glm::vec3(a.flux) / across->tiles[0].texelArea -
+                                          glm::vec3(o.flux) / before->tiles[0].texelArea)});
+            ++compared;
+        }
+    EXPECT_GT(compared, 64 * 32);
+    EXPECT_LT(worst, 1e-3f) << "after a shift by (" << d.x << ", " << d.y << ") texels the worst difference is "
+                            << worst << " over " << compared << " texels";
+}
+
 // A caster above the cube (outside it, toward the sun) still hides what lies below it.
 TEST_F(Rsm, CastersAboveTheCascadeOcclude) {
     SceneBuilder b;
