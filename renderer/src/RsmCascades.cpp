@@ -56,8 +56,8 @@ scene::Bounds lightSpaceBounds(const glm::mat4& view, const scene::Bounds& box) 
     return out;
 }
 
-RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection, const scene::Bounds& sceneBounds,
-                    int tileSize) {
+RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection,
+                    const scene::Bounds& sceneBounds, int tileSize) {
     RsmTile t;
     t.cascade = cascade;
     t.view = sunView(sunDirection);

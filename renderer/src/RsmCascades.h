@@ -5,8 +5,8 @@
 // Cascade k is an axis-aligned cube of gridSize^3 cells of size
 // cellSize * 2^k around the camera. With snapping on, its corner sits on a
 // multiple of its own cell size, so the grid does not swim as the camera
-// moves (it jumps by whole cells instead). Cascade k+1 contains cascade k and
-// its cell corners are also cell corners of cascade k.
+// moves (it jumps by whole cells instead). Cascade k+1 contains cascade k
+// (for gridSize >= 3) and its cell corners are also cell corners of cascade k.
 //
 // RSM tile k is an orthographic view along the sun's direction that covers
 // cascade k: its window is the cube's bounding box in light space, made
@@ -50,15 +50,15 @@ LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& 
 std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const LpvCascadeSettings& settings);
 
 struct RsmTile {
-    LpvCascade cascade;       // the cube this tile covers
-    glm::mat4 view{1.0f};     // world -> light space (a rotation; the sun looks down -z)
+    LpvCascade cascade;   // the cube this tile covers
+    glm::mat4 view{1.0f}; // world -> light space (a rotation; the sun looks down -z)
     glm::mat4 projection{1.0f};
     glm::mat4 viewProj{1.0f};
-    float texelSize = 0.0f;   // width = height of one texel in world units, across the sun's rays
-    float texelArea = 0.0f;   // texelSize^2: area of a texel on a plane facing the sun
-    glm::vec2 windowMin{0.0f}; // light-space x, y of the tile's edges (a whole number of texels)
+    float texelSize = 0.0f;    // width = height of one texel in world units, across the sun's rays
+    float texelArea = 0.0f;    // texelSize^2: area of a texel on a plane facing the sun
+    glm::vec2 windowMin{0.0f}; // light-space x, y of the tile's edges, on multiples of texelSize
     glm::vec2 windowMax{0.0f};
-    float nearDepth = 0.0f;   // light-space depth range of the projection (distance along the rays)
+    float nearDepth = 0.0f; // light-space depth range of the projection (distance along the rays)
     float farDepth = 0.0f;
 };
 
@@ -69,8 +69,8 @@ glm::mat4 sunView(const glm::vec3& direction);
 
 // Tile for one cascade. `sceneBounds` (may be empty) extends the depth range
 // toward the sun; `tileSize` is the tile's width and height in texels (>= 2).
-RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection, const scene::Bounds& sceneBounds,
-                    int tileSize);
+RsmTile makeRsmTile(const LpvCascade& cascade, const glm::vec3& sunDirection,
+                    const scene::Bounds& sceneBounds, int tileSize);
 
 // One orthographic view-projection holding every tile (they share the sun's
 // rotation): draw items outside it are culled before the single RSM pass.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <string>
 
 namespace lpv::renderer {
@@ -16,6 +17,12 @@ using scene::makeError;
 namespace {
 
 constexpr std::size_t kBytesPerTexel = 16 + 8 + 8 + 4; // position, normal, flux, depth
+
+std::string hex(GLenum value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%04X", unsigned(value));
+    return text;
+}
 
 GLint getInt(GLenum name) {
     GLint v = 0;
@@ -37,7 +44,8 @@ Texture makeArray(GLenum format, int size, int layers) {
 } // namespace
 
 RsmTargetLimits RsmTargetLimits::query() {
-    return {getInt(GL_MAX_TEXTURE_SIZE), getInt(GL_MAX_ARRAY_TEXTURE_LAYERS), getInt(GL_MAX_FRAMEBUFFER_LAYERS),
+    return {getInt(GL_MAX_TEXTURE_SIZE), getInt(GL_MAX_ARRAY_TEXTURE_LAYERS),
+            getInt(GL_MAX_FRAMEBUFFER_LAYERS),
             std::min(getInt(GL_MAX_FRAMEBUFFER_WIDTH), getInt(GL_MAX_FRAMEBUFFER_HEIGHT))};
 }
 
@@ -46,13 +54,15 @@ scene::Expected<void> checkRsmTargets(int tileSize, int tiles, const RsmTargetLi
     if (tileSize < 1 || tileSize > maxSize)
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.tileSize",
                          std::to_string(tileSize) + " exceeds this GPU's largest render target " +
-                             std::to_string(maxSize) + " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT)");
+                             std::to_string(maxSize) +
+                             " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT)");
     const int maxLayers = std::min({limits.maxArrayLayers, limits.maxFramebufferLayers, kMaxRsmCascades});
     if (tiles < 1 || tiles > maxLayers)
-        return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.cascades",
-                         std::to_string(tiles) + " tiles; this GPU renders 1.." + std::to_string(maxLayers) +
-                             " in one layered pass (GL_MAX_ARRAY_TEXTURE_LAYERS, GL_MAX_FRAMEBUFFER_LAYERS, " +
-                             std::to_string(kMaxRsmCascades) + " geometry-shader invocations)");
+        return makeError(
+            ErrorCode::OutOfRange, "render", "parameters.rsm.cascades",
+            std::to_string(tiles) + " tiles; this GPU renders 1.." + std::to_string(maxLayers) +
+                " in one layered pass (GL_MAX_ARRAY_TEXTURE_LAYERS, GL_MAX_FRAMEBUFFER_LAYERS, " +
+                std::to_string(kMaxRsmCascades) + " geometry-shader invocations)");
     return {};
 }
 
@@ -100,8 +110,8 @@ scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
     const std::string what = std::to_string(layers) + " RSM tiles of " + std::to_string(tileSize) + "^2 (" +
-                             std::to_string(std::size_t(tileSize) * std::size_t(tileSize) * std::size_t(layers) *
-                                            kBytesPerTexel / (1024 * 1024)) +
+                             std::to_string(std::size_t(tileSize) * std::size_t(tileSize) *
+                                            std::size_t(layers) * kBytesPerTexel / (1024 * 1024)) +
                              " MiB)";
     if (glGetError() == GL_OUT_OF_MEMORY) {
         releaseTargets();
@@ -112,7 +122,8 @@ scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
         status != GL_FRAMEBUFFER_COMPLETE) {
         releaseTargets();
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.tileSize",
-                         "the framebuffer of " + what + " is incomplete (status 0x" + std::to_string(status) + ")");
+                         "the framebuffer of " + what + " is incomplete (status " +
+                             hex(status) + ")");
     }
     tileSize_ = tileSize;
     layers_ = layers;
@@ -136,7 +147,8 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
 
     const scene::Light& sun = frame.scene.lights[std::size_t(sunIndex_)];
     const LpvCascadeSettings settings{count, frame.params.getInt("lpv.gridSize"),
-                                      frame.params.getFloat("lpv.cellSize"), frame.params.getBool("lpv.cellSnapping")};
+                                      frame.params.getFloat("lpv.cellSize"),
+                                      frame.params.getBool("lpv.cellSnapping")};
     const scene::Bounds sceneBounds = frame.scene.worldBounds();
     std::array<glm::mat4, kMaxRsmCascades> viewProj{};
     std::array<float, kMaxRsmCascades> texelArea{};

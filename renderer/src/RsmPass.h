@@ -31,10 +31,10 @@ namespace lpv::renderer {
 
 // The GL limits the RSM targets must fit.
 struct RsmTargetLimits {
-    int maxTextureSize = 0;        // GL_MAX_TEXTURE_SIZE
-    int maxArrayLayers = 0;        // GL_MAX_ARRAY_TEXTURE_LAYERS
-    int maxFramebufferLayers = 0;  // GL_MAX_FRAMEBUFFER_LAYERS
-    int maxFramebufferSize = 0;    // min(GL_MAX_FRAMEBUFFER_WIDTH, GL_MAX_FRAMEBUFFER_HEIGHT)
+    int maxTextureSize = 0;       // GL_MAX_TEXTURE_SIZE
+    int maxArrayLayers = 0;       // GL_MAX_ARRAY_TEXTURE_LAYERS
+    int maxFramebufferLayers = 0; // GL_MAX_FRAMEBUFFER_LAYERS
+    int maxFramebufferSize = 0;   // min(GL_MAX_FRAMEBUFFER_WIDTH, GL_MAX_FRAMEBUFFER_HEIGHT)
 
     static RsmTargetLimits query(); // of the current context
 };
@@ -43,12 +43,13 @@ struct RsmTargetLimits {
 scene::Expected<void> checkRsmTargets(int tileSize, int tiles, const RsmTargetLimits& limits);
 
 class RsmPass {
-public:
+  public:
     static scene::Expected<RsmPass> create();
 
     // Renders every tile of this frame (timed as "rsm"). Without a directional
     // light it renders nothing and frees its targets.
-    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials);
+    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
+                                 const MaterialGpu& materials);
 
     // Position, normal and flux of every tile of the last frame:
     // "rsm-K-position", "rsm-K-normal", "rsm-K-flux" (4 floats per texel).
@@ -68,7 +69,7 @@ public:
     // GPU memory held by the targets (0 when there is no sun).
     std::size_t allocatedBytes() const;
 
-private:
+  private:
     RsmPass() = default;
     scene::Expected<void> ensureTargets(int tileSize, int layers);
     void releaseTargets();

@@ -13,7 +13,8 @@ const LpvCascadeSettings kSettings{4, 32, 0.25f, true};
 const glm::vec3 kSun = glm::normalize(glm::vec3(0.3f, -1.0f, 0.45f));
 
 bool contains(const scene::Bounds& outer, const scene::Bounds& inner) {
-    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::greaterThanEqual(outer.max, inner.max));
+    return glm::all(glm::lessThanEqual(outer.min, inner.min)) &&
+           glm::all(glm::greaterThanEqual(outer.max, inner.max));
 }
 
 // Distance of x / cell from the nearest integer.
@@ -25,7 +26,8 @@ float offGrid(float x, float cell) {
 } // namespace
 
 TEST(RsmCascades, CascadesNestAndDouble) {
-    for (const glm::vec3 camera : {glm::vec3(0.0f), glm::vec3(3.37f, -1.21f, 12.9f), glm::vec3(-101.3f, 7.7f, 0.13f)}) {
+    for (const glm::vec3 camera :
+         {glm::vec3(0.0f), glm::vec3(3.37f, -1.21f, 12.9f), glm::vec3(-101.3f, 7.7f, 0.13f)}) {
         const auto cascades = renderer::lpvCascades(camera, kSettings);
         ASSERT_EQ(cascades.size(), 4u);
         for (std::size_t k = 0; k < cascades.size(); ++k) {
@@ -38,7 +40,8 @@ TEST(RsmCascades, CascadesNestAndDouble) {
                 << "cascade " << k << " centre is " << glm::length(centre - camera) << " from the camera";
             if (k > 0) {
                 EXPECT_FLOAT_EQ(c.extent(), 2.0f * cascades[k - 1].extent());
-                EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds())) << "cascade " << k << " must hold " << k - 1;
+                EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds()))
+                    << "cascade " << k << " must hold " << k - 1;
             }
         }
     }
@@ -75,7 +78,8 @@ TEST(RsmCascades, SnappingKeepsOriginsOnWholeCells) {
 
 TEST(RsmCascades, TileCoversTheCube) {
     scene::Bounds sceneBounds{{-40.0f, -5.0f, -30.0f}, {40.0f, 25.0f, 30.0f}};
-    for (const glm::vec3 sun : {kSun, glm::vec3(0.0f, -1.0f, 0.0f), glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f))}) {
+    for (const glm::vec3 sun :
+         {kSun, glm::vec3(0.0f, -1.0f, 0.0f), glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f))}) {
         for (const auto& c : renderer::lpvCascades({2.0f, 1.0f, -3.0f}, kSettings)) {
             const auto tile = renderer::makeRsmTile(c, sun, sceneBounds, 256);
             const scene::Bounds b = c.bounds();
@@ -119,11 +123,13 @@ TEST(RsmCascades, TileTexelsAreStableInLightSpace) {
     auto bottom = [](const renderer::RsmTile& t) { return t.windowMin.y; };
     EXPECT_NEAR((t0.windowMax.x - t0.windowMin.x) / t0.texelSize, 64.0f, 1e-3f);
     // The window's edges are those of the projection.
-    const glm::vec4 corner = t1.viewProj * glm::inverse(t1.view) * glm::vec4(t1.windowMin, -t1.nearDepth, 1.0f);
+    const glm::vec4 corner =
+        t1.viewProj * glm::inverse(t1.view) * glm::vec4(t1.windowMin, -t1.nearDepth, 1.0f);
     EXPECT_NEAR(corner.x, -1.0f, 1e-4f);
     EXPECT_NEAR(corner.y, -1.0f, 1e-4f);
     EXPECT_NEAR(corner.z, -1.0f, 1e-4f);
-    EXPECT_LT(offGrid(left(t1) - left(t0), t0.texelSize), 2e-3f) << (left(t1) - left(t0)) / t0.texelSize << " texels";
+    EXPECT_LT(offGrid(left(t1) - left(t0), t0.texelSize), 2e-3f)
+        << (left(t1) - left(t0)) / t0.texelSize << " texels";
     EXPECT_LT(offGrid(bottom(t1) - bottom(t0), t0.texelSize), 2e-3f)
         << (bottom(t1) - bottom(t0)) / t0.texelSize << " texels";
 }

@@ -24,8 +24,8 @@ constexpr float kWhite = 0.8f;      // albedo
 
 // A rectangle centred at `centre` spanned by +-halfU * u and +-halfV * v,
 // facing normalize(cross(u, v)), counter-clockwise seen from that side.
-scene::Mesh rectangle(const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v, float halfU, float halfV,
-                      std::uint32_t material) {
+scene::Mesh rectangle(const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v, float halfU,
+                      float halfV, std::uint32_t material) {
     scene::Mesh m;
     m.name = "rectangle";
     const glm::vec3 n = glm::normalize(glm::cross(u, v));
@@ -58,7 +58,8 @@ struct SceneBuilder {
         o.mesh = int(scene.meshes.size() - 1);
         scene.objects.push_back(o);
     }
-    void sun(const glm::vec3& direction, float intensity = kIrradiance, const glm::vec3& colour = glm::vec3(1.0f)) {
+    void sun(const glm::vec3& direction, float intensity = kIrradiance,
+             const glm::vec3& colour = glm::vec3(1.0f)) {
         scene::Light l;
         l.name = "sun";
         l.type = scene::LightType::Directional;
@@ -98,8 +99,7 @@ struct RsmResult {
         };
         return {get(0), get(1), get(2)};
     }
-    template <class F>
-    void forEachCovered(int tile, F f) const {
+    template <class F> void forEachCovered(int tile, F f) const {
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x)
                 if (const Texel t = at(tile, x, y); t.position.w > 0.5f)
@@ -107,14 +107,15 @@ struct RsmResult {
     }
     // World point under texel (x, y) (rows top to bottom) on the near plane, and the ray direction.
     glm::vec3 rayOrigin(int tile, int x, int y) const {
-        const glm::vec2 ndc((float(x) + 0.5f) / float(size) * 2.0f - 1.0f, 1.0f - (float(y) + 0.5f) / float(size) * 2.0f);
+        const glm::vec2 ndc((float(x) + 0.5f) / float(size) * 2.0f - 1.0f,
+                            1.0f - (float(y) + 0.5f) / float(size) * 2.0f);
         const glm::vec4 w = glm::inverse(tiles[std::size_t(tile)].viewProj) * glm::vec4(ndc, -1.0f, 1.0f);
         return glm::vec3(w) / w.w;
     }
 };
 
 class Rsm : public GlTest {
-protected:
+  protected:
     std::optional<RsmResult> render(const scene::Scene& scene, const scene::ParameterSet& params,
                                     const glm::vec3& cameraPos = glm::vec3(0.0f, 1.0f, 0.0f)) {
         if (!pass) {
@@ -130,8 +131,15 @@ protected:
         renderer::SceneGpu geometry(scene);
         renderer::MaterialGpu materials(scene, {});
         timer.beginFrame();
-        const renderer::FrameContext frame{scene, params, camera, 64, 64, camera.view(), camera.projection(1.0f),
-                                           camera.projection(1.0f) * camera.view(), timer};
+        const renderer::FrameContext frame{scene,
+                                           params,
+                                           camera,
+                                           64,
+                                           64,
+                                           camera.view(),
+                                           camera.projection(1.0f),
+                                           camera.projection(1.0f) * camera.view(),
+                                           timer};
         auto ok = pass->render(frame, geometry, materials);
         EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -175,7 +183,7 @@ TEST_F(Rsm, FluxOfWhitePlaneIsIrradianceTimesAlbedoTimesTexelArea) {
 // A plane tilted 45 degrees from the sun covers fewer texels, but each holds
 // the same flux; the tile's sum is albedo x E x the projected area.
 TEST_F(Rsm, TiltedPlaneKeepsPerTexelFluxAndSumsToProjectedArea) {
-    const float half = 1.0f; // a 2 m x 2 m square
+    const float half = 1.0f;                                          // a 2 m x 2 m square
     const glm::vec3 v = glm::normalize(glm::vec3(0.0f, 1.0f, -1.0f)); // tilted 45 degrees about x
     for (const bool tilted : {false, true}) {
         SceneBuilder b;
@@ -197,7 +205,8 @@ TEST_F(Rsm, TiltedPlaneKeepsPerTexelFluxAndSumsToProjectedArea) {
         const float projectedArea = 4.0f * half * half * (tilted ? std::sqrt(0.5f) : 1.0f);
         const double expectedSum = double(kIrradiance * kWhite * projectedArea);
         // Rasterisation decides the texels along the outline: at most half a texel row per edge.
-        const double edgeBound = 0.5 * (2.0 * (2.0 * half) + 2.0 * (2.0 * half * (tilted ? std::sqrt(0.5) : 1.0))) *
+        const double edgeBound = 0.5 *
+                                 (2.0 * (2.0 * half) + 2.0 * (2.0 * half * (tilted ? std::sqrt(0.5) : 1.0))) *
                                  double(tile.texelSize) / double(projectedArea);
         EXPECT_LT(worst, 0.01f) << (tilted ? "tilted" : "flat") << ": worst per-texel flux error " << worst;
         EXPECT_LT(std::abs(sum / expectedSum - 1.0), edgeBound)
@@ -236,7 +245,8 @@ TEST_F(Rsm, PositionsAndNormalsMatchThePlane) {
 // The sun sees a single-sided plane from behind: the stored normal faces the sun.
 TEST_F(Rsm, NormalsFaceTheSun) {
     SceneBuilder b;
-    b.add(rectangle({0.0f, 0.0f, 0.0f}, {1, 0, 0}, {0, 0, 1}, 3.0f, 3.0f, b.material(glm::vec3(kWhite)))); // faces -y
+    b.add(rectangle({0.0f, 0.0f, 0.0f}, {1, 0, 0}, {0, 0, 1}, 3.0f, 3.0f,
+                    b.material(glm::vec3(kWhite)))); // faces -y
     b.sun(kDown);
     const auto r = render(b.scene, rsmParams(32, 1));
     ASSERT_TRUE(r);
@@ -263,7 +273,8 @@ TEST_F(Rsm, FluxHasTheMaterialsColour) {
         const glm::vec3 albedo = t.position.x < 0.0f ? red : glm::vec3(kWhite);
         (t.position.x < 0.0f ? redTexels : whiteTexels)++;
         const glm::vec3 ratio = glm::vec3(t.flux) / (albedo * e);
-        worst = std::max({worst, std::abs(ratio.r - 1.0f), std::abs(ratio.g - 1.0f), std::abs(ratio.b - 1.0f)});
+        worst =
+            std::max({worst, std::abs(ratio.r - 1.0f), std::abs(ratio.g - 1.0f), std::abs(ratio.b - 1.0f)});
     });
     EXPECT_GT(redTexels, 1000);
     EXPECT_GT(whiteTexels, 1000);
@@ -321,9 +332,11 @@ TEST_F(Rsm, TilesDoNotSwimWhenTheCameraMoves) {
     EXPECT_EQ(before->image(0, 0).pixels, inside->image(0, 0).pixels) << "positions changed within a cell";
     EXPECT_EQ(before->image(0, 2).pixels, inside->image(0, 2).pixels) << "flux changed within a cell";
 
-    const glm::vec2 shift = (across->tiles[0].windowMin - before->tiles[0].windowMin) / before->tiles[0].texelSize;
+    const glm::vec2 shift =
+        (across->tiles[0].windowMin - before->tiles[0].windowMin) / before->tiles[0].texelSize;
     const glm::ivec2 d = glm::ivec2(glm::round(shift));
-    EXPECT_LT(glm::length(shift - glm::vec2(d)), 1e-2f) << "window moved by " << shift.x << ", " << shift.y << " texels";
+    EXPECT_LT(glm::length(shift - glm::vec2(d)), 1e-2f)
+        << "window moved by " << shift.x << ", " << shift.y << " texels";
     ASSERT_TRUE(d != glm::ivec2(0)) << "the move must shift the tile";
     float worst = 0.0f;
     int compared = 0;
@@ -340,8 +353,9 @@ TEST_F(Rsm, TilesDoNotSwimWhenTheCameraMoves) {
             ++compared;
         }
     EXPECT_GT(compared, 64 * 32);
-    EXPECT_LT(worst, 1e-3f) << "after a shift by (" << d.x << ", " << d.y << ") texels the worst difference is "
-                            << worst << " over " << compared << " texels";
+    EXPECT_LT(worst, 1e-3f) << "after a shift by (" << d.x << ", " << d.y
+                            << ") texels the worst difference is " << worst << " over " << compared
+                            << " texels";
 }
 
 // A caster above the cube (outside it, toward the sun) still hides what lies below it.
@@ -432,10 +446,12 @@ TEST_F(Rsm, TargetsBeyondGlLimitsAreErrorValues) {
     const renderer::RsmTargetLimits small{512, 2048, 2048, 16384};
     const auto tooLarge = renderer::checkRsmTargets(1024, 4, small);
     ASSERT_FALSE(tooLarge.has_value());
-    EXPECT_NE(tooLarge.error().describe().find("rsm.tileSize"), std::string::npos) << tooLarge.error().describe();
+    EXPECT_NE(tooLarge.error().describe().find("rsm.tileSize"), std::string::npos)
+        << tooLarge.error().describe();
     const auto tooMany = renderer::checkRsmTargets(256, 7, small);
     ASSERT_FALSE(tooMany.has_value());
-    EXPECT_NE(tooMany.error().describe().find("rsm.cascades"), std::string::npos) << tooMany.error().describe();
+    EXPECT_NE(tooMany.error().describe().find("rsm.cascades"), std::string::npos)
+        << tooMany.error().describe();
     EXPECT_TRUE(renderer::checkRsmTargets(512, 6, small).has_value());
     // The largest setting fits this GPU (llvmpipe: 16384^2, 2048 layers), and renders.
     EXPECT_TRUE(renderer::checkRsmTargets(1024, 6, renderer::RsmTargetLimits::query()).has_value());
