@@ -1,13 +1,16 @@
 #version 450 core
 // One RSM tile per invocation: every triangle is projected into each tile
 // (one layer of the array targets per LPV cascade), so all tiles render in a
-// single pass. The invocation count must equal kMaxRsmCascades
-// (renderer/src/RsmCascades.h); invocations past uTileCount emit nothing.
-layout(triangles, invocations = 6) in;
+// single pass. RsmPass defines RSM_TILES (the tile count) after #version and
+// builds one program per count: llvmpipe runs every declared invocation, so
+// idle ones would cost as much as working ones.
+#ifndef RSM_TILES
+#define RSM_TILES 6
+#endif
+layout(triangles, invocations = RSM_TILES) in;
 layout(triangle_strip, max_vertices = 3) out;
 
-const int kMaxTiles = 6;
-uniform int uTileCount;
+const int kMaxTiles = 6; // kMaxRsmCascades in renderer/src/RsmCascades.h
 uniform mat4 uTileViewProj[kMaxTiles];
 uniform float uTexelArea[kMaxTiles]; // world area of one texel across the sun's rays
 
@@ -22,8 +25,6 @@ flat out float vTexelArea;
 
 void main() {
     int tile = gl_InvocationID;
-    if (tile >= uTileCount)
-        return;
     vec4 clip[3];
     for (int i = 0; i < 3; ++i)
         clip[i] = uTileViewProj[tile] * gl_in[i].gl_Position;

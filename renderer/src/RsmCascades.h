@@ -23,7 +23,7 @@
 namespace lpv::renderer {
 
 // The most cascades an RSM renders in one pass (rsm.cascades' upper bound;
-// also the geometry shader's invocation count in shaders/rsm.geom).
+// also the size of the per-tile uniform arrays in shaders/rsm.geom).
 inline constexpr int kMaxRsmCascades = 6;
 
 // The sun: the scene's first directional light; -1 if it has none.

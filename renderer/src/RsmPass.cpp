@@ -66,12 +66,42 @@ scene::Expected<void> checkRsmTargets(int tileSize, int tiles, const RsmTargetLi
     return {};
 }
 
+scene::Expected<GLuint> RsmPass::programFor(int tiles) {
+    if (tiles < 1 || tiles > kMaxRsmCascades)
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.cascades",
+                         std::to_string(tiles) + " is outside 1.." + std::to_string(kMaxRsmCascades));
+    Program& program = programs_[std::size_t(tiles - 1)];
+    if (program)
+        return program.id();
+    std::vector<ShaderStageSource> stages;
+    for (const char* name : {"rsm.vert", "rsm.geom", "rsm.frag"}) {
+        const std::string file(name);
+        const auto source = embeddedShader(file);
+        if (!source)
+            return makeError(ErrorCode::MissingAsset, "shaders/" + file, "", "no such embedded shader");
+        std::string text(*source);
+        if (file.ends_with(".geom")) {
+            // After the #version line; #line keeps compiler messages on the file's own lines.
+            const std::size_t eol = text.find('\n');
+            text.insert(eol + 1, "#define RSM_TILES " + std::to_string(tiles) + "\n#line 2\n");
+        }
+        const GLenum stage = file.ends_with(".vert")   ? GL_VERTEX_SHADER
+                             : file.ends_with(".geom") ? GL_GEOMETRY_SHADER
+                                                       : GL_FRAGMENT_SHADER;
+        stages.push_back({stage, "shaders/" + file, std::move(text)});
+    }
+    auto built = buildProgram(stages);
+    if (!built)
+        return std::unexpected(built.error());
+    program = std::move(*built);
+    return program.id();
+}
+
 scene::Expected<RsmPass> RsmPass::create() {
-    auto program = buildEmbeddedProgram({"rsm.vert", "rsm.geom", "rsm.frag"});
-    if (!program)
-        return std::unexpected(program.error());
+    // Build the default count now, so that a shader error shows when the renderer is made.
     RsmPass pass;
-    pass.program_ = std::move(*program);
+    if (auto program = pass.programFor(4); !program)
+        return std::unexpected(program.error());
     return pass;
 }
 
@@ -122,8 +152,7 @@ scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
         status != GL_FRAMEBUFFER_COMPLETE) {
         releaseTargets();
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.tileSize",
-                         "the framebuffer of " + what + " is incomplete (status " +
-                             hex(status) + ")");
+                         "the framebuffer of " + what + " is incomplete (status " + hex(status) + ")");
     }
     tileSize_ = tileSize;
     layers_ = layers;
@@ -143,6 +172,11 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     if (auto ok = ensureTargets(size, count); !ok) {
         sunIndex_ = -1;
         return ok;
+    }
+    const auto program = programFor(count); // outside the timed section: it may compile
+    if (!program) {
+        sunIndex_ = -1;
+        return std::unexpected(program.error());
     }
 
     const scene::Light& sun = frame.scene.lights[std::size_t(sunIndex_)];
@@ -173,10 +207,9 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
         glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
 
-    const GLuint p = program_.id();
+    const GLuint p = *program;
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     glUseProgram(p);
-    glProgramUniform1i(p, loc("uTileCount"), count);
     glProgramUniformMatrix4fv(p, loc("uTileViewProj"), count, GL_FALSE, glm::value_ptr(viewProj[0]));
     glProgramUniform1fv(p, loc("uTexelArea"), count, texelArea.data());
     const glm::vec3 irradiance = sun.color * sun.intensity;

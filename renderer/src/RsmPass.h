@@ -25,6 +25,7 @@
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/Error.h"
 
+#include <array>
 #include <vector>
 
 namespace lpv::renderer {
@@ -72,9 +73,11 @@ class RsmPass {
   private:
     RsmPass() = default;
     scene::Expected<void> ensureTargets(int tileSize, int layers);
+    // The program whose geometry shader runs `tiles` invocations (built on first use).
+    scene::Expected<GLuint> programFor(int tiles);
     void releaseTargets();
 
-    Program program_;
+    std::array<Program, kMaxRsmCascades> programs_; // [k] renders k + 1 tiles
     int sunIndex_ = -1;
     std::vector<RsmTile> tiles_;
     int tileSize_ = 0;

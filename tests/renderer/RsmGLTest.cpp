@@ -314,6 +314,12 @@ TEST_F(Rsm, CascadeTilesNestAndQuadrupleTexelArea) {
         EXPECT_NEAR(fluxRatio, 4.0, 0.04) << "flux per texel ratio " << fluxRatio;
         EXPECT_NEAR(r->tiles[std::size_t(k)].texelArea / r->tiles[std::size_t(k - 1)].texelArea, 4.0f, 1e-3f);
     }
+    // The same pass with another tile count (another geometry-shader program) renders the same tiles.
+    const auto fewer = render(b.scene, rsmParams(32, 2), {0.4f, 1.0f, 0.3f});
+    ASSERT_TRUE(fewer);
+    ASSERT_EQ(fewer->images.size(), 6u);
+    for (int which = 0; which < 3; ++which)
+        EXPECT_EQ(fewer->image(1, which).pixels, r->image(1, which).pixels) << "image " << which << " of tile 1";
 }
 
 // The tiles do not swim: a camera move inside a cell leaves the tile unchanged,
