@@ -1,11 +1,13 @@
 #include "Cli.h"
 
 #include "lpv/importers/ImageIO.h"
+#include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/Project.h"
 
 #include <charconv>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
@@ -118,7 +120,12 @@ int runRender(Args args) {
         std::cerr << "lpv: " << renderer.error().describe() << "\n";
         return kFailure;
     }
-    renderer->setScene(s);
+    // Texture paths are relative to the project file's folder.
+    const auto textures =
+        importers::loadSceneTextures(s, std::filesystem::absolute(pos.front()).parent_path());
+    for (const std::string& w : textures.warnings)
+        std::cerr << "lpv: warning: " << w << "\n";
+    renderer->setScene(s, textures.images);
     for (int f = 0; f < *frames; ++f)
         if (auto ok = renderer->render(s, project->parameters, camera, *width, *height); !ok) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";

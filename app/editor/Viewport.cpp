@@ -1,5 +1,6 @@
 #include "Viewport.h"
 
+#include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/GlContext.h"
 
 #include <QSurfaceFormat>
@@ -22,8 +23,9 @@ Viewport::~Viewport() {
     doneCurrent();
 }
 
-void Viewport::setProject(const scene::Project* project) {
+void Viewport::setProject(const scene::Project* project, const QString& projectDir) {
     project_ = project;
+    projectDir_ = projectDir;
     sceneDirty_ = true;
     update();
 }
@@ -50,7 +52,9 @@ void Viewport::paintGL() {
         return;
     }
     if (sceneDirty_) {
-        renderer_->setScene(project_->scene);
+        // Missing textures draw as a placeholder; their warnings are not shown here yet.
+        const auto textures = importers::loadSceneTextures(project_->scene, projectDir_.toStdString());
+        renderer_->setScene(project_->scene, textures.images);
         sceneDirty_ = false;
     }
     const scene::Scene& s = project_->scene;

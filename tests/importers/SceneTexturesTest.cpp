@@ -3,6 +3,7 @@
 #include "lpv/importers/ImageIO.h"
 #include "lpv/importers/Importer.h"
 #include "lpv/importers/SceneTextures.h"
+#include "lpv/scene/ProjectTextures.h"
 #include "TestPaths.h"
 
 #include <gtest/gtest.h>
