@@ -34,7 +34,7 @@ SceneTextures loadSceneTextures(const scene::Scene& scene, const std::filesystem
 // white) across one texel tilts the normal as a slope of this many units.
 // Bump maps carry no scale of their own (OBJ's -bm is rarely written); this
 // value keeps Sponza's and Sibenik's relief visible without looking embossed.
-inline constexpr float kHeightMapStrength = 2.0f;
+inline constexpr float kHeightMapStrength = 8.0f;
 
 // Tangent-space normal map from a height map (red channel, white = high),
 // central differences with wrap-around (textures repeat). Rows top to bottom,
