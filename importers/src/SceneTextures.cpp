@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <vector>
 
 namespace lpv::importers {
 namespace fs = std::filesystem;
@@ -50,12 +51,65 @@ std::optional<std::array<std::uint8_t, 3>> bmpFirstPaletteColour(const fs::path&
     return std::array<std::uint8_t, 3>{entry[2], entry[1], entry[0]}; // stored as B, G, R
 }
 
+namespace {
+
+// Keyed texels keep the key colour (black, magenta...), and bilinear
+// filtering and mipmaps blend it into the visible edge: dark fringes around
+// leaves. A few passes copy each cut-out texel the mean colour of its visible
+// neighbours so the blend picks up the surface colour instead.
+void bleedColourIntoCutOuts(scene::Image8& image, int passes) {
+    const int w = image.width, h = image.height;
+    std::vector<std::uint8_t> filled(std::size_t(w) * std::size_t(h));
+    for (std::size_t i = 0; i < filled.size(); ++i)
+        filled[i] = image.pixels[i * 4 + 3] != 0;
+    for (int pass = 0; pass < passes; ++pass) {
+        std::vector<std::uint8_t> next = filled;
+        bool changed = false;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                if (filled[i])
+                    continue;
+                int sum[3] = {0, 0, 0}, n = 0;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                            continue;
+                        const std::size_t j = std::size_t(ny) * std::size_t(w) + std::size_t(nx);
+                        if (!filled[j])
+                            continue;
+                        for (int k = 0; k < 3; ++k)
+                            sum[k] += image.pixels[j * 4 + std::size_t(k)];
+                        ++n;
+                    }
+                if (n == 0)
+                    continue;
+                for (int k = 0; k < 3; ++k)
+                    image.pixels[i * 4 + std::size_t(k)] = std::uint8_t(sum[k] / n);
+                next[i] = 1;
+                changed = true;
+            }
+        filled.swap(next);
+        if (!changed)
+            break;
+    }
+}
+
+} // namespace
+
 void applyColorKey(scene::Image8& image, const std::array<std::uint8_t, 3>& key) {
-    if (image.channels != 4)
+    if (image.channels != 4 || image.pixels.size() < std::size_t(image.width) * std::size_t(image.height) * 4)
         return;
+    bool any = false;
     for (std::size_t i = 0; i + 3 < image.pixels.size(); i += 4)
-        if (image.pixels[i] == key[0] && image.pixels[i + 1] == key[1] && image.pixels[i + 2] == key[2])
+        if (image.pixels[i] == key[0] && image.pixels[i + 1] == key[1] && image.pixels[i + 2] == key[2]) {
             image.pixels[i + 3] = 0;
+            any = true;
+        }
+    // Four texels cover the footprint of trilinear filtering down to mip level 2.
+    if (any)
+        bleedColourIntoCutOuts(image, 4);
 }
 
 scene::Image8 heightToNormalMap(const scene::Image8& height, float strength) {

@@ -139,6 +139,10 @@ TEST(ColorKey, TrueColourImagesAreKeyedByBlack) {
     const scene::Image8& keyed = t.images.at(std::string("glow.png") + importers::kColorKeySuffix);
     EXPECT_EQ(keyed.pixels[3], 0);
     EXPECT_EQ(keyed.pixels[7], 255);
+    // The cut-out texel took its visible neighbour's colour: filtering blends no black in.
+    EXPECT_EQ(keyed.pixels[0], 30);
+    EXPECT_EQ(keyed.pixels[1], 60);
+    EXPECT_EQ(keyed.pixels[2], 90);
     fs::remove_all(dir);
 }
 

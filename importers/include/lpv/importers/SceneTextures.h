@@ -48,7 +48,8 @@ scene::Image8 heightToNormalMap(const scene::Image8& height, float strength = kH
 // that are not BMPs).
 std::optional<std::array<std::uint8_t, 3>> bmpFirstPaletteColour(const std::filesystem::path& file);
 
-// Alpha 0 wherever the pixel's RGB equals `key` exactly.
+// Alpha 0 wherever the pixel's RGB equals `key` exactly; those texels then
+// take the colour of their visible neighbours (no key-coloured fringes when filtered).
 void applyColorKey(scene::Image8& image, const std::array<std::uint8_t, 3>& key);
 
 } // namespace lpv::importers
