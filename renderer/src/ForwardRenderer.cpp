@@ -218,6 +218,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     const glm::mat4 projection = camera.projection(float(width) / float(height));
     const FrameContext frame{scene, params, camera, width, height, view, projection, projection * view, d.timer};
 
+    d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     if (auto ok = d.shadows->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
     if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)

@@ -42,6 +42,8 @@ public:
 
     // Blended materials that add to what is behind them instead of covering it.
     bool additive(std::uint32_t material) const;
+    // Anisotropic filtering of all material textures (parameter output.anisotropy).
+    void setAnisotropy(float samples) { textures_.setAnisotropy(samples); }
     // GL textures created (one per image and colour/data use).
     std::size_t textureCount() const { return textures_.uploadedCount(); }
 

@@ -7,23 +7,9 @@
 namespace lpv::renderer {
 namespace {
 
-// GL 4.6 core or GL_{EXT,ARB}_texture_filter_anisotropic share this enum value.
+// GL 4.6 core or GL_{EXT,ARB}_texture_filter_anisotropic share these enum values.
 constexpr GLenum kMaxAnisotropy = 0x84FE;
 constexpr GLenum kMaxAnisotropyLimit = 0x84FF;
-// Beyond 8x the sharpening is hard to see and costs llvmpipe a lot.
-constexpr float kWantedAnisotropy = 8.0f;
-
-float maxAnisotropy() {
-    static const float value = [] {
-        if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") &&
-            !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic"))
-            return 1.0f;
-        GLfloat limit = 1.0f;
-        glGetFloatv(kMaxAnisotropyLimit, &limit);
-        return std::min(limit, kWantedAnisotropy);
-    }();
-    return value;
-}
 
 GLenum pixelFormat(int channels) {
     switch (channels) {
@@ -63,9 +49,28 @@ Texture uploadTexture(const scene::Image8& image, TextureUsage usage) {
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    if (const float aniso = maxAnisotropy(); aniso > 1.0f)
-        glTextureParameterf(t.id(), kMaxAnisotropy, aniso);
     return t;
+}
+
+float maxSupportedAnisotropy() {
+    static const float value = [] {
+        if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") &&
+            !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic"))
+            return 1.0f;
+        GLfloat limit = 1.0f;
+        glGetFloatv(kMaxAnisotropyLimit, &limit);
+        return std::max(limit, 1.0f);
+    }();
+    return value;
+}
+
+void TextureCache::setAnisotropy(float wanted) {
+    const float a = std::clamp(wanted, 1.0f, maxSupportedAnisotropy());
+    if (a == anisotropy_)
+        return;
+    anisotropy_ = a;
+    for (const auto& [key, texture] : uploaded_)
+        glTextureParameterf(texture.id(), kMaxAnisotropy, a);
 }
 
 GLuint TextureCache::get(const scene::TextureImages& images, const std::string& key, TextureUsage usage) {
@@ -75,8 +80,11 @@ GLuint TextureCache::get(const scene::TextureImages& images, const std::string& 
     if (image == images.end())
         return 0;
     auto [it, inserted] = uploaded_.try_emplace({key, usage});
-    if (inserted)
+    if (inserted) {
         it->second = uploadTexture(image->second, usage);
+        if (anisotropy_ > 1.0f)
+            glTextureParameterf(it->second.id(), kMaxAnisotropy, anisotropy_);
+    }
     return it->second.id();
 }
 

@@ -6,6 +6,7 @@
 #include "MaterialGpu.h"
 #include "TextureGpu.h"
 
+#include <algorithm>
 #include <vector>
 
 using namespace lpv;
@@ -43,12 +44,26 @@ TEST_F(TextureGpu, FullMipChainAndFormatsByUse) {
     GLint minFilter = 0;
     glGetTextureParameteriv(colour.id(), GL_TEXTURE_MIN_FILTER, &minFilter);
     EXPECT_EQ(minFilter, GL_LINEAR_MIPMAP_LINEAR);
-    if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
-        epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(TextureGpu, AnisotropyFollowsTheParameterWithinTheDriversLimit) {
+    const float limit = renderer::maxSupportedAnisotropy();
+    if (limit <= 1.0f)
+        GTEST_SKIP() << "no anisotropic filtering (GL < 4.6 and no extension)";
+    scene::TextureImages images;
+    images["a.png"] = gradient(8, 8);
+    renderer::TextureCache cache;
+    cache.setAnisotropy(8.0f);
+    const GLuint t = cache.get(images, "a.png", renderer::TextureUsage::Color);
+    auto anisotropyOf = [&] {
         GLfloat aniso = 0.0f;
-        glGetTextureParameterfv(colour.id(), 0x84FE /* GL_TEXTURE_MAX_ANISOTROPY */, &aniso);
-        EXPECT_GT(aniso, 1.0f);
-    }
+        glGetTextureParameterfv(t, 0x84FE /* GL_TEXTURE_MAX_ANISOTROPY */, &aniso);
+        return aniso;
+    };
+    EXPECT_FLOAT_EQ(anisotropyOf(), std::min(8.0f, limit)) << "driver limit " << limit;
+    cache.setAnisotropy(1.0f);
+    EXPECT_FLOAT_EQ(anisotropyOf(), 1.0f);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
