@@ -329,3 +329,43 @@ TEST_F(MaterialShading, BlendedQuadIsPremultipliedOverTheBackdropAndLeavesTheGBu
     EXPECT_NEAR(albedo[i + 1], 1.0f, 0.01f);
     EXPECT_NEAR(albedo[i + 0], 0.0f, 0.01f);
 }
+
+TEST_F(MaterialShading, DerivedImagesAreLookedUpUnderTheirSuffixedKeys) {
+    // Height map: the renderer draws the normal map stored under
+    // path + kHeightNormalSuffix (made by importers::loadSceneTextures).
+    const glm::vec3 toLight = glm::normalize(glm::vec3(1.0f, 0.0f, 0.3f));
+    auto withHeight = [&](bool derivedPresent) {
+        TestScene t;
+        t.addSun(toLight, kPi);
+        scene::Material m;
+        m.diffuseColor = glm::vec3(1.0f);
+        m.heightTexture = "bump.png";
+        t.images["bump.png"] = solid(128, 128, 128); // the raw height: never sampled as normals
+        if (derivedPresent)
+            t.images[std::string("bump.png") + scene::kHeightNormalSuffix] = normalTexel({0.5f, 0.0f, 0.87f});
+        t.addMesh(quad(1.0f, 0.0f, t.addMaterial(m)));
+        return render(t).around(pixelOf(t.camera(), {0.0f, 0.0f, 0.0f})).r;
+    };
+    const float flat = withHeight(false), bumped = withHeight(true);
+    EXPECT_NEAR(flat, toLight.z, 0.02f) << "without the derived map the plane is flat: " << flat;
+    EXPECT_GT(bumped, 2.0f * flat) << "bumped " << bumped << " flat " << flat;
+
+    // Colour key: a colour-keyed material draws the keyed copy (alpha 0 here)
+    // and so shows the backdrop; the plain file is opaque red.
+    TestScene t;
+    t.addSun({0.0f, 0.0f, 1.0f}, kPi);
+    scene::Material backdrop;
+    backdrop.diffuseColor = {0.0f, 1.0f, 0.0f};
+    scene::Material keyed;
+    keyed.diffuseColor = glm::vec3(1.0f);
+    keyed.diffuseTexture = "leaf.png";
+    keyed.colorKey = true;
+    keyed.alphaMode = scene::AlphaMode::Mask;
+    t.images["leaf.png"] = solid(255, 0, 0);
+    t.images[std::string("leaf.png") + scene::kColorKeySuffix] = solid(255, 0, 0, 0);
+    t.addMesh(quad(2.0f, -1.0f, t.addMaterial(backdrop)));
+    t.addMesh(quad(1.0f, 0.0f, t.addMaterial(keyed)));
+    const glm::vec3 centre = render(t).around(pixelOf(t.camera(), {0.0f, 0.0f, 0.0f}));
+    EXPECT_NEAR(centre.g, 1.0f, 0.02f) << "backdrop through the keyed texels: g = " << centre.g;
+    EXPECT_LT(centre.r, 0.01f) << "r = " << centre.r;
+}
