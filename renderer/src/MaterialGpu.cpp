@@ -66,13 +66,6 @@ MaterialGpu::MaterialGpu(const scene::Scene& scene, const scene::TextureImages& 
 
 MaterialGpu::~MaterialGpu() = default;
 
-const MaterialGpu::Locations& MaterialGpu::locations(GLuint program) const {
-    auto& slot = locations_[program];
-    if (!slot)
-        slot = std::make_unique<Locations>(program);
-    return *slot;
-}
-
 bool MaterialGpu::additive(std::uint32_t material) const {
     return material < materials_.size() && materials_[material].additive;
 }
@@ -83,7 +76,9 @@ void MaterialGpu::bind(GLuint program, std::uint32_t material, MaterialBindMode 
     const bool known = material < materials_.size();
     const scene::Material m = known ? materials_[material] : scene::Material{};
     const Textures t = known ? bound_[material] : Textures{};
-    const Locations& l = locations(program);
+    // Looked up per bind (a few dozen hash lookups per material change): a
+    // cache keyed by program id could outlive a program whose id GL reuses.
+    const Locations l(program);
     // A texture unit and the flag that says whether to sample it. Sampler
     // uniforms are always set: left at unit 0 they would alias a shadow sampler.
     auto texture = [&](GLint hasLoc, GLint samplerLoc, Unit unit, GLuint id) {

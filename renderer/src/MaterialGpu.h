@@ -15,8 +15,6 @@
 #include "lpv/scene/Scene.h"
 
 #include <cstdint>
-#include <map>
-#include <memory>
 #include <vector>
 
 namespace lpv::renderer {
@@ -64,13 +62,10 @@ private:
                emissive = 0;
     };
     struct Locations;
-    const Locations& locations(GLuint program) const;
 
     std::vector<scene::Material> materials_;
     std::vector<Textures> bound_;
     TextureCache textures_;
-    // Uniform locations per program (the renderer's programs live as long as this object).
-    mutable std::map<GLuint, std::unique_ptr<Locations>> locations_;
 };
 
 } // namespace lpv::renderer
