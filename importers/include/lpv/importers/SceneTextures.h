@@ -41,7 +41,7 @@ inline constexpr float kHeightMapStrength = 8.0f;
 // v up (bottom-left UV origin): a height rising towards +u tilts the normal
 // towards -u; rising towards the top of the image (+v) tilts it towards -v.
 // Encoded as RGB = n * 0.5 + 0.5, alpha 255.
-// Done here on the CPU, once per file at load (about 10 ms per megapixel),
+// Done here on the CPU, once per file at load (31 ms for 1024x1024 measured),
 // rather than on the GPU: a pure function with its own unit test, and the
 // result is an ordinary normal map, so shading has one normal-map path and
 // mipmaps filter normals rather than heights.
