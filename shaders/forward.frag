@@ -1,17 +1,23 @@
 #version 450 core
-// Direct light: Lambert diffuse + Blinn-Phong specular, one shadow map for
-// the first shadow-casting light, emissive. Output is linear HDR radiance.
+// Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
+// brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
+// emissive. Output is linear HDR radiance; blended materials output it
+// premultiplied by their coverage.
 in vec3 vWorldPos;
 in vec3 vNormal;
+in vec4 vTangent;
 in vec2 vUv;
 
 // Colour plus the camera G-buffer (normal, albedo) in one pass; depth is the
-// shared depth attachment.
+// shared depth attachment. Blended draws leave the G-buffer alone (colour mask).
 layout(location = 0) out vec4 outColor;
-layout(location = 1) out vec4 outNormal; // world normal, xyz in -1..1
-layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear
+layout(location = 1) out vec4 outNormal; // shading normal (after normal mapping), world, xyz in -1..1
+layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = coverage
 
 #include "common.glsl"
+#include "coverage.glsl"
+#include "brdf.glsl"
+#include "material.glsl"
 #include "shadow_sampling.glsl"
 
 uniform int uLightCount;
@@ -23,19 +29,15 @@ uniform float uLightRange[MAX_LIGHTS];
 uniform vec2 uLightCosCone[MAX_LIGHTS];      // cos(outer), cos(inner)
 
 uniform vec3 uCameraPos;
-uniform vec3 uDiffuse;
-uniform vec3 uSpecular;
-uniform float uShininess;
-uniform vec3 uEmissive;
-uniform bool uTwoSided;
 
 void main() {
-    vec3 n = normalize(vNormal);
+    if (materialCutOut(vUv))
+        discard;
     vec3 v = normalize(uCameraPos - vWorldPos);
-    if (uTwoSided && dot(n, v) < 0.0)
-        n = -n;
+    Surface s = materialSurface(vNormal, vTangent, vUv, vWorldPos, v);
+    vec3 n = s.normal;
 
-    vec3 radiance = uEmissive;
+    vec3 radiance = s.emissive;
     for (int i = 0; i < uLightCount && i < MAX_LIGHTS; ++i) {
         vec3 l;
         vec3 irradianceColor;
@@ -63,12 +65,11 @@ void main() {
         if (ndotl <= 0.0)
             continue;
         float visibility = shadowVisibility(i, vWorldPos, n, l, dist);
-        vec3 h = normalize(l + v);
-        // Normalised Blinn-Phong so the specular lobe conserves energy as shininess grows.
-        float spec = (uShininess + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), uShininess);
-        radiance += (uDiffuse / PI + uSpecular * spec) * irradianceColor * ndotl * visibility;
+        radiance += surfaceBrdf(s, l, v) * irradianceColor * ndotl * visibility;
     }
-    outColor = vec4(radiance, 1.0);
+    // Indirect light (the LPV) is to be multiplied by s.occlusion.
+    float coverage = uAlphaMode == 2 ? clamp(materialCoverage(vUv), 0.0, 1.0) : 1.0;
+    outColor = vec4(radiance * coverage, coverage);
     outNormal = vec4(n, 1.0);
-    outAlbedo = vec4(uDiffuse, 1.0);
+    outAlbedo = vec4(s.albedo, 1.0);
 }

@@ -2,7 +2,10 @@
 
 #include "Cli.h"
 
+#include "lpv/importers/SceneTextures.h"
 #include "lpv/scene/FramingCamera.h"
+
+#include <filesystem>
 
 #include <cstdio>
 #include <iostream>
@@ -63,7 +66,13 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
     setup.project = std::move(*project);
     setup.context.emplace(std::move(*context));
     setup.renderer.emplace(std::move(*renderer));
-    setup.renderer->setScene(setup.project.scene);
+    // Texture paths are relative to the project file's folder; a missing one
+    // draws as the placeholder and is named here.
+    const auto textures = importers::loadSceneTextures(
+        setup.project.scene, std::filesystem::absolute(request.projectFile).parent_path());
+    for (const std::string& w : textures.warnings)
+        std::cerr << "lpv: warning: " << w << "\n";
+    setup.renderer->setScene(setup.project.scene, textures.images);
     exitCode = kOk;
     return setup;
 }

@@ -63,7 +63,7 @@ void MainWindow::showProject(scene::Project project, const QString& path) {
                                  .arg(path)
                                  .arg(project_.scene.triangleCount())
                                  .arg(project_.scene.lights.size()));
-    viewport_->setProject(&project_);
+    viewport_->setProject(&project_, QFileInfo(path).absolutePath());
 }
 
 } // namespace lpv::editor

@@ -1,5 +1,6 @@
 #include "Viewport.h"
 
+#include "lpv/importers/SceneTextures.h"
 #include "lpv/scene/FramingCamera.h"
 
 #include "lpv/renderer/GlContext.h"
@@ -24,8 +25,9 @@ Viewport::~Viewport() {
     doneCurrent();
 }
 
-void Viewport::setProject(const scene::Project* project) {
+void Viewport::setProject(const scene::Project* project, const QString& projectDir) {
     project_ = project;
+    projectDir_ = projectDir;
     sceneDirty_ = true;
     update();
 }
@@ -52,7 +54,9 @@ void Viewport::paintGL() {
         return;
     }
     if (sceneDirty_) {
-        renderer_->setScene(project_->scene);
+        // Missing textures draw as a placeholder; their warnings are not shown here yet.
+        const auto textures = importers::loadSceneTextures(project_->scene, projectDir_.toStdString());
+        renderer_->setScene(project_->scene, textures.images);
         framingCamera_ = scene::framingCamera(project_->scene);
         sceneDirty_ = false;
     }

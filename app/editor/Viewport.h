@@ -17,8 +17,9 @@ public:
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
 
-    // The viewport shows `project` until the next call; it must outlive the viewport's use of it.
-    void setProject(const scene::Project* project);
+    // The viewport shows `project` until the next call; it must outlive the
+    // viewport's use of it. Its texture paths are relative to `projectDir`.
+    void setProject(const scene::Project* project, const QString& projectDir = {});
     // Errors from GL set-up or rendering, empty if none.
     const QString& lastError() const { return lastError_; }
 
@@ -33,6 +34,7 @@ protected:
 
 private:
     const scene::Project* project_ = nullptr;
+    QString projectDir_;
     std::optional<renderer::ForwardRenderer> renderer_;
     scene::Camera framingCamera_; // used while the project has no camera
     bool sceneDirty_ = true;

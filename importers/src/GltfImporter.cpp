@@ -161,7 +161,9 @@ std::string texturePath(const Context& ctx, int textureIndex) {
         return decoded;
     }
     ++ctx.result.stats.texturesFound;
-    return p.string();
+    // Absolute, as importScene promises: a path relative to the working
+    // directory would later be read as relative to the project file.
+    return std::filesystem::absolute(p).lexically_normal().string();
 }
 
 glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {

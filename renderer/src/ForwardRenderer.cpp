@@ -124,7 +124,27 @@ struct ForwardRenderer::Impl {
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
-        sceneGpu->draw(fp, items, [&](std::uint32_t m) { materialGpu->bind(fp, m, MaterialBindMode::Full); });
+        // Opaque and masked items first; blended ones (sorted last, back to
+        // front) over them with depth test but no depth write, and without
+        // touching the G-buffer (it describes the opaque surface behind).
+        const auto firstBlended = std::ranges::find_if(items, [](const DrawItem* d) { return d->bucket == DrawBucket::Blended; });
+        const std::vector<const DrawItem*> solid(items.begin(), firstBlended), blended(firstBlended, items.end());
+        sceneGpu->draw(fp, solid, [&](std::uint32_t m) { materialGpu->bind(fp, m, MaterialBindMode::Full); });
+        if (!blended.empty()) {
+            glDepthMask(GL_FALSE);
+            glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glEnablei(GL_BLEND, 0);
+            sceneGpu->draw(fp, blended, [&](std::uint32_t m) {
+                materialGpu->bind(fp, m, MaterialBindMode::Full);
+                // forward.frag writes premultiplied colour: "over" or additive.
+                glBlendFunci(0, GL_ONE, materialGpu->additive(m) ? GL_ONE : GL_ONE_MINUS_SRC_ALPHA);
+            });
+            glDisablei(GL_BLEND, 0);
+            glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glDepthMask(GL_TRUE);
+        }
         frame.timer.end("forward");
     }
 
@@ -198,6 +218,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     const glm::mat4 projection = camera.projection(float(width) / float(height));
     const FrameContext frame{scene, params, camera, width, height, view, projection, projection * view, d.timer};
 
+    d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     if (auto ok = d.shadows->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
     if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)

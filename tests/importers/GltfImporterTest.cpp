@@ -58,6 +58,11 @@ TEST(GltfImporter, SmallSamples) {
     EXPECT_EQ(textured.scene.triangleCount(), 12u);
     EXPECT_EQ(textured.stats.texturesFound, 1u);
     EXPECT_TRUE(fs::exists(textured.scene.materials.front().diffuseTexture));
+    // Given a path relative to the working directory, texture paths still come back absolute
+    // (a relative one would later be read against the project file's folder).
+    const auto relative = importOk(fs::relative(scenes() / "gltf-small/BoxTextured/glTF/BoxTextured.gltf"));
+    EXPECT_TRUE(fs::path(relative.scene.materials.front().diffuseTexture).is_absolute())
+        << relative.scene.materials.front().diffuseTexture;
     const auto alpha = importOk(scenes() / "gltf-small/AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf");
     EXPECT_EQ(alpha.scene.triangleCount(), 61u) << "u8 indices";
     int masks = 0;

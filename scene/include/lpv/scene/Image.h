@@ -20,4 +20,11 @@ struct Image8 {
 // if the material had no such texture.
 using TextureImages = std::map<std::string, Image8>;
 
+// Images derived from a file for one use are stored under the path plus a
+// suffix, because the same file may also be used plainly elsewhere:
+// a colour-keyed diffuse map (the key colour made transparent, 4ds COLOR_KEY)
+inline constexpr const char* kColorKeySuffix = "#colorkey";
+// and the tangent-space normal map made from a height (bump) map.
+inline constexpr const char* kHeightNormalSuffix = "#height-normal";
+
 } // namespace lpv::scene
