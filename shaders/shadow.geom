@@ -3,7 +3,12 @@
 // projects the triangle with layer i's matrix into layer uFirstLayer + i
 // (the sun's cascades, or the six faces of a point light's cube map).
 // Triangles wholly outside a layer's volume are dropped there.
-layout(triangles, invocations = 8) in;
+// SHADOW_LAYERS (1..8) is defined by ShadowPass per layer count: on
+// llvmpipe an idle invocation costs as much as a busy one.
+#ifndef SHADOW_LAYERS
+#define SHADOW_LAYERS 1
+#endif
+layout(triangles, invocations = SHADOW_LAYERS) in;
 layout(triangle_strip, max_vertices = 3) out;
 
 uniform int uLayerCount;               // 1..8

@@ -73,24 +73,7 @@ scene::Expected<GLuint> RsmPass::programFor(int tiles) {
     Program& program = programs_[std::size_t(tiles - 1)];
     if (program)
         return program.id();
-    std::vector<ShaderStageSource> stages;
-    for (const char* name : {"rsm.vert", "rsm.geom", "rsm.frag"}) {
-        const std::string file(name);
-        const auto source = embeddedShader(file);
-        if (!source)
-            return makeError(ErrorCode::MissingAsset, "shaders/" + file, "", "no such embedded shader");
-        std::string text(*source);
-        if (file.ends_with(".geom")) {
-            // After the #version line; #line keeps compiler messages on the file's own lines.
-            const std::size_t eol = text.find('\n');
-            text.insert(eol + 1, "#define RSM_TILES " + std::to_string(tiles) + "\n#line 2\n");
-        }
-        const GLenum stage = file.ends_with(".vert")   ? GL_VERTEX_SHADER
-                             : file.ends_with(".geom") ? GL_GEOMETRY_SHADER
-                                                       : GL_FRAGMENT_SHADER;
-        stages.push_back({stage, "shaders/" + file, std::move(text)});
-    }
-    auto built = buildProgram(stages);
+    auto built = buildEmbeddedProgram({"rsm.vert", "rsm.geom", "rsm.frag"}, {"RSM_TILES " + std::to_string(tiles)});
     if (!built)
         return std::unexpected(built.error());
     program = std::move(*built);

@@ -141,14 +141,24 @@ scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stag
     return program;
 }
 
-scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames) {
+scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames,
+                                              const std::vector<std::string>& defines) {
     std::vector<ShaderStageSource> stages;
     for (const std::string& name : fileNames) {
         auto src = embeddedShader(name);
         const GLenum stage = stageForFile(name);
         if (!src || stage == GL_NONE)
             return makeError(ErrorCode::MissingAsset, "shaders/" + name, "", "no such embedded shader");
-        stages.push_back({stage, "shaders/" + name, std::string(*src)});
+        std::string text(*src);
+        if (!defines.empty()) {
+            // After the #version line; #line keeps compiler messages on the file's own lines.
+            std::string block;
+            for (const std::string& d : defines)
+                block += "#define " + d + "\n";
+            const std::size_t eol = text.find('\n');
+            text.insert(eol == std::string::npos ? text.size() : eol + 1, block + "#line 2\n");
+        }
+        stages.push_back({stage, "shaders/" + name, std::move(text)});
     }
     return buildProgram(stages);
 }

@@ -58,16 +58,28 @@ glm::mat4 sphereBoxViewProj(const glm::vec3& center, float radius) {
 } // namespace
 
 scene::Expected<ShadowPass> ShadowPass::create() {
-    auto cascade = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow.frag"});
-    if (!cascade)
-        return std::unexpected(cascade.error());
-    auto distance = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow_distance.frag"});
-    if (!distance)
-        return std::unexpected(distance.error());
+    // Build the programs a default frame needs now, so a shader error shows at start-up.
     ShadowPass pass;
-    pass.cascadeProgram_ = std::move(*cascade);
-    pass.distanceProgram_ = std::move(*distance);
+    if (auto p = pass.programFor(false, 6); !p)
+        return std::unexpected(p.error());
+    if (auto p = pass.programFor(true, 6); !p)
+        return std::unexpected(p.error());
     return pass;
+}
+
+scene::Expected<GLuint> ShadowPass::programFor(bool distance, int layers) {
+    if (layers < 1 || layers > kMaxLayersPerPass)
+        return makeError(ErrorCode::OutOfRange, "render", "shadow layers",
+                         std::to_string(layers) + " is outside 1.." + std::to_string(kMaxLayersPerPass));
+    Program& program = (distance ? distancePrograms_ : depthPrograms_)[std::size_t(layers - 1)];
+    if (!program) {
+        auto built = buildEmbeddedProgram({"shadow.vert", "shadow.geom", distance ? "shadow_distance.frag" : "shadow.frag"},
+                                          {"SHADOW_LAYERS " + std::to_string(layers)});
+        if (!built)
+            return std::unexpected(built.error());
+        program = std::move(*built);
+    }
+    return program.id();
 }
 
 scene::Expected<void> ShadowPass::ensureTarget(LayeredTarget& t, GLenum target, int size, int layers) {
@@ -172,7 +184,10 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         // otherwise show acne stripes.
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(2.0f, 2.0f);
-        const GLuint p = cascadeProgram_.id();
+        auto program = programFor(false, int(cascades_.size()));
+        if (!program)
+            return std::unexpected(program.error());
+        const GLuint p = *program;
         glUseProgram(p);
         // Cull once against the box around all cascades; shadow.geom drops
         // triangles outside each cascade.
@@ -188,10 +203,13 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
 
     // Local lights write distance / far from the fragment shader (no polygon
     // offset applies to it; shadow_sampling.glsl biases the comparison instead).
-    const GLuint dp = distanceProgram_.id();
-    glUseProgram(dp);
     auto drawLocal = [&](const LayeredTarget& target, const std::vector<LocalShadowView>& views,
-                         const std::vector<glm::vec3>& positions, bool cube) {
+                         const std::vector<glm::vec3>& positions, bool cube) -> scene::Expected<void> {
+        auto program = programFor(true, cube ? 6 : 1);
+        if (!program)
+            return std::unexpected(program.error());
+        const GLuint dp = *program;
+        glUseProgram(dp);
         glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
         glViewport(0, 0, target.size, target.size);
         glClear(GL_DEPTH_BUFFER_BIT);
@@ -203,11 +221,14 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
             const auto items = buildDrawList(geometry.draws(), cullBox, positions[i]);
             drawLayers(dp, geometry, materials, items, v.viewProj.data(), v.faces, int(i) * v.faces);
         }
+        return {};
     };
     if (!spotViews_.empty())
-        drawLocal(spotMap_, spotViews_, spotPositions_, false);
+        if (auto ok = drawLocal(spotMap_, spotViews_, spotPositions_, false); !ok)
+            return ok;
     if (!pointViews_.empty())
-        drawLocal(pointMap_, pointViews_, pointPositions_, true);
+        if (auto ok = drawLocal(pointMap_, pointViews_, pointPositions_, true); !ok)
+            return ok;
     frame.timer.end("shadowMap");
     return {};
 }

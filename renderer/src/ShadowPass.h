@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // Shadow maps of one frame and what forward shading needs to sample them
 // (shaders/shadow_sampling.glsl):
 //  - the sun: shadow.cascades cascades (ShadowCascades.h) rendered in ONE pass
@@ -59,8 +60,11 @@ private:
                     const std::vector<const DrawItem*>& items, const glm::mat4* viewProj, int layerCount,
                     int firstLayer) const;
 
-    Program cascadeProgram_;  // shadow.vert + shadow.geom + shadow.frag
-    Program distanceProgram_; // shadow.vert + shadow.geom + shadow_distance.frag
+    // The program for `layers` layers per draw (built on first use):
+    // shadow.vert + shadow.geom + shadow.frag (depth) or shadow_distance.frag.
+    scene::Expected<GLuint> programFor(bool distance, int layers);
+    std::array<Program, 8> depthPrograms_;
+    std::array<Program, 8> distancePrograms_;
 
     ShadowLightSelection lights_;
     std::vector<ShadowCascade> cascades_;

@@ -33,3 +33,13 @@ TEST_F(ShaderLibrary, MissingEmbeddedShaderIsAnError) {
     ASSERT_FALSE(program.has_value());
     EXPECT_EQ(program.error().code, lpv::scene::ErrorCode::MissingAsset);
 }
+
+TEST_F(ShaderLibrary, DefinesAreInsertedAndErrorsKeepTheFilesLineNumbers) {
+    // shadow.geom sizes its invocations from SHADOW_LAYERS; a bad value must
+    // fail to compile and the message must still name shadow.geom.
+    auto good = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow.frag"}, {"SHADOW_LAYERS 3"});
+    EXPECT_TRUE(good.has_value()) << good.error().describe();
+    auto bad = buildEmbeddedProgram({"shadow.vert", "shadow.geom", "shadow.frag"}, {"SHADOW_LAYERS banana"});
+    ASSERT_FALSE(bad.has_value());
+    EXPECT_NE(bad.error().describe().find("shaders/shadow.geom"), std::string::npos) << bad.error().describe();
+}

@@ -26,7 +26,10 @@ std::vector<std::string> embeddedShaderNames();
 scene::Expected<Program> buildProgram(const std::vector<ShaderStageSource>& stages);
 // Convenience: stages from embedded files, chosen by extension (.vert, .frag, .geom, .comp).
 // Shared code lives in shaders/*.glsl and is pulled in with #include "name.glsl".
-scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames);
+// `defines` ("NAME VALUE" each) become #define lines after every stage's
+// #version line, e.g. a geometry shader's invocation count.
+scene::Expected<Program> buildEmbeddedProgram(const std::vector<std::string>& fileNames,
+                                              const std::vector<std::string>& defines = {});
 
 // Rewrites a driver info log ("0:12(5): error: ..." or "0(12) : error ...")
 // into "file:12: error: ..." lines. Exposed for tests.
