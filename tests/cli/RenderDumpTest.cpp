@@ -2,9 +2,11 @@
 #include "RunLpv.h"
 
 #include "lpv/importers/ImageIO.h"
+#include "lpv/scene/Project.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <unistd.h>
 
@@ -78,4 +80,46 @@ TEST(BenchRender, PrintsMedianPassTimesAfterWarmUp) {
     EXPECT_NE(r.output.find("forward"), std::string::npos) << r.output;
     EXPECT_EQ(runLpv("bench render").exitCode, 2);
     EXPECT_EQ(runLpv("bench render " + cornellProject() + " --frames 0").exitCode, 2);
+}
+
+TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
+    // The Cornell box without its ceiling, lit by a sun slanting in from the
+    // green side (-X) towards the red wall (+X): the RSM sees the floor, the
+    // blocks and the red wall.
+    const fs::path dir = tempDir("rsm");
+    auto project = lpv::scene::loadProject(cornellProject());
+    ASSERT_TRUE(project.has_value()) << project.error().describe();
+    lpv::scene::Light sun;
+    sun.name = "sun";
+    sun.type = lpv::scene::LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.2f));
+    // The room mesh's first quads are floor, ceiling, back: collapse the ceiling's two triangles.
+    lpv::scene::Mesh& room = project->scene.meshes.front();
+    ASSERT_EQ(room.name, "room");
+    std::fill(room.indices.begin() + 6, room.indices.begin() + 12, room.indices[6]);
+    sun.intensity = 3.0f;
+    project->scene.lights = {sun};
+    ASSERT_TRUE(lpv::scene::saveProject(*project, dir / "sun.lpvproj").has_value());
+    const RunResult r = runLpv("render " + (dir / "sun.lpvproj").string() + " -o " + (dir / "sun.png").string() +
+                               " --width 64 --height 64 --frames 1 --set rsm.tileSize=64 --set rsm.cascades=2"
+                               " --dump rsm");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (int k = 0; k < 2; ++k)
+        for (const char* what : {"position", "normal", "flux"})
+            for (const char* ext : {".exr", ".png"}) {
+                const fs::path f = dir / ("sun-rsm-" + std::to_string(k) + "-" + what + ext);
+                EXPECT_TRUE(fs::exists(f)) << f << "\n" << r.output;
+            }
+    auto flux = lpv::importers::readImage8(dir / "sun-rsm-1-flux.png");
+    ASSERT_TRUE(flux.has_value()) << flux.error().describe();
+    EXPECT_EQ(flux->width, 64);
+    std::size_t reddish = 0;
+    for (std::size_t i = 0; i < flux->pixels.size(); i += std::size_t(flux->channels)) {
+        const int red = flux->pixels[i], green = flux->pixels[i + 1];
+        if (red > 40 && red > 3 * green)
+            ++reddish;
+    }
+    EXPECT_GT(reddish, 20u) << "the red wall's flux is red";
+    if (!HasFailure())
+        fs::remove_all(dir);
 }
