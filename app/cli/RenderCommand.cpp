@@ -3,6 +3,9 @@
 #include "lpv/importers/ImageIO.h"
 #include "DebugDump.h"
 #include "RenderSetup.h"
+#include "SetSweep.h"
+
+#include <filesystem>
 
 #include <charconv>
 #include <cstdio>
@@ -22,12 +25,16 @@ one row per frame, then median/min/max over the frames rendered.
   --height N            Image height in pixels (default 720)
   --camera NAME         Named camera of the project (default: the first)
   --set KEY=VALUE       Override a registry parameter for this run; repeatable
-                        (see `lpv params` for keys, types and ranges)
+                        (see `lpv params` for keys, types and ranges).
+                        KEY=V1,V2,... renders one image per value, named
+                        OUT-KEY-V.png, and compares their GPU times; several
+                        such keys render every combination
   --frames N            Frames to render for the timing table (default 5)
   --dump LIST           Also write the renderer's internal images beside OUT,
                         comma-separated: shadow (every shadow map / cascade
                         depth), rsm (position, normal and flux of every RSM
-                        tile). Each as OUT-<name>.exr (exact) and .png (scaled)
+                        tile), lpv (the LPV volumes, once they exist). Each as
+                        OUT-<name>.exr (exact) and .png (scaled)
 )";
 }
 
@@ -84,39 +91,79 @@ int runRender(Args args) {
         return usageError("--frames must be a positive integer", "render");
     const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
     for (const std::string& d : dumps)
-        if (d != "rsm" && d != "shadow")
-            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow)", "render");
+        if (d != "rsm" && d != "shadow" && d != "lpv")
+            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow, lpv)", "render");
     if (dumpText && dumps.empty())
         return usageError("--dump needs a list such as rsm,shadow", "render");
 
+    std::string planError;
+    const SetPlan plan = planSettings(request.sets, planError);
+    if (!planError.empty())
+        return usageError(planError, "render");
+    request.sets.clear();
+    for (const auto& [key, value] : plan.fixed)
+        request.sets.push_back(key + "=" + value);
     request.projectFile = pos.front();
     int exitCode = kOk;
     auto setup = prepareRender(request, "render", exitCode);
     if (!setup)
         return exitCode;
-    if (!renderFrames(*setup, *width, *height, *frames))
-        return kFailure;
+    // Every swept value is checked against the registry before anything renders.
+    for (const auto& combination : plan.combinations)
+        for (const auto& [key, value] : combination) {
+            scene::ParameterSet probe = setup->project.parameters;
+            if (auto ok = probe.setFromText(key, value, "--set"); !ok)
+                return usageError(ok.error().describe(), "render");
+        }
 
-    importers::Image8 image{*width, *height, 4, setup->renderer->readDisplay()};
-    if (auto ok = importers::writeImage(*output, image); !ok) {
-        std::cerr << "lpv: " << ok.error().describe() << "\n";
-        return kFailure;
-    }
-    const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
-    std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
-                setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
-    std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
-    std::printf("%s", renderer::formatTimingTable(setup->renderer->timer().table()).c_str());
-    std::printf("wrote %s\n", output->c_str());
-    for (const std::string& what : dumps) {
-        const auto images = setup->renderer->debugImages(what);
-        if (images.empty())
-            std::printf("--dump %s: nothing to write (the scene has no light this pass renders for)\n", what.c_str());
-        bool ok = true;
-        for (const auto& file : writeDebugImages(images, *output, ok))
-            std::printf("wrote %s\n", file.string().c_str());
-        if (!ok)
+    const std::vector<std::vector<Setting>> runs =
+        plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
+    const scene::ParameterSet base = setup->project.parameters;
+    std::vector<std::pair<std::string, double>> totals;
+    for (const auto& combination : runs) {
+        setup->project.parameters = base;
+        for (const auto& [key, value] : combination)
+            (void)setup->project.parameters.setFromText(key, value, "--set");
+        std::filesystem::path out = *output;
+        if (!combination.empty()) {
+            out.replace_filename(out.stem().string() + combinationSuffix(combination) + out.extension().string());
+            std::printf("\n== %s\n", combinationSuffix(combination).substr(1).c_str());
+        }
+        setup->renderer->timer().clearHistory();
+        if (!renderFrames(*setup, *width, *height, *frames))
             return kFailure;
+        importers::Image8 image{*width, *height, 4, setup->renderer->readDisplay()};
+        if (auto ok = importers::writeImage(out, image); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return kFailure;
+        }
+        const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
+        std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
+                    setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
+        std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
+        const auto table = setup->renderer->timer().table();
+        std::printf("%s", renderer::formatTimingTable(table).c_str());
+        double total = 0.0;
+        for (const auto& row : table)
+            total += row.medianMs;
+        totals.emplace_back(out.filename().string(), total);
+        std::printf("wrote %s\n", out.string().c_str());
+        for (const std::string& what : dumps) {
+            const auto images = setup->renderer->debugImages(what);
+            if (images.empty())
+                std::printf("--dump %s: nothing to write (the scene has no light this pass renders for)\n",
+                            what.c_str());
+            bool ok = true;
+            for (const auto& file : writeDebugImages(images, out, ok))
+                std::printf("wrote %s\n", file.string().c_str());
+            if (!ok)
+                return kFailure;
+        }
+    }
+    if (runs.size() > 1) {
+        std::printf("\nimage                                                   total GPU ms (sum of pass medians)\n");
+        for (const auto& [name, total] : totals)
+            std::printf("%-56s %10.3f\n", name.c_str(), total);
     }
     return kOk;
 }

@@ -123,3 +123,27 @@ TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
     if (!HasFailure())
         fs::remove_all(dir);
 }
+
+TEST(RenderSweep, AListOfValuesRendersOneImagePerValue) {
+    const fs::path dir = tempDir("sweep");
+    const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
+                               " --width 48 --height 48 --frames 1 --set output.exposure=-1,1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto dark = lpv::importers::readImage8(dir / "cb-output.exposure--1.png");
+    auto bright = lpv::importers::readImage8(dir / "cb-output.exposure-1.png");
+    ASSERT_TRUE(dark.has_value()) << r.output;
+    ASSERT_TRUE(bright.has_value()) << r.output;
+    long darkSum = 0, brightSum = 0;
+    for (std::size_t i = 0; i < dark->pixels.size(); ++i) {
+        darkSum += dark->pixels[i];
+        brightSum += bright->pixels[i];
+    }
+    EXPECT_GT(brightSum, darkSum) << "two stops more exposure is brighter";
+    EXPECT_NE(r.output.find("total GPU ms"), std::string::npos) << r.output;
+    // A bad value in the list is refused before anything renders.
+    const RunResult bad = runLpv("render " + cornellProject() + " -o " + (dir / "x.png").string() +
+                                 " --set output.exposure=0,banana");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_FALSE(fs::exists(dir / "x-output.exposure-0.png"));
+    fs::remove_all(dir);
+}
