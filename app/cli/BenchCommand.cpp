@@ -20,12 +20,16 @@ namespace fs = std::filesystem;
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
        lpv bench render PROJECT [--width N --height N --frames N --warmup N
-                                 --camera NAME --set KEY=VALUE --per-frame]
+                                 --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
+                                 --csv FILE --markdown FILE]
 
 bench render: renders the project headless at the given size (default
 1280x720) for --warmup frames (default 5, not counted) and then --frames
 frames (default 60), and prints each pass's GPU time (timer queries):
-median, min and max, plus every frame with --per-frame.
+median, min and max, plus every frame with --per-frame. A --set with a list
+of values sweeps that key (several lists: every combination), each with its
+own warm-up. --csv and --markdown write the tables (the Markdown one headed
+by the command and the machine: CPU, cores, GL renderer and version).
 
 bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture

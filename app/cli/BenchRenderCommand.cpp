@@ -2,10 +2,14 @@
 // size, after warm-up frames that are not counted. Figures are printed,
 // never asserted.
 #include "Cli.h"
+#include "BenchReport.h"
 #include "RenderSetup.h"
+
+#include "lpv/scene/Project.h"
 
 #include <charconv>
 #include <cstdio>
+#include <iostream>
 
 namespace lpv::cli {
 
@@ -24,7 +28,9 @@ std::optional<int> parseCount(const std::string& s, int minimum) {
 int benchRender(Args args) {
     RenderRequest request;
     request.cameraName = args.option("--camera");
-    request.sets = args.options("--set");
+    const std::vector<std::string> sets = args.options("--set");
+    const auto csvFile = args.option("--csv");
+    const auto markdownFile = args.option("--markdown");
     const auto width = parseCount(args.option("--width").value_or("1280"), 1);
     const auto height = parseCount(args.option("--height").value_or("720"), 1);
     const auto frames = parseCount(args.option("--frames").value_or("60"), 1);
@@ -40,30 +46,76 @@ int benchRender(Args args) {
         return usageError("bench render expects exactly one project file", "bench");
     if (!width || !height || !frames || !warmup)
         return usageError("--width, --height and --frames must be positive integers, --warmup zero or more", "bench");
+    std::string planError;
+    const SetPlan plan = planSettings(sets, planError);
+    if (!planError.empty())
+        return usageError(planError, "bench");
+    for (const auto& [key, value] : plan.fixed)
+        request.sets.push_back(key + "=" + value);
 
     request.projectFile = pos.front();
     int exitCode = kOk;
     auto setup = prepareRender(request, "bench", exitCode);
     if (!setup)
         return exitCode;
-    if (*warmup > 0 && !renderFrames(*setup, *width, *height, *warmup))
-        return kFailure;
-    setup->renderer->timer().clearHistory();
-    if (!renderFrames(*setup, *width, *height, *frames))
-        return kFailure;
+    for (const auto& combination : plan.combinations)
+        for (const auto& [key, value] : combination) {
+            scene::ParameterSet probe = setup->project.parameters;
+            if (auto ok = probe.setFromText(key, value, "--set"); !ok)
+                return usageError(ok.error().describe(), "bench");
+        }
 
-    const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
-    std::printf("%s: %zu triangles, %zu draw items (%zu culled in the camera pass), %dx%d, %d frames after %d warm-up\n",
-                request.projectFile.c_str(), setup->project.scene.triangleCount(), draws.total, draws.culled, *width,
-                *height, *frames, *warmup);
-    if (perFrame)
-        std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
-    const auto table = setup->renderer->timer().table();
-    std::printf("%s", renderer::formatTimingTable(table).c_str());
-    double total = 0.0;
-    for (const auto& row : table)
-        total += row.medianMs;
-    std::printf("GPU frame rate from the total: %.1f frames/s\n", total > 0 ? 1000.0 / total : 0.0);
+    const std::vector<std::vector<Setting>> combinations =
+        plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
+    const scene::ParameterSet base = setup->project.parameters;
+    std::vector<BenchRun> runs;
+    for (const auto& combination : combinations) {
+        setup->project.parameters = base;
+        for (const auto& [key, value] : combination)
+            (void)setup->project.parameters.setFromText(key, value, "--set");
+        if (!combination.empty())
+            std::printf("\n== %s\n", combinationSuffix(combination).substr(1).c_str());
+        if (*warmup > 0 && !renderFrames(*setup, *width, *height, *warmup))
+            return kFailure;
+        setup->renderer->timer().clearHistory();
+        if (!renderFrames(*setup, *width, *height, *frames))
+            return kFailure;
+
+        const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
+        std::printf("%s: %zu triangles, %zu draw items (%zu culled in the camera pass), %dx%d, %d frames after %d "
+                    "warm-up\n",
+                    request.projectFile.c_str(), setup->project.scene.triangleCount(), draws.total, draws.culled,
+                    *width, *height, *frames, *warmup);
+        if (perFrame)
+            std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
+        auto table = setup->renderer->timer().table();
+        // Passes that did not run with these settings have no samples.
+        std::erase_if(table, [](const renderer::PassTiming& t) { return t.samples == 0; });
+        std::printf("%s", renderer::formatTimingTable(table).c_str());
+        double total = 0.0;
+        for (const auto& row : table)
+            total += row.medianMs;
+        std::printf("GPU frame rate from the total: %.1f frames/s\n", total > 0 ? 1000.0 / total : 0.0);
+        runs.push_back({combination, table});
+    }
+
+    const renderer::GlInfo& gl = setup->context->info();
+    std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(*width) +
+                          " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
+                          " --warmup " + std::to_string(*warmup);
+    for (const std::string& kv : sets)
+        command += " --set " + kv;
+    const std::string machine = describeMachine(gl.renderer, gl.version);
+    for (const auto& [file, text] : {std::pair{csvFile, benchCsv(runs)},
+                                     std::pair{markdownFile, benchMarkdown(runs, command, machine)}}) {
+        if (!file)
+            continue;
+        if (auto ok = scene::writeFileAtomically(*file, text); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return kFailure;
+        }
+        std::printf("wrote %s\n", file->c_str());
+    }
     return kOk;
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 using namespace lpv::test;
@@ -145,5 +146,29 @@ TEST(RenderSweep, AListOfValuesRendersOneImagePerValue) {
                                  " --set output.exposure=0,banana");
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_FALSE(fs::exists(dir / "x-output.exposure-0.png"));
+    fs::remove_all(dir);
+}
+
+TEST(BenchRender, SweepsWriteCsvAndMarkdownTables) {
+    const fs::path dir = tempDir("bench");
+    const RunResult r = runLpv("bench render " + cornellProject() +
+                               " --width 32 --height 32 --frames 2 --warmup 1 --set shadow.mapSize=256,512 --csv " +
+                               (dir / "t.csv").string() + " --markdown " + (dir / "t.md").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream csv(dir / "t.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header, "shadow.mapSize,pass,median_ms,min_ms,max_ms,frames");
+    std::size_t rows256 = 0, rows512 = 0;
+    while (std::getline(csv, line)) {
+        rows256 += line.starts_with("256,") ? 1 : 0;
+        rows512 += line.starts_with("512,") ? 1 : 0;
+    }
+    EXPECT_GE(rows256, 3u) << "shadowMap, forward, tonemap";
+    EXPECT_EQ(rows256, rows512);
+    std::ifstream md(dir / "t.md");
+    const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(report.find("Machine: "), std::string::npos) << report;
+    EXPECT_NE(report.find("| 512 |"), std::string::npos) << report;
     fs::remove_all(dir);
 }

@@ -1,0 +1,112 @@
+#include "BenchReport.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace lpv::cli {
+
+namespace {
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            const auto colon = line.find(':');
+            if (colon != std::string::npos)
+                return line.substr(line.find_first_not_of(' ', colon + 1));
+        }
+    return "unknown CPU";
+}
+
+std::string ms(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    return buf;
+}
+
+// Pass names in the order they first appear over all runs.
+std::vector<std::string> passNames(const std::vector<BenchRun>& runs) {
+    std::vector<std::string> names;
+    for (const BenchRun& run : runs)
+        for (const auto& p : run.passes)
+            if (std::find(names.begin(), names.end(), p.pass) == names.end())
+                names.push_back(p.pass);
+    return names;
+}
+
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos)
+        return s;
+    std::string out = "\"";
+    for (char c : s)
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+} // namespace
+
+std::string describeMachine(const std::string& glRenderer, const std::string& glVersion) {
+    return cpuModel() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores | " + glRenderer + " | " +
+           glVersion;
+}
+
+std::string benchCsv(const std::vector<BenchRun>& runs) {
+    std::ostringstream out;
+    const std::vector<Setting> keys = runs.empty() ? std::vector<Setting>{} : runs.front().settings;
+    for (const auto& [key, value] : keys)
+        out << csvField(key) << ",";
+    out << "pass,median_ms,min_ms,max_ms,frames\n";
+    for (const BenchRun& run : runs)
+        for (const auto& p : run.passes) {
+            for (const auto& [key, value] : run.settings)
+                out << csvField(value) << ",";
+            out << csvField(p.pass) << "," << ms(p.medianMs) << "," << ms(p.minMs) << "," << ms(p.maxMs) << ","
+                << p.samples << "\n";
+        }
+    return out.str();
+}
+
+std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& command, const std::string& machine) {
+    std::ostringstream out;
+    out << "# lpv bench render\n\n";
+    out << "Command: `" << command << "`\n\n";
+    out << "Machine: " << machine << "\n\n";
+    out << "GPU time per pass from timer queries, median (min-max) in ms over the measured frames.\n\n";
+    const std::vector<std::string> passes = passNames(runs);
+    const std::vector<Setting> keys = runs.empty() ? std::vector<Setting>{} : runs.front().settings;
+    out << "|";
+    for (const auto& [key, value] : keys)
+        out << " " << key << " |";
+    for (const std::string& p : passes)
+        out << " " << p << " |";
+    out << " total |\n|";
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        out << "---|";
+    for (std::size_t i = 0; i <= passes.size(); ++i)
+        out << "---:|";
+    out << "\n";
+    for (const BenchRun& run : runs) {
+        out << "|";
+        for (const auto& [key, value] : run.settings)
+            out << " " << value << " |";
+        double total = 0.0;
+        for (const std::string& name : passes) {
+            const auto it = std::find_if(run.passes.begin(), run.passes.end(),
+                                         [&](const renderer::PassTiming& t) { return t.pass == name; });
+            if (it == run.passes.end()) {
+                out << " - |";
+                continue;
+            }
+            total += it->medianMs;
+            out << " " << ms(it->medianMs) << " (" << ms(it->minMs) << "-" << ms(it->maxMs) << ") |";
+        }
+        out << " " << ms(total) << " |\n";
+    }
+    return out.str();
+}
+
+} // namespace lpv::cli

@@ -1,0 +1,29 @@
+#pragma once
+// The tables `lpv bench render` writes: per combination of swept settings,
+// each pass's median/min/max GPU time, as CSV and as Markdown headed by the
+// machine it ran on.
+#include "SetSweep.h"
+
+#include "lpv/renderer/GpuTimer.h"
+
+#include <string>
+#include <vector>
+
+namespace lpv::cli {
+
+struct BenchRun {
+    std::vector<Setting> settings; // the swept values of this run ({} when nothing is swept)
+    std::vector<renderer::PassTiming> passes;
+};
+
+// "CPU model, N cores | GL renderer | GL version" of this machine and context.
+std::string describeMachine(const std::string& glRenderer, const std::string& glVersion);
+
+// One row per (run, pass): the swept keys as columns, then pass, median_ms, min_ms, max_ms, frames.
+std::string benchCsv(const std::vector<BenchRun>& runs);
+
+// A Markdown report: the command and machine, then one row per run and one
+// column per pass, "median (min-max)" in ms, and the total of the medians.
+std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& command, const std::string& machine);
+
+} // namespace lpv::cli
