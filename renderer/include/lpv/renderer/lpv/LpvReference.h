@@ -1,0 +1,105 @@
+#pragma once
+// The CPU reference of the LPV: injection, geometry volume, propagation and
+// lookup in plain C++ on small grids, exactly as docs/lpv.md writes them down.
+// Slow and simple on purpose: the GPU passes (renderer/src/LpvPass.*) are
+// tested against it, variant by variant.
+#include "lpv/renderer/lpv/Sh.h"
+
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+namespace lpv::renderer::lpvref {
+
+// One cascade: minimum corner, cell size, cells per axis.
+struct GridFrame {
+    glm::vec3 origin{0.0f};
+    float cellSize = 1.0f;
+    int n = 8;
+};
+
+// Per cell and colour channel the SH of the radiant intensity (W/sr).
+// Cell (x, y, z) is at index x + n * (y + n * z).
+struct ShGrid {
+    int n = 0;
+    std::vector<glm::vec4> channel[3];
+
+    explicit ShGrid(int cells = 0);
+    std::size_t index(int x, int y, int z) const {
+        return std::size_t(x) + std::size_t(n) * (std::size_t(y) + std::size_t(n) * std::size_t(z));
+    }
+    bool inside(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x < n && y < n && z < n; }
+    glm::vec4& at(int c, int x, int y, int z) { return channel[c][index(x, y, z)]; }
+    const glm::vec4& at(int c, int x, int y, int z) const { return channel[c][index(x, y, z)]; }
+    ShGrid& operator+=(const ShGrid& other);
+};
+
+// The blocking potential: (n + 1)^3 cells centred on the LPV cell corners
+// (GV cell g sits at origin + g * cellSize), one colourless SH each.
+struct GvGrid {
+    int n = 0; // LPV cells per axis; the GV has n + 1 per axis
+    std::vector<glm::vec4> potential;
+
+    explicit GvGrid(int lpvCells = 0);
+    int size() const { return n + 1; }
+    std::size_t index(int x, int y, int z) const {
+        const std::size_t m = std::size_t(n) + 1;
+        return std::size_t(x) + m * (std::size_t(y) + m * std::size_t(z));
+    }
+    bool inside(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x <= n && y <= n && z <= n; }
+    glm::vec4& at(int x, int y, int z) { return potential[index(x, y, z)]; }
+    const glm::vec4& at(int x, int y, int z) const { return potential[index(x, y, z)]; }
+    // Trilinear interpolation at GV coordinate `g` (cell centres at integers);
+    // cells outside 0..n count as zero.
+    glm::vec4 sample(const glm::vec3& g) const;
+};
+
+// A virtual point light: an RSM texel.
+struct Vpl {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    glm::vec3 flux{0.0f}; // W, per colour channel
+};
+
+// A piece of surface for the geometry volume; `area` in square world units.
+struct Surfel {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    float area = 0.0f;
+};
+
+// The 30 (direction, face) pairs of a gather (docs/lpv.md, Propagation).
+struct PropagationFace {
+    glm::ivec3 travel;    // d: from the source neighbour q to the destination p = q + d
+    glm::vec3 normal;     // n_f: outward normal of the face of p the light leaves through
+    glm::vec3 direction;  // dir_f = normalize(d + 0.5 n_f)
+    float solidAngle;     // omega_f, sr
+};
+inline constexpr float kFrontFaceSolidAngle = 0.4006696846f;
+inline constexpr float kSideFaceSolidAngle = 0.4234413544f;
+const std::vector<PropagationFace>& propagationFaces();
+
+// Injection: every VPL moved by offsetCells * cellSize along its normal, into the cell it falls in.
+ShGrid injectVpls(const GridFrame& grid, std::span<const Vpl> vpls, float offsetCells);
+
+// Geometry volume: surfels into the GV cell nearest to them, summed.
+GvGrid injectSurfels(const GridFrame& grid, std::span<const Surfel> surfels);
+// Per GV cell, the SH of the two with the larger DC coefficient.
+GvGrid mergeByMax(const GvGrid& a, const GvGrid& b);
+// Transmittance of light travelling along unit `travel` through GV coordinate `g`.
+float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& travel);
+
+// One propagation step (gather); `gv` null = no occlusion.
+ShGrid propagateStep(const ShGrid& source, const GvGrid* gv);
+// V_0 + V_1 + ... + V_steps, V_0 = injected.
+ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps);
+
+// Total flux (W) of all cells of one channel: the integral of I over the sphere, summed.
+double totalFlux(const ShGrid& grid, int channel);
+// Trilinear sample of channel c at cell coordinate `u` (centres at integer + 0.5, clamped to the grid).
+glm::vec4 sampleTrilinear(const ShGrid& grid, int channel, const glm::vec3& u);
+// Indirect irradiance (rgb) at world position x with normal n, from one cascade's accumulator.
+glm::vec3 irradianceAt(const ShGrid& accumulated, const GridFrame& grid, const glm::vec3& x, const glm::vec3& n);
+
+} // namespace lpv::renderer::lpvref
