@@ -19,6 +19,8 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "brdf.glsl"
 #include "material.glsl"
 #include "shadow_sampling.glsl"
+#include "sh.glsl"
+#include "lpv_lookup.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -67,7 +69,11 @@ void main() {
         float visibility = shadowVisibility(i, vWorldPos, n, l, dist);
         radiance += surfaceBrdf(s, l, v) * irradianceColor * ndotl * visibility;
     }
-    // Indirect light (the LPV) is to be multiplied by s.occlusion.
+    // Indirect diffuse light from the LPV; metals have no diffuse part.
+    if (uLpvCascadeCount > 0) {
+        vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
+        radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
+    }
     float coverage = uAlphaMode == 2 ? clamp(materialCoverage(vUv), 0.0, 1.0) : 1.0;
     outColor = vec4(radiance * coverage, coverage);
     outNormal = vec4(n, 1.0);

@@ -1,6 +1,7 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include "FrameContext.h"
+#include "LpvPass.h"
 #include "MaterialGpu.h"
 #include "RsmPass.h"
 #include "ShadowPass.h"
@@ -21,6 +22,9 @@ using scene::makeError;
 namespace {
 
 constexpr int kMaxLights = 8;
+// Texture units of the LPV accumulators in the forward pass (after the shadow
+// maps and material textures; 16 samplers in the fragment stage in all).
+constexpr GLuint kLpvFirstUnit = 16;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
@@ -54,11 +58,16 @@ struct ForwardRenderer::Impl {
     Program forwardProgram, tonemapProgram;
     std::optional<ShadowPass> shadows;
     std::optional<RsmPass> rsm;
+    std::optional<LpvPass> lpv;
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
     VertexArray emptyVao;
     DrawListStats cameraStats;
+    // The camera G-buffer as the last forward pass left it: the LPV injects
+    // blocking potential from it before this frame's forward pass runs.
+    bool gBufferValid = false;
+    LpvCameraInput previousCamera;
 
     // Camera targets: HDR colour + G-buffer (normal, albedo) + depth, and the display image.
     int width = 0, height = 0;
@@ -76,6 +85,7 @@ struct ForwardRenderer::Impl {
             return {};
         width = w;
         height = h;
+        gBufferValid = false;
         auto target = [&](Texture& t, GLenum format) {
             t = createTexture(GL_TEXTURE_2D);
             glTextureStorage2D(t.id(), 1, format, w, h);
@@ -123,6 +133,7 @@ struct ForwardRenderer::Impl {
         glProgramUniform3fv(fp, loc(fp, "uCameraPos"), 1, glm::value_ptr(frame.camera.position));
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
+        lpv->bindForShading(fp, frame.params, kLpvFirstUnit);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
         // Opaque and masked items first; blended ones (sorted last, back to
         // front) over them with depth test but no depth write, and without
@@ -146,6 +157,29 @@ struct ForwardRenderer::Impl {
             glDepthMask(GL_TRUE);
         }
         frame.timer.end("forward");
+    }
+
+    Expected<void> runLpv(const FrameContext& frame) {
+        if (!rsm->active()) {
+            lpv->disable("no directional light: nothing to inject");
+            return {};
+        }
+        if (frame.params.getFloat("lpv.intensity") <= 0.0) {
+            lpv->disable("lpv.intensity is 0");
+            return {};
+        }
+        LpvRsmInput input;
+        for (const RsmTile& tile : rsm->tiles()) {
+            input.cascades.push_back(tile.cascade);
+            input.texelArea.push_back(tile.texelArea);
+        }
+        input.tileSize = rsm->tileSize();
+        input.position = rsm->positionArray();
+        input.normal = rsm->normalArray();
+        input.flux = rsm->fluxArray();
+        input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
+        return lpv->run(LpvSettings::fromParameters(frame.params), input, gBufferValid ? &previousCamera : nullptr,
+                        frame.timer);
     }
 
     void renderTonemap(const FrameContext& frame) {
@@ -180,6 +214,9 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     if (!tonemap) return std::unexpected(tonemap.error());
     auto rsm = RsmPass::create();
     if (!rsm) return std::unexpected(rsm.error());
+    auto lpv = LpvPass::create();
+    if (!lpv) return std::unexpected(lpv.error());
+    r.impl_->lpv.emplace(std::move(*lpv));
     r.impl_->shadows.emplace(std::move(*shadows));
     r.impl_->rsm.emplace(std::move(*rsm));
     r.impl_->forwardProgram = std::move(*forward);
@@ -197,12 +234,15 @@ GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
 int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
+std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
 
 std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) const {
     if (what == "shadow")
         return impl_->shadows->debugImages();
     if (what == "rsm")
         return impl_->rsm->debugImages();
+    if (what == "lpv")
+        return impl_->lpv->debugImages();
     return {};
 }
 
@@ -223,7 +263,12 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         return ok;
     if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
+    if (auto ok = d.runLpv(frame); !ok)
+        return ok;
     d.renderForward(frame);
+    d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
+                        2.0f * std::tan(0.5f * camera.fovY) / float(height)};
+    d.gBufferValid = true;
     d.renderTonemap(frame);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -58,11 +58,16 @@ public:
     std::vector<float> readGBufferNormal() const;
     std::vector<float> readGBufferAlbedo() const;
     std::vector<float> readDepth() const;
-    // Internals of the last frame: "shadow" (every shadow map / cascade) or
-    // "rsm" (position, normal and flux of every RSM tile). Unknown: empty.
+    // Internals of the last frame: "shadow" (every shadow map / cascade),
+    // "rsm" (position, normal and flux of every RSM tile) or "lpv" (per
+    // cascade the accumulated DC per channel and the geometry volume, slices
+    // side by side). Unknown: empty.
     std::vector<DebugImage> debugImages(const std::string& what) const;
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
+    // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
+    // or "LPV: off (no directional light: nothing to inject)".
+    std::string lpvNote() const;
     int width() const;
     int height() const;
 

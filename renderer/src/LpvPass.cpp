@@ -1,0 +1,397 @@
+#include "LpvPass.h"
+
+#include "lpv/renderer/ShaderLibrary.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace lpv::renderer {
+
+namespace {
+
+constexpr const char* kVariantNames[] = {"computeGather", "computeScatter", "rasterGather", "rasterScatter"};
+
+GLuint groups(int count, int size) { return GLuint((count + size - 1) / size); }
+
+GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+constexpr GLbitfield kComputeResults =
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
+
+// SSBO bindings shared by the shaders (lpv_common.glsl and the passes).
+constexpr GLuint kSumsBinding = 0, kFluxMaxBinding = 1, kGvSumsBinding = 2;
+
+std::vector<glm::vec4> readVolumeBlock(GLuint texture, int size, int firstSlice) {
+    std::vector<glm::vec4> v(std::size_t(size) * std::size_t(size) * std::size_t(size));
+    glGetTextureSubImage(texture, 0, 0, 0, firstSlice, size, size, size, GL_RGBA, GL_FLOAT,
+                         GLsizei(v.size() * sizeof(glm::vec4)), v.data());
+    return v;
+}
+
+} // namespace
+
+std::optional<LpvVariant> lpvVariantFromName(const std::string& name) {
+    for (int i = 0; i < 4; ++i)
+        if (name == kVariantNames[i])
+            return LpvVariant(i);
+    return std::nullopt;
+}
+
+const char* lpvVariantName(LpvVariant variant) { return kVariantNames[int(variant)]; }
+
+LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
+    LpvSettings s;
+    s.gridSize = params.getInt("lpv.gridSize");
+    s.propagationSteps = params.getInt("lpv.propagationSteps");
+    s.injectionOffset = float(params.getFloat("lpv.injectionOffset"));
+    s.occlusion = params.getBool("lpv.occlusion");
+    s.gvFromCamera = params.getBool("lpv.gvFromCamera");
+    // The registry only admits the four names.
+    s.variant = lpvVariantFromName(params.getEnum("lpv.variant")).value_or(LpvVariant::ComputeGather);
+    return s;
+}
+
+scene::Expected<LpvPass> LpvPass::create() {
+    LpvPass pass;
+    struct Build {
+        Program* target;
+        std::vector<std::string> files;
+        std::vector<std::string> defines;
+    };
+    const Build builds[] = {
+        {&pass.fluxMax_, {"lpv_flux_max.comp"}, {}},
+        {&pass.inject_, {"lpv_inject.comp"}, {}},
+        {&pass.resolve_, {"lpv_resolve.comp"}, {}},
+        {&pass.gvFromRsm_, {"lpv_gv_inject.comp"}, {"GV_FROM_RSM 1"}},
+        {&pass.gvFromCamera_, {"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}},
+        {&pass.gvMerge_, {"lpv_gv_merge.comp"}, {}},
+        {&pass.computeGather_, {"lpv_gather.comp"}, {}},
+        {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
+        {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
+        {&pass.rasterScatter_,
+         {"lpv_raster_scatter.vert", "lpv_raster.geom", "lpv_raster_scatter.frag"},
+         {"LPV_POINTS 1"}},
+    };
+    for (const Build& b : builds) {
+        auto program = buildEmbeddedProgram(b.files, b.defines);
+        if (!program)
+            return std::unexpected(program.error());
+        *b.target = std::move(*program);
+    }
+    pass.emptyVao_ = createVertexArray();
+    return pass;
+}
+
+void LpvPass::disable(std::string reason) {
+    volumes_.release();
+    cascades_.clear();
+    active_ = false;
+    note_ = "LPV: off (" + std::move(reason) + ")";
+}
+
+void LpvPass::setCascadeUniforms(GLuint program) const {
+    const std::vector<LpvCascade>& cascades = cascades_;
+    std::array<glm::vec3, 6> origin{};
+    std::array<float, 6> cellSize{};
+    for (std::size_t k = 0; k < cascades.size() && k < 6; ++k) {
+        origin[k] = cascades[k].origin;
+        cellSize[k] = cascades[k].cellSize;
+    }
+    glProgramUniform1i(program, loc(program, "uGridSize"), volumes_.gridSize());
+    glProgramUniform1i(program, loc(program, "uCascades"), volumes_.cascades());
+    glProgramUniform3fv(program, loc(program, "uOrigin"), 6, glm::value_ptr(origin[0]));
+    glProgramUniform1fv(program, loc(program, "uCellSize"), 6, cellSize.data());
+}
+
+scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
+                                   const LpvCameraInput* camera, GpuTimer& timer) {
+    if (rsm.cascades.empty() || rsm.tileSize <= 0) {
+        disable("no RSM to inject from");
+        return {};
+    }
+    const int cascades = std::min<int>(int(rsm.cascades.size()), 6);
+    if (auto ok = volumes_.ensure(settings.gridSize, cascades); !ok) {
+        disable("volumes do not fit");
+        return ok;
+    }
+    cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
+    tileSize_ = rsm.tileSize;
+    injectionOffset_ = settings.injectionOffset;
+    active_ = true;
+
+    timer.begin("lpvInject");
+    inject(rsm);
+    timer.end("lpvInject");
+    if (settings.occlusion) {
+        timer.begin("gvInject");
+        injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
+        timer.end("gvInject");
+    }
+    timer.begin("lpvPropagate");
+    propagate(settings);
+    timer.end("lpvPropagate");
+
+    const int n = settings.gridSize;
+    note_ = "LPV: " + std::to_string(cascades) + " cascades of " + std::to_string(n) + "^3, " +
+            std::to_string(settings.propagationSteps) + " steps, " + lpvVariantName(settings.variant) +
+            (settings.occlusion ? ", occlusion from the RSM" +
+                                      std::string(settings.gvFromCamera && camera ? " and the camera" : "")
+                                : ", no occlusion");
+    return {};
+}
+
+void LpvPass::inject(const LpvRsmInput& rsm) {
+    const int tiles = volumes_.cascades();
+    const GLuint zero = 0;
+    glClearNamedBufferData(volumes_.fluxMax.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFluxMaxBinding, volumes_.fluxMax.id());
+
+    // 1. The brightest texel per tile sets the fixed-point scale.
+    GLuint p = fluxMax_.id();
+    glUseProgram(p);
+    glBindTextureUnit(0, rsm.position);
+    glBindTextureUnit(1, rsm.flux);
+    glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
+    glProgramUniform1i(p, loc(p, "uRsmFlux"), 1);
+    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // 2. VPLs into the fixed-point sums.
+    p = inject_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glBindTextureUnit(2, rsm.normal);
+    glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
+    glProgramUniform1i(p, loc(p, "uRsmNormal"), 2);
+    glProgramUniform1i(p, loc(p, "uRsmFlux"), 1);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), rsm.tileSize * rsm.tileSize);
+    glProgramUniform1f(p, loc(p, "uInjectionOffset"), injectionOffset_);
+    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // 3. Sums to floats: volume 0 and the accumulator both start as V_0.
+    resolveSums(0, false);
+    readIndex_ = 0;
+}
+
+void LpvPass::resolveSums(int destination, bool accumulate) {
+    const GLuint p = resolve_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glProgramUniform1i(p, loc(p, "uAccumulate"), accumulate ? 1 : 0);
+    bindStepImages(destination);
+    const int n = volumes_.gridSize();
+    glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
+    glMemoryBarrier(kComputeResults);
+}
+
+void LpvPass::bindStepImages(int destination) const {
+    for (int c = 0; c < 3; ++c) {
+        glBindImageTexture(GLuint(c), volumes_.volume[std::size_t(destination)].channel[std::size_t(c)].id(), 0,
+                           GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
+                           GL_READ_WRITE, GL_RGBA32F);
+    }
+}
+
+void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGvSumsBinding, volumes_.gvSums.id());
+    GLuint p = gvFromRsm_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    std::array<float, 6> texelArea{};
+    std::copy_n(rsm.texelArea.begin(), std::min<std::size_t>(rsm.texelArea.size(), 6), texelArea.begin());
+    glProgramUniform1fv(p, loc(p, "uTexelArea"), 6, texelArea.data());
+    glProgramUniform3fv(p, loc(p, "uToSun"), 1, glm::value_ptr(rsm.towardSun));
+    glBindTextureUnit(0, rsm.position);
+    glBindTextureUnit(2, rsm.normal);
+    glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
+    glProgramUniform1i(p, loc(p, "uRsmNormal"), 2);
+    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(volumes_.cascades()));
+
+    if (camera && camera->depth && camera->normal) {
+        p = gvFromCamera_.id();
+        glUseProgram(p);
+        setCascadeUniforms(p);
+        glBindTextureUnit(0, camera->depth);
+        glBindTextureUnit(2, camera->normal);
+        glProgramUniform1i(p, loc(p, "uDepth"), 0);
+        glProgramUniform1i(p, loc(p, "uNormal"), 2);
+        glProgramUniformMatrix4fv(p, loc(p, "uInvViewProj"), 1, GL_FALSE, glm::value_ptr(camera->inverseViewProj));
+        glProgramUniform3fv(p, loc(p, "uCameraPos"), 1, glm::value_ptr(camera->position));
+        glProgramUniform1f(p, loc(p, "uPixelAngle"), camera->pixelAngle);
+        GLint w = 0, h = 0;
+        glGetTextureLevelParameteriv(camera->depth, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(camera->depth, 0, GL_TEXTURE_HEIGHT, &h);
+        glDispatchCompute(groups(w, 8), groups(h, 8), 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    p = gvMerge_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glBindImageTexture(0, volumes_.geometry.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const int m = volumes_.gridSize() + 1;
+    glDispatchCompute(groups(m, 4), groups(m, 4), groups(m * volumes_.cascades(), 4));
+    glMemoryBarrier(kComputeResults);
+}
+
+void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {
+    static constexpr const char* kSources[] = {"uSourceR", "uSourceG", "uSourceB"};
+    for (int c = 0; c < 3; ++c) {
+        glBindTextureUnit(GLuint(c), volumes_.volume[std::size_t(source)].channel[std::size_t(c)].id());
+        glProgramUniform1i(program, loc(program, kSources[c]), c);
+    }
+    glBindTextureUnit(3, volumes_.geometry.id());
+    glProgramUniform1i(program, loc(program, "uGv"), 3);
+    glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
+}
+
+void LpvPass::propagate(const LpvSettings& settings) {
+    const int n = volumes_.gridSize(), k = volumes_.cascades();
+    const GLuint gatherProgram = computeGather_.id(), scatterProgram = computeScatter_.id();
+    const GLuint rasterProgram =
+        settings.variant == LpvVariant::RasterScatter ? rasterScatter_.id() : rasterGather_.id();
+    const bool raster = settings.variant == LpvVariant::RasterGather || settings.variant == LpvVariant::RasterScatter;
+    if (raster) {
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glViewport(0, 0, n, n);
+        glBindVertexArray(emptyVao_.id());
+        // The accumulator (targets 3-5) always adds; scatter also adds into the step's result.
+        for (GLuint b = 0; b < 6; ++b) {
+            if (b >= 3 || settings.variant == LpvVariant::RasterScatter)
+                glEnablei(GL_BLEND, b);
+            else
+                glDisablei(GL_BLEND, b);
+        }
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    }
+    for (int step = 0; step < settings.propagationSteps; ++step) {
+        const int read = readIndex_, write = 1 - readIndex_;
+        switch (settings.variant) {
+        case LpvVariant::ComputeGather:
+            glUseProgram(gatherProgram);
+            setCascadeUniforms(gatherProgram);
+            bindStepSources(gatherProgram, read, settings.occlusion);
+            bindStepImages(write);
+            glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
+            glMemoryBarrier(kComputeResults);
+            break;
+        case LpvVariant::ComputeScatter:
+            glUseProgram(scatterProgram);
+            setCascadeUniforms(scatterProgram);
+            glProgramUniform1i(scatterProgram, loc(scatterProgram, "uTexelsPerTile"), tileSize_ * tileSize_);
+            bindStepSources(scatterProgram, read, settings.occlusion);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFluxMaxBinding, volumes_.fluxMax.id());
+            glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+            resolveSums(write, true);
+            break;
+        case LpvVariant::RasterGather:
+        case LpvVariant::RasterScatter: {
+            const GLuint fbo = volumes_.rasterTarget[std::size_t(write)].id();
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            glUseProgram(rasterProgram);
+            setCascadeUniforms(rasterProgram);
+            bindStepSources(rasterProgram, read, settings.occlusion);
+            if (settings.variant == LpvVariant::RasterGather) {
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 3, n * k);
+            } else {
+                const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+                for (GLint b = 0; b < 3; ++b)
+                    glClearNamedFramebufferfv(fbo, GL_COLOR, b, zero);
+                glDrawArrays(GL_POINTS, 0, n * n * n * k * 6);
+            }
+            break;
+        }
+        }
+        readIndex_ = write;
+    }
+    if (raster) {
+        glDisable(GL_BLEND);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+}
+
+void LpvPass::bindForShading(GLuint program, const scene::ParameterSet& params, GLuint firstUnit) const {
+    const int count = active_ ? volumes_.cascades() : 0;
+    glProgramUniform1i(program, loc(program, "uLpvCascadeCount"), count);
+    static constexpr const char* kSamplers[] = {"uLpvAccumR", "uLpvAccumG", "uLpvAccumB"};
+    for (int c = 0; c < 3; ++c)
+        glProgramUniform1i(program, loc(program, kSamplers[c]), GLint(firstUnit) + c);
+    if (count == 0) {
+        // Samplers must still name a 3D texture unit; nothing reads them.
+        for (int c = 0; c < 3; ++c)
+            glBindTextureUnit(firstUnit + GLuint(c), 0);
+        return;
+    }
+    std::array<glm::vec3, 6> origin{};
+    std::array<float, 6> cellSize{};
+    for (std::size_t k = 0; k < cascades_.size(); ++k) {
+        origin[k] = cascades_[k].origin;
+        cellSize[k] = cascades_[k].cellSize;
+    }
+    glProgramUniform1i(program, loc(program, "uLpvGridSize"), volumes_.gridSize());
+    glProgramUniform3fv(program, loc(program, "uLpvOrigin"), 6, glm::value_ptr(origin[0]));
+    glProgramUniform1fv(program, loc(program, "uLpvCellSize"), 6, cellSize.data());
+    glProgramUniform1f(program, loc(program, "uLpvIntensity"), float(params.getFloat("lpv.intensity")));
+    glProgramUniform1f(program, loc(program, "uLpvBleedingDamping"), float(params.getFloat("lpv.bleedingDamping")));
+    glProgramUniform1i(program, loc(program, "uLpvBlendLevels"), params.getInt("lpv.cascadeBlendLevels"));
+    for (int c = 0; c < 3; ++c)
+        glBindTextureUnit(firstUnit + GLuint(c), volumes_.accumulator.channel[std::size_t(c)].id());
+}
+
+std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) const {
+    std::array<std::vector<glm::vec4>, 3> out;
+    if (!active_ || cascade < 0 || cascade >= volumes_.cascades())
+        return out;
+    const int n = volumes_.gridSize();
+    for (int c = 0; c < 3; ++c)
+        out[std::size_t(c)] = readVolumeBlock(volumes_.accumulator.channel[std::size_t(c)].id(), n, cascade * n);
+    return out;
+}
+
+std::vector<glm::vec4> LpvPass::readGeometryVolume(int cascade) const {
+    if (!active_ || cascade < 0 || cascade >= volumes_.cascades())
+        return {};
+    const int m = volumes_.gridSize() + 1;
+    return readVolumeBlock(volumes_.geometry.id(), m, cascade * m);
+}
+
+std::vector<DebugImage> LpvPass::debugImages() const {
+    std::vector<DebugImage> images;
+    if (!active_)
+        return images;
+    // Slices side by side (z left to right), y up; rgb = the DC coefficient per channel (or of the GV).
+    auto sliceImage = [](std::string name, int size, const std::array<const std::vector<glm::vec4>*, 3>& channels) {
+        DebugImage image{std::move(name), size * size, size, 4, {}};
+        image.pixels.assign(std::size_t(image.width) * std::size_t(size) * 4, 0.0f);
+        for (int z = 0; z < size; ++z)
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x) {
+                    const std::size_t src = std::size_t(x + size * (y + size * z));
+                    const std::size_t dst = (std::size_t(size - 1 - y) * std::size_t(image.width) +
+                                             std::size_t(z * size + x)) * 4;
+                    for (int c = 0; c < 3; ++c)
+                        image.pixels[dst + std::size_t(c)] = (*channels[std::size_t(c)])[src].x;
+                    image.pixels[dst + 3] = 1.0f;
+                }
+        return image;
+    };
+    for (int k = 0; k < volumes_.cascades(); ++k) {
+        const auto accum = readAccumulator(k);
+        images.push_back(sliceImage("lpv-" + std::to_string(k) + "-accum", volumes_.gridSize(),
+                                    {&accum[0], &accum[1], &accum[2]}));
+        const auto gv = readGeometryVolume(k);
+        images.push_back(sliceImage("lpv-" + std::to_string(k) + "-gv", volumes_.gridSize() + 1, {&gv, &gv, &gv}));
+    }
+    return images;
+}
+
+} // namespace lpv::renderer

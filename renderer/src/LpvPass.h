@@ -1,0 +1,106 @@
+#pragma once
+// Cascaded Light Propagation Volumes on the GPU (docs/lpv.md is the maths,
+// lpvref::* in LpvReference.h the CPU twin the tests compare with).
+//
+// One frame: the brightest RSM texel per tile (fixed-point scale), VPL
+// injection ("lpvInject"), geometry volume from the RSM and the previous
+// frame's camera G-buffer ("gvInject"), then lpv.propagationSteps steps per
+// cascade in one of four variants ("lpvPropagate"), summed into accumulators
+// that the forward pass samples (bindForShading).
+#include "FrameContext.h"
+#include "LpvVolumes.h"
+#include "RsmCascades.h"
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/GlHandle.h"
+#include "lpv/scene/Error.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::renderer {
+
+enum class LpvVariant { ComputeGather, ComputeScatter, RasterGather, RasterScatter };
+// "computeGather" ... (the lpv.variant choices); nullopt for anything else.
+std::optional<LpvVariant> lpvVariantFromName(const std::string& name);
+const char* lpvVariantName(LpvVariant variant);
+
+struct LpvSettings {
+    int gridSize = 32;
+    int propagationSteps = 8;
+    float injectionOffset = 1.0f; // cells
+    bool occlusion = true;
+    bool gvFromCamera = true;
+    LpvVariant variant = LpvVariant::ComputeGather;
+
+    static LpvSettings fromParameters(const scene::ParameterSet& params);
+};
+
+// What the LPV reads: RSM tiles (2D arrays, layer k = cascade k) and,
+// optionally, a camera G-buffer.
+struct LpvRsmInput {
+    std::vector<LpvCascade> cascades; // one per tile
+    std::vector<float> texelArea;     // per tile, world units^2 on a plane facing the sun
+    int tileSize = 0;
+    GLuint position = 0, normal = 0, flux = 0; // formats as RsmPass writes them
+    glm::vec3 towardSun{0.0f, 1.0f, 0.0f};
+};
+struct LpvCameraInput {
+    GLuint depth = 0, normal = 0; // DEPTH_COMPONENT32F, RGBA16F (w > 0 where a surface was seen)
+    glm::mat4 inverseViewProj{1.0f};
+    glm::vec3 position{0.0f};
+    float pixelAngle = 0.0f; // 2 tan(fovY / 2) / height
+};
+
+class LpvPass {
+  public:
+    static scene::Expected<LpvPass> create();
+
+    // Injection, geometry volume and propagation for this frame.
+    scene::Expected<void> run(const LpvSettings& settings, const LpvRsmInput& rsm, const LpvCameraInput* camera,
+                              GpuTimer& timer);
+    // Nothing to inject (no sun): frees the volumes, shading reads no LPV.
+    void disable(std::string reason);
+
+    bool active() const { return active_; }
+    // One line: what ran and why (or why not), e.g. for `lpv render`.
+    const std::string& note() const { return note_; }
+
+    // Sets lpv_lookup.glsl's uniforms and binds the accumulators to texture
+    // units firstUnit .. firstUnit + 2.
+    void bindForShading(GLuint program, const scene::ParameterSet& params, GLuint firstUnit) const;
+
+    // Read-back for tests and dumps: per channel N^3 SH of cascade k.
+    std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
+    std::vector<glm::vec4> readGeometryVolume(int cascade) const; // (N+1)^3, x fastest
+    // "lpv-K-accum" (rgb = DC of each channel per cell, slices side by side) and "lpv-K-gv".
+    std::vector<DebugImage> debugImages() const;
+    std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
+
+  private:
+    LpvPass() = default;
+    void inject(const LpvRsmInput& rsm);
+    void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
+    void propagate(const LpvSettings& settings);
+    // Fixed-point sums to floats into volume `destination` and the accumulator.
+    void resolveSums(int destination, bool accumulate);
+    void setCascadeUniforms(GLuint program) const;
+    void bindStepImages(int destination) const;
+    void bindStepSources(GLuint program, int source, bool occlusion) const;
+
+    Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_;
+    Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
+    VertexArray emptyVao_;
+    LpvVolumes volumes_;
+    std::vector<LpvCascade> cascades_;
+    bool active_ = false;
+    int readIndex_ = 0; // volume holding the last step's result
+    int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
+    float injectionOffset_ = 1.0f;
+    std::string note_ = "LPV: not run yet";
+};
+
+} // namespace lpv::renderer

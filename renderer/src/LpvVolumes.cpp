@@ -1,0 +1,113 @@
+#include "LpvVolumes.h"
+
+#include <string>
+
+namespace lpv::renderer {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+namespace {
+
+constexpr std::size_t kTexelBytes = 16; // RGBA32F
+
+Texture makeVolume(int w, int h, int d) {
+    Texture t = createTexture(GL_TEXTURE_3D);
+    glTextureStorage3D(t.id(), 1, GL_RGBA32F, w, h, d);
+    // Linear for the lookup's trilinear sample; the passes use texelFetch.
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+Buffer makeZeroBuffer(std::size_t bytes) {
+    Buffer b = createBuffer();
+    glNamedBufferStorage(b.id(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const GLuint zero = 0;
+    glClearNamedBufferData(b.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    return b;
+}
+
+std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+
+} // namespace
+
+std::size_t LpvVolumes::allocatedBytes() const {
+    const std::size_t n = std::size_t(gridSize_), k = std::size_t(cascades_), m = n + 1;
+    if (n == 0)
+        return 0;
+    return 9 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
+           8 * m * m * m * k * 4 + k * 4;
+}
+
+void LpvVolumes::release() {
+    for (auto& set : volume)
+        for (Texture& t : set.channel)
+            t.reset();
+    for (Texture& t : accumulator.channel)
+        t.reset();
+    geometry.reset();
+    lpvSums.reset();
+    gvSums.reset();
+    fluxMax.reset();
+    for (Framebuffer& f : rasterTarget)
+        f.reset();
+    gridSize_ = cascades_ = 0;
+}
+
+scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
+    if (gridSize == gridSize_ && cascades == cascades_)
+        return {};
+    release();
+    const std::size_t n = std::size_t(gridSize), k = std::size_t(cascades), m = n + 1;
+    GLint max3d = 0, maxBlock = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    const std::string layout = std::to_string(cascades) + " cascades of " + std::to_string(gridSize) + "^3";
+    if (std::size_t(max3d) < m * k)
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
+                         layout + " stack to " + std::to_string(m * k) + " texels, over GL_MAX_3D_TEXTURE_SIZE " +
+                             std::to_string(max3d) + "; lower lpv.gridSize or lpv.cascades");
+    const std::size_t sumBytes = 12 * n * n * n * k * 4, gvBytes = 8 * m * m * m * k * 4;
+    if (sumBytes > std::size_t(GLuint(maxBlock)) || gvBytes > std::size_t(GLuint(maxBlock)))
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
+                         layout + " need a " + mib(std::max(sumBytes, gvBytes)) +
+                             " storage buffer, over GL_MAX_SHADER_STORAGE_BLOCK_SIZE " +
+                             mib(std::size_t(GLuint(maxBlock))) + "; lower lpv.gridSize or lpv.cascades");
+    while (glGetError() != GL_NO_ERROR) {
+    } // an earlier error must not be blamed on this allocation
+    for (auto& set : volume)
+        for (Texture& t : set.channel)
+            t = makeVolume(gridSize, gridSize, gridSize * cascades);
+    for (Texture& t : accumulator.channel)
+        t = makeVolume(gridSize, gridSize, gridSize * cascades);
+    geometry = makeVolume(int(m), int(m), int(m * k));
+    lpvSums = makeZeroBuffer(sumBytes);
+    gvSums = makeZeroBuffer(gvBytes);
+    fluxMax = makeZeroBuffer(k * 4);
+    for (int i = 0; i < 2; ++i) {
+        rasterTarget[std::size_t(i)] = createFramebuffer();
+        const GLuint fbo = rasterTarget[std::size_t(i)].id();
+        for (int c = 0; c < 3; ++c) {
+            glNamedFramebufferTexture(fbo, GLenum(GL_COLOR_ATTACHMENT0 + c), volume[std::size_t(i)].channel[std::size_t(c)].id(), 0);
+            glNamedFramebufferTexture(fbo, GLenum(GL_COLOR_ATTACHMENT3 + c), accumulator.channel[std::size_t(c)].id(), 0);
+        }
+        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                  GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4, GL_COLOR_ATTACHMENT5};
+        glNamedFramebufferDrawBuffers(fbo, 6, buffers);
+    }
+    gridSize_ = gridSize;
+    cascades_ = cascades;
+    if (glGetError() == GL_OUT_OF_MEMORY) {
+        const std::size_t bytes = allocatedBytes();
+        release();
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
+                         "the GPU ran out of memory allocating " + layout + " (" + mib(bytes) +
+                             "); lower lpv.gridSize or lpv.cascades");
+    }
+    return {};
+}
+
+} // namespace lpv::renderer

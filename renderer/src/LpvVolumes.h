@@ -1,0 +1,43 @@
+#pragma once
+// The GPU memory of the LPV: per colour channel one RGBA32F 3D texture of
+// N x N x (N * K) texels (the K cascades stacked along z) for each of the two
+// ping-pong volumes and the accumulator; the geometry volume ((N+1)^3 per
+// cascade, stacked the same way); the integer buffers the atomics sum into;
+// and the framebuffers the raster variants draw through.
+#include "lpv/renderer/GlHandle.h"
+#include "lpv/scene/Error.h"
+
+#include <array>
+#include <cstddef>
+
+namespace lpv::renderer {
+
+struct LpvVolumeSet {
+    std::array<Texture, 3> channel; // R, G, B
+};
+
+class LpvVolumes {
+  public:
+    // Allocates for N cells per axis and K cascades, or names the parameter
+    // that does not fit the GPU (texture size, buffer size, memory).
+    scene::Expected<void> ensure(int gridSize, int cascades);
+    void release();
+
+    int gridSize() const { return gridSize_; }
+    int cascades() const { return cascades_; }
+    std::size_t allocatedBytes() const;
+
+    std::array<LpvVolumeSet, 2> volume; // ping-pong
+    LpvVolumeSet accumulator;
+    Texture geometry;                    // (N+1) x (N+1) x ((N+1) K), RGBA32F
+    Buffer lpvSums;                      // 12 int per cell: fixed-point sums of injection / scatter
+    Buffer gvSums;                       // 2 sources x 4 int per GV cell
+    Buffer fluxMax;                      // K uint: float bits of the brightest texel per tile
+    std::array<Framebuffer, 2> rasterTarget; // [i]: volume[i] (0-2) + accumulator (3-5), layered
+
+  private:
+    int gridSize_ = 0;
+    int cascades_ = 0;
+};
+
+} // namespace lpv::renderer

@@ -1,0 +1,44 @@
+#version 450 core
+// VPL injection (docs/lpv.md): every RSM texel of tile k is a VPL moved
+// lpv.injectionOffset cells along its normal, projected as Phi/pi times a
+// clamped cosine lobe into the cell of cascade k it falls in, summed in fixed
+// point with integer atomics (lpv_resolve.comp turns the sums into floats).
+#define LPV_WITH_FIXED_POINT
+#include "sh.glsl"
+#include "lpv_common.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+
+uniform sampler2DArray uRsmPosition;
+uniform sampler2DArray uRsmNormal;
+uniform sampler2DArray uRsmFlux;
+uniform vec3 uOrigin[6];
+uniform float uCellSize[6];
+uniform float uInjectionOffset; // cells
+
+layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; }; // 12 per cell: channel * 4 + coefficient
+
+void main() {
+    ivec3 texel = ivec3(gl_GlobalInvocationID);
+    int k = texel.z;
+    ivec3 size = textureSize(uRsmPosition, 0);
+    if (k >= uCascades || any(greaterThanEqual(texel.xy, size.xy)))
+        return;
+    vec4 position = texelFetch(uRsmPosition, texel, 0);
+    if (position.w <= 0.0)
+        return;
+    vec3 n = normalize(texelFetch(uRsmNormal, texel, 0).xyz);
+    vec3 flux = texelFetch(uRsmFlux, texel, 0).rgb;
+    vec3 p = position.xyz + n * (uInjectionOffset * uCellSize[k]);
+    ivec3 cell = ivec3(floor((p - uOrigin[k]) / uCellSize[k]));
+    if (!lpvInsideCascade(cell))
+        return;
+    float scale = lpvFixedScale(k);
+    vec4 lobe = shCosineLobe(n) * (scale / SH_PI);
+    int base = lpvCellIndex(k, cell) * 12;
+    for (int c = 0; c < 3; ++c) {
+        if (flux[c] == 0.0)
+            continue;
+        for (int j = 0; j < 4; ++j)
+            atomicAdd(lpvSums[base + c * 4 + j], int(round(flux[c] * lobe[j])));
+    }
+}

@@ -1,0 +1,39 @@
+#version 450 core
+// One propagation step, compute scatter (lpv.variant = computeScatter): each
+// source cell pushes into its 6 neighbours with integer atomics in fixed point
+// (lpv_common.glsl); lpv_resolve.comp then writes the floats and accumulates.
+#define LPV_WITH_GV
+#define LPV_WITH_FIXED_POINT
+#include "sh.glsl"
+#include "lpv_common.glsl"
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+uniform sampler3D uSourceR;
+uniform sampler3D uSourceG;
+uniform sampler3D uSourceB;
+layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; };
+
+void main() {
+    ivec3 texel = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(texel, ivec3(uGridSize, uGridSize, uGridSize * uCascades))))
+        return;
+    int k = texel.z / uGridSize;
+    ivec3 q = ivec3(texel.xy, texel.z % uGridSize);
+    vec4 r = texelFetch(uSourceR, texel, 0), g = texelFetch(uSourceG, texel, 0), b = texelFetch(uSourceB, texel, 0);
+    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
+        return; // dark cells push nothing: most of a scene's volume early on
+    float scale = lpvFixedScale(k);
+    for (int i = 0; i < 6; ++i) {
+        ivec3 p = q + LPV_DIRECTIONS[i];
+        if (!lpvInsideCascade(p))
+            continue;
+        vec4 outR = vec4(0.0), outG = vec4(0.0), outB = vec4(0.0);
+        lpvPropagateThroughFaces(i, r, g, b, lpvBlockingOnFace(k, q, i), outR, outG, outB);
+        int base = lpvCellIndex(k, p) * 12;
+        for (int j = 0; j < 4; ++j) {
+            atomicAdd(lpvSums[base + j], int(round(outR[j] * scale)));
+            atomicAdd(lpvSums[base + 4 + j], int(round(outG[j] * scale)));
+            atomicAdd(lpvSums[base + 8 + j], int(round(outB[j] * scale)));
+        }
+    }
+}
