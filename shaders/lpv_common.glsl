@@ -8,7 +8,7 @@ uniform int uGridSize;   // N, cells per axis of one cascade
 uniform int uCascades;   // K
 
 const float LPV_FRONT_FACE_SOLID_ANGLE = 0.4006696846;
-const float LPV_SIDE_FACE_SOLID_ANGLE = 0.4234413544;
+const float LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 
 // The 6 directions of travel d, in the order of LpvReference's face table.
 const ivec3 LPV_DIRECTIONS[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0),

@@ -16,7 +16,8 @@ uniform float uCellSize[6];
 layout(std430, binding = 2) buffer GvFixedPoint { int gvSums[]; }; // [source][cascade][cell] * 4
 
 void addSurfel(int source, int k, vec3 p, vec3 n, float area) {
-    ivec3 g = ivec3(round((p - uOrigin[k]) / uCellSize[k]));
+    // floor(x + 0.5), not round(): GLSL leaves the direction of halves to the driver.
+    ivec3 g = ivec3(floor((p - uOrigin[k]) / uCellSize[k] + 0.5));
     if (any(lessThan(g, ivec3(0))) || any(greaterThan(g, ivec3(uGridSize))))
         return;
     float s = uCellSize[k];

@@ -77,7 +77,7 @@ struct PropagationFace {
     float solidAngle;     // omega_f, sr
 };
 inline constexpr float kFrontFaceSolidAngle = 0.4006696846f;
-inline constexpr float kSideFaceSolidAngle = 0.4234413544f;
+inline constexpr float kSideFaceSolidAngle = 0.4234313544f;
 const std::vector<PropagationFace>& propagationFaces();
 
 // Injection: every VPL moved by offsetCells * cellSize along its normal, into the cell it falls in.
