@@ -81,13 +81,26 @@ vec4 lpvBlockingOnFace(int k, ivec3 q, int i) {
 #endif
 
 #ifdef LPV_WITH_FIXED_POINT
-// Fixed point for the integer atomics (docs/lpv.md): per cascade the scale
-// 2^29 / bound, bound = 0.85 * the brightest texel's flux * texels per tile.
-layout(std430, binding = 1) buffer LpvFluxMax { uint lpvMaxTexelFlux[]; }; // float bits, per cascade
+// Fixed point for the integer atomics (docs/lpv.md). Injection: per cascade
+// the scale 2^29 / bound, bound = 0.85 * the brightest texel's flux * texels
+// per tile. Compute scatter: 2^29 / (8 * the largest |coefficient| of the
+// volume being propagated), recorded by the resolve that wrote it: one step
+// sends at most 7.15 times that into a cell (docs/lpv.md), so the sums never
+// overflow, and the scale follows the light as it spreads and fades.
+// Buffer: [k] brightest texel flux, [K + slot * K + k] largest |coefficient|
+// of the volume in that slot (float bits; non-negative floats order like uints).
+layout(std430, binding = 1) buffer LpvScales { uint lpvScaleData[]; };
 uniform int uTexelsPerTile;
+uniform int uScaleSlot; // -1: injection; 0 or 1: the propagated volume's slot
 
 float lpvFixedScale(int k) {
-    float bound = 0.85 * uintBitsToFloat(lpvMaxTexelFlux[k]) * float(uTexelsPerTile);
+    float bound = uScaleSlot < 0 ? 0.85 * uintBitsToFloat(lpvScaleData[k]) * float(uTexelsPerTile)
+                                 : 8.0 * uintBitsToFloat(lpvScaleData[uCascades * (1 + uScaleSlot) + k]);
     return bound > 0.0 ? 536870912.0 / bound : 0.0;
+}
+
+// Records the largest |coefficient| of a resolved cell into slot `slot`.
+void lpvRecordMax(int k, int slot, float value) {
+    atomicMax(lpvScaleData[uCascades * (1 + slot) + k], floatBitsToUint(value));
 }
 #endif

@@ -25,5 +25,5 @@ void main() {
     }
     barrier();
     if (gl_LocalInvocationIndex == 0u)
-        atomicMax(lpvMaxTexelFlux[texel.z], groupMax);
+        atomicMax(lpvScaleData[texel.z], groupMax);
 }

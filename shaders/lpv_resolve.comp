@@ -1,7 +1,8 @@
 #version 450 core
 // Fixed-point sums (injection, or one compute-scatter step) to floats: the
 // result goes to the volume the next step reads and into the accumulator
-// (set on injection, added on propagation). The sums are cleared for reuse.
+// (set on injection, added on propagation). The sums are cleared for reuse,
+// and the result's largest coefficient is recorded for the next scatter step.
 #define LPV_WITH_FIXED_POINT
 #include "sh.glsl"
 #include "lpv_common.glsl"
@@ -15,12 +16,14 @@ layout(rgba32f, binding = 3) uniform image3D uAccumR;
 layout(rgba32f, binding = 4) uniform image3D uAccumG;
 layout(rgba32f, binding = 5) uniform image3D uAccumB;
 uniform bool uAccumulate; // false: accumulator = result (injection)
+uniform int uRecordSlot;  // where the largest |coefficient| of the result goes (next scatter's scale)
 
-void main() {
-    ivec3 texel = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(texel, ivec3(uGridSize, uGridSize, uGridSize * uCascades))))
-        return;
-    int k = texel.z / uGridSize;
+// A work group's 4 slices span at most two cascades (N >= 8): reduce the
+// largest coefficient in shared memory first, one global atomic per cascade.
+shared uint groupMax[2];
+
+// Resolves one cell; returns its largest |coefficient|.
+float resolveCell(ivec3 texel, int k) {
     ivec3 cell = ivec3(texel.xy, texel.z % uGridSize);
     float scale = lpvFixedScale(k);
     float inverse = scale > 0.0 ? 1.0 / scale : 0.0;
@@ -32,6 +35,7 @@ void main() {
             lpvSums[base + c * 4 + j] = 0;
         }
     }
+    vec4 largest = max(max(abs(v[0]), abs(v[1])), abs(v[2]));
     imageStore(uDestR, texel, v[0]);
     imageStore(uDestG, texel, v[1]);
     imageStore(uDestB, texel, v[2]);
@@ -43,4 +47,24 @@ void main() {
     imageStore(uAccumR, texel, v[0]);
     imageStore(uAccumG, texel, v[1]);
     imageStore(uAccumB, texel, v[2]);
+    return max(max(largest.x, largest.y), max(largest.z, largest.w));
 }
+
+void main() {
+    if (gl_LocalInvocationIndex == 0u) {
+        groupMax[0] = 0u;
+        groupMax[1] = 0u;
+    }
+    barrier();
+    ivec3 texel = ivec3(gl_GlobalInvocationID);
+    int firstCascade = int(gl_WorkGroupID.z * gl_WorkGroupSize.z) / uGridSize;
+    int k = texel.z / uGridSize;
+    bool inside = all(lessThan(texel, ivec3(uGridSize, uGridSize, uGridSize * uCascades)));
+    if (inside)
+        atomicMax(groupMax[k - firstCascade], floatBitsToUint(resolveCell(texel, k)));
+    barrier();
+    if (gl_LocalInvocationIndex < 2u && firstCascade + int(gl_LocalInvocationIndex) < uCascades)
+        lpvRecordMax(firstCascade + int(gl_LocalInvocationIndex), uRecordSlot,
+                     uintBitsToFloat(groupMax[gl_LocalInvocationIndex]));
+}
+

@@ -20,7 +20,7 @@ constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 
 // SSBO bindings shared by the shaders (lpv_common.glsl and the passes).
-constexpr GLuint kSumsBinding = 0, kFluxMaxBinding = 1, kGvSumsBinding = 2;
+constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2;
 
 std::vector<glm::vec4> readVolumeBlock(GLuint texture, int size, int firstSlice) {
     std::vector<glm::vec4> v(std::size_t(size) * std::size_t(size) * std::size_t(size));
@@ -144,9 +144,9 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
 void LpvPass::inject(const LpvRsmInput& rsm) {
     const int tiles = volumes_.cascades();
     const GLuint zero = 0;
-    glClearNamedBufferData(volumes_.fluxMax.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(volumes_.scales.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFluxMaxBinding, volumes_.fluxMax.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
 
     // 1. The brightest texel per tile sets the fixed-point scale.
     GLuint p = fluxMax_.id();
@@ -167,21 +167,25 @@ void LpvPass::inject(const LpvRsmInput& rsm) {
     glProgramUniform1i(p, loc(p, "uRsmNormal"), 2);
     glProgramUniform1i(p, loc(p, "uRsmFlux"), 1);
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), rsm.tileSize * rsm.tileSize);
+    glProgramUniform1i(p, loc(p, "uScaleSlot"), -1);
     glProgramUniform1f(p, loc(p, "uInjectionOffset"), injectionOffset_);
     glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 3. Sums to floats: volume 0 and the accumulator both start as V_0.
-    resolveSums(0, false);
+    resolveSums(0, false, -1, 0);
     readIndex_ = 0;
+    scaleSlot_ = 0;
 }
 
-void LpvPass::resolveSums(int destination, bool accumulate) {
+void LpvPass::resolveSums(int destination, bool accumulate, int scaleSlot, int recordSlot) {
     const GLuint p = resolve_.id();
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
     glProgramUniform1i(p, loc(p, "uAccumulate"), accumulate ? 1 : 0);
+    glProgramUniform1i(p, loc(p, "uScaleSlot"), scaleSlot);
+    glProgramUniform1i(p, loc(p, "uRecordSlot"), recordSlot);
     bindStepImages(destination);
     const int n = volumes_.gridSize();
     glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
@@ -285,13 +289,21 @@ void LpvPass::propagate(const LpvSettings& settings) {
         case LpvVariant::ComputeScatter:
             glUseProgram(scatterProgram);
             setCascadeUniforms(scatterProgram);
-            glProgramUniform1i(scatterProgram, loc(scatterProgram, "uTexelsPerTile"), tileSize_ * tileSize_);
+            glProgramUniform1i(scatterProgram, loc(scatterProgram, "uScaleSlot"), scaleSlot_);
             bindStepSources(scatterProgram, read, settings.occlusion);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFluxMaxBinding, volumes_.fluxMax.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
             glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
+            {
+                // The next step's scale is recorded into the other slot, cleared first.
+                const GLuint zero = 0;
+                const GLintptr slotOffset = GLintptr(k * (2 - scaleSlot_)) * 4;
+                glClearNamedBufferSubData(volumes_.scales.id(), GL_R32UI, slotOffset, GLsizeiptr(k) * 4,
+                                          GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+            }
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            resolveSums(write, true);
+            resolveSums(write, true, scaleSlot_, 1 - scaleSlot_);
+            scaleSlot_ = 1 - scaleSlot_;
             break;
         case LpvVariant::RasterGather:
         case LpvVariant::RasterScatter: {

@@ -85,8 +85,10 @@ class LpvPass {
     void inject(const LpvRsmInput& rsm);
     void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
     void propagate(const LpvSettings& settings);
-    // Fixed-point sums to floats into volume `destination` and the accumulator.
-    void resolveSums(int destination, bool accumulate);
+    // Fixed-point sums to floats into volume `destination` and the accumulator,
+    // decoded with the scale of `scaleSlot` (-1: injection); the result's
+    // largest coefficient goes to `recordSlot` (lpv_common.glsl).
+    void resolveSums(int destination, bool accumulate, int scaleSlot, int recordSlot);
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
@@ -98,6 +100,7 @@ class LpvPass {
     std::vector<LpvCascade> cascades_;
     bool active_ = false;
     int readIndex_ = 0; // volume holding the last step's result
+    int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)
     int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
     float injectionOffset_ = 1.0f;
     std::string note_ = "LPV: not run yet";

@@ -39,7 +39,7 @@ std::size_t LpvVolumes::allocatedBytes() const {
     if (n == 0)
         return 0;
     return 9 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
-           8 * m * m * m * k * 4 + k * 4;
+           8 * m * m * m * k * 4 + 3 * k * 4;
 }
 
 void LpvVolumes::release() {
@@ -51,7 +51,7 @@ void LpvVolumes::release() {
     geometry.reset();
     lpvSums.reset();
     gvSums.reset();
-    fluxMax.reset();
+    scales.reset();
     for (Framebuffer& f : rasterTarget)
         f.reset();
     gridSize_ = cascades_ = 0;
@@ -86,7 +86,7 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     geometry = makeVolume(int(m), int(m), int(m * k));
     lpvSums = makeZeroBuffer(sumBytes);
     gvSums = makeZeroBuffer(gvBytes);
-    fluxMax = makeZeroBuffer(k * 4);
+    scales = makeZeroBuffer(k * 3 * 4);
     for (int i = 0; i < 2; ++i) {
         rasterTarget[std::size_t(i)] = createFramebuffer();
         const GLuint fbo = rasterTarget[std::size_t(i)].id();

@@ -32,7 +32,8 @@ class LpvVolumes {
     Texture geometry;                    // (N+1) x (N+1) x ((N+1) K), RGBA32F
     Buffer lpvSums;                      // 12 int per cell: fixed-point sums of injection / scatter
     Buffer gvSums;                       // 2 sources x 4 int per GV cell
-    Buffer fluxMax;                      // K uint: float bits of the brightest texel per tile
+    Buffer scales;                       // 3K uint (float bits): brightest texel per tile, then the largest
+                                         // |coefficient| per cascade of two volumes (lpv_common.glsl)
     std::array<Framebuffer, 2> rasterTarget; // [i]: volume[i] (0-2) + accumulator (3-5), layered
 
   private:
