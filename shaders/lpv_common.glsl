@@ -7,25 +7,76 @@
 uniform int uGridSize;   // N, cells per axis of one cascade
 uniform int uCascades;   // K
 
-const float LPV_FRONT_FACE_SOLID_ANGLE = 0.4006696846;
-const float LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
-
 // The 6 directions of travel d, in the order of LpvReference's face table.
 const ivec3 LPV_DIRECTIONS[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0),
                                          ivec3(0, 0, 1), ivec3(0, 0, -1));
 
-// Outward normal of face f (0 = the face opposite the source, 1..4 the side
-// faces) of the destination cell, for direction of travel i.
-vec3 lpvFaceNormal(int i, int f) {
-    vec3 d = vec3(LPV_DIRECTIONS[i]);
-    if (f == 0)
-        return d;
-    int a = i / 2;
-    int side = (f <= 2) ? (a + 1) % 3 : (a + 2) % 3;
-    vec3 n = vec3(0.0);
-    n[side] = (f % 2 == 1) ? 1.0 : -1.0;
-    return n;
-}
+// Generated from the face table (docs/lpv.md): for direction i and face f
+// (index 5 i + f), the SH basis in the face's direction dir_f and the
+// re-emission lobe cosineLobe(n_f) * omega_f / pi. LpvGLTest checks the whole
+// propagation against the CPU reference, which builds the table itself.
+const vec4 LPV_FACE_BASIS[30] = vec4[30](
+    vec4(0.282094792, -0, 0, -0.488602512),
+    vec4(0.282094792, -0.218509686, 0, -0.437019372),
+    vec4(0.282094792, 0.218509686, 0, -0.437019372),
+    vec4(0.282094792, -0, 0.218509686, -0.437019372),
+    vec4(0.282094792, -0, -0.218509686, -0.437019372),
+    vec4(0.282094792, -0, 0, 0.488602512),
+    vec4(0.282094792, -0.218509686, 0, 0.437019372),
+    vec4(0.282094792, 0.218509686, 0, 0.437019372),
+    vec4(0.282094792, -0, 0.218509686, 0.437019372),
+    vec4(0.282094792, -0, -0.218509686, 0.437019372),
+    vec4(0.282094792, -0.488602512, 0, -0),
+    vec4(0.282094792, -0.437019372, 0.218509686, -0),
+    vec4(0.282094792, -0.437019372, -0.218509686, -0),
+    vec4(0.282094792, -0.437019372, 0, -0.218509686),
+    vec4(0.282094792, -0.437019372, 0, 0.218509686),
+    vec4(0.282094792, 0.488602512, 0, -0),
+    vec4(0.282094792, 0.437019372, 0.218509686, -0),
+    vec4(0.282094792, 0.437019372, -0.218509686, -0),
+    vec4(0.282094792, 0.437019372, 0, -0.218509686),
+    vec4(0.282094792, 0.437019372, 0, 0.218509686),
+    vec4(0.282094792, -0, 0.488602512, -0),
+    vec4(0.282094792, -0, 0.437019372, -0.218509686),
+    vec4(0.282094792, -0, 0.437019372, 0.218509686),
+    vec4(0.282094792, -0.218509686, 0.437019372, -0),
+    vec4(0.282094792, 0.218509686, 0.437019372, -0),
+    vec4(0.282094792, -0, -0.488602512, -0),
+    vec4(0.282094792, -0, -0.437019372, -0.218509686),
+    vec4(0.282094792, -0, -0.437019372, 0.218509686),
+    vec4(0.282094792, -0.218509686, -0.437019372, -0),
+    vec4(0.282094792, 0.218509686, -0.437019372, -0));
+const vec4 LPV_FACE_LOBE[30] = vec4[30](
+    vec4(0.113026831, -0, 0, -0.130512143),
+    vec4(0.11944778, -0.137926416, 0, -0),
+    vec4(0.11944778, 0.137926416, 0, -0),
+    vec4(0.11944778, -0, 0.137926416, -0),
+    vec4(0.11944778, -0, -0.137926416, -0),
+    vec4(0.113026831, -0, 0, 0.130512143),
+    vec4(0.11944778, -0.137926416, 0, -0),
+    vec4(0.11944778, 0.137926416, 0, -0),
+    vec4(0.11944778, -0, 0.137926416, -0),
+    vec4(0.11944778, -0, -0.137926416, -0),
+    vec4(0.113026831, -0.130512143, 0, -0),
+    vec4(0.11944778, -0, 0.137926416, -0),
+    vec4(0.11944778, -0, -0.137926416, -0),
+    vec4(0.11944778, -0, 0, -0.137926416),
+    vec4(0.11944778, -0, 0, 0.137926416),
+    vec4(0.113026831, 0.130512143, 0, -0),
+    vec4(0.11944778, -0, 0.137926416, -0),
+    vec4(0.11944778, -0, -0.137926416, -0),
+    vec4(0.11944778, -0, 0, -0.137926416),
+    vec4(0.11944778, -0, 0, 0.137926416),
+    vec4(0.113026831, -0, 0.130512143, -0),
+    vec4(0.11944778, -0, 0, -0.137926416),
+    vec4(0.11944778, -0, 0, 0.137926416),
+    vec4(0.11944778, -0.137926416, 0, -0),
+    vec4(0.11944778, 0.137926416, 0, -0),
+    vec4(0.113026831, -0, -0.130512143, -0),
+    vec4(0.11944778, -0, 0, -0.137926416),
+    vec4(0.11944778, -0, 0, 0.137926416),
+    vec4(0.11944778, -0.137926416, 0, -0),
+    vec4(0.11944778, 0.137926416, 0, -0));
 
 bool lpvInsideCascade(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(uGridSize))); }
 
@@ -36,19 +87,64 @@ int gvCellIndex(int k, ivec3 g) {
     return ((k * m + g.z) * m + g.y) * m + g.x;
 }
 
-// What a source cell with intensity (r, g, b) sends into the neighbour it
-// touches along direction i, through that neighbour's 5 other faces;
-// `blocking` is the GV interpolated on the shared face (zero = no occlusion).
+// The propagation of one direction written out for speed (compute gather,
+// raster gather, compute scatter). An SH vector c is used in the form
+// f(w) = dc + dot(v, w), dc = Y00 c.x, v = Y1 (-c.w, -c.y, c.z); with the
+// travel direction d = sigma e_a and the side axes b, c, the 5 face
+// directions are sigma e_a and (sigma e_a +- 0.5 e_b) / sqrt(1.25), ... so each
+// evaluation is two multiply-adds, and the re-emitted lobes cosineLobe(n_f)
+// are accumulated as (DC, normal) pairs, converted back once at the end
+// (lpvFinish). The same maths as the face table, about 3x fewer operations;
+// LpvGLTest holds it to the CPU reference. Call with literal a and sigma: the
+// compiler then folds every index.
+const float LPV_FRONT_WEIGHT = 0.4006696846 / SH_PI; // omega_front / pi
+const float LPV_SIDE_WEIGHT = 0.4234313544 / SH_PI;  // omega_side / pi
+const float LPV_SIDE_MAIN = 0.894427191;             // 1 / sqrt(1.25)
+const float LPV_SIDE_OFF = 0.447213595;              // 0.5 / sqrt(1.25)
+
+vec3 lpvVectorPart(vec4 c) { return SH_Y1 * vec3(-c.w, -c.y, c.z); }
+
+// One channel: what the source (dc, v) sends through the 5 faces with transmittances t.
+void lpvSendChannel(int a, float sigma, float dc, vec3 v, float t0, vec4 tSide, inout float accDc, inout vec3 accN) {
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    float front = max(0.0, dc + sigma * v[a]) * t0 * LPV_FRONT_WEIGHT;
+    float side = dc + sigma * LPV_SIDE_MAIN * v[a];
+    vec4 sides = max(vec4(0.0), vec4(side) + LPV_SIDE_OFF * vec4(v[b], -v[b], v[c], -v[c])) * tSide * LPV_SIDE_WEIGHT;
+    accDc += front + sides.x + sides.y + sides.z + sides.w;
+    accN[a] += sigma * front;
+    accN[b] += sides.x - sides.y;
+    accN[c] += sides.z - sides.w;
+}
+
+// The source cell's (r, g, b) sent along sigma e_a into the neighbour, through
+// the blocking potential on the face between them (zero: no occlusion).
+void lpvSend(int a, float sigma, vec4 r, vec4 g, vec4 b, vec4 blocking, inout vec3 accDc, inout vec3 accNR,
+             inout vec3 accNG, inout vec3 accNB) {
+    int ib = (a + 1) % 3, ic = (a + 2) % 3;
+    // Transmittance 1 - clamp(B(-w)) per face.
+    float bDc = SH_Y0 * blocking.x;
+    vec3 bV = lpvVectorPart(blocking);
+    float t0 = 1.0 - clamp(bDc - sigma * bV[a], 0.0, 1.0);
+    float bSide = bDc - sigma * LPV_SIDE_MAIN * bV[a];
+    vec4 tSide = vec4(1.0) - clamp(vec4(bSide) - LPV_SIDE_OFF * vec4(bV[ib], -bV[ib], bV[ic], -bV[ic]), 0.0, 1.0);
+    lpvSendChannel(a, sigma, SH_Y0 * r.x, lpvVectorPart(r), t0, tSide, accDc.r, accNR);
+    lpvSendChannel(a, sigma, SH_Y0 * g.x, lpvVectorPart(g), t0, tSide, accDc.g, accNG);
+    lpvSendChannel(a, sigma, SH_Y0 * b.x, lpvVectorPart(b), t0, tSide, accDc.b, accNB);
+}
+
+// Accumulated (DC, normal) pairs back to SH: the sum of flux/pi * cosineLobe(n).
+vec4 lpvFinishChannel(float accDc, vec3 accN) {
+    return vec4(SH_COS0 * accDc, -SH_COS1 * accN.y, SH_COS1 * accN.z, -SH_COS1 * accN.x);
+}
+
+// The same from the face table, for a direction known only at run time (the
+// raster scatter's vertex shader, one point per direction).
 void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, inout vec4 outR, inout vec4 outG,
                               inout vec4 outB) {
-    vec3 d = vec3(LPV_DIRECTIONS[i]);
     for (int f = 0; f < 5; ++f) {
-        vec3 n = lpvFaceNormal(i, f);
-        vec3 dir = normalize(d + 0.5 * n);
-        float omega = f == 0 ? LPV_FRONT_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
-        float transmittance = 1.0 - clamp(shEvaluate(blocking, -dir), 0.0, 1.0);
-        vec4 basis = shBasis(dir);
-        vec4 lobe = shCosineLobe(n) * (omega / SH_PI * transmittance);
+        vec4 basis = LPV_FACE_BASIS[5 * i + f];
+        float blocked = dot(blocking, vec4(basis.x, -basis.yzw));
+        vec4 lobe = LPV_FACE_LOBE[5 * i + f] * (1.0 - clamp(blocked, 0.0, 1.0));
         outR += max(0.0, dot(r, basis)) * lobe;
         outG += max(0.0, dot(g, basis)) * lobe;
         outB += max(0.0, dot(b, basis)) * lobe;
@@ -57,7 +153,7 @@ void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, inou
 
 #ifdef LPV_WITH_GV
 // The GV stacked like the LPV, (N + 1)^3 per cascade.
-uniform sampler3D uGv;
+layout(binding = 3) uniform sampler3D uGv;
 uniform bool uOcclusion;
 
 // The blocking potential on the face between source q and q + d (direction i):

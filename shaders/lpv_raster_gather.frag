@@ -7,9 +7,9 @@
 #include "lpv_common.glsl"
 
 flat in int gSlice;
-uniform sampler3D uSourceR;
-uniform sampler3D uSourceG;
-uniform sampler3D uSourceB;
+layout(binding = 0) uniform sampler3D uSourceR;
+layout(binding = 1) uniform sampler3D uSourceG;
+layout(binding = 2) uniform sampler3D uSourceB;
 layout(location = 0) out vec4 outR;
 layout(location = 1) out vec4 outG;
 layout(location = 2) out vec4 outB;
@@ -26,8 +26,11 @@ void main() {
         if (!lpvInsideCascade(q))
             continue;
         ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
-        lpvPropagateThroughFaces(i, texelFetch(uSourceR, source, 0), texelFetch(uSourceG, source, 0),
-                                 texelFetch(uSourceB, source, 0), lpvBlockingOnFace(k, q, i), r, g, b);
+        vec4 sr = texelFetch(uSourceR, source, 0), sg = texelFetch(uSourceG, source, 0),
+             sb = texelFetch(uSourceB, source, 0);
+        if (sr == vec4(0.0) && sg == vec4(0.0) && sb == vec4(0.0))
+            continue; // dark neighbours send nothing: skip the face math and the GV
+        lpvPropagateThroughFaces(i, sr, sg, sb, lpvBlockingOnFace(k, q, i), r, g, b);
     }
     outR = r;
     outG = g;

@@ -6,9 +6,9 @@
 #include "sh.glsl"
 #include "lpv_common.glsl"
 
-uniform sampler3D uSourceR;
-uniform sampler3D uSourceG;
-uniform sampler3D uSourceB;
+layout(binding = 0) uniform sampler3D uSourceR;
+layout(binding = 1) uniform sampler3D uSourceG;
+layout(binding = 2) uniform sampler3D uSourceB;
 out int vSlice;
 flat out vec4 vR;
 flat out vec4 vG;

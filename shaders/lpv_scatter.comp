@@ -8,9 +8,9 @@
 #include "lpv_common.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-uniform sampler3D uSourceR;
-uniform sampler3D uSourceG;
-uniform sampler3D uSourceB;
+layout(binding = 0) uniform sampler3D uSourceR;
+layout(binding = 1) uniform sampler3D uSourceG;
+layout(binding = 2) uniform sampler3D uSourceB;
 layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; };
 
 void main() {

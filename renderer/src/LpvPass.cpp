@@ -66,6 +66,7 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.gvFromRsm_, {"lpv_gv_inject.comp"}, {"GV_FROM_RSM 1"}},
         {&pass.gvFromCamera_, {"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}},
         {&pass.gvMerge_, {"lpv_gv_merge.comp"}, {}},
+        {&pass.faceBlocking_, {"lpv_face_blocking.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
@@ -241,16 +242,28 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     const int m = volumes_.gridSize() + 1;
     glDispatchCompute(groups(m, 4), groups(m, 4), groups(m * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
+
+    // The GV on every cell face, for the compute gather.
+    p = faceBlocking_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glProgramUniform1i(p, loc(p, "uOcclusion"), 1);
+    glBindTextureUnit(3, volumes_.geometry.id());
+    for (int a = 0; a < 3; ++a)
+        glBindImageTexture(GLuint(a), volumes_.faceBlocking[std::size_t(a)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           GL_RGBA32F);
+    const int n = volumes_.gridSize();
+    glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
+    glMemoryBarrier(kComputeResults);
 }
 
 void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {
-    static constexpr const char* kSources[] = {"uSourceR", "uSourceG", "uSourceB"};
-    for (int c = 0; c < 3; ++c) {
+    // Layout bindings: sources 0..2, the GV 3, the face blocking 4..6.
+    for (int c = 0; c < 3; ++c)
         glBindTextureUnit(GLuint(c), volumes_.volume[std::size_t(source)].channel[std::size_t(c)].id());
-        glProgramUniform1i(program, loc(program, kSources[c]), c);
-    }
-    glBindTextureUnit(3, volumes_.geometry.id());
-    glProgramUniform1i(program, loc(program, "uGv"), 3);
+    for (int a = 0; a < 3; ++a)
+        glBindTextureUnit(GLuint(4 + a), volumes_.faceBlocking[std::size_t(a)].id());
+    glBindTextureUnit(3, volumes_.geometry.id()); // uGv, layout binding 3
     glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
 }
 
@@ -283,7 +296,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             setCascadeUniforms(gatherProgram);
             bindStepSources(gatherProgram, read, settings.occlusion);
             bindStepImages(write);
-            glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
+            glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(n * k));
             glMemoryBarrier(kComputeResults);
             break;
         case LpvVariant::ComputeScatter:

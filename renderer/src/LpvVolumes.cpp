@@ -38,7 +38,7 @@ std::size_t LpvVolumes::allocatedBytes() const {
     const std::size_t n = std::size_t(gridSize_), k = std::size_t(cascades_), m = n + 1;
     if (n == 0)
         return 0;
-    return 9 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
+    return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
            8 * m * m * m * k * 4 + 3 * k * 4;
 }
 
@@ -49,6 +49,8 @@ void LpvVolumes::release() {
     for (Texture& t : accumulator.channel)
         t.reset();
     geometry.reset();
+    for (Texture& t : faceBlocking)
+        t.reset();
     lpvSums.reset();
     gvSums.reset();
     scales.reset();
@@ -84,6 +86,8 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     for (Texture& t : accumulator.channel)
         t = makeVolume(gridSize, gridSize, gridSize * cascades);
     geometry = makeVolume(int(m), int(m), int(m * k));
+    for (Texture& t : faceBlocking)
+        t = makeVolume(gridSize, gridSize, gridSize * cascades);
     lpvSums = makeZeroBuffer(sumBytes);
     gvSums = makeZeroBuffer(gvBytes);
     scales = makeZeroBuffer(k * 3 * 4);
