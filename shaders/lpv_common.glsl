@@ -200,3 +200,65 @@ void lpvRecordMax(int k, int slot, float value) {
     atomicMax(lpvScaleData[uCascades * (1 + slot) + k], floatBitsToUint(value));
 }
 #endif
+
+#ifdef LPV_WITH_FACE_BLOCKING
+// The blocking potential on the +x, +y and +z face of every cell, written once
+// per frame by lpv_face_blocking.comp (zero: no occlusion).
+layout(binding = 4) uniform sampler3D uFaceBlockX;
+layout(binding = 5) uniform sampler3D uFaceBlockY;
+layout(binding = 6) uniform sampler3D uFaceBlockZ;
+uniform bool uOcclusion;
+
+vec4 lpvFaceBlocking(int axis, ivec3 texel) {
+    if (!uOcclusion)
+        return vec4(0.0);
+    if (axis == 0)
+        return texelFetch(uFaceBlockX, texel, 0);
+    if (axis == 1)
+        return texelFetch(uFaceBlockY, texel, 0);
+    return texelFetch(uFaceBlockZ, texel, 0);
+}
+
+// The blocking on the face between q and q + sigma e_a: q's +a face for
+// sigma > 0, the neighbour's for sigma < 0.
+vec4 lpvBlockingBetween(int k, ivec3 q, int a, float sigma) {
+    ivec3 faceCell = q;
+    if (sigma < 0.0)
+        faceCell[a] -= 1;
+    return lpvFaceBlocking(a, ivec3(faceCell.xy, k * uGridSize + faceCell.z));
+}
+#endif
+#ifdef LPV_WITH_SOURCES
+layout(binding = 0) uniform sampler3D uSourceR;
+layout(binding = 1) uniform sampler3D uSourceG;
+layout(binding = 2) uniform sampler3D uSourceB;
+
+// Gather: light from the neighbour q = p - sigma e_a, if it is inside and not dark.
+void lpvGatherFrom(int a, float sigma, int k, ivec3 p, inout vec3 accDc, inout vec3 nR, inout vec3 nG,
+                   inout vec3 nB) {
+    ivec3 q = p;
+    q[a] -= int(sigma);
+    if (!lpvInsideCascade(q))
+        return;
+    ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
+    vec4 r = texelFetch(uSourceR, source, 0), g = texelFetch(uSourceG, source, 0), b = texelFetch(uSourceB, source, 0);
+    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
+        return; // dark neighbours send nothing: skip the face math and the GV
+    lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), accDc, nR, nG, nB);
+}
+
+// The whole gather for destination cell p of cascade k.
+void lpvGather(int k, ivec3 p, out vec4 r, out vec4 g, out vec4 b) {
+    vec3 accDc = vec3(0.0), nR = vec3(0.0), nG = vec3(0.0), nB = vec3(0.0);
+    // Literal directions, so that the compiler folds every axis index.
+    lpvGatherFrom(0, 1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(0, -1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(1, 1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(1, -1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(2, 1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(2, -1.0, k, p, accDc, nR, nG, nB);
+    r = lpvFinishChannel(accDc.r, nR);
+    g = lpvFinishChannel(accDc.g, nG);
+    b = lpvFinishChannel(accDc.b, nB);
+}
+#endif
