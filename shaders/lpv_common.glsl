@@ -78,6 +78,14 @@ const vec4 LPV_FACE_LOBE[30] = vec4[30](
     vec4(0.11944778, -0.137926416, 0, -0),
     vec4(0.11944778, 0.137926416, 0, -0));
 
+// A usable RSM texel: finite position and flux, a normal that has a direction.
+// (Degenerate texels are skipped, so one bad texel cannot poison the volume.)
+bool lpvUsableTexel(vec3 position, vec3 normal, vec3 flux) {
+    bool finite = !any(isnan(position)) && !any(isinf(position)) && !any(isnan(flux)) && !any(isinf(flux)) &&
+                  !any(isnan(normal)) && !any(isinf(normal));
+    return finite && dot(normal, normal) > 1e-12;
+}
+
 bool lpvInsideCascade(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(uGridSize))); }
 
 // Cell index in the fixed-point buffers (cascades stacked like the textures).

@@ -20,6 +20,8 @@ void main() {
     if (all(lessThan(texel.xy, size.xy)) && texelFetch(uRsmPosition, texel, 0).w > 0.0) {
         vec3 flux = texelFetch(uRsmFlux, texel, 0).rgb;
         float brightest = max(max(flux.r, flux.g), max(flux.b, 0.0));
+        if (isnan(brightest) || isinf(brightest))
+            brightest = 0.0; // the injection skips such texels too
         // Non-negative floats order like their bit patterns.
         atomicMax(groupMax, floatBitsToUint(brightest));
     }

@@ -17,9 +17,11 @@ layout(std430, binding = 2) buffer GvFixedPoint { int gvSums[]; }; // [source][c
 
 void addSurfel(int source, int k, vec3 p, vec3 n, float area) {
     // floor(x + 0.5), not round(): GLSL leaves the direction of halves to the driver.
-    ivec3 g = ivec3(floor((p - uOrigin[k]) / uCellSize[k] + 0.5));
-    if (any(lessThan(g, ivec3(0))) || any(greaterThan(g, ivec3(uGridSize))))
+    vec3 gf = floor((p - uOrigin[k]) / uCellSize[k] + 0.5);
+    // Range-checked as floats: converting a far-away coordinate to int is undefined.
+    if (any(lessThan(gf, vec3(0.0))) || any(greaterThan(gf, vec3(uGridSize))))
         return;
+    ivec3 g = ivec3(gf);
     float s = uCellSize[k];
     vec4 v = shCosineLobe(n) * (min(area / (s * s), 1.0) * GV_FIXED_SCALE);
     int m = uGridSize + 1;
@@ -42,7 +44,10 @@ void main() {
     vec4 position = texelFetch(uRsmPosition, texel, 0);
     if (position.w <= 0.0)
         return;
-    vec3 n = normalize(texelFetch(uRsmNormal, texel, 0).xyz);
+    vec3 rawNormal = texelFetch(uRsmNormal, texel, 0).xyz;
+    if (!lpvUsableTexel(position.xyz, rawNormal, vec3(0.0)))
+        return;
+    vec3 n = normalize(rawNormal);
     float area = uTexelArea[texel.z] / max(dot(n, uToSun), 0.2);
     addSurfel(0, texel.z, position.xyz, n, area);
 }
@@ -66,6 +71,8 @@ void main() {
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;
     vec4 world = uInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     vec3 p = world.xyz / world.w;
+    if (!lpvUsableTexel(p, normal.xyz, vec3(0.0)))
+        return;
     vec3 n = normalize(normal.xyz);
     vec3 toCamera = uCameraPos - p;
     float dist = length(toCamera);

@@ -26,12 +26,17 @@ void main() {
     vec4 position = texelFetch(uRsmPosition, texel, 0);
     if (position.w <= 0.0)
         return;
-    vec3 n = normalize(texelFetch(uRsmNormal, texel, 0).xyz);
-    vec3 flux = texelFetch(uRsmFlux, texel, 0).rgb;
-    vec3 p = position.xyz + n * (uInjectionOffset * uCellSize[k]);
-    ivec3 cell = ivec3(floor((p - uOrigin[k]) / uCellSize[k]));
-    if (!lpvInsideCascade(cell))
+    vec3 rawNormal = texelFetch(uRsmNormal, texel, 0).xyz;
+    vec3 flux = max(texelFetch(uRsmFlux, texel, 0).rgb, vec3(0.0));
+    if (!lpvUsableTexel(position.xyz, rawNormal, flux))
         return;
+    vec3 n = normalize(rawNormal);
+    vec3 p = position.xyz + n * (uInjectionOffset * uCellSize[k]);
+    vec3 u = (p - uOrigin[k]) / uCellSize[k];
+    // Range-checked as floats: converting a far-away coordinate to int is undefined.
+    if (any(lessThan(u, vec3(0.0))) || any(greaterThanEqual(u, vec3(uGridSize))))
+        return;
+    ivec3 cell = min(ivec3(floor(u)), ivec3(uGridSize - 1));
     float scale = lpvFixedScale(k);
     vec4 lobe = shCosineLobe(n) * (scale / SH_PI);
     int base = lpvCellIndex(k, cell) * 12;

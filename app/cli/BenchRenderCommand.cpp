@@ -86,6 +86,7 @@ int benchRender(Args args) {
                     "warm-up\n",
                     request.projectFile.c_str(), setup->project.scene.triangleCount(), draws.total, draws.culled,
                     *width, *height, *frames, *warmup);
+        std::printf("%s\n", setup->renderer->lpvNote().c_str());
         if (perFrame)
             std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
         auto table = setup->renderer->timer().table();

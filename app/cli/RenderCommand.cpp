@@ -33,8 +33,10 @@ one row per frame, then median/min/max over the frames rendered.
   --dump LIST           Also write the renderer's internal images beside OUT,
                         comma-separated: shadow (every shadow map / cascade
                         depth), rsm (position, normal and flux of every RSM
-                        tile), lpv (the LPV volumes, once they exist). Each as
-                        OUT-<name>.exr (exact) and .png (scaled)
+                        tile), lpv (per cascade the accumulated light, DC
+                        per colour channel, and the geometry volume, z slices
+                        side by side). Each as OUT-<name>.exr (exact) and
+                        .png (scaled)
 )";
 }
 
@@ -140,6 +142,7 @@ int runRender(Args args) {
         const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
         std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
                     setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
+        std::printf("%s\n", setup->renderer->lpvNote().c_str());
         std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
         const auto table = setup->renderer->timer().table();
         std::printf("%s", renderer::formatTimingTable(table).c_str());

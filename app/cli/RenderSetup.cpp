@@ -91,10 +91,17 @@ bool renderFrames(RenderSetup& setup, int width, int height, int frames) {
 std::string formatPerFrameTimes(const renderer::GpuTimer& timer) {
     const auto history = timer.history();
     std::ostringstream out;
+    // Each column is as wide as its name or its widest figure, whichever is wider.
+    auto width = [](const std::string& pass, const std::vector<double>& ms) {
+        int w = int(pass.size());
+        for (double v : ms)
+            w = std::max(w, std::snprintf(nullptr, 0, "%.3f", v));
+        return w;
+    };
     out << "frame";
     std::size_t frames = 0;
     for (const auto& [pass, ms] : history) {
-        out << "  " << pass;
+        out << "  " << std::string(std::size_t(width(pass, ms) - int(pass.size())), ' ') << pass;
         frames = std::max(frames, ms.size());
     }
     out << "  (ms)\n";
@@ -104,7 +111,7 @@ std::string formatPerFrameTimes(const renderer::GpuTimer& timer) {
         out << cell;
         for (const auto& [pass, ms] : history) {
             // Right-align each figure under its pass name.
-            std::snprintf(cell, sizeof cell, "%*.3f", int(pass.size()) + 2, f < ms.size() ? ms[f] : 0.0);
+            std::snprintf(cell, sizeof cell, "%*.3f", width(pass, ms) + 2, f < ms.size() ? ms[f] : 0.0);
             out << cell;
         }
         out << "\n";
