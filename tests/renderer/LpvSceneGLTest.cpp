@@ -1,0 +1,113 @@
+// The LPV through the whole renderer on the Cornell box: the ceiling opened
+// and a sun shining in, so the sunlit red (or green) wall must bleed its
+// colour onto the white blocks. Runs on llvmpipe.
+#include "GlFixture.h"
+
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/scene/CornellBox.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace lpv;
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+// The built-in Cornell box without its ceiling (its triangles collapsed to a
+// point), lit by a sun that travels toward +x (sign +1: it lights the red
+// wall) or -x (sign -1: the green wall).
+scene::Project openCornellBox(float sign) {
+    scene::Project project = scene::makeCornellBoxProject();
+    scene::Mesh& room = project.scene.meshes[0];
+    for (std::size_t t = 0; t + 2 < room.indices.size(); t += 3) {
+        bool ceiling = true;
+        for (std::size_t j = 0; j < 3; ++j)
+            ceiling = ceiling && room.positions[room.indices[t + j]].y > 5.4f;
+        if (ceiling)
+            room.indices[t + 1] = room.indices[t + 2] = room.indices[t];
+    }
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.55f * sign, -1.0f, 0.25f));
+    sun.color = glm::vec3(1.0f);
+    sun.intensity = 3.0f;
+    project.scene.lights = {sun};
+    return project;
+}
+
+struct Frame {
+    std::vector<float> hdr, albedo, normal;
+};
+
+Frame render(renderer::ForwardRenderer& r, const scene::Project& project, float lpvIntensity) {
+    scene::ParameterSet params = project.parameters;
+    EXPECT_TRUE(params.set("lpv.intensity", double(lpvIntensity)).has_value());
+    r.setScene(project.scene);
+    // Two frames: the geometry volume also takes the previous frame's G-buffer.
+    for (int i = 0; i < 2; ++i) {
+        auto ok = r.render(project.scene, params, project.scene.cameras.front(), kWidth, kHeight);
+        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
+    }
+    return {r.readHdr(), r.readGBufferAlbedo(), r.readGBufferNormal()};
+}
+
+// Summed indirect light (with LPV minus without) over the white pixels whose
+// normal faces +x (side > 0) or -x (side < 0).
+glm::dvec3 indirectOnWhite(const Frame& with, const Frame& without, float side, int* count) {
+    glm::dvec3 sum(0.0);
+    *count = 0;
+    for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
+        const glm::vec3 albedo(with.albedo[4 * i], with.albedo[4 * i + 1], with.albedo[4 * i + 2]);
+        const bool white = std::abs(albedo.r - 0.725f) < 0.02f && std::abs(albedo.g - 0.71f) < 0.02f;
+        if (!white || with.normal[4 * i] * side < 0.5f)
+            continue;
+        ++*count;
+        for (int c = 0; c < 3; ++c)
+            sum[c] += double(with.hdr[4 * i + std::size_t(c)]) - double(without.hdr[4 * i + std::size_t(c)]);
+    }
+    return sum;
+}
+
+class LpvSceneGLTest : public GlTest {};
+
+TEST_F(LpvSceneGLTest, CornellWallsBleedTheirColourOntoTheWhiteBlocks) {
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    for (float sign : {1.0f, -1.0f}) {
+        const scene::Project project = openCornellBox(sign);
+        const Frame without = render(*r, project, 0.0f);
+        EXPECT_NE(r->lpvNote().find("off"), std::string::npos) << r->lpvNote();
+        const Frame with = render(*r, project, 1.0f);
+        EXPECT_NE(r->lpvNote().find("computeGather"), std::string::npos) << r->lpvNote();
+        for (float v : with.hdr)
+            ASSERT_TRUE(std::isfinite(v));
+        int towardRedCount = 0, towardGreenCount = 0;
+        // The red wall is at +x (its inside faces -x): white faces turned toward it have normals along +x.
+        const glm::dvec3 towardRed = indirectOnWhite(with, without, 1.0f, &towardRedCount);
+        const glm::dvec3 towardGreen = indirectOnWhite(with, without, -1.0f, &towardGreenCount);
+        ASSERT_GT(towardRedCount, 200);
+        ASSERT_GT(towardGreenCount, 200);
+        const double redFacingRatio = towardRed.r / towardRed.g;     // R/G of the light on faces toward red
+        const double greenFacingRatio = towardGreen.r / towardGreen.g; // ... toward green
+        std::cout << "[ figures ] sun lights the " << (sign > 0 ? "red" : "green")
+                  << " wall: indirect R/G on white faces toward red " << redFacingRatio << " (" << towardRedCount
+                  << " px, mean " << towardRed.g / towardRedCount << "), toward green " << greenFacingRatio << " ("
+                  << towardGreenCount << " px, mean " << towardGreen.g / towardGreenCount << ")\n";
+        EXPECT_GT(towardRed.g, 0.0);
+        EXPECT_GT(towardGreen.g, 0.0);
+        if (sign > 0) {
+            // The lit red wall: the faces turned to it get red-tinted indirect light.
+            EXPECT_GT(redFacingRatio, 1.2);
+            EXPECT_GT(redFacingRatio, 1.2 * greenFacingRatio);
+        } else {
+            // The lit green wall: the faces turned to it get green-tinted indirect light.
+            EXPECT_LT(greenFacingRatio, 0.9);
+            EXPECT_LT(greenFacingRatio * 1.2, redFacingRatio);
+        }
+    }
+}
+
+} // namespace
