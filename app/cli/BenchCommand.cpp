@@ -17,11 +17,14 @@ namespace lpv::cli {
 
 namespace fs = std::filesystem;
 
+void printBenchLpvHelp();
+
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
        lpv bench render PROJECT [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
                                  --csv FILE --markdown FILE]
+       lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
 
 bench render: renders the project headless at the given size (default
 1280x720) for --warmup frames (default 5, not counted) and then --frames
@@ -31,6 +34,9 @@ of values sweeps that key (several lists: every combination), each with its
 own warm-up. --csv and --markdown write the tables (the Markdown one headed
 by the command and the machine: CPU, cores, GL renderer and version).
 
+)";
+    printBenchLpvHelp();
+    std::cout << R"(
 bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture
 lookup), saving the project it becomes, and loading that project again;
@@ -39,6 +45,7 @@ Loading a saved project is meant to be at least 10x faster than importing
 the source. Nothing is asserted: the figures depend on the machine.
 
 Example:
+  lpv bench lpv sibenik.lpvproj --markdown lpv-bench.md --csv lpv-bench.csv
   lpv bench import ../shared/scenes/sponza/sponza.obj ../shared/scenes/sibenik/sibenik.obj
 )";
 }
@@ -133,9 +140,11 @@ int benchImport(Args& args) {
 int runBench(Args args) {
     const auto pos = args.positionals();
     if (pos.empty())
-        return usageError("which benchmark? (import, render)", "bench");
+        return usageError("which benchmark? (import, render, lpv)", "bench");
     if (pos.front() == "render")
         return benchRender(std::move(args));
+    if (pos.front() == "lpv")
+        return benchLpv(std::move(args));
     if (pos.front() == "import") {
         try {
             return benchImport(args);
@@ -143,7 +152,7 @@ int runBench(Args args) {
             return usageError("--repeat needs a whole number", "bench");
         }
     }
-    return usageError("unknown benchmark '" + pos.front() + "' (import, render)", "bench");
+    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv)", "bench");
 }
 
 } // namespace lpv::cli

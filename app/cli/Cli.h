@@ -37,6 +37,7 @@ int runInfo(Args args);
 int runImport(Args args);
 int runBench(Args args);
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
+int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 
 void printRenderHelp();
 void printParamsHelp();

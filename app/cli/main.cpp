@@ -20,6 +20,7 @@ Commands:
   import FILE... -o PROJECT   Import 4ds, glTF, OBJ, 3DS ... scenes into a new or existing project
   bench import FILE...        Time importing scene files against loading the projects they become
   bench render PROJECT        Per-pass GPU times over many frames (default 1280x720, 60 frames)
+  bench lpv PROJECT           The thesis' LPV measurements: RSM tile sizes, steps x variants x occlusion
   info PROJECT                Validate a project and print what it contains
 
 Options:

@@ -168,10 +168,13 @@ struct ForwardRenderer::Impl {
             lpv->disable("lpv.intensity is 0");
             return {};
         }
+        // Tile k feeds cascade k: lpv.cascades volumes, as far as there are tiles (rsm.cascades).
         LpvRsmInput input;
-        for (const RsmTile& tile : rsm->tiles()) {
-            input.cascades.push_back(tile.cascade);
-            input.texelArea.push_back(tile.texelArea);
+        const std::size_t cascades =
+            std::min(rsm->tiles().size(), std::size_t(frame.params.getInt("lpv.cascades")));
+        for (std::size_t k = 0; k < cascades; ++k) {
+            input.cascades.push_back(rsm->tiles()[k].cascade);
+            input.texelArea.push_back(rsm->tiles()[k].texelArea);
         }
         input.tileSize = rsm->tileSize();
         input.position = rsm->positionArray();

@@ -2,10 +2,27 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 namespace lpv::renderer {
 
 GpuTimer::GpuTimer(std::size_t historyFrames) : historyFrames_(historyFrames) {}
+
+void GpuTimer::synchronizeIfSoftware() {
+    if (!softwareChecked_) {
+        // Mesa's CPU renderers take a timestamp when they next flush, while they
+        // run compute dispatches at once: a pass that starts with a dispatch
+        // would lose it (measured: one propagation step timed as 0.1 ms instead
+        // of 40). There the "GPU" is the CPU, so flushing at pass boundaries
+        // costs nothing it would not cost anyway; on a hardware GPU the timer
+        // never stalls.
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        software_ = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
+        softwareChecked_ = true;
+    }
+    if (software_)
+        glFinish();
+}
 
 GpuTimer::PassState& GpuTimer::state(const std::string& pass) {
     for (PassState& p : passes_)
@@ -50,12 +67,15 @@ void GpuTimer::begin(const std::string& pass) {
     Slot& s = p.ring[p.next];
     if (s.pending) // all ring in flight: the GPU is kLatency frames behind; wait rather than lose a sample
         collect(p, true);
+    synchronizeIfSoftware();
     glQueryCounter(s.start.id(), GL_TIMESTAMP);
+    synchronizeIfSoftware(); // llvmpipe takes a timestamp when it next flushes: now, before the pass's work
 }
 
 void GpuTimer::end(const std::string& pass) {
     PassState& p = state(pass);
     Slot& s = p.ring[p.next];
+    synchronizeIfSoftware();
     glQueryCounter(s.stop.id(), GL_TIMESTAMP);
     s.pending = true;
     p.next = (p.next + 1) % kLatency;

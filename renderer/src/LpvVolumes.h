@@ -30,7 +30,7 @@ class LpvVolumes {
     std::array<LpvVolumeSet, 2> volume; // ping-pong
     LpvVolumeSet accumulator;
     Texture geometry;                    // (N+1) x (N+1) x ((N+1) K), RGBA32F
-    std::array<Texture, 3> faceBlocking; // per cell, the GV on its +x, +y, +z face (compute gather)
+    std::array<Texture, 3> faceBlocking; // per cell, the GV on its +x, +y, +z face (all but raster scatter)
     Buffer lpvSums;                      // 12 int per cell: fixed-point sums of injection / scatter
     Buffer gvSums;                       // 2 sources x 4 int per GV cell
     Buffer scales;                       // 3K uint (float bits): brightest texel per tile, then the largest

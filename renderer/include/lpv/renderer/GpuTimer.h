@@ -53,9 +53,13 @@ private:
     };
     PassState& state(const std::string& pass);
     void collect(PassState& p, bool wait);
+    // glFinish at pass boundaries on llvmpipe/softpipe only (see GpuTimer.cpp).
+    void synchronizeIfSoftware();
 
     std::vector<PassState> passes_;
     std::size_t historyFrames_;
+    bool softwareChecked_ = false;
+    bool software_ = false;
 };
 
 // A table as text: pass, median, min, max (ms), samples.
