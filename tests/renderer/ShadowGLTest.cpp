@@ -139,7 +139,12 @@ protected:
         return sum / 9.0f;
     }
 
-    scene::ParameterSet params;
+    // Direct light only: shadows are measured without the LPV's indirect light.
+    scene::ParameterSet params = [] {
+        scene::ParameterSet p;
+        (void)p.set("lpv.intensity", 0.0);
+        return p;
+    }();
     std::vector<renderer::DebugImage> lastShadowImages;
 };
 
