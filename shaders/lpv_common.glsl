@@ -237,26 +237,9 @@ vec4 lpvBlockingBetween(int k, ivec3 q, int a, float sigma) {
 }
 #endif
 #ifdef LPV_WITH_SOURCES
-#ifdef LPV_SOURCE_CELLS
-// Compute variants: the source volume as a storage buffer, 3 vec4 per cell.
-layout(std430, binding = 4) readonly buffer LpvSourceCells { vec4 sourceCells[]; };
-void lpvLoadSource(int k, ivec3 q, out vec4 r, out vec4 g, out vec4 b) {
-    int i = lpvCellIndex(k, q) * 3;
-    r = sourceCells[i];
-    g = sourceCells[i + 1];
-    b = sourceCells[i + 2];
-}
-#else
 layout(binding = 0) uniform sampler3D uSourceR;
 layout(binding = 1) uniform sampler3D uSourceG;
 layout(binding = 2) uniform sampler3D uSourceB;
-void lpvLoadSource(int k, ivec3 q, out vec4 r, out vec4 g, out vec4 b) {
-    ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
-    r = texelFetch(uSourceR, source, 0);
-    g = texelFetch(uSourceG, source, 0);
-    b = texelFetch(uSourceB, source, 0);
-}
-#endif
 
 // Gather: light from the neighbour q = p - sigma e_a, if it is inside and not dark.
 void lpvGatherFrom(int a, float sigma, int k, ivec3 p, inout vec3 accDc, inout vec3 nR, inout vec3 nG,
@@ -265,8 +248,8 @@ void lpvGatherFrom(int a, float sigma, int k, ivec3 p, inout vec3 accDc, inout v
     q[a] -= int(sigma);
     if (!lpvInsideCascade(q))
         return;
-    vec4 r, g, b;
-    lpvLoadSource(k, q, r, g, b);
+    ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
+    vec4 r = texelFetch(uSourceR, source, 0), g = texelFetch(uSourceG, source, 0), b = texelFetch(uSourceB, source, 0);
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return; // dark neighbours send nothing: skip the face math and the GV
     lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), accDc, nR, nG, nB);

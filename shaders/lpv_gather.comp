@@ -10,29 +10,27 @@
 // 1.6x slower on llvmpipe, whose barriers are expensive (docs/lpv.md).
 #define LPV_WITH_FACE_BLOCKING
 #define LPV_WITH_SOURCES
-#define LPV_SOURCE_CELLS
 #include "sh.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(std430, binding = 3) writeonly buffer LpvDestCells { vec4 destCells[]; }; // 3 per cell
-// The accumulator as a storage buffer too; lpv_publish.comp copies it into
-// the 3D textures the lookup filters, once after the last step.
-layout(std430, binding = 5) buffer LpvAccumCells { vec4 accumCells[]; };
+layout(rgba32f, binding = 0) uniform writeonly image3D uDestR;
+layout(rgba32f, binding = 1) uniform writeonly image3D uDestG;
+layout(rgba32f, binding = 2) uniform writeonly image3D uDestB;
+layout(rgba32f, binding = 3) uniform image3D uAccumR;
+layout(rgba32f, binding = 4) uniform image3D uAccumG;
+layout(rgba32f, binding = 5) uniform image3D uAccumB;
 
 void main() {
     ivec3 texel = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(texel, ivec3(uGridSize, uGridSize, uGridSize * uCascades))))
         return;
     vec4 r, g, b;
-    int k = texel.z / uGridSize;
-    ivec3 p = ivec3(texel.xy, texel.z % uGridSize);
-    lpvGather(k, p, r, g, b);
-    int i = lpvCellIndex(k, p) * 3;
-    destCells[i] = r;
-    destCells[i + 1] = g;
-    destCells[i + 2] = b;
-    accumCells[i] += r;
-    accumCells[i + 1] += g;
-    accumCells[i + 2] += b;
+    lpvGather(texel.z / uGridSize, ivec3(texel.xy, texel.z % uGridSize), r, g, b);
+    imageStore(uDestR, texel, r);
+    imageStore(uDestG, texel, g);
+    imageStore(uDestB, texel, b);
+    imageStore(uAccumR, texel, imageLoad(uAccumR, texel) + r);
+    imageStore(uAccumG, texel, imageLoad(uAccumG, texel) + g);
+    imageStore(uAccumB, texel, imageLoad(uAccumB, texel) + b);
 }

@@ -1,7 +1,6 @@
 #version 450 core
 // Fixed-point sums (injection, or one compute-scatter step) to floats: the
-// result goes to the volume the next step reads (as a texture for the raster
-// variants and as a storage buffer for the compute ones) and into the accumulator
+// result goes to the volume the next step reads and into the accumulator
 // (set on injection, added on propagation). The sums are cleared for reuse,
 // and the result's largest coefficient is recorded for the next scatter step.
 #define LPV_WITH_FIXED_POINT
@@ -17,8 +16,6 @@ layout(rgba32f, binding = 3) uniform image3D uAccumR;
 layout(rgba32f, binding = 4) uniform image3D uAccumG;
 layout(rgba32f, binding = 5) uniform image3D uAccumB;
 uniform bool uAccumulate; // false: accumulator = result (injection)
-layout(std430, binding = 3) writeonly buffer LpvDestCells { vec4 destCells[]; }; // 3 per cell
-layout(std430, binding = 5) writeonly buffer LpvAccumCells { vec4 accumCells[]; }; // the compute gather's
 uniform int uRecordSlot;  // where the largest |coefficient| of the result goes (next scatter's scale)
 
 // A work group's 4 slices span at most two cascades (N >= 8): reduce the
@@ -39,17 +36,10 @@ float resolveCell(ivec3 texel, int k) {
         }
     }
     vec4 largest = max(max(abs(v[0]), abs(v[1])), abs(v[2]));
-    destCells[lpvCellIndex(k, cell) * 3] = v[0];
-    destCells[lpvCellIndex(k, cell) * 3 + 1] = v[1];
-    destCells[lpvCellIndex(k, cell) * 3 + 2] = v[2];
     imageStore(uDestR, texel, v[0]);
     imageStore(uDestG, texel, v[1]);
     imageStore(uDestB, texel, v[2]);
-    if (!uAccumulate) { // injection: V_0 also starts the compute gather's accumulator
-        accumCells[lpvCellIndex(k, cell) * 3] = v[0];
-        accumCells[lpvCellIndex(k, cell) * 3 + 1] = v[1];
-        accumCells[lpvCellIndex(k, cell) * 3 + 2] = v[2];
-    } else {
+    if (uAccumulate) {
         v[0] += imageLoad(uAccumR, texel);
         v[1] += imageLoad(uAccumG, texel);
         v[2] += imageLoad(uAccumB, texel);

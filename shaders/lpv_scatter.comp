@@ -8,8 +8,9 @@
 #include "lpv_common.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-// The source volume as a storage buffer, 3 vec4 per cell.
-layout(std430, binding = 4) readonly buffer LpvSourceCells { vec4 sourceCells[]; };
+layout(binding = 0) uniform sampler3D uSourceR;
+layout(binding = 1) uniform sampler3D uSourceG;
+layout(binding = 2) uniform sampler3D uSourceB;
 layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; };
 
 // What q sends into its neighbour q + sigma e_a, added in fixed point.
@@ -36,8 +37,7 @@ void main() {
         return;
     int k = texel.z / uGridSize;
     ivec3 q = ivec3(texel.xy, texel.z % uGridSize);
-    int i = lpvCellIndex(k, q) * 3;
-    vec4 r = sourceCells[i], g = sourceCells[i + 1], b = sourceCells[i + 2];
+    vec4 r = texelFetch(uSourceR, texel, 0), g = texelFetch(uSourceG, texel, 0), b = texelFetch(uSourceB, texel, 0);
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return; // dark cells push nothing: most of a scene's volume early on
     float scale = lpvFixedScale(k);

@@ -20,8 +20,7 @@ constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 
 // SSBO bindings shared by the shaders (lpv_common.glsl and the passes).
-constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2, kDestCellsBinding = 3,
-                 kSourceCellsBinding = 4, kAccumCellsBinding = 5;
+constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2;
 
 std::vector<glm::vec4> readVolumeBlock(GLuint texture, int size, int firstSlice) {
     std::vector<glm::vec4> v(std::size_t(size) * std::size_t(size) * std::size_t(size));
@@ -68,7 +67,6 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.gvFromCamera_, {"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}},
         {&pass.gvMerge_, {"lpv_gv_merge.comp"}, {}},
         {&pass.faceBlocking_, {"lpv_face_blocking.comp"}, {}},
-        {&pass.publish_, {"lpv_publish.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
@@ -196,8 +194,6 @@ void LpvPass::resolveSums(int destination, bool accumulate, int scaleSlot, int r
 }
 
 void LpvPass::bindStepImages(int destination) const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDestCellsBinding, volumes_.cells[std::size_t(destination)].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumCellsBinding, volumes_.accumulatorCells.id());
     for (int c = 0; c < 3; ++c) {
         glBindImageTexture(GLuint(c), volumes_.volume[std::size_t(destination)].channel[std::size_t(c)].id(), 0,
                            GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -262,7 +258,6 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
 }
 
 void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSourceCellsBinding, volumes_.cells[std::size_t(source)].id());
     // Layout bindings: sources 0..2, the GV 3, the face blocking 4..6.
     for (int c = 0; c < 3; ++c)
         glBindTextureUnit(GLuint(c), volumes_.volume[std::size_t(source)].channel[std::size_t(c)].id());
@@ -346,15 +341,6 @@ void LpvPass::propagate(const LpvSettings& settings) {
     if (raster) {
         glDisable(GL_BLEND);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    if (settings.variant == LpvVariant::ComputeGather && settings.propagationSteps > 0) {
-        // The gather summed into a storage buffer: into the textures the lookup filters.
-        const GLuint p = publish_.id();
-        glUseProgram(p);
-        setCascadeUniforms(p);
-        bindStepImages(readIndex_);
-        glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(n * k));
-        glMemoryBarrier(kComputeResults);
     }
 }
 

@@ -93,7 +93,7 @@ class LpvPass {
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
 
-    Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_, publish_;
+    Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;

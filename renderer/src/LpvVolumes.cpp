@@ -38,7 +38,7 @@ std::size_t LpvVolumes::allocatedBytes() const {
     const std::size_t n = std::size_t(gridSize_), k = std::size_t(cascades_), m = n + 1;
     if (n == 0)
         return 0;
-    return 21 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
+    return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
            8 * m * m * m * k * 4 + 3 * k * 4;
 }
 
@@ -52,9 +52,6 @@ void LpvVolumes::release() {
     for (Texture& t : faceBlocking)
         t.reset();
     lpvSums.reset();
-    for (Buffer& b : cells)
-        b.reset();
-    accumulatorCells.reset();
     gvSums.reset();
     scales.reset();
     for (Framebuffer& f : rasterTarget)
@@ -92,9 +89,6 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     for (Texture& t : faceBlocking)
         t = makeVolume(gridSize, gridSize, gridSize * cascades);
     lpvSums = makeZeroBuffer(sumBytes);
-    for (Buffer& b : cells)
-        b = makeZeroBuffer(3 * n * n * n * k * kTexelBytes);
-    accumulatorCells = makeZeroBuffer(3 * n * n * n * k * kTexelBytes);
     gvSums = makeZeroBuffer(gvBytes);
     scales = makeZeroBuffer(k * 3 * 4);
     for (int i = 0; i < 2; ++i) {

@@ -27,12 +27,7 @@ class LpvVolumes {
     int cascades() const { return cascades_; }
     std::size_t allocatedBytes() const;
 
-    std::array<LpvVolumeSet, 2> volume; // ping-pong, as textures (raster variants)
-    // The same ping-pong volumes as storage buffers, 3 vec4 (R, G, B) per cell:
-    // the compute variants read and write these (plain loads are cheaper than
-    // texel fetches on llvmpipe, and a cell's three channels sit together).
-    std::array<Buffer, 2> cells;
-    Buffer accumulatorCells; // the compute gather's accumulator, copied to `accumulator` after the last step
+    std::array<LpvVolumeSet, 2> volume; // ping-pong
     LpvVolumeSet accumulator;
     Texture geometry;                    // (N+1) x (N+1) x ((N+1) K), RGBA32F
     std::array<Texture, 3> faceBlocking; // per cell, the GV on its +x, +y, +z face (all but raster scatter)
