@@ -37,12 +37,6 @@ std::optional<std::vector<int>> parseList(const std::string& text, int minimum, 
     return values;
 }
 
-std::optional<int> parseCount(const std::string& s, int minimum) {
-    auto list = parseList(s, minimum, 1 << 20);
-    if (!list || list->size() != 1)
-        return std::nullopt;
-    return list->front();
-}
 
 const renderer::PassTiming* findPass(const std::vector<renderer::PassTiming>& table, const std::string& pass) {
     for (const auto& row : table)
@@ -222,15 +216,8 @@ int benchLpv(Args args) {
         std::printf("  occlusion %-5s %2d steps: %s (%.2f ms)\n", key.first.c_str(), key.second, best.second.c_str(),
                     best.first);
     }
-    for (const auto& [file, text] : {std::pair{csvFile, csv.str()}, std::pair{markdownFile, md.str()}}) {
-        if (!file)
-            continue;
-        if (auto ok = scene::writeFileAtomically(*file, text); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return kFailure;
-        }
-        std::printf("wrote %s\n", file->c_str());
-    }
+    if (!writeReportFiles({{csvFile, csv.str()}, {markdownFile, md.str()}}))
+        return kFailure;
     return kOk;
 }
 

@@ -13,17 +13,6 @@
 
 namespace lpv::cli {
 
-namespace {
-
-std::optional<int> parseCount(const std::string& s, int minimum) {
-    int v = 0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size() || v < minimum)
-        return std::nullopt;
-    return v;
-}
-
-} // namespace
 
 int benchRender(Args args) {
     RenderRequest request;
@@ -107,16 +96,8 @@ int benchRender(Args args) {
     for (const std::string& kv : sets)
         command += " --set " + kv;
     const std::string machine = describeMachine(gl.renderer, gl.version);
-    for (const auto& [file, text] : {std::pair{csvFile, benchCsv(runs)},
-                                     std::pair{markdownFile, benchMarkdown(runs, command, machine)}}) {
-        if (!file)
-            continue;
-        if (auto ok = scene::writeFileAtomically(*file, text); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return kFailure;
-        }
-        std::printf("wrote %s\n", file->c_str());
-    }
+    if (!writeReportFiles({{csvFile, benchCsv(runs)}, {markdownFile, benchMarkdown(runs, command, machine)}}))
+        return kFailure;
     return kOk;
 }
 

@@ -1,6 +1,10 @@
 #include "BenchReport.h"
 
+#include "lpv/scene/Project.h"
+
 #include <algorithm>
+#include <charconv>
+#include <iostream>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -107,6 +111,27 @@ std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& 
         out << " " << ms(total) << " |\n";
     }
     return out.str();
+}
+
+bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, std::string>>& reports) {
+    for (const auto& [file, text] : reports) {
+        if (!file)
+            continue;
+        if (auto ok = scene::writeFileAtomically(*file, text); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return false;
+        }
+        std::printf("wrote %s\n", file->c_str());
+    }
+    return true;
+}
+
+std::optional<int> parseCount(const std::string& text, int minimum) {
+    int v = 0;
+    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || ptr != text.data() + text.size() || v < minimum)
+        return std::nullopt;
+    return v;
 }
 
 } // namespace lpv::cli

@@ -6,7 +6,9 @@
 
 #include "lpv/renderer/GpuTimer.h"
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lpv::cli {
@@ -25,5 +27,12 @@ std::string benchCsv(const std::vector<BenchRun>& runs);
 // A Markdown report: the command and machine, then one row per run and one
 // column per pass, "median (min-max)" in ms, and the total of the medians.
 std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& command, const std::string& machine);
+
+// Writes each (file, text) whose file is given, atomically, and says so; on
+// failure prints the error and returns false.
+bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, std::string>>& reports);
+
+// A whole number >= minimum (command-line counts), or nullopt.
+std::optional<int> parseCount(const std::string& text, int minimum);
 
 } // namespace lpv::cli
