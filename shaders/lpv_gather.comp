@@ -27,6 +27,10 @@ void main() {
         return;
     vec4 r, g, b;
     lpvGather(texel.z / uGridSize, ivec3(texel.xy, texel.z % uGridSize), r, g, b);
+    // The destination was cleared before the step: a cell that received
+    // nothing (all its neighbours dark, common in the first steps) writes nothing.
+    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
+        return;
     imageStore(uDestR, texel, r);
     imageStore(uDestG, texel, g);
     imageStore(uDestB, texel, b);

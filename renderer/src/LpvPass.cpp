@@ -292,6 +292,9 @@ void LpvPass::propagate(const LpvSettings& settings) {
         const int read = readIndex_, write = 1 - readIndex_;
         switch (settings.variant) {
         case LpvVariant::ComputeGather:
+            // Cleared so that the gather need not store the cells that receive nothing.
+            for (const Texture& t : volumes_.volume[std::size_t(write)].channel)
+                glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
             glUseProgram(gatherProgram);
             setCascadeUniforms(gatherProgram);
             bindStepSources(gatherProgram, read, settings.occlusion);
