@@ -4,6 +4,7 @@
 #include "Cli.h"
 
 #include "lpv/importers/Importer.h"
+#include "lpv/scene/ProcessId.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
 
@@ -11,7 +12,6 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 namespace lpv::cli {
 
@@ -114,7 +114,7 @@ int benchImport(Args& args) {
     if (repeat < 1 || repeat > 1000)
         return usageError("--repeat must be 1..1000", "bench");
 
-    const fs::path scratch = fs::temp_directory_path() / ("lpv-bench-import-" + std::to_string(::getpid()));
+    const fs::path scratch = fs::temp_directory_path() / ("lpv-bench-import-" + std::to_string(scene::processId()));
     fs::create_directories(scratch);
     std::printf("%-28s %12s %12s %10s %10s %14s\n", "file", "triangles", "import ms", "save ms", "load ms",
                 "import/load");

@@ -1,30 +1,19 @@
 #include "BenchReport.h"
 
+#include "CpuModel.h"
+
 #include "lpv/scene/Project.h"
 
 #include <algorithm>
 #include <charconv>
 #include <iostream>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <thread>
 
 namespace lpv::cli {
 
 namespace {
-
-std::string cpuModel() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) {
-            const auto colon = line.find(':');
-            if (colon != std::string::npos)
-                return line.substr(line.find_first_not_of(' ', colon + 1));
-        }
-    return "unknown CPU";
-}
 
 std::string ms(double v) {
     char buf[32];

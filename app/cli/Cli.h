@@ -36,6 +36,7 @@ int runNew(Args args);
 int runInfo(Args args);
 int runImport(Args args);
 int runBench(Args args);
+int runVersion(); // `lpv --version`, in VersionCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 

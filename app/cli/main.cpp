@@ -25,7 +25,7 @@ Commands:
 
 Options:
   -h, --help                  Show this help
-  --version                   Show the version
+  --version                   Show the version, git revision, OpenGL driver and library versions
 
 Exit codes: 0 success, 1 failure (the message names the file and what was wrong), 2 usage error.
 )";
@@ -43,10 +43,8 @@ int dispatch(std::vector<std::string> args) {
         printHelp();
         return kOk;
     }
-    if (command == "--version") {
-        std::cout << "lpv " << LPV_VERSION << "\n";
-        return kOk;
-    }
+    if (command == "--version")
+        return runVersion();
 
     struct Command {
         int (*run)(Args);

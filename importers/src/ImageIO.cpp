@@ -1,9 +1,10 @@
 #include "lpv/importers/ImageIO.h"
 
+#include "lpv/scene/ProcessId.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <atomic>
-#include <unistd.h>
 
 namespace lpv::importers {
 
@@ -19,7 +20,7 @@ scene::Expected<void> writeAtomically(const std::filesystem::path& file, int wid
     static std::atomic<unsigned> counter{0};
     // The temporary keeps the real extension last so OpenImageIO picks the same format.
     std::filesystem::path tmp = file;
-    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(scene::processId()) + "-" +
                          std::to_string(counter++) + file.extension().string());
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out)

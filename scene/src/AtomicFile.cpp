@@ -3,6 +3,7 @@
 // which is flushed to the disk and then renamed over the target. Readers see
 // the old file or the new one, never a mixture, even if we crash midway.
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ProcessId.h"
 
 #include <atomic>
 #include <cerrno>
@@ -11,7 +12,6 @@
 
 #ifdef _WIN32
 #include <io.h>
-#include <process.h>
 #else
 #include <fcntl.h>
 #include <unistd.h>
@@ -23,14 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::atomic<unsigned> tempCounter{0};
-
-int processId() {
-#ifdef _WIN32
-    return _getpid();
-#else
-    return static_cast<int>(::getpid());
-#endif
-}
 
 // "x": fail rather than reuse a file that already has the temporary's name.
 std::FILE* createExclusive(const fs::path& path) {

@@ -1,9 +1,13 @@
+// Platform file: the headless context through EGL (Linux and other EGL
+// systems). Windows and macOS build GlContextUnsupported.cpp instead; see
+// docs/portability.md.
 #include "lpv/renderer/GlContext.h"
+
+#include "GlDebug.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 #include <vector>
@@ -33,22 +37,6 @@ bool hasExtension(const char* list, std::string_view ext) {
     return false;
 }
 
-bool debugRequested() {
-#ifndef NDEBUG
-    return true;
-#else
-    const char* env = std::getenv("LPV_GL_DEBUG");
-    return env && std::string_view(env) == "1";
-#endif
-}
-
-void GLAPIENTRY printDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
-                                  const void*) {
-    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION)
-        return;
-    std::fprintf(stderr, "GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "warning", message);
-}
-
 // Tries to bring up a 4.5 core context on `display`; leaves it current on success.
 EGLContext createCoreContext(EGLDisplay display) {
     EGLint major = 0, minor = 0;
@@ -63,7 +51,7 @@ EGLContext createCoreContext(EGLDisplay display) {
     eglChooseConfig(display, configAttribs, &config, 1, &count);
     const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                 EGL_CONTEXT_OPENGL_DEBUG, debugRequested() ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+                                 EGL_CONTEXT_OPENGL_DEBUG, glDebugOutputRequested() ? EGL_TRUE : EGL_FALSE, EGL_NONE};
     EGLContext ctx = eglCreateContext(display, count > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, ctxAttribs);
     if (ctx == EGL_NO_CONTEXT)
         return EGL_NO_CONTEXT;
@@ -149,22 +137,6 @@ Expected<HeadlessContext> HeadlessContext::create() {
     return makeError(ErrorCode::IoError, "EGL", want.empty() ? "" : "LPV_EGL_PLATFORM=" + std::string(want),
                      "no EGL display could create an OpenGL 4.5 core context (is Mesa's libegl-mesa0 or the NVIDIA "
                      "driver installed?)");
-}
-
-void installDebugOutputIfRequested() {
-    if (!debugRequested())
-        return;
-    glEnable(GL_DEBUG_OUTPUT);
-    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
-    glDebugMessageCallback(printDebugMessage, nullptr);
-}
-
-GlInfo queryCurrentGlInfo() {
-    auto str = [](GLenum e) {
-        const GLubyte* s = glGetString(e);
-        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string();
-    };
-    return GlInfo{str(GL_VENDOR), str(GL_RENDERER), str(GL_VERSION), ""};
 }
 
 } // namespace lpv::renderer
