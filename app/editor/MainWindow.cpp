@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "AboutDialog.h"
 #include "Viewport.h"
 
 #include <QApplication>
@@ -33,6 +34,8 @@ void MainWindow::createMenus() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), qApp, &QApplication::quit);
     quit->setShortcut(QKeySequence::Quit);
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About LPV Studio"), this, [this] { AboutDialog(viewport_, this).exec(); });
 }
 
 void MainWindow::openDialog() {

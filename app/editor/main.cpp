@@ -1,30 +1,60 @@
 // lpvstudio: the LPV Studio editor. Opens the project given on the command
 // line, or the built-in Cornell box.
 #include "MainWindow.h"
+#include "Viewport.h"
 
+#include "lpv/app/BuiltInProjects.h"
+#include "lpv/app/VersionInfo.h"
 #include "lpv/scene/CornellBox.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QFileInfo>
+#include <QIcon>
+#include <QTimer>
+
+#include <cstdio>
+#include <filesystem>
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName("LPV Studio");
     QApplication::setOrganizationName("LPV Studio");
-    QApplication::setApplicationVersion(LPV_VERSION);
+    const lpv::app::BuildInfo build = lpv::app::buildInfo();
+    QApplication::setApplicationVersion(
+        QString::fromStdString(build.version + " (revision " + build.revision + ")"));
+    // Ties the windows to the installed .desktop entry and icon (packaging/linux/).
+    QGuiApplication::setDesktopFileName("org.lpvstudio.lpvstudio");
+    QApplication::setWindowIcon(
+        QIcon::fromTheme("org.lpvstudio.lpvstudio", QIcon(":/icons/lpvstudio-256.png")));
 
     QCommandLineParser parser;
     parser.setApplicationDescription("LPV Studio editor: author scenes and tune Light Propagation Volumes");
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument("project", "Project (.lpvproj) to open; default: the built-in Cornell box");
+    // For smoke tests of an installed editor (tests/install, packaging/README.md).
+    const QCommandLineOption quitAfter(
+        "quit-after", "Quit after MS milliseconds, with exit code 1 if the viewport reported an error.",
+        "MS");
+    parser.addOption(quitAfter);
     parser.process(app);
+    int quitAfterMs = -1;
+    if (parser.isSet(quitAfter)) {
+        bool ok = false;
+        quitAfterMs = parser.value(quitAfter).toInt(&ok);
+        if (!ok || quitAfterMs < 0) {
+            fprintf(stderr, "lpvstudio: --quit-after needs a number of milliseconds\n");
+            return 2;
+        }
+    }
 
     lpv::editor::MainWindow window;
     const QStringList args = parser.positionalArguments();
-    const QString path = args.isEmpty() ? QString(LPV_DEFAULT_PROJECT) : args.front();
-    if (!args.isEmpty() || QFileInfo::exists(path)) {
+    // Installed: <prefix>/share/lpvstudio/projects beside bin/; in the build folder: the source tree.
+    const std::filesystem::path builtIn = lpv::app::findBuiltInProject(
+        "cornell-box", std::filesystem::path(QCoreApplication::applicationDirPath().toStdU16String()));
+    const QString path = args.isEmpty() ? QString::fromStdU16String(builtIn.u16string()) : args.front();
+    if (!args.isEmpty() || !builtIn.empty()) {
         if (!window.openProject(path, false) && !args.isEmpty()) {
             // The error is on the status bar too; a missing file named by the user is worth a non-zero exit.
             fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(path));
@@ -34,5 +64,13 @@ int main(int argc, char** argv) {
         window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
     }
     window.show();
+    if (quitAfterMs >= 0)
+        QTimer::singleShot(quitAfterMs, &app, [&] {
+            const QString error = window.viewport()->lastError();
+            std::printf("lpvstudio: showed %s; viewport: %s\n",
+                        qPrintable(path.isEmpty() ? "the built-in Cornell box" : path),
+                        qPrintable(error.isEmpty() ? "rendered without error" : error));
+            QCoreApplication::exit(error.isEmpty() ? 0 : 1);
+        });
     return app.exec();
 }

@@ -1,0 +1,78 @@
+// Help > About LPV Studio: the menu entry exists and the dialog shows the
+// same report as `lpv --version` plus Qt's version and the viewport's driver.
+#include "AboutDialog.h"
+#include "MainWindow.h"
+#include "TestPaths.h"
+#include "Viewport.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QMenu>
+#include <QMenuBar>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using lpv::editor::MainWindow;
+
+namespace {
+
+QAction* findAction(QMenuBar* bar, const QString& menuText, const QString& actionText) {
+    for (QAction* menuAction : bar->actions()) {
+        if (!menuAction->menu() || menuAction->text().remove('&') != menuText)
+            continue;
+        for (QAction* action : menuAction->menu()->actions())
+            if (action->text().remove('&') == actionText)
+                return action;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+TEST(AboutDialog, HelpMenuHasTheEntry) {
+    MainWindow window;
+    EXPECT_NE(findAction(window.menuBar(), "Help", "About LPV Studio"), nullptr);
+}
+
+TEST(AboutDialog, ShowsVersionRevisionQtAndTheViewportsDriver) {
+    MainWindow window;
+    ASSERT_TRUE(window.openProject(
+        QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj", false));
+    window.resize(320, 240);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QTest::qWait(100);
+
+    lpv::editor::AboutDialog dialog(window.viewport(), &window);
+    const QString text = dialog.reportText();
+    EXPECT_TRUE(text.startsWith(QString("LPV Studio ") + LPV_TEST_PROJECT_VERSION + "\n"))
+        << text.toStdString();
+    EXPECT_TRUE(text.contains("\nrevision:  ")) << text.toStdString();
+    EXPECT_TRUE(text.contains(QString("\n  Qt "))) << text.toStdString();
+    EXPECT_TRUE(text.contains(qVersion())) << text.toStdString();
+    for (const char* lib : {"Assimp", "OpenImageIO", "glm", "nlohmann_json", "libepoxy"})
+        EXPECT_TRUE(text.contains(QString("\n  ") + lib)) << lib;
+
+    // The driver is the viewport's own, as its context reports it.
+    window.viewport()->makeCurrent();
+    const auto* renderer =
+        reinterpret_cast<const char*>(window.viewport()->context()->functions()->glGetString(GL_RENDERER));
+    window.viewport()->doneCurrent();
+    ASSERT_NE(renderer, nullptr);
+    EXPECT_TRUE(text.contains(QString("OpenGL:    ") + renderer)) << text.toStdString();
+    EXPECT_TRUE(text.contains("Qt platform xcb")) << text.toStdString();
+}
+
+TEST(AboutDialog, WithoutAViewportContextSaysSo) {
+    const QString text = lpv::editor::aboutReport(nullptr);
+    EXPECT_TRUE(text.contains("OpenGL:    unavailable: ")) << text.toStdString();
+}
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
