@@ -10,6 +10,7 @@ PACKAGES=(
   qt6-base-dev libqt6opengl6-dev libglm-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0
   libopenimageio-dev libtinygltf-dev libassimp-dev libopenmesh-dev libxxhash-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   xvfb xauth
+  desktop-file-utils appstream shared-mime-info
 )
 
 missing=()

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Installs a built lpvstudio .deb into a fresh Debian 12 (bookworm) and checks
+# that both programs work there, as on a user's new machine: apt resolves the
+# package's dependencies from the Debian archive, `lpv render` renders the
+# installed Cornell box, and `lpvstudio` starts and renders under Xvfb.
+#
+#   sudo packaging/test-deb-in-chroot.sh build/lpvstudio_0.1.0_amd64.deb [CHROOT]
+#
+# CHROOT (default /var/tmp/lpv-deb12) is made with `debootstrap --variant=minbase`
+# when missing and reused otherwise (the package is purged first). Needs root,
+# debootstrap and a Debian mirror: DEBIAN_MIRROR, else the one this machine's
+# apt uses. Prints every command it runs; exits non-zero on the first failure.
+set -euo pipefail
+
+DEB=$(realpath "$1")
+ROOT=${2:-/var/tmp/lpv-deb12}
+
+# The mirror this machine already uses, so the script names none itself.
+mirrorFor() { # $1: archive path, "debian" or "debian-security"
+  { grep -rhoE "^(URIs:|deb) +https?://[^ ]+/$1/?( |\$)" /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null ||
+    true; } | awk '{print $2}' | head -n 1
+}
+MIRROR=${DEBIAN_MIRROR:-$(mirrorFor debian)}
+SECURITY=${DEBIAN_SECURITY_MIRROR:-$(mirrorFor debian-security)}
+[ -n "$MIRROR" ] || { echo "no Debian mirror found: set DEBIAN_MIRROR" >&2; exit 2; }
+
+if [ ! -x "$ROOT/usr/bin/apt-get" ]; then
+  echo "== debootstrap --variant=minbase bookworm $ROOT"
+  debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
+fi
+# An installed Debian 12 follows the point-release updates and security fixes.
+{
+  echo "deb $MIRROR bookworm main"
+  echo "deb $MIRROR bookworm-updates main"
+  [ -z "$SECURITY" ] || echo "deb $SECURITY bookworm-security main"
+} >"$ROOT/etc/apt/sources.list"
+
+mounted=()
+cleanup() {
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" || true; done
+}
+trap cleanup EXIT
+for m in proc sys dev dev/pts; do
+  mountpoint -q "$ROOT/$m" && continue
+  case $m in
+    proc) mount -t proc proc "$ROOT/proc" ;;
+    sys) mount -t sysfs sys "$ROOT/sys" ;;
+    *) mount --bind "/$m" "$ROOT/$m" ;;
+  esac
+  mounted+=("$ROOT/$m")
+done
+
+cp "$DEB" "$ROOT/tmp/"
+# A clean environment: nothing of this machine's (DISPLAY, LD_LIBRARY_PATH...) leaks in.
+in_chroot() {
+  echo "+ $*"
+  chroot "$ROOT" env -i PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin HOME=/root LANG=C.UTF-8 \
+    DEBIAN_FRONTEND=noninteractive "$@"
+}
+
+in_chroot apt-get update -qq
+in_chroot apt-get purge -y -qq lpvstudio >/dev/null 2>&1 || true
+# Without Recommends: the package's Depends alone must be enough to run both programs.
+in_chroot apt-get install -y -qq --no-install-recommends "/tmp/$(basename "$DEB")" >/dev/null
+in_chroot sh -c 'echo "$(dpkg -l | grep -c ^ii) packages installed"'
+in_chroot dpkg -s lpvstudio | grep -E '^(Status|Version|Depends):'
+
+echo "== the command-line tool"
+in_chroot lpv --version
+in_chroot rm -f /tmp/x.png
+in_chroot lpv render /usr/share/lpvstudio/projects/cornell-box/cornell-box.lpvproj -o /tmp/x.png
+in_chroot test -s /tmp/x.png
+in_chroot ls -l /tmp/x.png
+cp "$ROOT/tmp/x.png" "${LPV_CHROOT_RENDER_COPY:-/tmp/lpv-deb12-cornell-box.png}"
+
+echo "== the editor (Xvfb: the package does not bring an X server, a desktop has one)"
+in_chroot apt-get install -y -qq --no-install-recommends xvfb xauth >/dev/null
+in_chroot timeout 120 xvfb-run -a -s "-screen 0 1280x1024x24" lpvstudio --quit-after 5000
+# Started without arguments, it stays up until it is closed (here: killed by timeout, exit 124).
+set +e
+in_chroot timeout 10 xvfb-run -a -s "-screen 0 1280x1024x24" lpvstudio
+rc=$?
+set -e
+echo "exit code $rc (124: still running when timeout stopped it)"
+[ "$rc" -eq 124 ]
+
+echo "== desktop integration (caches refreshed by dpkg triggers, where the tools are installed)"
+if [ -f "$ROOT/usr/share/mime/globs2" ]; then
+  in_chroot grep -F 'application/x-lpvproj:*.lpvproj' /usr/share/mime/globs2
+else
+  echo "shared-mime-info is not installed in the chroot: no MIME database to check"
+fi
+echo "== all checks passed"
