@@ -2,6 +2,9 @@
 
 #include "EditCommands.h"
 
+#include "lpv/scene/ProjectTextures.h"
+
+#include <QDir>
 #include <QFileInfo>
 #include <QUndoStack>
 
@@ -14,7 +17,7 @@ Document::Document(QObject* parent) : QObject(parent), undoStack_(new QUndoStack
 Document::~Document() = default;
 
 QString Document::projectDir() const {
-    return path_.isEmpty() ? QString() : QFileInfo(path_).absolutePath();
+    return path_.isEmpty() ? QDir::currentPath() : QFileInfo(path_).absolutePath();
 }
 
 bool Document::isModified() const { return recoveredUnsaved_ || !undoStack_->isClean(); }
@@ -22,6 +25,15 @@ bool Document::isModified() const { return recoveredUnsaved_ || !undoStack_->isC
 void Document::reset(scene::Project project, const QString& path, bool modified) {
     undoStack_->clear();
     project_ = std::move(project);
+    // In memory, texture paths are absolute: they stay valid whatever folder
+    // the project is saved to next (Save As); saving makes them relative again.
+    if (!path.isEmpty()) {
+        const QDir dir = QFileInfo(path).absoluteDir();
+        for (scene::Material& m : project_.scene.materials)
+            for (std::string* slot : scene::textureSlots(m))
+                if (!slot->empty() && QFileInfo(QString::fromStdString(*slot)).isRelative())
+                    *slot = QDir::cleanPath(dir.filePath(QString::fromStdString(*slot))).toStdString();
+    }
     path_ = path;
     recoveredUnsaved_ = modified;
     selection_ = {};
@@ -31,7 +43,12 @@ void Document::reset(scene::Project project, const QString& path, bool modified)
 }
 
 scene::Expected<void> Document::saveAs(const QString& path) {
-    auto saved = scene::saveProject(project_, path.toStdString());
+    // Textures are copied into the project's assets folder and the saved copy
+    // points there; the document keeps its absolute paths (see reset).
+    scene::Project copy = project_;
+    if (auto copied = scene::copyTexturesIntoProject(copy.scene, path.toStdString()); !copied)
+        return std::unexpected(copied.error());
+    auto saved = scene::saveProject(copy, path.toStdString());
     if (!saved)
         return saved;
     path_ = path;
@@ -106,7 +123,7 @@ void Document::editScene(const QString& text, Changes changes, const std::functi
     Q_ASSERT(s.meshes.size() >= meshCount);
     std::vector<scene::Mesh> added(s.meshes.begin() + std::ptrdiff_t(meshCount), s.meshes.end());
     if (!added.empty())
-        changes |= Change::Structure;
+        changes |= Change::Structure | Change::Geometry;
     // A selection that pointed past the end of a shrunk list is dropped.
     notifyChanged(changes);
     undoStack_->push(new SceneEditCommand(this, text, changes, std::move(before), SceneParts::of(s), meshCount,

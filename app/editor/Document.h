@@ -21,7 +21,8 @@ namespace lpv::editor {
 enum class Change : unsigned {
     Parameters = 1u << 0,  // the project's parameter values
     Transforms = 1u << 1,  // object transforms, visibility, names (no new geometry)
-    Structure = 1u << 2,   // objects/meshes added or removed, parents changed
+    Structure = 1u << 2,   // objects added or removed, parents changed
+    Geometry = 1u << 9,    // meshes added or removed (the GPU re-uploads vertices)
     Materials = 1u << 3,
     Lights = 1u << 4,
     Cameras = 1u << 5,

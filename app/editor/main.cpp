@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFileInfo>
+#include <QTimer>
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
@@ -34,5 +35,7 @@ int main(int argc, char** argv) {
         window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
     }
     window.show();
+    // After the window is up, so the question has a parent to sit on.
+    QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return app.exec();
 }
