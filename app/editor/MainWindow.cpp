@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "Autosave.h"
+#include "EffectsPanel.h"
 #include "ImportJob.h"
 #include "OutlinerPanel.h"
 #include "Viewport.h"
@@ -21,7 +22,6 @@
 #include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTextBrowser>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
@@ -92,13 +92,9 @@ void MainWindow::createDocks() {
     undoView_->setEmptyLabel(tr("<opened>"));
     addDock(undoView_, "history", tr("History"), Qt::LeftDockWidgetArea);
 
-    // The renderer's own account of what the LPV did this frame and why.
-    auto* effects = new QTextBrowser(this);
-    effects->setObjectName("effectsText");
-    connect(viewport_, &Viewport::lpvNoteChanged, effects, [effects](const QString& note) {
-        effects->setPlainText(note);
-    });
-    addDock(effects, "effects", tr("Effects"), Qt::RightDockWidgetArea);
+    effects_ = new EffectsPanel(document_, viewport_, this);
+    connect(viewport_, &Viewport::lpvNoteChanged, effects_, &EffectsPanel::setRendererNote);
+    addDock(effects_, "effects", tr("Effects"), Qt::RightDockWidgetArea);
 }
 
 void MainWindow::createActions() {

@@ -15,6 +15,7 @@ class QUndoView;
 namespace lpv::editor {
 
 class Autosave;
+class EffectsPanel;
 class OutlinerPanel;
 class Viewport;
 
@@ -42,6 +43,7 @@ public:
     Document* document() const { return document_; }
     Viewport* viewport() const { return viewport_; }
     OutlinerPanel* outliner() const { return outliner_; }
+    EffectsPanel* effects() const { return effects_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -75,6 +77,7 @@ private:
     Document* document_ = nullptr;
     Viewport* viewport_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
+    EffectsPanel* effects_ = nullptr;
     Autosave* autosave_ = nullptr;
     QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;
