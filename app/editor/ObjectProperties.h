@@ -56,7 +56,7 @@ class ObjectProperties : public QWidget {
     QListWidget* materials_ = nullptr;
     // The Euler angles the user typed, kept while the quaternion is the one
     // they produced: converting back would give an equivalent but different
-    // triple (x = 100 reads back as 80/180/180) and make the fields jump.
+    // triple (y = 100 reads back as 180/80/180) and make the fields jump.
     glm::dvec3 euler_{0.0};
     glm::quat eulerQuat_{1.0f, 0.0f, 0.0f, 0.0f};
     int eulerObject_ = -1;
