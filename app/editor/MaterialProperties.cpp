@@ -93,6 +93,7 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
     form_->addRow(QString(), twoSided_);
 
     auto* textures = new QGroupBox(tr("Textures"), this);
+    texturesGroup_ = textures;
     textures_ = new QFormLayout(textures);
     for (std::size_t i = 0; i < kTextureSlots.size(); ++i) {
         auto* label = new QLabel(textures);
@@ -172,8 +173,7 @@ void MaterialProperties::refresh() {
     if (!valid) {
         showText(name_, {});
         shading_->clear();
-        for (int i = 0; i < textures_->rowCount(); ++i)
-            textures_->setRowVisible(i, false);
+        texturesGroup_->hide();
         return;
     }
     const scene::Material& m = materials[std::size_t(index_)];
@@ -208,11 +208,13 @@ void MaterialProperties::refresh() {
 
 void MaterialProperties::refreshTextures(const scene::Material& m) {
     const QString dir = doc_->projectDir();
+    bool any = false;
     for (std::size_t i = 0; i < kTextureSlots.size(); ++i) {
         const std::string& path = m.*(kTextureSlots[i].path);
         textures_->setRowVisible(int(i), !path.empty());
         if (path.empty())
             continue;
+        any = true;
         // Relative paths are relative to the project file; an unsaved project has no folder to look in.
         const QString p = QString::fromStdString(path);
         const QFileInfo info(p);
@@ -223,6 +225,7 @@ void MaterialProperties::refreshTextures(const scene::Material& m) {
         label->setStyleSheet(exists ? QString() : QStringLiteral("color: #d04040;"));
         label->setToolTip(full.isEmpty() ? p : QDir::toNativeSeparators(full));
     }
+    texturesGroup_->setVisible(any);
 }
 
 } // namespace lpv::editor

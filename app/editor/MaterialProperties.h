@@ -61,6 +61,7 @@ class MaterialProperties : public QWidget {
     QDoubleSpinBox* translucency_ = nullptr;
     QDoubleSpinBox* glossiness_ = nullptr;
     QCheckBox* twoSided_ = nullptr;
+    QWidget* texturesGroup_ = nullptr;
     QFormLayout* textures_ = nullptr;
     std::array<QLabel*, 9> textureLabels_{};
     // The emissive colour is shown apart from its strength (emissive =

@@ -28,12 +28,12 @@ QString ms(double v) {
     return QString::number(v, 'f', 3);
 }
 
-// 1, 2 or 5 times a power of ten, at least v: axis ends that read well.
+// 1, 2, 2.5 or 5 times a power of ten, at least v: axis ends that read well.
 double niceCeiling(double v) {
     if (v <= 0.0)
         return 1.0;
     const double p = std::pow(10.0, std::floor(std::log10(v)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
+    for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
         if (m * p >= v)
             return m * p;
     return 10.0 * p;
@@ -53,6 +53,7 @@ ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
         {tr("Pass"), tr("Last (ms)"), tr("Median (ms)"), tr("Min (ms)"), tr("Max (ms)"), tr("Share")});
     table_->horizontalHeaderItem(kShare)->setToolTip(tr("The pass's median as a share of the frame's"));
     table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionMode(QAbstractItemView::NoSelection);
     table_->horizontalHeader()->setSectionResizeMode(kPass, QHeaderView::Stretch);
@@ -66,6 +67,7 @@ ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
     axisX_ = new QValueAxis(chart_);
     axisX_->setRange(-kWindowSeconds, 0.0);
     axisX_->setLabelFormat("%.0f");
+    axisX_->setTickCount(6); // every 2 s
     axisX_->setTitleText(tr("seconds ago"));
     axisY_ = new QValueAxis(chart_);
     axisY_->setRange(0.0, 1.0);
@@ -78,6 +80,9 @@ ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
     view_->setMinimumHeight(180);
     split->addWidget(table_);
     split->addWidget(view_);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2);
+    split->setSizes({150, 300}); // the chart gets two thirds
 
     pending_ = new QTimer(this);
     pending_->setSingleShot(true);

@@ -42,6 +42,9 @@ PropertyPanel::PropertyPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     layout->addWidget(other_);
     layout->addWidget(material_);
     layout->addStretch(1);
+    // Pages keep their natural height; the space left over goes to the stretch below them.
+    for (QWidget* page : std::initializer_list<QWidget*>{object_, light_, camera_, sky_, other_, material_})
+        page->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
     scroll->setWidget(content);
 
     connect(object_, &ObjectProperties::materialChosen, this, [this](int material) {
