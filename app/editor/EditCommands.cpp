@@ -49,7 +49,18 @@ void AllParametersCommand::redo() {
 }
 
 SkyCommand::SkyCommand(Document* doc, scene::Sky before, scene::Sky after, const QString& text)
-    : QUndoCommand(text), doc_(doc), before_(before), after_(after) {}
+    : QUndoCommand(text), doc_(doc), before_(before), after_(after) {
+    age_.start();
+}
+
+bool SkyCommand::mergeWith(const QUndoCommand* other) {
+    auto* o = dynamic_cast<const SkyCommand*>(other);
+    if (!o || o->text() != text() || age_.elapsed() > kMergeWindowMs)
+        return false;
+    after_ = o->after_;
+    age_.restart();
+    return true;
+}
 
 void SkyCommand::undo() {
     doc_->mutableProject().scene.sky = before_;

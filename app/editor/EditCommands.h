@@ -15,7 +15,7 @@
 namespace lpv::editor {
 
 // Merge ids, one per command type (QUndoCommand::id).
-enum CommandId { kParameterCommand = 1, kElementCommand = 2 };
+enum CommandId { kParameterCommand = 1, kElementCommand = 2, kSkyCommand = 3 };
 
 // How long after an edit a following edit of the same target still merges into it.
 inline constexpr qint64 kMergeWindowMs = 1000;
@@ -89,10 +89,13 @@ public:
     SkyCommand(Document* doc, scene::Sky before, scene::Sky after, const QString& text);
     void undo() override;
     void redo() override;
+    int id() const override { return kSkyCommand; }
+    bool mergeWith(const QUndoCommand* other) override;
 
 private:
     Document* doc_;
     scene::Sky before_, after_;
+    QElapsedTimer age_;
 };
 
 // The parts of a scene a structural edit may change, whole; meshes are only

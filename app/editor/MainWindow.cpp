@@ -4,6 +4,8 @@
 #include "EffectsPanel.h"
 #include "ImportJob.h"
 #include "OutlinerPanel.h"
+#include "ProfilerPanel.h"
+#include "PropertyPanel.h"
 #include "Viewport.h"
 
 #include "lpv/renderer/GlContext.h"
@@ -92,9 +94,27 @@ void MainWindow::createDocks() {
     undoView_->setEmptyLabel(tr("<opened>"));
     addDock(undoView_, "history", tr("History"), Qt::LeftDockWidgetArea);
 
+    properties_ = new PropertyPanel(document_, this);
+    addDock(properties_, "properties", tr("Properties"), Qt::RightDockWidgetArea);
+
+    profiler_ = new ProfilerPanel(this);
+    connect(viewport_, &Viewport::frameRendered, profiler_, &ProfilerPanel::addFrame);
+    connect(document_, &Document::changed, profiler_, [this](Changes c) {
+        if (c == Changes(Change::Everything))
+            profiler_->clear();
+    });
+    QDockWidget* profilerDock = addDock(profiler_, "profiler", tr("Profiler"), Qt::BottomDockWidgetArea);
+
     effects_ = new EffectsPanel(document_, viewport_, this);
     connect(viewport_, &Viewport::lpvNoteChanged, effects_, &EffectsPanel::setRendererNote);
-    addDock(effects_, "effects", tr("Effects"), Qt::RightDockWidgetArea);
+    QDockWidget* effectsDock = addDock(effects_, "effects", tr("Effects"), Qt::RightDockWidgetArea);
+
+    // Default layout: the right-hand panels share one area as tabs, the
+    // profiler stays a strip under the viewport.
+    tabifyDockWidget(dock("properties"), effectsDock);
+    dock("properties")->raise();
+    resizeDocks({profilerDock}, {220}, Qt::Vertical);
+    resizeDocks({dock("properties")}, {380}, Qt::Horizontal);
 }
 
 void MainWindow::createActions() {
@@ -175,9 +195,10 @@ void MainWindow::createActions() {
     viewMenu_->addAction(tr("Reset &layout"), this, [this] { restoreState(defaultState_); });
     viewMenu_->addSeparator();
 
+    QAction* firstGizmoAction = toolbar->actions().value(0);
     for (QAction* a : {newAction, open, saveAction, import, undoAction, redoAction})
-        toolbar->insertAction(toolbar->actions().value(0), a);
-    toolbar->insertSeparator(toolbar->actions().value(6));
+        toolbar->insertAction(firstGizmoAction, a);
+    toolbar->insertSeparator(firstGizmoAction);
 }
 
 void MainWindow::updateTitle() {

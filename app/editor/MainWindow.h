@@ -17,6 +17,8 @@ namespace lpv::editor {
 class Autosave;
 class EffectsPanel;
 class OutlinerPanel;
+class ProfilerPanel;
+class PropertyPanel;
 class Viewport;
 
 class MainWindow : public QMainWindow {
@@ -44,6 +46,8 @@ public:
     Viewport* viewport() const { return viewport_; }
     OutlinerPanel* outliner() const { return outliner_; }
     EffectsPanel* effects() const { return effects_; }
+    PropertyPanel* properties() const { return properties_; }
+    ProfilerPanel* profiler() const { return profiler_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -78,6 +82,8 @@ private:
     Viewport* viewport_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
+    PropertyPanel* properties_ = nullptr;
+    ProfilerPanel* profiler_ = nullptr;
     Autosave* autosave_ = nullptr;
     QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;

@@ -36,7 +36,7 @@ struct OpenWindow {
         Autosave::setRootForTests(autosaveDir.path());
         window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
         EXPECT_TRUE(window.openProject(project, false));
-        window.resize(900, 600);
+        window.resize(1280, 900);
         window.show();
         EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
         QTest::qWait(100);
@@ -62,18 +62,22 @@ TEST(EditorGui, OpensCornellBoxAndViewportRendersIt) {
     const QImage frame = w.window.viewport()->grabFramebuffer();
     ASSERT_FALSE(frame.isNull());
     ASSERT_TRUE(w.window.viewport()->lastError().isEmpty()) << w.window.viewport()->lastError().toStdString();
-    // The red wall is at the left edge, the green wall at the right edge.
-    long red = 0, green = 0;
-    const int band = frame.width() / 12;
-    for (int y = frame.height() / 4; y < frame.height() * 3 / 4; y += 2)
-        for (int x = 0; x < band; ++x) {
-            const QColor left = frame.pixelColor(x, y), right = frame.pixelColor(frame.width() - 1 - x, y);
-            red += left.red() - left.green();
-            green += right.green() - right.red();
+    // Clearly red pixels (the left wall) lie in the left half, clearly green ones (the right wall) in the right half.
+    long redLeft = 0, redRight = 0, greenLeft = 0, greenRight = 0;
+    for (int y = 0; y < frame.height(); y += 2)
+        for (int x = 0; x < frame.width(); x += 2) {
+            const QColor c = frame.pixelColor(x, y);
+            const bool left = x < frame.width() / 2;
+            if (c.red() > 60 && c.red() > 2 * c.green())
+                (left ? redLeft : redRight)++;
+            if (c.green() > 60 && c.green() > 2 * c.red())
+                (left ? greenLeft : greenRight)++;
         }
-    EXPECT_GT(litFraction(frame), 0.25) << "the viewport frame is (nearly) black";
-    EXPECT_GT(red, 0);
-    EXPECT_GT(green, 0);
+    EXPECT_GT(litFraction(frame), 0.15) << "the viewport frame is (nearly) black";
+    EXPECT_GT(redLeft, 100);
+    EXPECT_GT(greenRight, 100);
+    EXPECT_LT(redRight, redLeft / 10);
+    EXPECT_LT(greenLeft, greenRight / 10);
     EXPECT_EQ(w.window.windowTitle(), "cornell-box.lpvproj[*] - LPV Studio");
     EXPECT_FALSE(w.window.isWindowModified());
 }
