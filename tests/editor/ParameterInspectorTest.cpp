@@ -18,6 +18,7 @@
 #include <QTest>
 #include <QTextDocumentFragment>
 #include <QToolButton>
+#include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
@@ -286,6 +287,32 @@ TEST(ParameterInspector, KeyboardStepsAndTypedValuesAreEdits) {
     ASSERT_EQ(edits.count(), 1);
     EXPECT_EQ(editAt(edits, 0).value, ParameterValue(16));
     EXPECT_EQ(steps->text(), "16 steps");
+}
+
+// Scrolling the panel with the wheel must not change the values that pass under the mouse.
+TEST(ParameterInspector, TheWheelChangesOnlyAFocusedEditor) {
+    ParameterInspector inspector;
+    inspector.show();
+    QSignalSpy edits(&inspector, &ParameterInspector::parameterEdited);
+    auto* steps = qobject_cast<QSpinBox*>(inspector.editorFor("lpv.propagationSteps"));
+    const auto wheel = [&](QWidget* w) {
+        const QPointF at(w->width() / 2.0, w->height() / 2.0);
+        QWheelEvent event(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(w, &event);
+    };
+    wheel(steps);
+    wheel(inspector.parameterEditor("lpv.propagationSteps")->slider());
+    EXPECT_EQ(edits.count(), 0);
+    EXPECT_EQ(steps->value(), 8);
+
+    inspector.activateWindow();
+    steps->setFocus();
+    if (!QTest::qWaitFor([&] { return steps->hasFocus(); }, 1000))
+        GTEST_SKIP() << "this platform gives no focus";
+    wheel(steps);
+    ASSERT_EQ(edits.count(), 1);
+    EXPECT_EQ(steps->value(), 9);
 }
 
 TEST(ParameterInspector, SliderDragEmitsEveryStepAndKeepsSpinBoxInStep) {
