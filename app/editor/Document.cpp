@@ -8,6 +8,8 @@
 #include <QFileInfo>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace lpv::editor {
 
 Document::Document(QObject* parent) : QObject(parent), undoStack_(new QUndoStack(this)) {
@@ -113,6 +115,29 @@ void Document::setSky(const scene::Sky& sky, const QString& text) {
     if (sky == project_.scene.sky)
         return;
     undoStack_->push(new SkyCommand(this, project_.scene.sky, sky, text));
+}
+
+void Document::savePreset(const std::string& name) {
+    std::vector<scene::ParameterPreset> presets = project_.presets;
+    auto it = std::find_if(presets.begin(), presets.end(), [&](const auto& p) { return p.name == name; });
+    if (it != presets.end())
+        it->parameters = project_.parameters;
+    else
+        presets.push_back({name, project_.parameters});
+    undoStack_->push(new PresetsCommand(this, project_.presets, std::move(presets),
+                                        tr("Save preset %1").arg(QString::fromStdString(name))));
+}
+
+void Document::applyPreset(int index) {
+    const scene::ParameterPreset& preset = project_.presets.at(std::size_t(index));
+    setAllParameters(preset.parameters, tr("Apply preset %1").arg(QString::fromStdString(preset.name)));
+}
+
+void Document::deletePreset(int index) {
+    std::vector<scene::ParameterPreset> presets = project_.presets;
+    const QString name = QString::fromStdString(presets.at(std::size_t(index)).name);
+    presets.erase(presets.begin() + index);
+    undoStack_->push(new PresetsCommand(this, project_.presets, std::move(presets), tr("Delete preset %1").arg(name)));
 }
 
 void Document::editScene(const QString& text, Changes changes, const std::function<void(scene::Scene&)>& edit) {

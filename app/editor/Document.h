@@ -77,6 +77,11 @@ public:
     void setLight(int index, const scene::Light& light, const QString& text);
     void setCamera(int index, const scene::Camera& camera, const QString& text);
     void setSky(const scene::Sky& sky, const QString& text);
+    // Named parameter presets: save the current values under `name`
+    // (replacing a preset of that name), apply one, delete one.
+    void savePreset(const std::string& name);
+    void applyPreset(int index);
+    void deletePreset(int index);
     // A structural edit (add, delete, duplicate, import): `edit` may change
     // objects, lights, cameras, camera paths and materials freely and may
     // append meshes, but must not change or remove existing meshes.

@@ -72,6 +72,20 @@ void SkyCommand::redo() {
     doc_->notifyChanged(Change::Sky);
 }
 
+PresetsCommand::PresetsCommand(Document* doc, std::vector<scene::ParameterPreset> before,
+                               std::vector<scene::ParameterPreset> after, const QString& text)
+    : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+
+void PresetsCommand::undo() {
+    doc_->mutableProject().presets = before_;
+    doc_->notifyChanged(Change::Presets);
+}
+
+void PresetsCommand::redo() {
+    doc_->mutableProject().presets = after_;
+    doc_->notifyChanged(Change::Presets);
+}
+
 SceneParts SceneParts::of(const scene::Scene& s) {
     return {s.objects, s.materials, s.lights, s.cameras, s.cameraPaths};
 }

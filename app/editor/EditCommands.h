@@ -98,6 +98,18 @@ private:
     QElapsedTimer age_;
 };
 
+class PresetsCommand : public QUndoCommand {
+public:
+    PresetsCommand(Document* doc, std::vector<scene::ParameterPreset> before, std::vector<scene::ParameterPreset> after,
+                   const QString& text);
+    void undo() override;
+    void redo() override;
+
+private:
+    Document* doc_;
+    std::vector<scene::ParameterPreset> before_, after_;
+};
+
 // The parts of a scene a structural edit may change, whole; meshes are only
 // ever appended, so they are kept as the count before and the meshes added.
 struct SceneParts {

@@ -4,6 +4,8 @@
 #include "EffectsPanel.h"
 #include "ImportJob.h"
 #include "OutlinerPanel.h"
+#include "ParameterInspector.h"
+#include "PresetBar.h"
 #include "ProfilerPanel.h"
 #include "PropertyPanel.h"
 #include "Viewport.h"
@@ -18,6 +20,7 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -28,6 +31,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
+#include <QVBoxLayout>
 
 namespace lpv::editor {
 namespace {
@@ -94,6 +98,36 @@ void MainWindow::createDocks() {
     undoView_->setEmptyLabel(tr("<opened>"));
     addDock(undoView_, "history", tr("History"), Qt::LeftDockWidgetArea);
 
+    // The inspector: presets on top, every registry parameter below.
+    auto* inspectorPage = new QWidget(this);
+    auto* inspectorLayout = new QVBoxLayout(inspectorPage);
+    inspectorLayout->setContentsMargins(0, 0, 0, 0);
+    presetBar_ = new PresetBar(inspectorPage);
+    inspector_ = new ParameterInspector(inspectorPage);
+    inspectorLayout->addWidget(presetBar_);
+    inspectorLayout->addWidget(inspector_);
+    connect(inspector_, &ParameterInspector::parameterEdited, this,
+            [this](const QString& key, const scene::ParameterValue& value) {
+                document_->setParameter(key.toStdString(), value);
+            });
+    connect(inspector_, &ParameterInspector::parameterResetRequested, this,
+            [this](const QString& key) { document_->setParameter(key.toStdString(), std::nullopt); });
+    connect(presetBar_, &PresetBar::presetSaveRequested, this,
+            [this](const QString& name) { document_->savePreset(name.toStdString()); });
+    connect(presetBar_, &PresetBar::presetApplyRequested, document_, &Document::applyPreset);
+    connect(presetBar_, &PresetBar::presetDeleteRequested, document_, &Document::deletePreset);
+    connect(document_, &Document::changed, this, [this](Changes c) {
+        if (c & Change::Parameters)
+            inspector_->setParameters(document_->parameters());
+        if (c & Change::Presets)
+            presetBar_->setPresets(document_->project().presets);
+        if (c & (Change::Parameters | Change::Presets))
+            updateSplit();
+    });
+    inspector_->setParameters(document_->parameters());
+    presetBar_->setPresets(document_->project().presets);
+    QDockWidget* inspectorDock = addDock(inspectorPage, "inspector", tr("Inspector"), Qt::RightDockWidgetArea);
+
     properties_ = new PropertyPanel(document_, this);
     addDock(properties_, "properties", tr("Properties"), Qt::RightDockWidgetArea);
 
@@ -111,10 +145,11 @@ void MainWindow::createDocks() {
 
     // Default layout: the right-hand panels share one area as tabs, the
     // profiler stays a strip under the viewport.
-    tabifyDockWidget(dock("properties"), effectsDock);
-    dock("properties")->raise();
+    tabifyDockWidget(inspectorDock, dock("properties"));
+    tabifyDockWidget(inspectorDock, effectsDock);
+    inspectorDock->raise();
     resizeDocks({profilerDock}, {220}, Qt::Vertical);
-    resizeDocks({dock("properties")}, {380}, Qt::Horizontal);
+    resizeDocks({inspectorDock}, {400}, Qt::Horizontal);
 }
 
 void MainWindow::createActions() {
@@ -192,6 +227,16 @@ void MainWindow::createActions() {
     snap->setCheckable(true);
     connect(snap, &QAction::toggled, this, [this](bool on) { viewport_->snap().enabled = on; });
     toolbar->addAction(snap);
+    splitAction_ = viewMenu_->addAction(tr("&A/B split view..."), this, [this](bool on) {
+        if (on && !chooseSplit())
+            splitAction_->setChecked(false);
+        if (!on)
+            splitChoice_ = {-2, -2};
+        updateSplit();
+    });
+    splitAction_->setCheckable(true);
+    splitAction_->setToolTip(tr("Render two presets side by side: A on the left half, B on the right"));
+    toolbar->addAction(splitAction_);
     viewMenu_->addAction(tr("Reset &layout"), this, [this] { restoreState(defaultState_); });
     viewMenu_->addSeparator();
 
@@ -226,6 +271,54 @@ void MainWindow::showFrameStats(double gpuMs) {
                                   .arg(memory->totalMiB, 0, 'f', 0));
     else
         memoryLabel_->setText(tr("GPU memory: %1 MiB free").arg(memory->freeMiB, 0, 'f', 0));
+}
+
+// ---- A/B split ----
+
+bool MainWindow::chooseSplit() {
+    QStringList names{tr("Current parameters")};
+    for (const scene::ParameterPreset& p : document_->project().presets)
+        names << QString::fromStdString(p.name);
+    if (names.size() < 2) {
+        QMessageBox::information(this, tr("A/B split view"),
+                                 tr("Save at least one preset (Inspector > Save as...) to compare it with the "
+                                    "current parameters."));
+        return false;
+    }
+    bool ok = false;
+    const QString a = QInputDialog::getItem(this, tr("A/B split view"), tr("Left half (A):"), names, 0, false, &ok);
+    if (!ok)
+        return false;
+    const QString b = QInputDialog::getItem(this, tr("A/B split view"), tr("Right half (B):"), names, 1, false, &ok);
+    if (!ok)
+        return false;
+    setSplit(int(names.indexOf(a)) - 1, int(names.indexOf(b)) - 1);
+    return true;
+}
+
+void MainWindow::setSplit(int presetA, int presetB) {
+    splitChoice_ = {presetA, presetB};
+    splitAction_->setChecked(presetA >= -1 && presetB >= -1);
+    updateSplit();
+}
+
+void MainWindow::updateSplit() {
+    const auto& presets = document_->project().presets;
+    auto side = [&](int index) -> std::optional<std::pair<scene::ParameterSet, QString>> {
+        if (index == -1)
+            return std::pair{document_->parameters(), tr("current parameters")};
+        if (index >= 0 && std::size_t(index) < presets.size())
+            return std::pair{presets[std::size_t(index)].parameters,
+                             QString::fromStdString(presets[std::size_t(index)].name)};
+        return std::nullopt;
+    };
+    const auto a = side(splitChoice_.first), b = side(splitChoice_.second);
+    if (!a || !b) {
+        splitAction_->setChecked(false);
+        viewport_->setSplit(std::nullopt);
+        return;
+    }
+    viewport_->setSplit(std::pair{a->first, b->first}, a->second, b->second);
 }
 
 // ---- Projects ----

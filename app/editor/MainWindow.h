@@ -17,6 +17,8 @@ namespace lpv::editor {
 class Autosave;
 class EffectsPanel;
 class OutlinerPanel;
+class ParameterInspector;
+class PresetBar;
 class ProfilerPanel;
 class PropertyPanel;
 class Viewport;
@@ -47,6 +49,10 @@ public:
     OutlinerPanel* outliner() const { return outliner_; }
     EffectsPanel* effects() const { return effects_; }
     PropertyPanel* properties() const { return properties_; }
+    ParameterInspector* inspector() const { return inspector_; }
+    PresetBar* presetBar() const { return presetBar_; }
+    // A/B split: preset indices for the left and right halves (-1 = the current parameters).
+    void setSplit(int presetA, int presetB);
     ProfilerPanel* profiler() const { return profiler_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
@@ -77,12 +83,18 @@ private:
     void rebuildRecentMenu();
     void rebuildCamerasMenu();
     void showFrameStats(double gpuMs);
+    bool chooseSplit();
+    void updateSplit();
 
     Document* document_ = nullptr;
     Viewport* viewport_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
     PropertyPanel* properties_ = nullptr;
+    ParameterInspector* inspector_ = nullptr;
+    PresetBar* presetBar_ = nullptr;
+    QAction* splitAction_ = nullptr;
+    std::pair<int, int> splitChoice_{-2, -2}; // preset indices; -1 = current parameters, -2 = off
     ProfilerPanel* profiler_ = nullptr;
     Autosave* autosave_ = nullptr;
     QUndoView* undoView_ = nullptr;

@@ -4,6 +4,7 @@
 #include "Document.h"
 #include "MainWindow.h"
 #include "OutlinerPanel.h"
+#include "ParameterInspector.h"
 #include "TestPaths.h"
 #include "TransformGizmo.h"
 #include "Viewport.h"
@@ -14,6 +15,7 @@
 #include <QDir>
 #include <QImage>
 #include <QMessageBox>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -89,18 +91,24 @@ TEST(EditorGui, BadProjectShowsErrorAndKeepsCurrent) {
     EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("/nonexistent/broken.lpvproj"));
 }
 
-TEST(EditorGui, ParameterEditUndoRedoSaveReopen) {
+TEST(EditorGui, ParameterEditThroughTheInspectorUndoRedoSaveReopen) {
     OpenWindow w;
     Document& doc = w.doc();
+    auto* steps = qobject_cast<QSpinBox*>(w.window.inspector()->editorFor("lpv.propagationSteps"));
+    ASSERT_NE(steps, nullptr);
     const int before = doc.parameters().getInt("lpv.propagationSteps");
-    doc.setParameter("lpv.propagationSteps", 16);
+    ASSERT_EQ(steps->value(), before);
+    steps->setValue(16); // as the arrows or the slider do
     EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), 16);
     EXPECT_TRUE(w.window.isWindowModified());
+    EXPECT_TRUE(w.window.windowTitle().contains("[*]"));
     doc.undoStack()->undo();
     EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), before);
+    EXPECT_EQ(steps->value(), before) << "the inspector follows undo";
     EXPECT_FALSE(w.window.isWindowModified());
     doc.undoStack()->redo();
     EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), 16);
+    EXPECT_EQ(steps->value(), 16);
 
     QTemporaryDir dir;
     const QString path = dir.filePath("edited.lpvproj");
@@ -111,6 +119,43 @@ TEST(EditorGui, ParameterEditUndoRedoSaveReopen) {
     ASSERT_TRUE(reopened.openProject(path, false));
     EXPECT_EQ(reopened.document()->project(), saved);
     EXPECT_EQ(reopened.document()->parameters().getInt("lpv.propagationSteps"), 16);
+}
+
+TEST(EditorGui, PresetsSaveApplyAndSplitTheView) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    doc.setParameter("lpv.intensity", 0.0);
+    doc.savePreset("no LPV");
+    doc.setParameter("lpv.intensity", 2.0);
+    doc.savePreset("bright LPV");
+    ASSERT_EQ(doc.project().presets.size(), 2u);
+    doc.applyPreset(0);
+    EXPECT_FLOAT_EQ(doc.parameters().getFloat("lpv.intensity"), 0.0f);
+    doc.undoStack()->undo();
+    EXPECT_FLOAT_EQ(doc.parameters().getFloat("lpv.intensity"), 2.0f);
+
+    // A/B: exposure -6 EV on the left half, +3 EV on the right: the right half is brighter.
+    doc.setParameter("output.exposure", -6.0);
+    doc.savePreset("dark");
+    doc.setParameter("output.exposure", 3.0);
+    doc.savePreset("bright");
+    w.window.setSplit(2, 3);
+    EXPECT_TRUE(w.window.viewport()->splitActive());
+    QTest::qWait(100);
+    const QImage frame = w.window.viewport()->grabFramebuffer();
+    QImage left = frame.copy(0, 0, frame.width() / 2, frame.height());
+    QImage right = frame.copy(frame.width() / 2, 0, frame.width() - frame.width() / 2, frame.height());
+    EXPECT_GT(litFraction(right), litFraction(left) + 0.2);
+    EXPECT_LT(litFraction(left), 0.1);
+    w.window.setSplit(-2, -2);
+    EXPECT_FALSE(w.window.viewport()->splitActive());
+
+    // Presets travel with the project.
+    QTemporaryDir dir;
+    ASSERT_TRUE(w.window.saveTo(dir.filePath("presets.lpvproj"), false));
+    auto reopened = lpv::scene::loadProject(dir.filePath("presets.lpvproj").toStdString());
+    ASSERT_TRUE(reopened);
+    EXPECT_EQ(reopened->presets, doc.project().presets);
 }
 
 TEST(EditorGui, SliderDragMergesIntoOneUndoStep) {
