@@ -60,6 +60,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     connect(viewport_, &Viewport::renderFailed, this,
             [this](const QString& message) { statusBar()->showMessage(tr("Render error: ") + message); });
     connect(document_, &Document::titleChanged, this, &MainWindow::updateTitle);
+    // Texture decoding runs in the background: its state has its own corner of the status bar.
+    texturesLabel_ = new QLabel(this);
+    statusBar()->addPermanentWidget(texturesLabel_);
+    connect(viewport_, &Viewport::texturesLoading, this, [this](int materials) {
+        texturesLabel_->setText(tr("Loading textures of %1 materials...").arg(materials));
+    });
+    connect(viewport_, &Viewport::texturesLoaded, this, [this](const QStringList& warnings) {
+        texturesLabel_->setText(warnings.isEmpty() ? QString() : tr("%1 textures missing").arg(warnings.size()));
+        texturesLabel_->setToolTip(tr("Drawn as a placeholder:\n") + warnings.join("\n"));
+    });
     connect(document_, &Document::changed, this, [this](Changes c) {
         if (c & Change::Cameras)
             rebuildCamerasMenu();

@@ -100,6 +100,7 @@ private:
     QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;
     QLabel* memoryLabel_ = nullptr;
+    QLabel* texturesLabel_ = nullptr;
     QLabel* lpvNoteLabel_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* camerasMenu_ = nullptr;

@@ -4,16 +4,20 @@
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/FramingCamera.h"
 #include "lpv/scene/Picking.h"
+#include "lpv/scene/ProjectTextures.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QSurfaceFormat>
+#include <QThread>
 #include <QWheelEvent>
 
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <memory>
+#include <utility>
 
 namespace lpv::editor {
 namespace {
@@ -21,15 +25,17 @@ namespace {
 // A press that moves less than this is a click (selection), not a drag.
 constexpr int kClickSlopPixels = 4;
 
-std::set<std::string> texturePathsOf(const scene::Scene& s) {
-    std::set<std::string> paths;
-    for (const scene::Material& m : s.materials)
-        for (const std::string* p : {&m.diffuseTexture, &m.normalTexture, &m.heightTexture, &m.specularTexture,
-                                     &m.metallicRoughnessTexture, &m.occlusionTexture, &m.emissiveTexture,
-                                     &m.alphaTexture, &m.environmentTexture})
-            if (!p->empty())
-                paths.insert(*p + (m.colorKey && p == &m.diffuseTexture ? "#key" : ""));
-    return paths;
+// Whether every image `m` draws with is in `images` (under the keys the
+// renderer looks up: derived images for height and colour-keyed maps).
+bool texturesCached(const scene::Material& m, const scene::TextureImages& images) {
+    for (const std::string* slot : scene::textureSlots(m))
+        if (!slot->empty() && slot != &m.heightTexture && !images.contains(*slot))
+            return false;
+    if (!m.heightTexture.empty() && !images.contains(m.heightTexture + importers::kHeightNormalSuffix))
+        return false;
+    if (m.colorKey && !m.diffuseTexture.empty() && !images.contains(m.diffuseTexture + importers::kColorKeySuffix))
+        return false;
+    return true;
 }
 
 QColor axisColor(int axis, bool active) {
@@ -56,6 +62,10 @@ Viewport::Viewport(Document* document, QWidget* parent) : QOpenGLWidget(parent),
 }
 
 Viewport::~Viewport() {
+    if (textureWorker_) {
+        textureWorker_->wait(); // it writes only into its own result, but must end before the process
+        delete textureWorker_;
+    }
     // GL objects must die with their context current.
     makeCurrent();
     renderer_.reset();
@@ -125,25 +135,48 @@ void Viewport::initializeGL() {
     pending_ = Change::Everything;
 }
 
-void Viewport::reloadTexturesIfNeeded(bool force) {
-    const std::set<std::string> paths = texturePathsOf(document_->scene());
-    if (!force && paths == texturePaths_)
+void Viewport::requestMissingTextures() {
+    if (textureWorker_) {
+        texturesRequestedAgain_ = true; // once the running job is in
         return;
-    // Missing textures draw as a placeholder; the importer and the property panel report them.
-    textures_ = importers::loadSceneTextures(document_->scene(), document_->projectDir().toStdString()).images;
-    texturePaths_ = paths;
+    }
+    auto wanted = std::make_shared<scene::Scene>();
+    for (const scene::Material& m : document_->scene().materials)
+        if (!texturesCached(m, textures_))
+            wanted->materials.push_back(m);
+    if (wanted->materials.empty())
+        return;
+    emit texturesLoading(int(wanted->materials.size()));
+    const std::string dir = document_->projectDir().toStdString();
+    auto decoded = std::make_shared<importers::SceneTextures>();
+    textureWorker_ = QThread::create([wanted, dir, decoded] { *decoded = importers::loadSceneTextures(*wanted, dir); });
+    connect(textureWorker_, &QThread::finished, this, [this, decoded] {
+        textureWorker_->deleteLater();
+        textureWorker_ = nullptr;
+        textures_.merge(decoded->images);
+        QStringList warnings;
+        for (const std::string& w : decoded->warnings)
+            warnings << QString::fromStdString(w);
+        emit texturesLoaded(warnings);
+        pending_ |= Change::Materials;
+        update();
+        if (std::exchange(texturesRequestedAgain_, false))
+            requestMissingTextures();
+    });
+    textureWorker_->start();
 }
 
 void Viewport::uploadPendingChanges() {
     const scene::Scene& s = document_->scene();
+    if (pending_ == Changes(Change::Everything))
+        textures_.clear(); // another project: its files may differ under the same names
+    if (pending_ & (Change::Geometry | Change::Materials))
+        requestMissingTextures();
     if (pending_ & Change::Geometry) {
-        reloadTexturesIfNeeded(pending_ == Changes(Change::Everything));
         renderer_->setScene(s, textures_);
     } else {
-        if (pending_ & Change::Materials) {
-            reloadTexturesIfNeeded(false);
+        if (pending_ & Change::Materials)
             renderer_->updateMaterials(s, textures_);
-        }
         if (pending_ & (Change::Transforms | Change::Structure))
             renderer_->updateObjects(s);
     }

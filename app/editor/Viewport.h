@@ -27,7 +27,10 @@
 #include <string>
 #include <vector>
 
+class QThread;
+
 namespace lpv::editor {
+
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -38,6 +41,8 @@ public:
     // Errors from GL set-up or rendering, empty if none.
     const QString& lastError() const { return lastError_; }
     const QString& glRenderer() const { return glRenderer_; }
+    // Textures are being decoded in the background (tests wait for this).
+    bool texturesPending() const { return textureWorker_ != nullptr; }
 
     // The camera the user moves; starts at the project's first camera (or a
     // framing camera) whenever a project is opened.
@@ -65,6 +70,9 @@ signals:
     void lpvNoteChanged(const QString& note);
     void renderFailed(const QString& message);
     void viewCameraChanged();
+    // Background texture decoding started (count of materials) or finished (0, with warnings).
+    void texturesLoading(int materials);
+    void texturesLoaded(const QStringList& warnings);
 
 protected:
     void initializeGL() override;
@@ -80,7 +88,9 @@ protected:
 private:
     void onDocumentChanged(Changes changes);
     void uploadPendingChanges();
-    void reloadTexturesIfNeeded(bool force);
+    // Decodes, on a worker thread, the textures of materials not yet in the
+    // cache; until they arrive those materials draw untextured.
+    void requestMissingTextures();
     void drawOverlay();
     void flyStep();
     void dragSun(const QPoint& delta);
@@ -98,8 +108,9 @@ private:
     QString splitLabels_[2];
 
     Changes pending_ = Change::Everything;
-    scene::TextureImages textures_;
-    std::set<std::string> texturePaths_; // the paths textures_ was loaded for
+    scene::TextureImages textures_; // decoded images by key, kept across edits
+    QThread* textureWorker_ = nullptr;
+    bool texturesRequestedAgain_ = false;
 
     // Mouse state.
     enum class Drag { None, Orbit, Pan, Look, Gizmo, Sun };

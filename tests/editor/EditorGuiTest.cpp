@@ -246,8 +246,10 @@ TEST(EditorGui, Import4dsThroughTheImportActionIsOneUndoStep) {
     EXPECT_GT(doc.scene().objects.size(), objects) << w.window.statusBar()->currentMessage().toStdString();
     EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("Imported")) <<
         w.window.statusBar()->currentMessage().toStdString();
+    QTRY_VERIFY_WITH_TIMEOUT(!w.window.viewport()->texturesPending(), 60000);
     QTest::qWait(100);
     EXPECT_GT(litFraction(w.window.viewport()->grabFramebuffer()), 0.05);
+    EXPECT_EQ(doc.undoStack()->text(doc.undoStack()->index() - 1), "Import white_box.4ds");
     EXPECT_EQ(doc.scene().lights.size(), 1u) << "an unlit import gets a sun, as with lpv import";
     doc.undoStack()->undo();
     EXPECT_EQ(doc.scene().objects.size(), objects);
