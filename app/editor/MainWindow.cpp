@@ -1,48 +1,349 @@
 #include "MainWindow.h"
 
 #include "AboutDialog.h"
+#include "Autosave.h"
+#include "EffectsPanel.h"
+#include "ImportJob.h"
+#include "OutlinerPanel.h"
+#include "ParameterInspector.h"
+#include "PresetBar.h"
+#include "ProfilerPanel.h"
+#include "PropertyPanel.h"
 #include "Viewport.h"
 
+#include "lpv/renderer/GlContext.h"
+#include "lpv/scene/SceneMerge.h"
+
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressDialog>
+#include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QUndoView>
+#include <QVBoxLayout>
 
 namespace lpv::editor {
+namespace {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    viewport_ = new Viewport(this);
+constexpr int kMaxRecentFiles = 10;
+const char* kRecentKey = "recentFiles";
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Document(this)) {
+    setObjectName("mainWindow");
+    viewport_ = new Viewport(document_, this);
     setCentralWidget(viewport_);
+    autosave_ = new Autosave(document_, this);
+
     frameLabel_ = new QLabel(this);
+    memoryLabel_ = new QLabel(this);
     statusBar()->addPermanentWidget(frameLabel_);
-    connect(viewport_, &Viewport::frameTimed, this, [this](double ms, const QString& gl) {
-        frameLabel_->setText(QString("GPU %1 ms  |  %2").arg(ms, 0, 'f', 2).arg(gl));
+    statusBar()->addPermanentWidget(memoryLabel_);
+    connect(viewport_, &Viewport::frameRendered, this, [this](const std::vector<renderer::PassTiming>& table) {
+        double total = 0.0;
+        for (const renderer::PassTiming& t : table)
+            total += t.lastMs;
+        showFrameStats(total);
     });
     connect(viewport_, &Viewport::renderFailed, this,
-            [this](const QString& message) { statusBar()->showMessage("Render error: " + message); });
-    createMenus();
-    resize(1280, 800);
+            [this](const QString& message) { statusBar()->showMessage(tr("Render error: ") + message); });
+    connect(document_, &Document::titleChanged, this, &MainWindow::updateTitle);
+    // Texture decoding runs in the background: its state has its own corner of the status bar.
+    texturesLabel_ = new QLabel(this);
+    statusBar()->addPermanentWidget(texturesLabel_);
+    connect(viewport_, &Viewport::texturesLoading, this, [this](int materials) {
+        texturesLabel_->setText(tr("Loading textures of %1 materials...").arg(materials));
+    });
+    connect(viewport_, &Viewport::texturesLoaded, this, [this](const QStringList& warnings) {
+        texturesLabel_->setText(warnings.isEmpty() ? QString() : tr("%1 textures missing").arg(warnings.size()));
+        texturesLabel_->setToolTip(tr("Drawn as a placeholder:\n") + warnings.join("\n"));
+    });
+    connect(document_, &Document::changed, this, [this](Changes c) {
+        if (c & Change::Cameras)
+            rebuildCamerasMenu();
+    });
+    connect(autosave_, &Autosave::failed, this,
+            [this](const QString& m) { statusBar()->showMessage(tr("Autosave failed: ") + m); });
+
+    createActions();
+    createDocks();
+    resize(1400, 900);
+    defaultState_ = saveState();
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    showProject(scene::Project{"untitled", {}, {}}, {});
 }
 
-void MainWindow::createMenus() {
+MainWindow::~MainWindow() = default;
+
+QDockWidget* MainWindow::addDock(QWidget* widget, const QString& name, const QString& title, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name); // saveState/restoreState key
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    viewMenu_->addAction(dock->toggleViewAction());
+    return dock;
+}
+
+QDockWidget* MainWindow::dock(const QString& name) const { return findChild<QDockWidget*>(name); }
+
+void MainWindow::createDocks() {
+    outliner_ = new OutlinerPanel(document_, this);
+    addDock(outliner_, "outliner", tr("Outliner"), Qt::LeftDockWidgetArea);
+
+    undoView_ = new QUndoView(document_->undoStack(), this);
+    undoView_->setEmptyLabel(tr("<opened>"));
+    addDock(undoView_, "history", tr("History"), Qt::LeftDockWidgetArea);
+
+    // The inspector: presets on top, every registry parameter below.
+    auto* inspectorPage = new QWidget(this);
+    auto* inspectorLayout = new QVBoxLayout(inspectorPage);
+    inspectorLayout->setContentsMargins(0, 0, 0, 0);
+    presetBar_ = new PresetBar(inspectorPage);
+    inspector_ = new ParameterInspector(inspectorPage);
+    inspectorLayout->addWidget(presetBar_);
+    inspectorLayout->addWidget(inspector_);
+    connect(inspector_, &ParameterInspector::parameterEdited, this,
+            [this](const QString& key, const scene::ParameterValue& value) {
+                document_->setParameter(key.toStdString(), value);
+            });
+    connect(inspector_, &ParameterInspector::parameterResetRequested, this,
+            [this](const QString& key) { document_->setParameter(key.toStdString(), std::nullopt); });
+    connect(presetBar_, &PresetBar::presetSaveRequested, this,
+            [this](const QString& name) { document_->savePreset(name.toStdString()); });
+    connect(presetBar_, &PresetBar::presetApplyRequested, document_, &Document::applyPreset);
+    connect(presetBar_, &PresetBar::presetDeleteRequested, document_, &Document::deletePreset);
+    connect(document_, &Document::changed, this, [this](Changes c) {
+        if (c & Change::Parameters)
+            inspector_->setParameters(document_->parameters());
+        if (c & Change::Presets)
+            presetBar_->setPresets(document_->project().presets);
+        if (c & (Change::Parameters | Change::Presets))
+            updateSplit();
+    });
+    inspector_->setParameters(document_->parameters());
+    presetBar_->setPresets(document_->project().presets);
+    QDockWidget* inspectorDock = addDock(inspectorPage, "inspector", tr("Inspector"), Qt::RightDockWidgetArea);
+
+    properties_ = new PropertyPanel(document_, this);
+    addDock(properties_, "properties", tr("Properties"), Qt::RightDockWidgetArea);
+
+    profiler_ = new ProfilerPanel(this);
+    connect(viewport_, &Viewport::frameRendered, profiler_, &ProfilerPanel::addFrame);
+    connect(document_, &Document::changed, profiler_, [this](Changes c) {
+        if (c == Changes(Change::Everything))
+            profiler_->clear();
+    });
+    QDockWidget* profilerDock = addDock(profiler_, "profiler", tr("Profiler"), Qt::BottomDockWidgetArea);
+
+    effects_ = new EffectsPanel(document_, viewport_, this);
+    connect(viewport_, &Viewport::lpvNoteChanged, effects_, &EffectsPanel::setRendererNote);
+    QDockWidget* effectsDock = addDock(effects_, "effects", tr("Effects"), Qt::RightDockWidgetArea);
+
+    // Default layout: the right-hand panels share one area as tabs, the
+    // profiler stays a strip under the viewport.
+    tabifyDockWidget(inspectorDock, dock("properties"));
+    tabifyDockWidget(inspectorDock, effectsDock);
+    inspectorDock->raise();
+    resizeDocks({profilerDock}, {220}, Qt::Vertical);
+    resizeDocks({inspectorDock}, {400}, Qt::Horizontal);
+}
+
+void MainWindow::createActions() {
+    QUndoStack* undo = document_->undoStack();
+    QToolBar* toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName("mainToolbar");
+
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* newAction = file->addAction(tr("&New"), this, &MainWindow::newProject);
+    newAction->setShortcut(QKeySequence::New);
     QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openDialog);
     open->setShortcut(QKeySequence::Open);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
     file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), qApp, &QApplication::quit);
+    QAction* saveAction = file->addAction(tr("&Save"), this, [this] { save(); });
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction* saveAsAction = file->addAction(tr("Save &As..."), this, [this] { saveAs(); });
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    QAction* import = file->addAction(tr("&Import..."), this, &MainWindow::importDialog);
+    import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undoAction = undo->createUndoAction(this, tr("&Undo"));
+    undoAction->setShortcut(QKeySequence::Undo);
+    QAction* redoAction = undo->createRedoAction(this, tr("&Redo"));
+    redoAction->setShortcut(QKeySequence::Redo);
+    edit->addAction(undoAction);
+    edit->addAction(redoAction);
+    edit->addSeparator();
+    QAction* rename = edit->addAction(tr("Re&name"), this, [this] { outliner_->renameSelected(); });
+    rename->setShortcut(QKeySequence(Qt::Key_F2));
+    QAction* duplicate = edit->addAction(tr("&Duplicate"), this, [this] { outliner_->duplicateSelected(); });
+    duplicate->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    QAction* remove = edit->addAction(tr("De&lete"), this, [this] { outliner_->deleteSelected(); });
+    remove->setShortcut(QKeySequence::Delete);
+    // Delete, F2 and Ctrl+D act on the selection wherever the focus is, except while typing in a field.
+    for (QAction* a : {rename, duplicate, remove})
+        a->setShortcutContext(Qt::WindowShortcut);
+
+    QMenu* create = menuBar()->addMenu(tr("&Create"));
+    create->addAction(tr("&Sun (directional light)"), this, [this] { createLight(scene::LightType::Directional); });
+    create->addAction(tr("&Point light"), this, [this] { createLight(scene::LightType::Point); });
+    create->addAction(tr("S&pot light"), this, [this] { createLight(scene::LightType::Spot); });
+    create->addSeparator();
+    create->addAction(tr("&Camera from view"), this, &MainWindow::createCameraFromView);
+    create->addSeparator();
+    create->addAction(tr("P&lane"), this, [this] { createPrimitive("plane"); });
+    create->addAction(tr("&Box"), this, [this] { createPrimitive("box"); });
+    create->addAction(tr("Sp&here"), this, [this] { createPrimitive("sphere"); });
+    create->addSeparator();
+    create->addAction(import);
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    QAction* frame = viewMenu_->addAction(tr("&Frame selection"), viewport_, &Viewport::frameSelection);
+    frame->setShortcut(QKeySequence(Qt::Key_F));
+    frame->setShortcutContext(Qt::WidgetWithChildrenShortcut); // F is also a letter in text fields
+    camerasMenu_ = viewMenu_->addMenu(tr("&Cameras"));
+    auto* gizmoModes = new QActionGroup(this);
+    const std::pair<QString, GizmoMode> modes[] = {
+        {tr("&Move (W)"), GizmoMode::Move}, {tr("&Rotate (E)"), GizmoMode::Rotate}, {tr("&Scale (R)"), GizmoMode::Scale}};
+    QMenu* gizmo = viewMenu_->addMenu(tr("&Gizmo"));
+    for (const auto& [label, mode] : modes) {
+        QAction* a = gizmo->addAction(label, this, [this, mode] { viewport_->setGizmoMode(mode); });
+        a->setCheckable(true);
+        a->setChecked(mode == GizmoMode::Move);
+        gizmoModes->addAction(a);
+        toolbar->addAction(a);
+    }
+    QAction* snap = gizmo->addAction(tr("S&nap (0.25 m, 15°, 0.1×; Ctrl inverts while dragging)"));
+    snap->setCheckable(true);
+    connect(snap, &QAction::toggled, this, [this](bool on) { viewport_->snap().enabled = on; });
+    toolbar->addAction(snap);
+    splitAction_ = viewMenu_->addAction(tr("&A/B split view..."), this, [this](bool on) {
+        if (on && !chooseSplit())
+            splitAction_->setChecked(false);
+        if (!on)
+            splitChoice_ = {-2, -2};
+        updateSplit();
+    });
+    splitAction_->setCheckable(true);
+    splitAction_->setToolTip(tr("Render two presets side by side: A on the left half, B on the right"));
+    toolbar->addAction(splitAction_);
+    viewMenu_->addAction(tr("Reset &layout"), this, [this] { restoreState(defaultState_); });
+    viewMenu_->addSeparator();
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About LPV Studio"), this, [this] { AboutDialog(viewport_, this).exec(); });
+
+    QAction* firstGizmoAction = toolbar->actions().value(0);
+    for (QAction* a : {newAction, open, saveAction, import, undoAction, redoAction})
+        toolbar->insertAction(firstGizmoAction, a);
+    toolbar->insertSeparator(firstGizmoAction);
 }
 
-void MainWindow::openDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QFileInfo(projectPath_).path(),
-                                                      tr("LPV Studio projects (*.lpvproj)"));
+void MainWindow::updateTitle() {
+    const QString name = document_->path().isEmpty() ? QString::fromStdString(document_->project().name)
+                                                     : QFileInfo(document_->path()).fileName();
+    setWindowTitle(QString("%1[*] - LPV Studio").arg(name));
+    setWindowModified(document_->isModified());
+}
+
+void MainWindow::showFrameStats(double gpuMs) {
+    frameLabel_->setText(tr("GPU %1 ms").arg(gpuMs, 0, 'f', 2));
+    frameLabel_->setToolTip(viewport_->glRenderer());
+    static QElapsedTimer lastMemoryQuery;
+    if (lastMemoryQuery.isValid() && lastMemoryQuery.elapsed() < 1000)
+        return;
+    lastMemoryQuery.start();
+    viewport_->makeCurrent();
+    const auto memory = renderer::queryGpuMemory();
+    viewport_->doneCurrent();
+    if (!memory)
+        memoryLabel_->setText(tr("GPU memory: not reported by this driver"));
+    else if (memory->totalMiB > 0.0)
+        memoryLabel_->setText(tr("GPU memory: %1 of %2 MiB used")
+                                  .arg(memory->totalMiB - memory->freeMiB, 0, 'f', 0)
+                                  .arg(memory->totalMiB, 0, 'f', 0));
+    else
+        memoryLabel_->setText(tr("GPU memory: %1 MiB free").arg(memory->freeMiB, 0, 'f', 0));
+}
+
+// ---- A/B split ----
+
+bool MainWindow::chooseSplit() {
+    QStringList names{tr("Current parameters")};
+    for (const scene::ParameterPreset& p : document_->project().presets)
+        names << QString::fromStdString(p.name);
+    if (names.size() < 2) {
+        QMessageBox::information(this, tr("A/B split view"),
+                                 tr("Save at least one preset (Inspector > Save as...) to compare it with the "
+                                    "current parameters."));
+        return false;
+    }
+    bool ok = false;
+    const QString a = QInputDialog::getItem(this, tr("A/B split view"), tr("Left half (A):"), names, 0, false, &ok);
+    if (!ok)
+        return false;
+    const QString b = QInputDialog::getItem(this, tr("A/B split view"), tr("Right half (B):"), names, 1, false, &ok);
+    if (!ok)
+        return false;
+    setSplit(int(names.indexOf(a)) - 1, int(names.indexOf(b)) - 1);
+    return true;
+}
+
+void MainWindow::setSplit(int presetA, int presetB) {
+    splitChoice_ = {presetA, presetB};
+    splitAction_->setChecked(presetA >= -1 && presetB >= -1);
+    updateSplit();
+}
+
+void MainWindow::updateSplit() {
+    const auto& presets = document_->project().presets;
+    auto side = [&](int index) -> std::optional<std::pair<scene::ParameterSet, QString>> {
+        if (index == -1)
+            return std::pair{document_->parameters(), tr("current parameters")};
+        if (index >= 0 && std::size_t(index) < presets.size())
+            return std::pair{presets[std::size_t(index)].parameters,
+                             QString::fromStdString(presets[std::size_t(index)].name)};
+        return std::nullopt;
+    };
+    const auto a = side(splitChoice_.first), b = side(splitChoice_.second);
+    if (!a || !b) {
+        splitAction_->setChecked(false);
+        viewport_->setSplit(std::nullopt);
+        return;
+    }
+    viewport_->setSplit(std::pair{a->first, b->first}, a->second, b->second);
+}
+
+// ---- Projects ----
+
+void MainWindow::showProject(scene::Project project, const QString& path) {
+    const std::size_t triangles = project.scene.triangleCount(), lights = project.scene.lights.size();
+    document_->reset(std::move(project), QFileInfo::exists(path) ? path : QString());
+    updateTitle();
+    rebuildCamerasMenu();
     if (!path.isEmpty())
-        openProject(path);
+        statusBar()->showMessage(tr("%1: %2 triangles, %3 lights").arg(path).arg(triangles).arg(lights));
 }
 
 bool MainWindow::openProject(const QString& path, bool interactive) {
@@ -54,19 +355,221 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
             QMessageBox::critical(this, tr("Cannot open project"), message);
         return false;
     }
+    autosave_->discard(); // the project being replaced was saved or discarded by the caller
     showProject(std::move(*loaded), path);
+    addRecentFile(path);
     return true;
 }
 
-void MainWindow::showProject(scene::Project project, const QString& path) {
-    project_ = std::move(project);
-    projectPath_ = path;
-    setWindowTitle(QString("%1 - LPV Studio").arg(QString::fromStdString(project_.name)));
-    statusBar()->showMessage(QString("%1: %2 triangles, %3 lights")
-                                 .arg(path)
-                                 .arg(project_.scene.triangleCount())
-                                 .arg(project_.scene.lights.size()));
-    viewport_->setProject(&project_, QFileInfo(path).absolutePath());
+bool MainWindow::confirmDiscardChanges() {
+    if (!document_->isModified())
+        return true;
+    int answer = unsavedAnswerForTests_;
+    if (answer == 0)
+        answer = QMessageBox::warning(this, tr("Unsaved changes"),
+                                      tr("%1 has unsaved changes. Save them?").arg(windowTitle().remove("[*]")),
+                                      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                      QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    if (answer == QMessageBox::Discard) {
+        autosave_->discard();
+        return true;
+    }
+    return false;
+}
+
+void MainWindow::newProject() {
+    if (!confirmDiscardChanges())
+        return;
+    showProject(scene::Project{"untitled", {}, {}}, {});
+}
+
+void MainWindow::openDialog() {
+    if (!confirmDiscardChanges())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), document_->projectDir(),
+                                                      tr("LPV Studio projects (*.lpvproj)"));
+    if (!path.isEmpty())
+        openProject(path);
+}
+
+bool MainWindow::save() {
+    if (document_->path().isEmpty())
+        return saveAs();
+    return saveTo(document_->path());
+}
+
+bool MainWindow::saveAs() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save project as"), document_->projectDir(),
+                                                tr("LPV Studio projects (*.lpvproj)"));
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(".lpvproj"))
+        path += ".lpvproj";
+    return saveTo(path);
+}
+
+bool MainWindow::saveTo(const QString& path, bool interactive) {
+    autosave_->discard(); // the autosave of the old path (or of "untitled")
+    auto saved = document_->saveAs(path);
+    if (!saved) {
+        const QString message = QString::fromStdString(saved.error().describe());
+        statusBar()->showMessage(tr("Not saved: ") + message);
+        if (interactive)
+            QMessageBox::critical(this, tr("Cannot save project"), message + tr("\nThe previous file is unchanged."));
+        return false;
+    }
+    addRecentFile(path);
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value(kRecentKey).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(kRecentKey, files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = QSettings().value(kRecentKey).toStringList();
+    for (const QString& f : files)
+        recentMenu_->addAction(f, this, [this, f] {
+            if (confirmDiscardChanges())
+                openProject(f);
+        });
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::rebuildCamerasMenu() {
+    camerasMenu_->clear();
+    const auto& cameras = document_->scene().cameras;
+    for (std::size_t i = 0; i < cameras.size(); ++i)
+        camerasMenu_->addAction(QString::fromStdString(cameras[i].name.empty() ? "camera " + std::to_string(i)
+                                                                              : cameras[i].name),
+                                this, [this, i] {
+                                    if (i < document_->scene().cameras.size())
+                                        viewport_->setViewCamera(document_->scene().cameras[i]);
+                                });
+    camerasMenu_->setEnabled(!cameras.empty());
+}
+
+void MainWindow::offerRecovery() {
+    for (const RecoverableAutosave& a : Autosave::leftBehind()) {
+        const QString what = a.originalPath.isEmpty() ? tr("an unsaved project") : a.originalPath;
+        const auto answer = QMessageBox::question(
+            this, tr("Recover unsaved changes?"),
+            tr("LPV Studio did not close normally. An autosave of %1 from %2 is left.\nRecover it?")
+                .arg(what, a.savedAt.toString()),
+            QMessageBox::Yes | QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            Autosave::remove(a);
+            continue;
+        }
+        auto loaded = scene::loadProject(a.autosaveFile.toStdString());
+        if (!loaded) {
+            QMessageBox::critical(this, tr("Cannot recover"), QString::fromStdString(loaded.error().describe()));
+            continue;
+        }
+        // The recovered project belongs to its original file but is unsaved until the user saves.
+        document_->reset(std::move(*loaded), a.originalPath, true);
+        Autosave::remove(a);
+        return;
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!confirmDiscardChanges()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    event->accept();
+}
+
+// ---- Import ----
+
+void MainWindow::importDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import scene"), document_->projectDir(),
+        tr("Scenes (*.4ds *.obj *.gltf *.glb *.fbx *.dae *.3ds *.ply);;All files (*)"));
+    if (!path.isEmpty())
+        importFile(path);
+}
+
+void MainWindow::importFile(const QString& path, bool interactive) {
+    if (importRunning_)
+        return;
+    importRunning_ = true;
+    auto* job = new ImportJob(path, this);
+    auto* progress = new QProgressDialog(tr("Importing %1...").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0, this);
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(300);
+    auto* ticker = new QTimer(progress);
+    QElapsedTimer clock;
+    clock.start();
+    connect(ticker, &QTimer::timeout, progress, [progress, path, clock] {
+        progress->setLabelText(
+            tr("Importing %1... %2 s").arg(QFileInfo(path).fileName()).arg(clock.elapsed() / 1000.0, 0, 'f', 1));
+    });
+    ticker->start(200);
+    auto finish = [this, job, progress] {
+        importRunning_ = false;
+        progress->deleteLater();
+        job->deleteLater();
+    };
+    connect(progress, &QProgressDialog::canceled, this, [this, job, finish, path] {
+        job->cancel();
+        statusBar()->showMessage(tr("Import of %1 cancelled; the project is unchanged").arg(path), 8000);
+        finish();
+    });
+    connect(job, &ImportJob::failed, this, [this, finish, interactive](const QString& message) {
+        finish();
+        statusBar()->showMessage(tr("Import failed: ") + message);
+        if (interactive)
+            QMessageBox::critical(this, tr("Import failed"), message);
+    });
+    connect(job, &ImportJob::imported, this,
+            [this, finish, path](std::shared_ptr<importers::ImportResult> result) {
+                finish();
+                const auto& st = result->stats;
+                const bool addSun = document_->scene().lights.empty() && result->scene.lights.empty();
+                document_->editScene(tr("Import %1").arg(QFileInfo(path).fileName()), Change::Structure | Change::Materials |
+                                         Change::Lights | Change::Cameras | Change::CameraPaths,
+                                     [&](scene::Scene& s) {
+                                         scene::appendScene(s, std::move(result->scene));
+                                         if (addSun) {
+                                             // Like `lpv import`: an unlit scene would render black.
+                                             scene::Light sun;
+                                             sun.name = "sun";
+                                             sun.direction = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
+                                             sun.color = glm::vec3(1.0f, 0.95f, 0.85f);
+                                             sun.intensity = 3.0f;
+                                             s.lights.push_back(sun);
+                                         }
+                                     });
+                viewport_->frameSelection();
+                statusBar()->showMessage(tr("Imported %1: %2 objects, %3 triangles, %4 materials, textures %5 found / "
+                                            "%6 missing, %7 warnings, %8 s")
+                                             .arg(path)
+                                             .arg(st.objects)
+                                             .arg(st.triangles)
+                                             .arg(st.materials)
+                                             .arg(st.texturesFound)
+                                             .arg(st.texturesMissing)
+                                             .arg(result->warnings.size())
+                                             .arg(st.seconds, 0, 'f', 2));
+            });
+    job->start();
 }
 
 } // namespace lpv::editor

@@ -1,34 +1,113 @@
 #pragma once
-#include "lpv/scene/Project.h"
+// The editor's main window: the viewport in the centre, dockable panels
+// around it (layout remembered with QSettings), menus and a toolbar with the
+// standard shortcuts, and a status bar with frame time and GPU memory.
+#include "Document.h"
 
 #include <QMainWindow>
 
+class QAction;
+class QDockWidget;
 class QLabel;
+class QMenu;
+class QUndoView;
 
 namespace lpv::editor {
 
+class Autosave;
+class EffectsPanel;
+class OutlinerPanel;
+class ParameterInspector;
+class PresetBar;
+class ProfilerPanel;
+class PropertyPanel;
 class Viewport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
 
-    // Loads a project; on failure shows the loader's error and keeps the current one.
+    // Loads a project; on failure shows the loader's error (a dialog when
+    // `interactive`) and keeps the current one.
     bool openProject(const QString& path, bool interactive = true);
     // Shows a project that is not on disk (the built-in Cornell box when its file is missing).
     void showProject(scene::Project project, const QString& path);
+    // Saves to the document's path, or asks for one; false if cancelled or failed.
+    bool save();
+    bool saveAs();
+    bool saveTo(const QString& path, bool interactive = true);
+    // Imports a scene file into the current project on a worker thread with a
+    // progress dialog; the import is one undo step.
+    void importFile(const QString& path, bool interactive = true);
+    // Offers to recover autosaves left by a session that did not close normally.
+    void offerRecovery();
+
+    Document* document() const { return document_; }
     Viewport* viewport() const { return viewport_; }
-    const scene::Project& project() const { return project_; }
+    OutlinerPanel* outliner() const { return outliner_; }
+    EffectsPanel* effects() const { return effects_; }
+    PropertyPanel* properties() const { return properties_; }
+    ParameterInspector* inspector() const { return inspector_; }
+    PresetBar* presetBar() const { return presetBar_; }
+    // A/B split: preset indices for the left and right halves (-1 = the current parameters).
+    void setSplit(int presetA, int presetB);
+    ProfilerPanel* profiler() const { return profiler_; }
+    Autosave* autosave() const { return autosave_; }
+    // Import running (tests wait on it).
+    bool importRunning() const { return importRunning_; }
+    // Docks by object name ("outliner", "inspector", ...).
+    QDockWidget* dock(const QString& name) const;
+    // When a dialog would ask (unsaved changes on close), what the answer is: tests set it.
+    void setUnsavedChangesAnswerForTests(int standardButton) { unsavedAnswerForTests_ = standardButton; }
+
+    // Same as the Create menu's actions.
+    void createLight(scene::LightType type);
+    void createPrimitive(const QString& kind);
+    void createCameraFromView();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    void createMenus();
+    void createActions();
+    void createDocks();
+    QDockWidget* addDock(QWidget* widget, const QString& name, const QString& title, Qt::DockWidgetArea area);
+    void newProject();
     void openDialog();
+    void importDialog();
+    bool confirmDiscardChanges();
+    void updateTitle();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void rebuildCamerasMenu();
+    void showFrameStats(double gpuMs);
+    bool chooseSplit();
+    void updateSplit();
 
-    scene::Project project_;
-    QString projectPath_;
+    Document* document_ = nullptr;
     Viewport* viewport_ = nullptr;
+    OutlinerPanel* outliner_ = nullptr;
+    EffectsPanel* effects_ = nullptr;
+    PropertyPanel* properties_ = nullptr;
+    ParameterInspector* inspector_ = nullptr;
+    PresetBar* presetBar_ = nullptr;
+    QAction* splitAction_ = nullptr;
+    std::pair<int, int> splitChoice_{-2, -2}; // preset indices; -1 = current parameters, -2 = off
+    ProfilerPanel* profiler_ = nullptr;
+    Autosave* autosave_ = nullptr;
+    QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;
+    QLabel* memoryLabel_ = nullptr;
+    QLabel* texturesLabel_ = nullptr;
+    QLabel* lpvNoteLabel_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QMenu* camerasMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QByteArray defaultState_;
+    bool importRunning_ = false;
+    int unsavedAnswerForTests_ = 0;
 };
 
 } // namespace lpv::editor

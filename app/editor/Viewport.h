@@ -1,45 +1,131 @@
 #pragma once
 // The central 3D view: a QOpenGLWidget that drives the same renderer library
 // as the CLI. It redraws only when something changed (Qt calls paintGL on
-// update()), never in a busy loop.
-#include "lpv/renderer/ForwardRenderer.h"
-#include "lpv/scene/Project.h"
+// update()), never in a busy loop: while flying, a timer runs only as long
+// as a movement key is held.
+//
+// Mouse: left-click selects (ray picking); left-drag orbits, or drags a
+// gizmo handle, or with L held turns the sun; middle-drag pans; wheel
+// dollies; right-drag looks around, and with it held W/A/S/D/Q/E fly
+// (Shift: faster). Keys: F frames the selection; W/E/R pick the gizmo's
+// move/rotate/scale mode when not flying.
+#include "CameraController.h"
+#include "Document.h"
+#include "TransformGizmo.h"
 
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/GpuTimer.h"
+#include "lpv/scene/Image.h"
+
+#include <QElapsedTimer>
 #include <QOpenGLWidget>
+#include <QSet>
+#include <QTimer>
 
 #include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+class QThread;
 
 namespace lpv::editor {
+
 
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
 public:
-    explicit Viewport(QWidget* parent = nullptr);
+    explicit Viewport(Document* document, QWidget* parent = nullptr);
     ~Viewport() override;
 
-    // The viewport shows `project` until the next call; it must outlive the
-    // viewport's use of it. Its texture paths are relative to `projectDir`.
-    void setProject(const scene::Project* project, const QString& projectDir = {});
     // Errors from GL set-up or rendering, empty if none.
     const QString& lastError() const { return lastError_; }
+    const QString& glRenderer() const { return glRenderer_; }
+    // Textures are being decoded in the background (tests wait for this).
+    bool texturesPending() const { return textureWorker_ != nullptr; }
+
+    // The camera the user moves; starts at the project's first camera (or a
+    // framing camera) whenever a project is opened.
+    const scene::Camera& viewCamera() const { return controller_.camera(); }
+    void setViewCamera(const scene::Camera& camera);
+    void frameSelection();
+
+    GizmoMode gizmoMode() const { return gizmoMode_; }
+    void setGizmoMode(GizmoMode mode);
+    GizmoSnap& snap() { return snap_; }
+
+    // A/B split: the left half renders `a`, the right half `b` (named in the
+    // corners); nothing = the project's own parameters over the whole view.
+    void setSplit(std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> presets, QString labelA = {},
+                  QString labelB = {});
+    bool splitActive() const { return split_.has_value(); }
+
+    // Picks the object under a widget position (logical pixels) and selects it (or clears the selection).
+    void selectAt(const QPoint& position);
 
 signals:
-    // GPU time of the last frame in milliseconds (sum of pass medians).
-    void frameTimed(double gpuMs, const QString& glRenderer);
+    // After every frame: the renderer's timing table (for the status bar and the profiler).
+    void frameRendered(const std::vector<lpv::renderer::PassTiming>& timings);
+    // What the LPV did in the last frame and why (the renderer's note), when it changes.
+    void lpvNoteChanged(const QString& note);
     void renderFailed(const QString& message);
+    void viewCameraChanged();
+    // Background texture decoding started (count of materials) or finished (0, with warnings).
+    void texturesLoading(int materials);
+    void texturesLoaded(const QStringList& warnings);
 
 protected:
     void initializeGL() override;
     void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
 
 private:
-    const scene::Project* project_ = nullptr;
-    QString projectDir_;
+    void onDocumentChanged(Changes changes);
+    void uploadPendingChanges();
+    // Decodes, on a worker thread, the textures of materials not yet in the
+    // cache; until they arrive those materials draw untextured.
+    void requestMissingTextures();
+    void drawOverlay();
+    void flyStep();
+    void dragSun(const QPoint& delta);
+    std::optional<glm::vec3> selectionPivot() const;
+    int renderWidth() const;
+    int renderHeight() const;
+
+    Document* document_;
     std::optional<renderer::ForwardRenderer> renderer_;
-    scene::Camera framingCamera_; // used while the project has no camera
-    bool sceneDirty_ = true;
+    CameraController controller_;
+    TransformGizmo gizmo_;
+    GizmoMode gizmoMode_ = GizmoMode::Move;
+    GizmoSnap snap_;
+    std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split_;
+    QString splitLabels_[2];
+
+    Changes pending_ = Change::Everything;
+    scene::TextureImages textures_; // decoded images by key, kept across edits
+    QThread* textureWorker_ = nullptr;
+    bool texturesRequestedAgain_ = false;
+
+    // Mouse state.
+    enum class Drag { None, Orbit, Pan, Look, Gizmo, Sun };
+    Drag drag_ = Drag::None;
+    QPoint pressPosition_, lastPosition_;
+    bool movedSincePress_ = false;
+    int gizmoAxis_ = -1;
+    scene::Transform gizmoStart_;
+    QSet<int> heldKeys_;
+    QTimer flyTimer_;
+    QElapsedTimer flyClock_;
+
     QString lastError_;
     QString glRenderer_;
+    QString lastNote_;
 };
 
 } // namespace lpv::editor

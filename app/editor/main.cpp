@@ -64,7 +64,11 @@ int main(int argc, char** argv) {
         window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
     }
     window.show();
-    if (quitAfterMs >= 0)
+    // After the window is up, so the question has a parent to sit on. Not in
+    // smoke tests: nobody is there to answer it.
+    if (quitAfterMs < 0)
+        QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
+    else
         QTimer::singleShot(quitAfterMs, &app, [&] {
             const QString error = window.viewport()->lastError();
             std::printf("lpvstudio: showed %s; viewport: %s\n",

@@ -233,6 +233,19 @@ void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureIm
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
 }
 
+void ForwardRenderer::updateObjects(const scene::Scene& scene) {
+    if (!impl_->sceneGpu)
+        return setScene(scene);
+    impl_->sceneGpu->updateDraws(scene);
+}
+
+void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures) {
+    if (!impl_->sceneGpu)
+        return setScene(scene, textures);
+    impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
+    impl_->sceneGpu->updateDraws(scene); // buckets follow the materials' alpha modes
+}
+
 GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
 int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
@@ -283,6 +296,11 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
 void ForwardRenderer::blitTo(GLuint framebuffer, int width, int height) const {
     glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, 0, 0, impl_->width, impl_->height, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+void ForwardRenderer::blitRegionTo(GLuint framebuffer, int x0, int y0, int x1, int y1) const {
+    glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
 }
 
 namespace {

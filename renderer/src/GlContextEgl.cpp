@@ -140,3 +140,25 @@ Expected<HeadlessContext> HeadlessContext::create() {
 }
 
 } // namespace lpv::renderer
+
+namespace lpv::renderer {
+
+std::optional<GpuMemoryInfo> queryGpuMemory() {
+    // Enum values from the extension specifications.
+    constexpr GLenum kNvxTotalAvailableKiB = 0x9048, kNvxCurrentAvailableKiB = 0x9049;
+    constexpr GLenum kAtiTextureFreeMemory = 0x87FC;
+    if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+        GLint total = 0, available = 0;
+        glGetIntegerv(kNvxTotalAvailableKiB, &total);
+        glGetIntegerv(kNvxCurrentAvailableKiB, &available);
+        return GpuMemoryInfo{total / 1024.0, available / 1024.0};
+    }
+    if (epoxy_has_gl_extension("GL_ATI_meminfo")) {
+        GLint free[4] = {};
+        glGetIntegerv(kAtiTextureFreeMemory, free);
+        return GpuMemoryInfo{0.0, free[0] / 1024.0};
+    }
+    return std::nullopt;
+}
+
+} // namespace lpv::renderer

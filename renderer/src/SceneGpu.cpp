@@ -51,13 +51,8 @@ DrawBucket bucketOf(const scene::Material& m) {
 SceneGpu::SceneGpu(const scene::Scene& scene) {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
-    struct MeshRange {
-        GLint baseVertex;
-        std::size_t firstIndex;
-    };
-    std::vector<MeshRange> ranges;
     for (const scene::Mesh& mesh : scene.meshes) {
-        ranges.push_back({GLint(vertices.size()), indices.size()});
+        ranges_.push_back({GLint(vertices.size()), indices.size()});
         scene::Mesh withNormals;
         const scene::Mesh* src = &mesh;
         if (mesh.normals.size() != mesh.positions.size()) {
@@ -76,23 +71,7 @@ SceneGpu::SceneGpu(const scene::Scene& scene) {
         indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
     }
 
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        const scene::Object& obj = scene.objects[o];
-        if (!obj.visible || obj.mesh < 0 || std::size_t(obj.mesh) >= scene.meshes.size())
-            continue;
-        const glm::mat4 model = scene.worldMatrix(int(o));
-        const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
-        const MeshRange& r = ranges[std::size_t(obj.mesh)];
-        const scene::Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
-        for (const scene::Submesh& sub : mesh.submeshes) {
-            const scene::Material material =
-                sub.materialIndex < scene.materials.size() ? scene.materials[sub.materialIndex] : scene::Material{};
-            draws_.push_back(DrawItem{model, normalMatrix, GLsizei(sub.indexCount),
-                                      (r.firstIndex + sub.firstIndex) * sizeof(std::uint32_t), r.baseVertex,
-                                      sub.materialIndex, transformBounds(submeshBounds(mesh, sub), model),
-                                      bucketOf(material)});
-        }
-    }
+    updateDraws(scene);
 
     vao_ = createVertexArray();
     vertices_ = createBuffer();
@@ -112,6 +91,28 @@ SceneGpu::SceneGpu(const scene::Scene& scene) {
         glEnableVertexArrayAttrib(vao_.id(), a);
         glVertexArrayAttribFormat(vao_.id(), a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao_.id(), a, 0);
+    }
+}
+
+void SceneGpu::updateDraws(const scene::Scene& scene) {
+    draws_.clear();
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& obj = scene.objects[o];
+        if (!obj.visible || obj.mesh < 0 || std::size_t(obj.mesh) >= ranges_.size() ||
+            std::size_t(obj.mesh) >= scene.meshes.size())
+            continue;
+        const glm::mat4 model = scene.worldMatrix(int(o));
+        const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
+        const MeshRange& r = ranges_[std::size_t(obj.mesh)];
+        const scene::Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
+        for (const scene::Submesh& sub : mesh.submeshes) {
+            const scene::Material material =
+                sub.materialIndex < scene.materials.size() ? scene.materials[sub.materialIndex] : scene::Material{};
+            draws_.push_back(DrawItem{model, normalMatrix, GLsizei(sub.indexCount),
+                                      (r.firstIndex + sub.firstIndex) * sizeof(std::uint32_t), r.baseVertex,
+                                      sub.materialIndex, transformBounds(submeshBounds(mesh, sub), model),
+                                      bucketOf(material)});
+        }
     }
 }
 

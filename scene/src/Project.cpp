@@ -118,7 +118,8 @@ Expected<std::string> buildDocument(const Project& project, const fs::path& file
 } // namespace
 
 bool Project::operator==(const Project& other) const {
-    return name == other.name && scene == other.scene && parameters == other.parameters;
+    return name == other.name && scene == other.scene && parameters == other.parameters &&
+           presets == other.presets;
 }
 
 Expected<Project> loadProject(const fs::path& file) {

@@ -502,22 +502,53 @@ std::optional<ParameterValue> toParameterValue(Reader& r, const Json& v, const s
 }
 
 // Keys and values are checked by the parameter registry: unknown keys, wrong
-// types and out-of-range values come back as its errors.
-void readParameters(Fields& top, ParameterSet& out) {
-    const Json* params = top.get("parameters");
-    if (!params)
-        return;
-    Reader& r = top.reader();
-    if (!params->is_object()) {
-        r.fail(ErrorCode::TypeMismatch, "parameters", "expected an object, got " + typeOf(*params));
+// types and out-of-range values come back as its errors. `path` is where the
+// object sits ("parameters", "presets[1].parameters").
+void readParameterObject(Reader& r, const Json& params, const std::string& path, ParameterSet& out) {
+    if (!params.is_object()) {
+        r.fail(ErrorCode::TypeMismatch, path, "expected an object, got " + typeOf(params));
         return;
     }
-    for (auto it = params->begin(); it != params->end() && r.ok(); ++it) {
-        const auto value = toParameterValue(r, it.value(), fieldPath("parameters", it.key()));
+    for (auto it = params.begin(); it != params.end() && r.ok(); ++it) {
+        const std::string at = fieldPath(path, it.key());
+        const auto value = toParameterValue(r, it.value(), at);
         if (!value)
             return;
-        if (auto set = out.set(it.key(), *value, r.file()); !set)
-            r.fail(set.error());
+        if (auto set = out.set(it.key(), *value, r.file()); !set) {
+            // The registry names the key as a top-level parameter; a preset's sit deeper.
+            Error error = set.error();
+            error.location = at;
+            r.fail(std::move(error));
+        }
+    }
+}
+
+void readParameters(Fields& top, ParameterSet& out) {
+    if (const Json* params = top.get("parameters"))
+        readParameterObject(top.reader(), *params, "parameters", out);
+}
+
+// Optional (added in 1.1): a file without "presets" has none. Names must be
+// non-empty and unique, since the editor lists and picks presets by name.
+void readPresets(Fields& top, std::vector<ParameterPreset>& out) {
+    if (!top.has("presets"))
+        return;
+    out = readArray<ParameterPreset>(top, "presets", [](Fields& f) {
+        ParameterPreset preset;
+        f.text("name", preset.name);
+        if (const Json* params = f.get("parameters"))
+            readParameterObject(f.reader(), *params, f.pathOf("parameters"), preset.parameters);
+        return preset;
+    });
+    Reader& r = top.reader();
+    for (std::size_t i = 0; i < out.size() && r.ok(); ++i) {
+        const std::string at = indexPath("presets", i) + ".name";
+        if (out[i].name.empty())
+            r.fail(ErrorCode::InvalidValue, at, "a preset needs a name");
+        for (std::size_t j = 0; j < i && r.ok(); ++j)
+            if (out[j].name == out[i].name)
+                r.fail(ErrorCode::InvalidValue, at,
+                       concat("the preset name \"", out[i].name, "\" is already used by presets[", j, "]"));
     }
 }
 
@@ -730,6 +761,14 @@ Json toJson(const CameraPath& p) {
     return j;
 }
 
+// Only the overrides, sorted by key (ParameterSet keeps them sorted).
+Json toJson(const ParameterSet& parameters) {
+    Json out = Json::object();
+    for (const auto& [key, value] : parameters.overrides())
+        out[key] = std::visit([](const auto& v) { return Json(v); }, value);
+    return out;
+}
+
 template <class T>
 Json arrayOf(const std::vector<T>& items) {
     Json out = Json::array();
@@ -786,6 +825,7 @@ Expected<ProjectDocument> projectFromJson(const Json& document, const std::strin
     scene.cameras = readArray<Camera>(top, "cameras", readCamera);
     scene.cameraPaths = readArray<CameraPath>(top, "cameraPaths", readCameraPath);
     readParameters(top, out.project.parameters);
+    readPresets(top, out.project.presets);
     if (r.ok())
         checkParentChains(r, scene.objects);
     if (!r.ok())
@@ -812,10 +852,19 @@ Json projectToJson(const Project& project, const std::vector<std::string>& asset
     doc["lights"] = arrayOf(scene.lights);
     doc["cameras"] = arrayOf(scene.cameras);
     doc["cameraPaths"] = arrayOf(scene.cameraPaths);
-    Json params = Json::object();
-    for (const auto& [key, value] : project.parameters.overrides())
-        params[key] = std::visit([](const auto& v) { return Json(v); }, value);
-    doc["parameters"] = std::move(params);
+    doc["parameters"] = toJson(project.parameters);
+    // Only when there are any, so projects without presets keep the bytes
+    // they had before presets existed.
+    if (!project.presets.empty()) {
+        Json presets = Json::array();
+        for (const ParameterPreset& preset : project.presets) {
+            Json j = Json::object();
+            j["name"] = preset.name;
+            j["parameters"] = toJson(preset.parameters);
+            presets.push_back(std::move(j));
+        }
+        doc["presets"] = std::move(presets);
+    }
     return doc;
 }
 

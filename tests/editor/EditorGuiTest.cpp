@@ -1,56 +1,302 @@
+// The editor through its real window under xvfb (OpenGL 4.5 on llvmpipe):
+// open, render, edit, undo/redo, save/reopen, import, pick, create, autosave.
+#include "Autosave.h"
+#include "Document.h"
 #include "MainWindow.h"
+#include "OutlinerPanel.h"
+#include "ParameterInspector.h"
 #include "TestPaths.h"
+#include "TransformGizmo.h"
 #include "Viewport.h"
 
+#include "lpv/scene/Picking.h"
+
 #include <QApplication>
+#include <QDir>
 #include <QImage>
+#include <QMessageBox>
+#include <QSpinBox>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
+#include <QUndoStack>
 
 #include <gtest/gtest.h>
 
-using lpv::editor::MainWindow;
+using namespace lpv::editor;
 
 namespace {
+
 QString cornellPath() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+
+// A shown window with the Cornell box open; autosaves go to a temporary folder.
+struct OpenWindow {
+    QTemporaryDir autosaveDir;
+    MainWindow window;
+    explicit OpenWindow(const QString& project = cornellPath()) {
+        Autosave::setRootForTests(autosaveDir.path());
+        window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+        EXPECT_TRUE(window.openProject(project, false));
+        window.resize(1280, 900);
+        window.show();
+        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(100);
+    }
+    Document& doc() { return *window.document(); }
+};
+
+// Fraction of pixels that are not (nearly) black.
+double litFraction(const QImage& image) {
+    long lit = 0;
+    for (int y = 0; y < image.height(); y += 4)
+        for (int x = 0; x < image.width(); x += 4) {
+            const QColor c = image.pixelColor(x, y);
+            lit += c.red() + c.green() + c.blue() > 60 ? 1 : 0;
+        }
+    return double(lit) / double((image.height() / 4) * (image.width() / 4));
+}
+
 } // namespace
 
 TEST(EditorGui, OpensCornellBoxAndViewportRendersIt) {
-    MainWindow window;
-    ASSERT_TRUE(window.openProject(cornellPath(), false));
-    window.resize(640, 480);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    QTest::qWait(200);
-    const QImage frame = window.viewport()->grabFramebuffer();
+    OpenWindow w;
+    const QImage frame = w.window.viewport()->grabFramebuffer();
     ASSERT_FALSE(frame.isNull());
-    ASSERT_TRUE(window.viewport()->lastError().isEmpty()) << window.viewport()->lastError().toStdString();
-    // The red wall sits left of centre, the green wall right of it.
-    long red = 0, green = 0, lit = 0;
-    const int y = frame.height() / 2;
-    for (int x = 0; x < frame.width(); ++x) {
-        const QColor c = frame.pixelColor(x, y);
-        if (x < frame.width() / 2)
-            red += c.red() - c.green();
-        else
-            green += c.green() - c.red();
-        lit += c.red() + c.green() + c.blue() > 60 ? 1 : 0;
-    }
-    EXPECT_GT(lit, frame.width() / 4) << "the viewport frame is (nearly) black";
-    EXPECT_GT(red, 0);
-    EXPECT_GT(green, 0);
+    ASSERT_TRUE(w.window.viewport()->lastError().isEmpty()) << w.window.viewport()->lastError().toStdString();
+    // Clearly red pixels (the left wall) lie in the left half, clearly green ones (the right wall) in the right half.
+    long redLeft = 0, redRight = 0, greenLeft = 0, greenRight = 0;
+    for (int y = 0; y < frame.height(); y += 2)
+        for (int x = 0; x < frame.width(); x += 2) {
+            const QColor c = frame.pixelColor(x, y);
+            const bool left = x < frame.width() / 2;
+            if (c.red() > 60 && c.red() > 2 * c.green())
+                (left ? redLeft : redRight)++;
+            if (c.green() > 60 && c.green() > 2 * c.red())
+                (left ? greenLeft : greenRight)++;
+        }
+    EXPECT_GT(litFraction(frame), 0.15) << "the viewport frame is (nearly) black";
+    EXPECT_GT(redLeft, 100);
+    EXPECT_GT(greenRight, 100);
+    EXPECT_LT(redRight, redLeft / 10);
+    EXPECT_LT(greenLeft, greenRight / 10);
+    EXPECT_EQ(w.window.windowTitle(), "cornell-box.lpvproj[*] - LPV Studio");
+    EXPECT_FALSE(w.window.isWindowModified());
 }
 
 TEST(EditorGui, BadProjectShowsErrorAndKeepsCurrent) {
-    MainWindow window;
-    ASSERT_TRUE(window.openProject(cornellPath(), false));
-    EXPECT_FALSE(window.openProject("/nonexistent/broken.lpvproj", false));
-    EXPECT_EQ(window.project().name, "cornell-box");
-    EXPECT_TRUE(window.statusBar()->currentMessage().contains("/nonexistent/broken.lpvproj"));
+    OpenWindow w;
+    EXPECT_FALSE(w.window.openProject("/nonexistent/broken.lpvproj", false));
+    EXPECT_EQ(w.doc().project().name, "cornell-box");
+    EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("/nonexistent/broken.lpvproj"));
+}
+
+TEST(EditorGui, ParameterEditThroughTheInspectorUndoRedoSaveReopen) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    auto* steps = qobject_cast<QSpinBox*>(w.window.inspector()->editorFor("lpv.propagationSteps"));
+    ASSERT_NE(steps, nullptr);
+    const int before = doc.parameters().getInt("lpv.propagationSteps");
+    ASSERT_EQ(steps->value(), before);
+    steps->setValue(16); // as the arrows or the slider do
+    EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), 16);
+    EXPECT_TRUE(w.window.isWindowModified());
+    EXPECT_TRUE(w.window.windowTitle().contains("[*]"));
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), before);
+    EXPECT_EQ(steps->value(), before) << "the inspector follows undo";
+    EXPECT_FALSE(w.window.isWindowModified());
+    doc.undoStack()->redo();
+    EXPECT_EQ(doc.parameters().getInt("lpv.propagationSteps"), 16);
+    EXPECT_EQ(steps->value(), 16);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("edited.lpvproj");
+    ASSERT_TRUE(w.window.saveTo(path, false));
+    EXPECT_FALSE(w.window.isWindowModified());
+    const lpv::scene::Project saved = doc.project();
+    MainWindow reopened;
+    ASSERT_TRUE(reopened.openProject(path, false));
+    EXPECT_EQ(reopened.document()->project(), saved);
+    EXPECT_EQ(reopened.document()->parameters().getInt("lpv.propagationSteps"), 16);
+}
+
+TEST(EditorGui, PresetsSaveApplyAndSplitTheView) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    doc.setParameter("lpv.intensity", 0.0);
+    doc.savePreset("no LPV");
+    doc.setParameter("lpv.intensity", 2.0);
+    doc.savePreset("bright LPV");
+    ASSERT_EQ(doc.project().presets.size(), 2u);
+    doc.applyPreset(0);
+    EXPECT_FLOAT_EQ(doc.parameters().getFloat("lpv.intensity"), 0.0f);
+    doc.undoStack()->undo();
+    EXPECT_FLOAT_EQ(doc.parameters().getFloat("lpv.intensity"), 2.0f);
+
+    // A/B: exposure -6 EV on the left half, +3 EV on the right: the right half is brighter.
+    doc.setParameter("output.exposure", -6.0);
+    doc.savePreset("dark");
+    doc.setParameter("output.exposure", 3.0);
+    doc.savePreset("bright");
+    w.window.setSplit(2, 3);
+    EXPECT_TRUE(w.window.viewport()->splitActive());
+    QTest::qWait(100);
+    const QImage frame = w.window.viewport()->grabFramebuffer();
+    QImage left = frame.copy(0, 0, frame.width() / 2, frame.height());
+    QImage right = frame.copy(frame.width() / 2, 0, frame.width() - frame.width() / 2, frame.height());
+    EXPECT_GT(litFraction(right), litFraction(left) + 0.2);
+    EXPECT_LT(litFraction(left), 0.1);
+    w.window.setSplit(-2, -2);
+    EXPECT_FALSE(w.window.viewport()->splitActive());
+
+    // Presets travel with the project.
+    QTemporaryDir dir;
+    ASSERT_TRUE(w.window.saveTo(dir.filePath("presets.lpvproj"), false));
+    auto reopened = lpv::scene::loadProject(dir.filePath("presets.lpvproj").toStdString());
+    ASSERT_TRUE(reopened);
+    EXPECT_EQ(reopened->presets, doc.project().presets);
+}
+
+TEST(EditorGui, SliderDragMergesIntoOneUndoStep) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    const lpv::scene::ParameterSet before = doc.parameters();
+    for (double v : {1.1, 1.2, 1.3, 1.4})
+        doc.setParameter("output.exposure", v);
+    EXPECT_EQ(doc.undoStack()->count(), 1);
+    EXPECT_DOUBLE_EQ(doc.parameters().getFloat("output.exposure"), 1.4f);
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.parameters(), before);
+}
+
+TEST(EditorGui, ClickSelectsTheObjectUnderTheMouseAndOutlinerFollows) {
+    OpenWindow w;
+    Viewport* vp = w.window.viewport();
+    // Find a pixel whose ray hits an object, the way the viewport computes it.
+    const lpv::scene::Ray ray = lpv::scene::cameraRay(vp->viewCamera(), vp->width() / 2.0f + 0.5f,
+                                                      vp->height() / 2.0f + 0.5f, vp->width(), vp->height());
+    const auto expected = lpv::scene::pickObject(w.doc().scene(), ray.origin, ray.direction);
+    ASSERT_TRUE(expected);
+    QTest::mouseClick(vp, Qt::LeftButton, {}, QPoint(vp->width() / 2, vp->height() / 2));
+    EXPECT_EQ(w.doc().selection(), (Selection{Selection::Kind::Object, expected->object}));
+    const auto selected = w.window.outliner()->tree()->selectedItems();
+    ASSERT_EQ(selected.size(), 1);
+    EXPECT_EQ(selected.front()->text(0).toStdString(), w.doc().scene().objects[std::size_t(expected->object)].name);
+}
+
+TEST(EditorGui, GizmoDragMovesTheSelectionInOneUndoStep) {
+    OpenWindow w;
+    Viewport* vp = w.window.viewport();
+    w.doc().select({Selection::Kind::Object, 0});
+    QTest::qWait(50);
+    const auto before = w.doc().scene().objects[0].transform;
+    // The gizmo's x handle starts at the pivot; drag along it.
+    const glm::mat4 world = w.doc().scene().worldMatrix(0);
+    TransformGizmo gizmo;
+    gizmo.place(glm::vec3(world[3]), vp->viewCamera(), vp->width(), vp->height());
+    ASSERT_TRUE(gizmo.visible());
+    const glm::vec2 grab = glm::mix(gizmo.pivotScreen(), gizmo.handleEnd(0), 0.7f);
+    const glm::vec2 dir = glm::normalize(gizmo.handleEnd(0) - gizmo.pivotScreen());
+    const QPoint start(int(grab.x), int(grab.y));
+    QTest::mousePress(vp, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 5; ++i)
+        QTest::mouseMove(vp, start + QPoint(int(dir.x * 12.0f * float(i)), int(dir.y * 12.0f * float(i))));
+    QTest::mouseRelease(vp, Qt::LeftButton, {}, start + QPoint(int(dir.x * 60.0f), int(dir.y * 60.0f)));
+    const auto after = w.doc().scene().objects[0].transform;
+    EXPECT_GT(after.translation.x, before.translation.x + 1e-3f);
+    EXPECT_FLOAT_EQ(after.translation.y, before.translation.y);
+    EXPECT_EQ(w.doc().undoStack()->count(), 1);
+    w.doc().undoStack()->undo();
+    EXPECT_EQ(w.doc().scene().objects[0].transform, before);
+}
+
+TEST(EditorGui, CreateDeleteDuplicateAreUndoable) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    const auto original = doc.project();
+    w.window.createPrimitive("sphere");
+    ASSERT_EQ(doc.scene().objects.size(), original.scene.objects.size() + 1);
+    EXPECT_EQ(doc.scene().meshes.size(), original.scene.meshes.size() + 1);
+    EXPECT_TRUE(doc.selection().isObject());
+    w.window.outliner()->duplicateSelected();
+    EXPECT_EQ(doc.scene().objects.size(), original.scene.objects.size() + 2);
+    w.window.outliner()->deleteSelected();
+    EXPECT_EQ(doc.scene().objects.size(), original.scene.objects.size() + 1);
+    w.window.createLight(lpv::scene::LightType::Spot);
+    EXPECT_EQ(doc.scene().lights.size(), original.scene.lights.size() + 1);
+    QTest::qWait(50); // the viewport draws the new scene
+    EXPECT_TRUE(w.window.viewport()->lastError().isEmpty());
+    while (doc.undoStack()->canUndo())
+        doc.undoStack()->undo();
+    EXPECT_EQ(doc.project(), original);
+    while (doc.undoStack()->canRedo())
+        doc.undoStack()->redo();
+    EXPECT_EQ(doc.scene().objects.size(), original.scene.objects.size() + 1);
+}
+
+TEST(EditorGui, Import4dsThroughTheImportActionIsOneUndoStep) {
+    OpenWindow w;
+    w.window.showProject(lpv::scene::Project{"untitled", {}, {}}, {}); // File > New
+    Document& doc = w.doc();
+    const std::size_t objects = doc.scene().objects.size();
+    w.window.importFile(QString(lpv::test::kSharedScenesDir) + "/4ds/white_box.4ds", false);
+    EXPECT_TRUE(w.window.importRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 60000);
+    EXPECT_GT(doc.scene().objects.size(), objects) << w.window.statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("Imported")) <<
+        w.window.statusBar()->currentMessage().toStdString();
+    QTRY_VERIFY_WITH_TIMEOUT(!w.window.viewport()->texturesPending(), 60000);
+    QTest::qWait(100);
+    EXPECT_GT(litFraction(w.window.viewport()->grabFramebuffer()), 0.05);
+    EXPECT_EQ(doc.undoStack()->text(doc.undoStack()->index() - 1), "Import white_box.4ds");
+    EXPECT_EQ(doc.scene().lights.size(), 1u) << "an unlit import gets a sun, as with lpv import";
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene().objects.size(), objects);
+    EXPECT_TRUE(doc.scene().lights.empty());
+}
+
+TEST(EditorGui, FailedImportShowsTheImportersErrorAndChangesNothing) {
+    OpenWindow w;
+    const auto before = w.doc().project();
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("broken.4ds");
+    QFile f(bad);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("4DS\0garbage", 11);
+    f.close();
+    w.window.importFile(bad, false);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 30000);
+    EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("broken.4ds"))
+        << w.window.statusBar()->currentMessage().toStdString();
+    EXPECT_EQ(w.doc().project(), before);
+    EXPECT_EQ(w.doc().undoStack()->count(), 0);
+}
+
+TEST(EditorGui, AutosaveIsOfferedBackAfterACrash) {
+    QTemporaryDir autosaveDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    {
+        MainWindow window;
+        ASSERT_TRUE(window.openProject(cornellPath(), false));
+        window.document()->setParameter("lpv.propagationSteps", 12);
+        window.autosave()->saveNow();
+        window.autosave()->waitForSave();
+        // No close: as if the editor crashed here.
+    }
+    const auto left = Autosave::leftBehind();
+    ASSERT_EQ(left.size(), 1u);
+    EXPECT_EQ(left[0].originalPath, QFileInfo(cornellPath()).absoluteFilePath());
+    auto recovered = lpv::scene::loadProject(left[0].autosaveFile.toStdString());
+    ASSERT_TRUE(recovered);
+    EXPECT_EQ(recovered->parameters.getInt("lpv.propagationSteps"), 12);
+    Autosave::remove(left[0]);
+    EXPECT_TRUE(Autosave::leftBehind().empty());
 }
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
+    QApplication::setOrganizationName("LPV Studio tests"); // keep the user's QSettings out of it
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -109,6 +110,10 @@ Project goodProject() {
     p.scene.sky.intensity = 0.75f;
     const ParameterInfo& param = someIntParameter();
     EXPECT_TRUE(p.parameters.set(param.key, nonDefaultValue(param)));
+    ParameterPreset bright{"bright", {}};
+    EXPECT_TRUE(bright.parameters.set("lpv.intensity", 2.5));
+    EXPECT_TRUE(bright.parameters.set("output.tonemapper", std::string("reinhard")));
+    p.presets = {bright, ParameterPreset{"flat", {}}};
     return p;
 }
 
@@ -318,7 +323,8 @@ TEST_F(ProjectBadInput, FieldOfViewBeyondPiIsOutOfRange) {
 }
 
 TEST_F(ProjectBadInput, UnknownParameterKeyIsNamed) {
-    editBad("\"parameters\": {", "\"parameters\": {\n    \"lpv.noSuchParameter\": 3,");
+    // The top-level object (the presets' sit deeper, see below).
+    editBad("\n  \"parameters\": {", "\n  \"parameters\": {\n    \"lpv.noSuchParameter\": 3,");
     const Error e = loadFails(bad_);
     EXPECT_EQ(e.code, ErrorCode::UnknownParameter);
     EXPECT_EQ(e.file, bad_.string());
@@ -336,6 +342,109 @@ TEST_F(ProjectBadInput, ParameterOutOfRangeIsOutOfRange) {
     EXPECT_EQ(e.file, bad_.string());
     EXPECT_TRUE(contains(e.location, p.key)) << e.location;
     EXPECT_TRUE(contains(e.message, std::to_string(tooLarge))) << e.message;
+}
+
+// --- presets: validated like "parameters", located inside the preset ---
+
+TEST_F(ProjectBadInput, UnknownKeyInAPresetIsNamedWithThePreset) {
+    editBad("\"lpv.intensity\": 2.5", "\"lpv.intensity\": 2.5,\n        \"lpv.noSuchParameter\": 3");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::UnknownParameter);
+    EXPECT_EQ(e.file, bad_.string());
+    EXPECT_EQ(e.location, "presets[0].parameters.lpv.noSuchParameter");
+    EXPECT_TRUE(contains(e.message, "lpv.noSuchParameter")) << e.message;
+}
+
+TEST_F(ProjectBadInput, PresetParameterOfTheWrongTypeIsTypeMismatch) {
+    editBad("\"lpv.intensity\": 2.5", "\"lpv.intensity\": \"bright\"");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "presets[0].parameters.lpv.intensity");
+    EXPECT_TRUE(contains(e.message, "expected float")) << e.message;
+}
+
+TEST_F(ProjectBadInput, PresetParameterOutOfRangeIsOutOfRange) {
+    editBad("\"lpv.intensity\": 2.5", "\"lpv.intensity\": 1000.5");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::OutOfRange);
+    EXPECT_EQ(e.location, "presets[0].parameters.lpv.intensity");
+    EXPECT_TRUE(contains(e.message, "1000.5 is outside [0, 100]")) << e.message;
+}
+
+TEST_F(ProjectBadInput, UnknownEnumValueInAPresetIsOutOfRange) {
+    editBad("\"reinhard\"", "\"filmic\"");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::OutOfRange);
+    EXPECT_EQ(e.location, "presets[0].parameters.output.tonemapper");
+    EXPECT_TRUE(contains(e.message, "'filmic' is not one of: aces, reinhard")) << e.message;
+}
+
+// JSON has no NaN; the nearest a file gets is a number too large for a double.
+TEST_F(ProjectBadInput, HugePresetValueIsNonFiniteAtItsOffset) {
+    editBad("\"lpv.intensity\": 2.5", "\"lpv.intensity\": -1e999");
+    const std::size_t offset = readFile(bad_).find("-1e999");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::NonFinite);
+    EXPECT_EQ(e.location, "byte offset " + std::to_string(offset));
+}
+
+TEST_F(ProjectBadInput, NaNCannotEnterAPreset) {
+    ParameterPreset preset;
+    const auto set = preset.parameters.set("lpv.intensity", std::numeric_limits<double>::quiet_NaN());
+    ASSERT_FALSE(set);
+    EXPECT_EQ(set.error().code, ErrorCode::NonFinite);
+    EXPECT_TRUE(preset.parameters.overrides().empty());
+}
+
+TEST_F(ProjectBadInput, PresetWithoutANameIsMissingField) {
+    editBad("\"name\": \"flat\",", "");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::MissingField);
+    EXPECT_EQ(e.location, "presets[1].name");
+}
+
+TEST_F(ProjectBadInput, PresetWithAnEmptyNameIsInvalidValue) {
+    editBad("\"name\": \"flat\"", "\"name\": \"\"");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::InvalidValue);
+    EXPECT_EQ(e.location, "presets[1].name");
+    EXPECT_TRUE(contains(e.message, "needs a name")) << e.message;
+}
+
+TEST_F(ProjectBadInput, TwoPresetsWithOneNameIsInvalidValue) {
+    editBad("\"name\": \"flat\"", "\"name\": \"bright\"");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::InvalidValue);
+    EXPECT_EQ(e.location, "presets[1].name");
+    EXPECT_TRUE(contains(e.message, "\"bright\" is already used by presets[0]")) << e.message;
+}
+
+TEST_F(ProjectBadInput, PresetsThatAreNotAnArrayIsTypeMismatch) {
+    editBad("\"presets\": [", "\"presets\": 7, \"unused\": [");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "presets");
+}
+
+TEST_F(ProjectBadInput, PresetParametersThatAreNotAnObjectIsTypeMismatch) {
+    editBad("\"name\": \"flat\",\n      \"parameters\": {}", "\"name\": \"flat\",\n      \"parameters\": [1]");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "presets[1].parameters");
+    EXPECT_TRUE(contains(e.message, "expected an object")) << e.message;
+}
+
+TEST_F(ProjectBadInput, PresetsWrittenBeforePresetsExistedLoad) {
+    // Cut the "presets" field (the last one) out of the file.
+    std::string text = readFile(bad_);
+    const std::size_t at = text.find(",\n  \"presets\": [");
+    ASSERT_NE(at, std::string::npos) << text;
+    writeFile(bad_, text.substr(0, at) + "\n}\n");
+    const auto loaded = loadProject(bad_);
+    ASSERT_TRUE(loaded) << loaded.error().describe();
+    Project expected = goodProject();
+    expected.presets.clear();
+    EXPECT_EQ(*loaded, expected);
 }
 
 TEST_F(ProjectBadInput, ObjectMeshIndexOutOfRange) {

@@ -163,6 +163,13 @@ Project richProject() {
     s.sky.intensity = 0.75f;
 
     setOneParameterOfEachType(p.parameters);
+
+    ParameterPreset bright{"bright \xe2\x98\x80", {}}; // UTF-8 sun
+    setOneParameterOfEachType(bright.parameters);
+    EXPECT_TRUE(bright.parameters.set("lpv.intensity", 2.5));
+    // A preset may pin a value equal to the default; it must stay pinned.
+    EXPECT_TRUE(bright.parameters.set("lpv.propagationSteps", 8));
+    p.presets = {bright, ParameterPreset{"defaults", {}}};
     return p;
 }
 
@@ -181,6 +188,11 @@ TEST_F(ProjectRoundTrip, SaveThenLoadGivesAnEqualProject) {
     EXPECT_EQ(loaded->scene.objects[1].parent, 0);
     EXPECT_EQ(loaded->scene.lights[2].outerConeAngle, std::numbers::pi_v<float> / 2);
     EXPECT_EQ(loaded->parameters.overrides(), original.parameters.overrides());
+    ASSERT_EQ(loaded->presets.size(), 2u);
+    EXPECT_EQ(loaded->presets[0].name, original.presets[0].name);
+    EXPECT_EQ(loaded->presets[0].parameters.overrides(), original.presets[0].parameters.overrides());
+    EXPECT_TRUE(loaded->presets[0].parameters.isSet("lpv.propagationSteps"));
+    EXPECT_TRUE(loaded->presets[1].parameters.overrides().empty());
 }
 
 TEST_F(ProjectRoundTrip, TheFileLooksAsDocumented) {
@@ -191,6 +203,9 @@ TEST_F(ProjectRoundTrip, TheFileLooksAsDocumented) {
     // Floats are written as the shortest decimal that reads back exactly.
     EXPECT_NE(text.find("\"opacity\": 0.3,"), std::string::npos);
     EXPECT_NE(text.find("\"rotation\": [\n"), std::string::npos);
+    // Presets come last, after the parameters they are alternatives to.
+    EXPECT_LT(text.find("\"parameters\": {"), text.find("\"presets\": ["));
+    EXPECT_NE(text.find("\"name\": \"defaults\",\n      \"parameters\": {}"), std::string::npos) << text;
     EXPECT_EQ(text.back(), '\n');
     const std::set<std::string> files = listFiles(dir_);
     EXPECT_EQ(files.size(), 5u) << "the project file and four mesh assets";
@@ -250,6 +265,11 @@ TEST_F(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
         {"camera path", [](Project& p) { p.scene.cameraPaths.pop_back(); }},
         {"sky", [](Project& p) { p.scene.sky.intensity = 0.0f; }},
         {"parameter", [](Project& p) { p.parameters = ParameterSet{}; }},
+        {"preset name", [](Project& p) { p.presets[1].name = "other"; }},
+        {"preset parameter", [](Project& p) { ASSERT_TRUE(p.presets[0].parameters.set("lpv.intensity", 2.0)); }},
+        {"preset pinned to its default", [](Project& p) { p.presets[0].parameters.reset("lpv.propagationSteps"); }},
+        {"preset order", [](Project& p) { std::swap(p.presets[0], p.presets[1]); }},
+        {"preset removed", [](Project& p) { p.presets.pop_back(); }},
     };
     for (const auto& [what, change] : changes) {
         Project changed = base;
@@ -309,6 +329,20 @@ TEST_F(ProjectRoundTrip, AnEmptyProjectRoundTrips) {
     EXPECT_EQ(listFiles(dir_), std::set<std::string>{"empty.lpvproj"});
 }
 
+// Presets were added to version 1 after it was published (1.1): a file
+// without them must load, and a project without presets is written without
+// the field, byte for byte as before.
+TEST_F(ProjectRoundTrip, AProjectWithoutPresetsHasNoPresetsField) {
+    Project p = richProject();
+    p.presets.clear();
+    ASSERT_TRUE(saveProject(p, dir_ / "old.lpvproj"));
+    EXPECT_EQ(readFile(dir_ / "old.lpvproj").find("presets"), std::string::npos);
+    const auto loaded = loadProject(dir_ / "old.lpvproj");
+    ASSERT_TRUE(loaded) << loaded.error().describe();
+    EXPECT_TRUE(loaded->presets.empty());
+    EXPECT_EQ(*loaded, p);
+}
+
 TEST_F(ProjectRoundTrip, TheCornellBoxRoundTrips) {
     const Project box = makeCornellBoxProject();
     const auto saved = saveProject(box, dir_ / "cornell.lpvproj");
@@ -345,6 +379,20 @@ TEST_F(ProjectRoundTrip, SaveRejectsAnInvalidProjectAndWritesNothing) {
     ASSERT_FALSE(saved);
     EXPECT_EQ(saved.error().code, ErrorCode::InvalidValue);
     EXPECT_NE(saved.error().message.find("UTF-8"), std::string::npos) << saved.error().message;
+
+    p = richProject();
+    p.presets[1].name = p.presets[0].name;
+    saved = saveProject(p, dir_ / "bad.lpvproj");
+    ASSERT_FALSE(saved);
+    EXPECT_EQ(saved.error().code, ErrorCode::InvalidValue);
+    EXPECT_EQ(saved.error().location, "presets[1].name");
+
+    p = richProject();
+    p.presets[0].name.clear();
+    saved = saveProject(p, dir_ / "bad.lpvproj");
+    ASSERT_FALSE(saved);
+    EXPECT_EQ(saved.error().code, ErrorCode::InvalidValue);
+    EXPECT_EQ(saved.error().location, "presets[0].name");
 
     EXPECT_TRUE(fs::is_empty(dir_)) << "nothing was written";
 }

@@ -42,12 +42,21 @@ public:
     // again after the scene changes.
     void setScene(const scene::Scene& scene, const scene::TextureImages& textures = {});
 
+    // Cheaper updates after edits that keep the meshes: objects moved, hid
+    // or were renamed (no geometry upload), or materials changed (materials
+    // and textures re-uploaded, geometry kept). Both need setScene first.
+    void updateObjects(const scene::Scene& scene);
+    void updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures = {});
+
     // Renders one frame into the internal HDR and display targets.
     Expected<void> render(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera& camera,
                           int width, int height);
 
     // Copies the last display image into `framebuffer` (e.g. a QOpenGLWidget's).
     void blitTo(GLuint framebuffer, int width, int height) const;
+    // Copies the columns/rows [x0, x1) x [y0, y1) of the last display image to
+    // the same place in `framebuffer` (the A/B split view's right half).
+    void blitRegionTo(GLuint framebuffer, int x0, int y0, int x1, int y1) const;
 
     // Read-backs for tests and PNG output: rows top to bottom, RGBA.
     std::vector<float> readHdr() const;

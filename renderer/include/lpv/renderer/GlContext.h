@@ -5,6 +5,7 @@
 #include "lpv/scene/Error.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lpv::renderer {
@@ -39,6 +40,15 @@ private:
 
 // Vendor/renderer/version strings of the current context.
 GlInfo queryCurrentGlInfo();
+
+// GPU memory as the driver reports it (GL_NVX_gpu_memory_info on NVIDIA,
+// GL_ATI_meminfo on AMD); nothing where the driver does not say (Mesa
+// llvmpipe), so callers never show a guessed figure.
+struct GpuMemoryInfo {
+    double totalMiB = 0.0; // 0 when only the free amount is known (ATI)
+    double freeMiB = 0.0;
+};
+std::optional<GpuMemoryInfo> queryGpuMemory();
 
 // Routes GL debug messages (errors and performance warnings) to stderr.
 // On in debug builds, or when LPV_GL_DEBUG=1; needs a debug context to see everything.

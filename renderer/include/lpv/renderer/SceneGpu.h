@@ -29,6 +29,11 @@ class SceneGpu {
 public:
     explicit SceneGpu(const scene::Scene& scene);
 
+    // Rebuilds the draw list (world matrices, bounds, visibility, buckets)
+    // for a scene whose meshes are unchanged: an object moved, hid or
+    // changed material, no vertex re-upload.
+    void updateDraws(const scene::Scene& scene);
+
     void bindGeometry() const;
     // Draws `items` with `program` (sets uModel and uNormalMatrix per item);
     // `bindMaterial` runs whenever the material changes from one item to the next.
@@ -38,6 +43,11 @@ public:
     std::size_t vertexBytes() const { return vertexBytes_; }
 
 private:
+    struct MeshRange {
+        GLint baseVertex;
+        std::size_t firstIndex;
+    };
+    std::vector<MeshRange> ranges_; // per scene mesh, into the shared buffers
     VertexArray vao_;
     Buffer vertices_;
     Buffer indices_;

@@ -7,16 +7,29 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace lpv::scene {
 
 inline constexpr const char* kProjectFormatName = "lpvstudio-project";
 inline constexpr int kProjectFormatVersion = 1;
 
+// A named set of parameter values kept in the project, so settings can be
+// compared (the editor's preset bar and A/B view) without losing the current
+// ones. Like Project::parameters it holds overrides only; an absent key reads
+// as its registry default.
+struct ParameterPreset {
+    std::string name; // non-empty and unique within a project
+    ParameterSet parameters;
+
+    bool operator==(const ParameterPreset&) const = default;
+};
+
 struct Project {
     std::string name;
     Scene scene;
     ParameterSet parameters;
+    std::vector<ParameterPreset> presets; // in the order the user made them
 
     bool operator==(const Project&) const;
 };

@@ -1,0 +1,93 @@
+#include "CameraController.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lpv::editor {
+namespace {
+
+// Pitch stops this many degrees short of straight up/down, so lookAt's up vector stays valid.
+constexpr float kPitchMarginDegrees = 1.0f;
+
+glm::vec3 rotate(const glm::vec3& v, float degrees, const glm::vec3& axis) {
+    return glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), axis) * glm::vec4(v, 0.0f));
+}
+
+// Rotates `offset` (a direction from a pivot) by yaw about world up and pitch
+// about its horizontal right axis, clamping the pitch short of the poles.
+glm::vec3 turn(const glm::vec3& offset, float yawDegrees, float pitchDegrees, const glm::vec3& up) {
+    glm::vec3 v = rotate(offset, yawDegrees, up);
+    const float length = glm::length(v);
+    const float current = glm::degrees(std::asin(std::clamp(glm::dot(v / length, up), -1.0f, 1.0f)));
+    const float limit = 90.0f - kPitchMarginDegrees;
+    const float target = std::clamp(current + pitchDegrees, -limit, limit);
+    const glm::vec3 right = glm::normalize(glm::cross(v, up));
+    return rotate(v, target - current, right);
+}
+
+} // namespace
+
+void CameraController::setCamera(const scene::Camera& camera) { camera_ = camera; }
+
+void CameraController::setSceneBounds(const scene::Bounds& bounds) {
+    const float size = bounds.empty() ? 1.0f : glm::length(bounds.size());
+    flySpeed_ = std::max(size / 5.0f, 0.01f);
+}
+
+glm::vec3 CameraController::forward() const { return glm::normalize(camera_.target - camera_.position); }
+
+void CameraController::orbit(float dxPixels, float dyPixels) {
+    // Dragging right turns the scene right: the eye moves left around the target.
+    const glm::vec3 offset = camera_.position - camera_.target;
+    camera_.position = camera_.target +
+                       turn(offset, -dxPixels * kDegreesPerPixel, dyPixels * kDegreesPerPixel, camera_.up);
+}
+
+void CameraController::pan(float dxPixels, float dyPixels, int viewportHeight) {
+    const float distance = glm::length(camera_.target - camera_.position);
+    const float worldPerPixel = 2.0f * distance * std::tan(0.5f * camera_.fovY) / float(std::max(viewportHeight, 1));
+    const glm::vec3 f = forward();
+    const glm::vec3 right = glm::normalize(glm::cross(f, camera_.up));
+    const glm::vec3 up = glm::cross(right, f);
+    // The scene follows the mouse: dragging right moves the camera left.
+    const glm::vec3 move = worldPerPixel * (-dxPixels * right + dyPixels * up);
+    camera_.position += move;
+    camera_.target += move;
+}
+
+void CameraController::dolly(float steps) {
+    const glm::vec3 offset = camera_.position - camera_.target;
+    const float factor = std::pow(0.85f, steps);
+    const float distance = std::max(glm::length(offset) * factor, camera_.nearPlane * 2.0f);
+    camera_.position = camera_.target + glm::normalize(offset) * distance;
+}
+
+void CameraController::look(float dxPixels, float dyPixels) {
+    const glm::vec3 offset = camera_.target - camera_.position;
+    camera_.target = camera_.position +
+                     turn(offset, -dxPixels * kDegreesPerPixel, -dyPixels * kDegreesPerPixel, camera_.up);
+}
+
+void CameraController::fly(const glm::vec3& axes, float seconds, bool fast) {
+    const glm::vec3 f = forward();
+    const glm::vec3 right = glm::normalize(glm::cross(f, camera_.up));
+    const glm::vec3 move = (axes.x * right + axes.y * camera_.up + axes.z * f) * flySpeed_ * seconds *
+                           (fast ? 4.0f : 1.0f);
+    camera_.position += move;
+    camera_.target += move;
+}
+
+void CameraController::frame(const scene::Bounds& box) {
+    if (box.empty())
+        return;
+    const float radius = std::max(0.5f * glm::length(box.size()), 1e-3f);
+    const float distance = radius / std::sin(0.5f * camera_.fovY);
+    const glm::vec3 f = forward();
+    camera_.target = box.center();
+    camera_.position = camera_.target - f * distance;
+    camera_.farPlane = std::max(camera_.farPlane, distance + 4.0f * radius);
+}
+
+} // namespace lpv::editor

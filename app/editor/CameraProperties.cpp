@@ -1,0 +1,114 @@
+#include "CameraProperties.h"
+
+#include "Document.h"
+#include "PropertyWidgets.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLineEdit>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace lpv::editor {
+
+namespace {
+constexpr double kMinNear = 1.0e-4;
+constexpr double kMaxFar = 1.0e7;
+constexpr float kPlaneGap = 0.999f; // the largest near/far ratio the fields allow
+} // namespace
+
+CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* group = new QGroupBox(tr("Camera"), this);
+    auto* form = new QFormLayout(group);
+    layout->addWidget(group);
+
+    name_ = new QLineEdit(group);
+    name_->setObjectName("cameraName");
+    position_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    position_->setObjectName("cameraPosition");
+    target_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    target_->setObjectName("cameraTarget");
+    fov_ = makeSpinBox(1.0, 179.0, 2, 1.0, QStringLiteral("°"), group);
+    fov_->setObjectName("cameraFov");
+    fov_->setToolTip(tr("Vertical field of view"));
+    near_ = makeSpinBox(kMinNear, kMaxFar, 4, 0.01, QStringLiteral(" m"), group);
+    near_->setObjectName("cameraNear");
+    far_ = makeSpinBox(kMinNear, kMaxFar, 2, 10.0, QStringLiteral(" m"), group);
+    far_->setObjectName("cameraFar");
+    form->addRow(tr("Name"), name_);
+    form->addRow(tr("Position"), position_);
+    form->addRow(tr("Target"), target_);
+    form->addRow(tr("Field of view"), fov_);
+    form->addRow(tr("Near plane"), near_);
+    form->addRow(tr("Far plane"), far_);
+
+    connect(name_, &QLineEdit::editingFinished, this, [this] {
+        const std::string name = name_->text().toStdString();
+        edit(tr("Rename camera"), [&](scene::Camera& c) { c.name = name; });
+    });
+    connect(position_, &Vec3Edit::edited, this, [this](int axis, double v) {
+        edit(tr("Edit camera position"), [&](scene::Camera& c) { c.position[axis] = float(v); });
+    });
+    connect(target_, &Vec3Edit::edited, this, [this](int axis, double v) {
+        edit(tr("Edit camera target"), [&](scene::Camera& c) { c.target[axis] = float(v); });
+    });
+    connect(fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit camera field of view"), [&](scene::Camera& c) { c.fovY = float(glm::radians(v)); });
+    });
+    connect(near_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        // Equal planes would make a singular projection: the near one stays strictly in front.
+        edit(tr("Edit camera near plane"),
+             [&](scene::Camera& c) { c.nearPlane = std::min(float(v), c.farPlane * kPlaneGap); });
+    });
+    connect(far_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit camera far plane"),
+             [&](scene::Camera& c) { c.farPlane = std::max(float(v), c.nearPlane / kPlaneGap); });
+    });
+
+    setCameraIndex(-1);
+}
+
+void CameraProperties::setCameraIndex(int index) {
+    index_ = index;
+    refresh();
+}
+
+void CameraProperties::edit(const QString& text, const std::function<void(scene::Camera&)>& change) {
+    const auto& cameras = doc_->scene().cameras;
+    if (index_ < 0 || std::size_t(index_) >= cameras.size())
+        return;
+    scene::Camera camera = cameras[std::size_t(index_)];
+    change(camera);
+    doc_->setCamera(index_, camera, text);
+}
+
+void CameraProperties::refresh() {
+    const auto& cameras = doc_->scene().cameras;
+    const bool valid = index_ >= 0 && std::size_t(index_) < cameras.size();
+    setEnabled(valid);
+    if (!valid) {
+        showText(name_, {});
+        return;
+    }
+    const scene::Camera& c = cameras[std::size_t(index_)];
+    showText(name_, QString::fromStdString(c.name));
+    position_->showValue(glm::dvec3(c.position));
+    target_->showValue(glm::dvec3(c.target));
+    showValue(fov_, glm::degrees(double(c.fovY)));
+    // The near plane stays in front of the far one: each bounds the other.
+    const QSignalBlocker blockNear(near_);
+    const QSignalBlocker blockFar(far_);
+    near_->setRange(kMinNear, kMaxFar);
+    far_->setRange(kMinNear, kMaxFar);
+    showValue(near_, c.nearPlane);
+    showValue(far_, c.farPlane);
+    near_->setMaximum(std::max(far_->value(), near_->value()));
+    far_->setMinimum(std::min(near_->value(), far_->value()));
+}
+
+} // namespace lpv::editor

@@ -1,0 +1,199 @@
+#include "LightProperties.h"
+
+#include "Document.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace lpv::editor {
+
+LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* group = new QGroupBox(tr("Light"), this);
+    form_ = new QFormLayout(group);
+    layout->addWidget(group);
+
+    name_ = new QLineEdit(group);
+    name_->setObjectName("lightName");
+    type_ = new QComboBox(group);
+    type_->setObjectName("lightType");
+    type_->addItem(tr("Directional (sun)"), int(scene::LightType::Directional));
+    type_->addItem(tr("Point"), int(scene::LightType::Point));
+    type_->addItem(tr("Spot"), int(scene::LightType::Spot));
+    color_ = new ColorButton(group);
+    color_->setObjectName("lightColor");
+    intensity_ = makeSpinBox(0.0, 1.0e6, 3, 0.1, {}, group);
+    intensity_->setObjectName("lightIntensity");
+
+    direction_ = new QWidget(group);
+    auto* dirRow = new QHBoxLayout(direction_);
+    dirRow->setContentsMargins(0, 0, 0, 0);
+    azimuth_ = makeSpinBox(-360.0, 360.0, 2, 5.0, QStringLiteral("°"), direction_);
+    azimuth_->setObjectName("lightAzimuth");
+    azimuth_->setPrefix(tr("az "));
+    elevation_ = makeSpinBox(-90.0, 90.0, 2, 5.0, QStringLiteral("°"), direction_);
+    elevation_->setObjectName("lightElevation");
+    elevation_->setPrefix(tr("el "));
+    dirRow->addWidget(azimuth_, 1);
+    dirRow->addWidget(elevation_, 1);
+    direction_->setToolTip(tr("Where the light comes from: azimuth from +Z towards +X, elevation above the "
+                              "horizon (90° = straight down from above)"));
+
+    position_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    position_->setObjectName("lightPosition");
+    range_ = makeSpinBox(0.0, 1.0e6, 3, 0.5, QStringLiteral(" m"), group);
+    range_->setObjectName("lightRange");
+    range_->setSpecialValueText(tr("unlimited"));
+    // Cone angles are half-angles from the axis, as in glTF; 90° is a hemisphere.
+    innerCone_ = makeSpinBox(0.0, 90.0, 2, 1.0, QStringLiteral("°"), group);
+    innerCone_->setObjectName("lightInnerCone");
+    innerCone_->setToolTip(tr("Full intensity inside this angle from the axis"));
+    outerCone_ = makeSpinBox(0.0, 90.0, 2, 1.0, QStringLiteral("°"), group);
+    outerCone_->setObjectName("lightOuterCone");
+    outerCone_->setToolTip(tr("No light outside this angle from the axis"));
+    castShadows_ = new QCheckBox(tr("Cast shadows"), group);
+    castShadows_->setObjectName("lightCastShadows");
+
+    form_->addRow(tr("Name"), name_);
+    form_->addRow(tr("Type"), type_);
+    form_->addRow(tr("Colour"), color_);
+    form_->addRow(tr("Intensity"), intensity_);
+    form_->addRow(tr("Direction"), direction_);
+    form_->addRow(tr("Position"), position_);
+    form_->addRow(tr("Range"), range_);
+    form_->addRow(tr("Inner cone"), innerCone_);
+    form_->addRow(tr("Outer cone"), outerCone_);
+    form_->addRow(QString(), castShadows_);
+
+    connect(name_, &QLineEdit::editingFinished, this, [this] {
+        const std::string name = name_->text().toStdString();
+        edit(tr("Rename light"), [&](scene::Light& l) { l.name = name; });
+    });
+    connect(type_, &QComboBox::currentIndexChanged, this, [this] {
+        const auto type = scene::LightType(type_->currentData().toInt());
+        edit(tr("Change light type"), [&](scene::Light& l) { l.type = type; });
+    });
+    connect(color_, &ColorButton::picked, this, &LightProperties::applyColor);
+    connect(intensity_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit light intensity"), [&](scene::Light& l) { l.intensity = float(v); });
+    });
+    connect(azimuth_, &QDoubleSpinBox::valueChanged, this, &LightProperties::editDirection);
+    connect(elevation_, &QDoubleSpinBox::valueChanged, this, &LightProperties::editDirection);
+    connect(position_, &Vec3Edit::edited, this, [this](int axis, double v) {
+        edit(tr("Edit light position"), [&](scene::Light& l) { l.position[axis] = float(v); });
+    });
+    connect(range_, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { edit(tr("Edit light range"), [&](scene::Light& l) { l.range = float(v); }); });
+    connect(innerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        // The boxes' ranges keep inner <= outer at their display precision; this keeps it exactly.
+        edit(tr("Edit spot inner cone"),
+             [&](scene::Light& l) { l.innerConeAngle = std::min(float(glm::radians(v)), l.outerConeAngle); });
+    });
+    connect(outerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit spot outer cone"),
+             [&](scene::Light& l) { l.outerConeAngle = std::max(float(glm::radians(v)), l.innerConeAngle); });
+    });
+    connect(castShadows_, &QCheckBox::toggled, this, [this](bool on) {
+        edit(tr("Toggle light shadows"), [&](scene::Light& l) { l.castShadows = on; });
+    });
+
+    setLightIndex(-1);
+}
+
+void LightProperties::setLightIndex(int index) {
+    if (index != index_)
+        anglesLight_ = -1;
+    index_ = index;
+    refresh();
+}
+
+void LightProperties::edit(const QString& text, const std::function<void(scene::Light&)>& change) {
+    const auto& lights = doc_->scene().lights;
+    if (index_ < 0 || std::size_t(index_) >= lights.size())
+        return;
+    scene::Light light = lights[std::size_t(index_)];
+    change(light);
+    doc_->setLight(index_, light, text);
+}
+
+void LightProperties::applyColor(const QColor& color) {
+    const glm::vec3 c = toVec3(color);
+    edit(tr("Edit light colour"), [&](scene::Light& l) { l.color = c; });
+}
+
+void LightProperties::editDirection() {
+    angles_ = {azimuth_->value(), elevation_->value()};
+    anglesDirection_ = directionFrom(angles_);
+    anglesLight_ = index_;
+    const glm::vec3 d = anglesDirection_;
+    edit(tr("Edit light direction"), [&](scene::Light& l) { l.direction = d; });
+}
+
+void LightProperties::refresh() {
+    const auto& lights = doc_->scene().lights;
+    const bool valid = index_ >= 0 && std::size_t(index_) < lights.size();
+    setEnabled(valid);
+    if (!valid) {
+        showText(name_, {});
+        return;
+    }
+    const scene::Light& l = lights[std::size_t(index_)];
+    showText(name_, QString::fromStdString(l.name));
+    {
+        const QSignalBlocker block(type_);
+        type_->setCurrentIndex(type_->findData(int(l.type)));
+    }
+    const bool directional = l.type == scene::LightType::Directional;
+    const bool spot = l.type == scene::LightType::Spot;
+    form_->setRowVisible(direction_, directional || spot);
+    form_->setRowVisible(position_, !directional);
+    form_->setRowVisible(range_, !directional);
+    form_->setRowVisible(innerCone_, spot);
+    form_->setRowVisible(outerCone_, spot);
+
+    color_->showColor(toQColor(l.color));
+    // Light.h: irradiance for a sun, radiant intensity for point and spot lights.
+    intensity_->setSuffix(directional ? tr(" W/m²") : tr(" W/sr"));
+    intensity_->setToolTip(directional ? tr("Irradiance on a surface facing the sun")
+                                       : tr("Radiant intensity (power per solid angle)"));
+    showValue(intensity_, l.intensity);
+
+    if (anglesLight_ != index_ || anglesDirection_ != l.direction) {
+        angles_ = azimuthElevationOf(l.direction);
+        anglesDirection_ = l.direction;
+        anglesLight_ = index_;
+    }
+    showValue(azimuth_, angles_.azimuth);
+    showValue(elevation_, angles_.elevation);
+    position_->showValue(glm::dvec3(l.position));
+    showValue(range_, l.range);
+    {
+        // Each cone bounds the other, so the inner one can never exceed the outer one.
+        const QSignalBlocker blockInner(innerCone_);
+        const QSignalBlocker blockOuter(outerCone_);
+        innerCone_->setRange(0.0, 90.0);
+        outerCone_->setRange(0.0, 90.0);
+        const double inner = glm::degrees(double(l.innerConeAngle));
+        const double outer = glm::degrees(double(l.outerConeAngle));
+        showValue(innerCone_, inner);
+        showValue(outerCone_, outer);
+        innerCone_->setMaximum(std::max(outerCone_->value(), innerCone_->value()));
+        outerCone_->setMinimum(std::min(innerCone_->value(), outerCone_->value()));
+    }
+    {
+        const QSignalBlocker block(castShadows_);
+        castShadows_->setChecked(l.castShadows);
+    }
+}
+
+} // namespace lpv::editor

@@ -1,0 +1,84 @@
+#pragma once
+// Small building blocks shared by the property panels: a three-component
+// number editor, a colour swatch button, and the angle conversions the panels
+// show instead of raw quaternions and vectors.
+#include <QColor>
+#include <QPushButton>
+#include <QWidget>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <array>
+
+class QDoubleSpinBox;
+class QLineEdit;
+
+namespace lpv::editor {
+
+// A spin box set up the way every property field wants it: emits only when a
+// value is committed (Enter, focus out, arrows, wheel), not on each keystroke,
+// so typing "12" makes one edit, not two.
+QDoubleSpinBox* makeSpinBox(double min, double max, int decimals, double step, const QString& suffix = {},
+                            QWidget* parent = nullptr);
+// Shows a model value without emitting an edit; leaves the box alone when it
+// already shows that value (so a refresh does not reset the cursor of a box
+// being edited).
+void showValue(QDoubleSpinBox* box, double value);
+void showText(QLineEdit* edit, const QString& text);
+
+// Three spin boxes in a row (x, y, z) for positions, rotations and scales.
+class Vec3Edit : public QWidget {
+    Q_OBJECT
+  public:
+    Vec3Edit(double min, double max, int decimals, double step, const QString& suffix = {},
+             QWidget* parent = nullptr);
+    QDoubleSpinBox* box(int axis) const { return boxes_[std::size_t(axis)]; }
+    void showValue(const glm::dvec3& v);
+    glm::dvec3 value() const;
+
+  signals:
+    // One component was committed by the user.
+    void edited(int axis, double value);
+
+  private:
+    std::array<QDoubleSpinBox*, 3> boxes_{};
+};
+
+// A button showing a colour swatch; a click opens QColorDialog. Colours are
+// the scene's linear floats clamped to 0..1 for display.
+class ColorButton : public QPushButton {
+    Q_OBJECT
+  public:
+    explicit ColorButton(QWidget* parent = nullptr);
+    QColor color() const { return color_; }
+    // Shows a colour without emitting `picked`.
+    void showColor(const QColor& color);
+
+  signals:
+    void picked(const QColor& color);
+
+  private:
+    void choose();
+    QColor color_;
+};
+
+QColor toQColor(const glm::vec3& c);
+glm::vec3 toVec3(const QColor& c);
+
+// Euler angles in degrees, applied about X, then Y, then Z (glm's
+// quat(eulerAngles) convention: q = qz * qy * qx).
+glm::dvec3 eulerDegrees(const glm::quat& q);
+glm::quat quatFromEulerDegrees(const glm::dvec3& degrees);
+
+// Where a light comes from, as a sun is described: elevation above the
+// horizon (XZ plane, +Y up) and azimuth measured from +Z towards +X, both in
+// degrees. `direction` is the way the light travels, i.e. the opposite.
+struct AzimuthElevation {
+    double azimuth = 0.0;
+    double elevation = 0.0;
+};
+AzimuthElevation azimuthElevationOf(const glm::vec3& direction);
+glm::vec3 directionFrom(const AzimuthElevation& angles);
+
+} // namespace lpv::editor

@@ -1,0 +1,47 @@
+#pragma once
+// "Simulate only what the scene calls for" (DESIGN.md): for each effect, the
+// decision whether its passes run, and the reason in words, from the scene's
+// contents and the parameter that can force it (auto/on/off). The editor's
+// Effects panel and `lpv render` show these decisions.
+#include "lpv/scene/Camera.h"
+#include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace lpv::renderer {
+
+struct EffectDecision {
+    std::string effect;    // display name, e.g. "Sky light injection"
+    std::string parameter; // the registry key that forces it, e.g. "effects.skyInjection"
+    std::string setting;   // that parameter's value: "auto", "on", "off" (or "true"/"false")
+    bool wanted = false;   // the decision: the scene calls for it (or the setting forces it)
+    bool implemented = true; // false: the pass does not exist yet, so it does not run whatever the decision
+    std::string reason;
+
+    bool runs() const { return wanted && implemented; }
+};
+
+// What the scene's geometry says, computed once per scene change (it casts rays).
+struct SceneTraits {
+    bool hasDirectionalLight = false;
+    bool hasTranslucentMaterial = false; // translucency > 0 on a material a visible object draws with
+    bool hasGlossyMaterial = false;      // glossiness > 0 likewise
+    // Share of vertical probe columns where the sky reaches the ground
+    // (0 = closed room, near 1 = open ground); see SceneAnalysis.cpp.
+    float openSkyFraction = 0.0f;
+    int skyProbes = 0;
+};
+
+// A share of open sky above which `auto` injects sky light.
+inline constexpr float kOpenSkyThreshold = 0.05f;
+
+SceneTraits analyseSceneTraits(const scene::Scene& scene);
+
+// The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
+std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
+                                          const scene::ParameterSet& params, const scene::Camera* camera,
+                                          float aspect = 16.0f / 9.0f);
+
+} // namespace lpv::renderer

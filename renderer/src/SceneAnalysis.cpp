@@ -1,0 +1,132 @@
+#include "lpv/renderer/SceneAnalysis.h"
+
+#include "lpv/scene/Picking.h"
+
+#include <cmath>
+#include <set>
+
+namespace lpv::renderer {
+namespace {
+
+// Probe rays per side of the grid over the scene's footprint.
+constexpr int kProbeGrid = 6;
+
+std::set<std::uint32_t> materialsInUse(const scene::Scene& s) {
+    std::set<std::uint32_t> used;
+    for (const scene::Object& o : s.objects)
+        if (o.visible && o.mesh >= 0 && std::size_t(o.mesh) < s.meshes.size())
+            for (const scene::Submesh& sub : s.meshes[std::size_t(o.mesh)].submeshes)
+                used.insert(sub.materialIndex);
+    return used;
+}
+
+// The sun is on screen when the direction towards it falls inside the view frustum.
+bool sunOnScreen(const scene::Camera& camera, const glm::vec3& towardSun, float aspect) {
+    const glm::vec4 clip = camera.projection(aspect) * glm::mat4(glm::mat3(camera.view())) * glm::vec4(towardSun, 1.0f);
+    if (clip.w <= 0.0f)
+        return false;
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f;
+}
+
+EffectDecision decide(std::string effect, std::string key, const scene::ParameterSet& params, bool sceneWants,
+                      const std::string& whyYes, const std::string& whyNo) {
+    EffectDecision d;
+    d.effect = std::move(effect);
+    d.parameter = std::move(key);
+    d.setting = params.getEnum(d.parameter);
+    if (d.setting == "on") {
+        d.wanted = true;
+        d.reason = "forced on by " + d.parameter + " (scene: " + (sceneWants ? whyYes : whyNo) + ")";
+    } else if (d.setting == "off") {
+        d.wanted = false;
+        d.reason = "forced off by " + d.parameter;
+    } else {
+        d.wanted = sceneWants;
+        d.reason = sceneWants ? whyYes : whyNo;
+    }
+    return d;
+}
+
+} // namespace
+
+SceneTraits analyseSceneTraits(const scene::Scene& s) {
+    SceneTraits t;
+    for (const scene::Light& l : s.lights)
+        t.hasDirectionalLight |= l.type == scene::LightType::Directional && l.intensity > 0.0f;
+    for (std::uint32_t m : materialsInUse(s)) {
+        if (m >= s.materials.size())
+            continue;
+        t.hasTranslucentMaterial |= s.materials[m].translucency > 0.0f;
+        t.hasGlossyMaterial |= s.materials[m].glossiness > 0.0f;
+    }
+    const scene::Bounds b = s.worldBounds();
+    if (b.empty())
+        return t;
+    // Per column of a grid over the inner part of the footprint (the outer
+    // margin is usually outside the walls), a ray straight down from above
+    // the scene: where the first surface it meets lies in the lowest quarter
+    // of the scene's height, the sky reaches the ground there (a courtyard);
+    // a roof or ceiling stops it high up.
+    int open = 0;
+    const float height = std::max(b.size().y, 1e-3f);
+    for (int i = 0; i < kProbeGrid; ++i)
+        for (int j = 0; j < kProbeGrid; ++j) {
+            const float u = 0.15f + 0.7f * (float(i) + 0.5f) / float(kProbeGrid);
+            const float v = 0.15f + 0.7f * (float(j) + 0.5f) / float(kProbeGrid);
+            const glm::vec3 origin{b.min.x + u * b.size().x, b.max.y + 0.01f * height, b.min.z + v * b.size().z};
+            const auto hit = scene::pickObject(s, origin, {0.0f, -1.0f, 0.0f});
+            if (hit && hit->position.y < b.min.y + 0.25f * height)
+                ++open;
+            ++t.skyProbes;
+        }
+    t.openSkyFraction = float(open) / float(t.skyProbes);
+    return t;
+}
+
+std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTraits& t, const scene::ParameterSet& params,
+                                          const scene::Camera* camera, float aspect) {
+    std::vector<EffectDecision> out;
+
+    EffectDecision lpv;
+    lpv.effect = "Light propagation volumes";
+    lpv.parameter = "lpv.intensity";
+    lpv.setting = scene::formatValue(params.get("lpv.intensity"));
+    lpv.wanted = t.hasDirectionalLight && params.getFloat("lpv.intensity") > 0.0f;
+    lpv.reason = !t.hasDirectionalLight ? "no directional light: nothing to inject"
+                 : lpv.wanted           ? "a directional light lights the scene: its RSM is injected"
+                                        : "lpv.intensity is 0";
+    out.push_back(lpv);
+
+    auto add = [&](EffectDecision d) {
+        // The thesis' extensions are issue #6; until a pass exists, say so rather than pretend it runs.
+        d.implemented = false;
+        if (d.wanted)
+            d.reason += "; the pass is not implemented yet (issue #6)";
+        out.push_back(std::move(d));
+    };
+    add(decide("Directed propagation", "lpv.directedPropagation", params, lpv.wanted,
+               "the LPV runs: keeps light from flowing back onto the surfaces that emitted it",
+               "the LPV does not run"));
+    const int percent = int(std::lround(100.0f * t.openSkyFraction));
+    const bool skyLit = s.sky.intensity > 0.0f;
+    add(decide("Sky light injection", "effects.skyInjection", params,
+               skyLit && t.openSkyFraction > kOpenSkyThreshold,
+               "open scene: " + std::to_string(percent) + "% of the upward probe rays reach the sky",
+               !skyLit ? "the sky's intensity is 0"
+                       : "closed scene: " + std::to_string(percent) + "% of the upward probe rays reach the sky"));
+    add(decide("Subsurface LPV", "effects.subsurface", params, t.hasTranslucentMaterial,
+               "a visible material is translucent", "no visible material is translucent"));
+    add(decide("Glossy LPV reflections", "effects.glossyReflections", params, t.hasGlossyMaterial,
+               "a visible material is glossy", "no visible material is glossy"));
+    const scene::Light* sun = nullptr;
+    for (const scene::Light& l : s.lights)
+        if (l.type == scene::LightType::Directional && !sun)
+            sun = &l;
+    const bool onScreen = sun && camera && sunOnScreen(*camera, -glm::normalize(sun->direction), aspect);
+    add(decide("Sun rays", "effects.sunRays", params, onScreen, "the sun is on screen",
+               !sun ? "no sun" : !camera ? "no camera given" : "the sun is not on screen"));
+    return out;
+}
+
+} // namespace lpv::renderer
