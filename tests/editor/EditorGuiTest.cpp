@@ -3,6 +3,7 @@
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "EffectsPanel.h"
 #include "OutlinerPanel.h"
 #include "ParameterInspector.h"
 #include "TestPaths.h"
@@ -12,6 +13,8 @@
 #include "lpv/scene/Picking.h"
 
 #include <QApplication>
+#include <QComboBox>
+#include <QTableWidget>
 #include <QDir>
 #include <QImage>
 #include <QMessageBox>
@@ -292,6 +295,39 @@ TEST(EditorGui, AutosaveIsOfferedBackAfterACrash) {
     EXPECT_EQ(recovered->parameters.getInt("lpv.propagationSteps"), 12);
     Autosave::remove(left[0]);
     EXPECT_TRUE(Autosave::leftBehind().empty());
+}
+
+TEST(EditorGui, ClosingWithUnsavedChangesAsksAndCancelKeepsTheWindow) {
+    OpenWindow w;
+    w.doc().setParameter("lpv.propagationSteps", 20);
+    w.window.setUnsavedChangesAnswerForTests(QMessageBox::Cancel);
+    EXPECT_FALSE(w.window.close());
+    EXPECT_TRUE(w.window.isVisible());
+    EXPECT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), 20);
+    w.window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    EXPECT_TRUE(w.window.close());
+}
+
+TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
+    OpenWindow w;
+    const auto& decisions = w.window.effects()->decisions();
+    ASSERT_GE(decisions.size(), 6u);
+    // The Cornell box is lit by a spot light only: nothing for the LPV to inject.
+    EXPECT_FALSE(decisions.front().runs());
+    EXPECT_NE(decisions.front().reason.find("no directional light"), std::string::npos);
+    QTableWidget* table = w.window.effects()->table();
+    int row = -1;
+    for (int r = 0; r < table->rowCount(); ++r)
+        if (table->item(r, 0)->text() == "Subsurface LPV")
+            row = r;
+    ASSERT_GE(row, 0);
+    auto* combo = qobject_cast<QComboBox*>(table->cellWidget(row, 1));
+    ASSERT_NE(combo, nullptr);
+    combo->setCurrentText("on");
+    EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "on");
+    EXPECT_TRUE(w.window.effects()->decisions()[std::size_t(row)].wanted);
+    w.doc().undoStack()->undo();
+    EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "auto");
 }
 
 int main(int argc, char** argv) {
