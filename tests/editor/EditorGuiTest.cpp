@@ -18,6 +18,7 @@
 #include <QDir>
 #include <QImage>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -297,6 +298,19 @@ TEST(EditorGui, AutosaveIsOfferedBackAfterACrash) {
     EXPECT_TRUE(Autosave::leftBehind().empty());
 }
 
+TEST(EditorGui, ReducedViewportResolutionStillFillsTheView) {
+    OpenWindow w;
+    Viewport* vp = w.window.viewport();
+    vp->setResolutionScale(0.5);
+    QTest::qWait(100);
+    const QImage frame = vp->grabFramebuffer();
+    EXPECT_EQ(frame.width(), int(vp->width() * vp->devicePixelRatio()));
+    EXPECT_GT(litFraction(frame), 0.15);
+    // The right-hand quarter is drawn too (the half-size image is scaled up, not put in a corner).
+    EXPECT_GT(litFraction(frame.copy(frame.width() * 3 / 4, 0, frame.width() / 4, frame.height())), 0.05);
+    vp->setResolutionScale(1.0);
+}
+
 TEST(EditorGui, ClosingWithUnsavedChangesAsksAndCancelKeepsTheWindow) {
     OpenWindow w;
     w.doc().setParameter("lpv.propagationSteps", 20);
@@ -332,7 +346,10 @@ TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
-    QApplication::setOrganizationName("LPV Studio tests"); // keep the user's QSettings out of it
+    // Keep the user's settings (layout, recent files, viewport resolution) out of the tests and vice versa.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName("LPV Studio tests");
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
