@@ -248,6 +248,20 @@ void MainWindow::createActions() {
     splitAction_->setCheckable(true);
     splitAction_->setToolTip(tr("Render two presets side by side: A on the left half, B on the right"));
     toolbar->addAction(splitAction_);
+    // Viewport resolution: an editor preference (QSettings), not a project parameter.
+    QMenu* resolution = viewMenu_->addMenu(tr("Viewport &resolution"));
+    auto* resolutions = new QActionGroup(this);
+    const double savedScale = QSettings().value("viewport/resolutionScale", 1.0).toDouble();
+    for (const double scale : {1.0, 0.5, 0.25}) {
+        QAction* a = resolution->addAction(tr("%1%").arg(int(scale * 100)), this, [this, scale] {
+            viewport_->setResolutionScale(scale);
+            QSettings().setValue("viewport/resolutionScale", scale);
+        });
+        a->setCheckable(true);
+        a->setChecked(std::abs(scale - savedScale) < 1e-6);
+        resolutions->addAction(a);
+    }
+    viewport_->setResolutionScale(savedScale);
     viewMenu_->addAction(tr("Reset &layout"), this, [this] { restoreState(defaultState_); });
     viewMenu_->addSeparator();
 

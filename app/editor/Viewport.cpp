@@ -118,8 +118,13 @@ void Viewport::setSplit(std::optional<std::pair<scene::ParameterSet, scene::Para
     update();
 }
 
-int Viewport::renderWidth() const { return std::max(1, int(width() * devicePixelRatio())); }
-int Viewport::renderHeight() const { return std::max(1, int(height() * devicePixelRatio())); }
+int Viewport::renderWidth() const { return std::max(1, int(width() * devicePixelRatio() * resolutionScale_)); }
+int Viewport::renderHeight() const { return std::max(1, int(height() * devicePixelRatio() * resolutionScale_)); }
+
+void Viewport::setResolutionScale(double scale) {
+    resolutionScale_ = std::clamp(scale, 0.1, 1.0);
+    update();
+}
 
 void Viewport::initializeGL() {
     renderer::installDebugOutputIfRequested();
@@ -194,6 +199,7 @@ void Viewport::paintGL() {
     uploadPendingChanges();
     const scene::Scene& s = document_->scene();
     const int w = renderWidth(), h = renderHeight();
+    const int fullW = std::max(1, int(width() * devicePixelRatio())), fullH = std::max(1, int(height() * devicePixelRatio()));
     auto renderWith = [&](const scene::ParameterSet& params) -> bool {
         auto ok = renderer_->render(s, params, controller_.camera(), w, h);
         if (!ok) {
@@ -206,14 +212,14 @@ void Viewport::paintGL() {
         // The same camera twice; each half of the view shows one preset.
         if (!renderWith(split_->first))
             return;
-        renderer_->blitTo(target, w, h);
+        renderer_->blitRegionTo(target, 0, 0, w / 2, h, 0, 0, fullW / 2, fullH);
         if (!renderWith(split_->second))
             return;
-        renderer_->blitRegionTo(target, w / 2, 0, w, h);
+        renderer_->blitRegionTo(target, w / 2, 0, w, h, fullW / 2, 0, fullW, fullH);
     } else {
         if (!renderWith(document_->parameters()))
             return;
-        renderer_->blitTo(target, w, h);
+        renderer_->blitRegionTo(target, 0, 0, w, h, 0, 0, fullW, fullH);
     }
     lastError_.clear();
     emit frameRendered(renderer_->timer().table());

@@ -60,6 +60,11 @@ public:
                   QString labelB = {});
     bool splitActive() const { return split_.has_value(); }
 
+    // Renders at this fraction of the widget's pixels (0.1..1) and scales up:
+    // keeps a software-rendered (llvmpipe) or slow GPU viewport responsive.
+    void setResolutionScale(double scale);
+    double resolutionScale() const { return resolutionScale_; }
+
     // Picks the object under a widget position (logical pixels) and selects it (or clears the selection).
     void selectAt(const QPoint& position);
 
@@ -108,6 +113,7 @@ private:
     QString splitLabels_[2];
 
     Changes pending_ = Change::Everything;
+    double resolutionScale_ = 1.0;
     scene::TextureImages textures_; // decoded images by key, kept across edits
     QThread* textureWorker_ = nullptr;
     bool texturesRequestedAgain_ = false;

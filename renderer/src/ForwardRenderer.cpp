@@ -298,9 +298,10 @@ void ForwardRenderer::blitTo(GLuint framebuffer, int width, int height) const {
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
-void ForwardRenderer::blitRegionTo(GLuint framebuffer, int x0, int y0, int x1, int y1) const {
-    glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, x0, y0, x1, y1, x0, y0, x1, y1, GL_COLOR_BUFFER_BIT,
-                           GL_NEAREST);
+void ForwardRenderer::blitRegionTo(GLuint framebuffer, int srcX0, int srcY0, int srcX1, int srcY1, int dstX0, int dstY0,
+                                   int dstX1, int dstY1) const {
+    glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1,
+                           GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 namespace {

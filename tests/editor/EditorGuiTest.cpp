@@ -3,6 +3,7 @@
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "EffectsPanel.h"
 #include "OutlinerPanel.h"
 #include "ParameterInspector.h"
 #include "TestPaths.h"
@@ -12,9 +13,12 @@
 #include "lpv/scene/Picking.h"
 
 #include <QApplication>
+#include <QComboBox>
+#include <QTableWidget>
 #include <QDir>
 #include <QImage>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -294,9 +298,58 @@ TEST(EditorGui, AutosaveIsOfferedBackAfterACrash) {
     EXPECT_TRUE(Autosave::leftBehind().empty());
 }
 
+TEST(EditorGui, ReducedViewportResolutionStillFillsTheView) {
+    OpenWindow w;
+    Viewport* vp = w.window.viewport();
+    vp->setResolutionScale(0.5);
+    QTest::qWait(100);
+    const QImage frame = vp->grabFramebuffer();
+    EXPECT_EQ(frame.width(), int(vp->width() * vp->devicePixelRatio()));
+    EXPECT_GT(litFraction(frame), 0.15);
+    // The right-hand quarter is drawn too (the half-size image is scaled up, not put in a corner).
+    EXPECT_GT(litFraction(frame.copy(frame.width() * 3 / 4, 0, frame.width() / 4, frame.height())), 0.05);
+    vp->setResolutionScale(1.0);
+}
+
+TEST(EditorGui, ClosingWithUnsavedChangesAsksAndCancelKeepsTheWindow) {
+    OpenWindow w;
+    w.doc().setParameter("lpv.propagationSteps", 20);
+    w.window.setUnsavedChangesAnswerForTests(QMessageBox::Cancel);
+    EXPECT_FALSE(w.window.close());
+    EXPECT_TRUE(w.window.isVisible());
+    EXPECT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), 20);
+    w.window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    EXPECT_TRUE(w.window.close());
+}
+
+TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
+    OpenWindow w;
+    const auto& decisions = w.window.effects()->decisions();
+    ASSERT_GE(decisions.size(), 6u);
+    // The Cornell box is lit by a spot light only: nothing for the LPV to inject.
+    EXPECT_FALSE(decisions.front().runs());
+    EXPECT_NE(decisions.front().reason.find("no directional light"), std::string::npos);
+    QTableWidget* table = w.window.effects()->table();
+    int row = -1;
+    for (int r = 0; r < table->rowCount(); ++r)
+        if (table->item(r, 0)->text() == "Subsurface LPV")
+            row = r;
+    ASSERT_GE(row, 0);
+    auto* combo = qobject_cast<QComboBox*>(table->cellWidget(row, 1));
+    ASSERT_NE(combo, nullptr);
+    combo->setCurrentText("on");
+    EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "on");
+    EXPECT_TRUE(w.window.effects()->decisions()[std::size_t(row)].wanted);
+    w.doc().undoStack()->undo();
+    EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "auto");
+}
+
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
-    QApplication::setOrganizationName("LPV Studio tests"); // keep the user's QSettings out of it
+    // Keep the user's settings (layout, recent files, viewport resolution) out of the tests and vice versa.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName("LPV Studio tests");
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -54,9 +54,11 @@ public:
 
     // Copies the last display image into `framebuffer` (e.g. a QOpenGLWidget's).
     void blitTo(GLuint framebuffer, int width, int height) const;
-    // Copies the columns/rows [x0, x1) x [y0, y1) of the last display image to
-    // the same place in `framebuffer` (the A/B split view's right half).
-    void blitRegionTo(GLuint framebuffer, int x0, int y0, int x1, int y1) const;
+    // Copies the rectangle [srcX0, srcX1) x [srcY0, srcY1) of the last display
+    // image to [dstX0, dstX1) x [dstY0, dstY1) of `framebuffer`, filtered
+    // linearly (the A/B split view's halves; a viewport rendered at reduced resolution).
+    void blitRegionTo(GLuint framebuffer, int srcX0, int srcY0, int srcX1, int srcY1, int dstX0, int dstY0, int dstX1,
+                      int dstY1) const;
 
     // Read-backs for tests and PNG output: rows top to bottom, RGBA.
     std::vector<float> readHdr() const;
