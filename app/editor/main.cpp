@@ -79,13 +79,24 @@ int main(int argc, char** argv) {
         // Poll: textures decode in the background; then two more frames so the LPV and timings settle.
         auto* poll = new QTimer(&window);
         auto frames = std::make_shared<int>(0);
-        QObject::connect(window.viewport(), &lpv::editor::Viewport::frameRendered, &window, [frames] { ++*frames; });
-        QObject::connect(poll, &QTimer::timeout, &window, [&window, file, frames] {
+        auto lastMs = std::make_shared<double>(0.0);
+        QObject::connect(window.viewport(), &lpv::editor::Viewport::frameRendered, &window,
+                         [frames, lastMs](const std::vector<lpv::renderer::PassTiming>& table) {
+                             ++*frames;
+                             *lastMs = 0.0;
+                             for (const auto& t : table)
+                                 *lastMs += t.lastMs;
+                         });
+        QObject::connect(poll, &QTimer::timeout, &window, [&window, file, frames, lastMs] {
             if (window.viewport()->texturesPending() || *frames < 3) {
                 window.viewport()->update();
                 return;
             }
             const bool saved = window.grab().save(file);
+            // The viewport's size and GPU time, so a screenshot run doubles as a measurement.
+            const auto* vp = window.viewport();
+            printf("lpvstudio: viewport %dx%d rendered at %.0f%%, last frame %.1f ms GPU (sum of passes)\n",
+                   vp->width(), vp->height(), 100.0 * vp->resolutionScale(), *lastMs);
             fprintf(saved ? stdout : stderr, saved ? "lpvstudio: saved %s\n" : "lpvstudio: cannot write %s\n",
                     qPrintable(file));
             QApplication::exit(saved ? 0 : 1);
