@@ -143,6 +143,8 @@ int runRender(Args args) {
         std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
                     setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
         std::printf("%s\n", setup->renderer->lpvNote().c_str());
+        for (const renderer::EffectDecision& e : setup->renderer->frameEffects())
+            std::printf("%s: %s (%s)\n", e.effect.c_str(), e.runs() ? "on" : "off", e.reason.c_str());
         std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
         const auto table = setup->renderer->timer().table();
         std::printf("%s", renderer::formatTimingTable(table).c_str());

@@ -5,6 +5,7 @@
 #include "MaterialGpu.h"
 #include "RsmPass.h"
 #include "ShadowPass.h"
+#include "SunRaysPass.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -59,6 +60,9 @@ struct ForwardRenderer::Impl {
     std::optional<ShadowPass> shadows;
     std::optional<RsmPass> rsm;
     std::optional<LpvPass> lpv;
+    // Created on the first frame that wants sun rays: a pass that never runs allocates nothing.
+    std::optional<SunRaysPass> sunRays;
+    std::vector<EffectDecision> frameEffects;
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
@@ -251,6 +255,7 @@ int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
+const std::vector<EffectDecision>& ForwardRenderer::frameEffects() const { return impl_->frameEffects; }
 
 std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) const {
     if (what == "shadow")
@@ -285,6 +290,16 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};
     d.gBufferValid = true;
+    d.frameEffects = {decideSunRays(scene, params, &camera, float(width) / float(height))};
+    if (d.frameEffects[0].runs()) {
+        if (!d.sunRays) {
+            auto created = SunRaysPass::create();
+            if (!created)
+                return std::unexpected(created.error());
+            d.sunRays.emplace(std::move(*created));
+        }
+        d.sunRays->render(frame, d.depth.id(), d.hdrColor.id(), *sunOf(scene));
+    }
     d.renderTonemap(frame);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

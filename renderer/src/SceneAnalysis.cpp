@@ -119,14 +119,28 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
                "a visible material is translucent", "no visible material is translucent"));
     add(decide("Glossy LPV reflections", "effects.glossyReflections", params, t.hasGlossyMaterial,
                "a visible material is glossy", "no visible material is glossy"));
-    const scene::Light* sun = nullptr;
-    for (const scene::Light& l : s.lights)
-        if (l.type == scene::LightType::Directional && !sun)
-            sun = &l;
-    const bool onScreen = sun && camera && sunOnScreen(*camera, -glm::normalize(sun->direction), aspect);
-    add(decide("Sun rays", "effects.sunRays", params, onScreen, "the sun is on screen",
-               !sun ? "no sun" : !camera ? "no camera given" : "the sun is not on screen"));
+    out.push_back(decideSunRays(s, params, camera, aspect));
     return out;
+}
+
+const scene::Light* sunOf(const scene::Scene& s) {
+    for (const scene::Light& l : s.lights)
+        if (l.type == scene::LightType::Directional)
+            return &l;
+    return nullptr;
+}
+
+EffectDecision decideSunRays(const scene::Scene& s, const scene::ParameterSet& params, const scene::Camera* camera,
+                             float aspect) {
+    const scene::Light* sun = sunOf(s);
+    const bool onScreen = sun && camera && sunOnScreen(*camera, -glm::normalize(sun->direction), aspect);
+    EffectDecision d = decide("Sun rays", "effects.sunRays", params, onScreen, "the sun is on screen",
+                              !sun ? "no sun" : !camera ? "no camera given" : "the sun is not on screen");
+    if (!sun && d.wanted) {
+        d.wanted = false; // forced on, but there is no sun to draw rays from
+        d.reason = "forced on by effects.sunRays, but the scene has no sun";
+    }
+    return d;
 }
 
 } // namespace lpv::renderer

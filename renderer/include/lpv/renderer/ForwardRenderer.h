@@ -5,6 +5,7 @@
 // (ShadowPass, ...); this class owns the targets and the order.
 #include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/GpuTimer.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/Image.h"
 #include "lpv/scene/ParameterRegistry.h"
@@ -79,6 +80,8 @@ public:
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
     // or "LPV: off (no directional light: nothing to inject)".
     std::string lpvNote() const;
+    // The per-frame effect decisions of the last frame (today: sun rays), each with its reason.
+    const std::vector<EffectDecision>& frameEffects() const;
     int width() const;
     int height() const;
 

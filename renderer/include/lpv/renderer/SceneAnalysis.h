@@ -39,6 +39,13 @@ inline constexpr float kOpenSkyThreshold = 0.05f;
 
 SceneTraits analyseSceneTraits(const scene::Scene& scene);
 
+// The first directional light (the sun, as the RSM picks it), or null.
+const scene::Light* sunOf(const scene::Scene& scene);
+
+// The sun rays' decision alone: cheap, so the renderer makes it every frame.
+EffectDecision decideSunRays(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera* camera,
+                             float aspect);
+
 // The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
 std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
                                           const scene::ParameterSet& params, const scene::Camera* camera,
