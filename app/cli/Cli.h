@@ -36,6 +36,8 @@ int runNew(Args args);
 int runInfo(Args args);
 int runImport(Args args);
 int runBench(Args args);
+int runVideo(Args args);
+int runPath(Args args);
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 
@@ -45,5 +47,7 @@ void printNewHelp();
 void printInfoHelp();
 void printImportHelp();
 void printBenchHelp();
+void printVideoHelp();
+void printPathHelp();
 
 } // namespace lpv::cli
