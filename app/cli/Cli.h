@@ -37,6 +37,8 @@ int runInfo(Args args);
 int runImport(Args args);
 int runBench(Args args);
 int runVersion(); // `lpv --version`, in VersionCommand.cpp
+int runVideo(Args args);
+int runPath(Args args);
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 
@@ -46,5 +48,7 @@ void printNewHelp();
 void printInfoHelp();
 void printImportHelp();
 void printBenchHelp();
+void printVideoHelp();
+void printPathHelp();
 
 } // namespace lpv::cli

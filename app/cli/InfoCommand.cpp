@@ -1,5 +1,6 @@
 #include "Cli.h"
 
+#include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
 
@@ -50,6 +51,10 @@ int runInfo(Args args) {
     if (!b.empty())
         std::printf("bounds      (%.3f, %.3f, %.3f) .. (%.3f, %.3f, %.3f)\n", b.min.x, b.min.y, b.min.z, b.max.x,
                     b.max.y, b.max.z);
+    for (const scene::CameraPath& p : s.cameraPaths)
+        std::printf("path        %s: %zu keyframes, %.3g s, %s, %s\n", p.name.c_str(), p.keyframes.size(),
+                    double(scene::CameraSpline(p).duration()), p.closed ? "closed" : "open",
+                    p.constantSpeed ? "constant speed" : "timed by its keys");
     for (const auto& [key, value] : project->parameters.overrides())
         std::printf("parameter   %s = %s\n", key.c_str(), scene::formatValue(value).c_str());
     return kOk;

@@ -22,6 +22,13 @@ Commands:
   bench render PROJECT        Per-pass GPU times over many frames (default 1280x720, 60 frames)
   bench lpv PROJECT           The thesis' LPV measurements: RSM tile sizes, steps x variants x occlusion
   info PROJECT                Validate a project and print what it contains
+  video PROJECT --path NAME -o OUT.mp4
+                              Render a camera path offline into an H.264 MP4 or PNG sequence
+                              (side by side with --compare-set), with a progress line
+  path export PROJECT --path NAME -o FILE.json|FILE.csv
+                              Write a camera path as JSON, or as CSV per frame (--fps)
+  path import PROJECT FILE.json
+                              Add or replace a camera path of the project from a JSON file
 
 Options:
   -h, --help                  Show this help
@@ -57,6 +64,8 @@ int dispatch(std::vector<std::string> args) {
         {"import", {runImport, printImportHelp}},
         {"bench", {runBench, printBenchHelp}},
         {"info", {runInfo, printInfoHelp}},
+        {"video", {runVideo, printVideoHelp}},
+        {"path", {runPath, printPathHelp}},
     };
     auto it = commands.find(command);
     if (it == commands.end())

@@ -20,6 +20,7 @@ const char* toString(ErrorCode code) {
     case ErrorCode::UnknownParameter: return "unknown parameter";
     case ErrorCode::IndexOutOfRange: return "index out of range";
     case ErrorCode::InvalidValue: return "invalid value";
+    case ErrorCode::Cancelled: return "cancelled";
     }
     return "error";
 }

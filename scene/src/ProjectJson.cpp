@@ -9,6 +9,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -449,18 +451,53 @@ CameraKeyframe readKeyframe(Fields& f) {
     return k;
 }
 
+// Playback interpolates between neighbours, which needs them in time order.
+void checkKeyframeOrder(Fields& f, const std::vector<CameraKeyframe>& keyframes) {
+    for (std::size_t i = 1; i < keyframes.size() && f.ok(); ++i)
+        if (keyframes[i].time < keyframes[i - 1].time)
+            f.reader().fail(ErrorCode::InvalidValue, indexPath(f.pathOf("keyframes"), i) + ".time",
+                            concat("keyframe time ", formatNumber(keyframes[i].time),
+                                   " is earlier than the previous keyframe's ", formatNumber(keyframes[i - 1].time),
+                                   "; keyframes must be sorted by time"));
+}
+
+// Optional (added in 1.1): absent means an open path played at the keys' times.
+void readPathFlags(Fields& f, CameraPath& p) {
+    if (f.has("closed"))
+        f.flag("closed", p.closed);
+    if (f.has("constantSpeed"))
+        f.flag("constantSpeed", p.constantSpeed);
+}
+
 CameraPath readCameraPath(Fields& f) {
     CameraPath p;
     f.text("name", p.name);
     p.keyframes = readArray<CameraKeyframe>(f, "keyframes", readKeyframe);
-    // Playback interpolates between neighbours, which needs them in time order.
-    for (std::size_t i = 1; i < p.keyframes.size() && f.ok(); ++i)
-        if (p.keyframes[i].time < p.keyframes[i - 1].time)
-            f.reader().fail(ErrorCode::InvalidValue, indexPath(f.pathOf("keyframes"), i) + ".time",
-                            concat("keyframe time ", formatNumber(p.keyframes[i].time),
-                                   " is earlier than the previous keyframe's ",
-                                   formatNumber(p.keyframes[i - 1].time), "; keyframes must be sorted by time"));
+    readPathFlags(f, p);
+    checkKeyframeOrder(f, p.keyframes);
     return p;
+}
+
+// --- camera path files (docs/camera-paths.md): the field of view in degrees ---
+
+const Range kFieldOfViewDegrees{0.0, 180.0, true, true};
+
+double degreesFromRadians(float radians) { return static_cast<double>(radians) * (180.0 / kPi); }
+float radiansFromDegrees(double degrees) { return static_cast<float>(degrees * (kPi / 180.0)); }
+
+CameraKeyframe readPathFileKeyframe(Fields& f) {
+    CameraKeyframe k;
+    f.number("time", k.time, kNonNegative);
+    f.vector("position", k.position, kAnyValue);
+    f.rotation("orientation", k.orientation);
+    float degrees = 0.0f;
+    f.number("fovYDegrees", degrees, kFieldOfViewDegrees);
+    // From the double in the file, so the shortest decimal written for a
+    // float's degrees reads back as exactly that float in radians.
+    if (f.ok())
+        if (const Json* v = f.get("fovYDegrees"))
+            k.fovY = radiansFromDegrees(v->get<double>());
+    return k;
 }
 
 void readSky(Fields& top, Sky& sky) {
@@ -597,18 +634,22 @@ void checkParentChains(Reader& r, const std::vector<Object>& objects) {
 using Migration = Json (*)(Json);
 constexpr std::array<Migration, static_cast<std::size_t>(kProjectFormatVersion - 1)> kMigrations{};
 
-Expected<Json> upgradeToCurrentVersion(const Json& document, const std::string& file) {
+// The format name and version of a document (`what` is "project" or "camera
+// path"); the version read, at most `newest`.
+Expected<std::int64_t> checkFormat(const Json& document, const std::string& file, const char* formatName,
+                                   std::int64_t newest, const char* what) {
     if (!document.is_object())
         return makeError(ErrorCode::UnknownFormat, file, "(top level)",
-                         "not an LPV Studio project: the top level is " + typeOf(document) + ", not an object");
+                         concat("not an LPV Studio ", what, ": the top level is ", typeOf(document),
+                                ", not an object"));
     const auto format = document.find("format");
     if (format == document.end())
         return makeError(ErrorCode::UnknownFormat, file, "format",
-                         concat("not an LPV Studio project: no \"format\" field (expected \"", kProjectFormatName,
+                         concat("not an LPV Studio ", what, ": no \"format\" field (expected \"", formatName,
                                 "\")"));
-    if (!format->is_string() || format->get<std::string>() != kProjectFormatName)
+    if (!format->is_string() || format->get<std::string>() != formatName)
         return makeError(ErrorCode::UnknownFormat, file, "format",
-                         concat("format is ", format->dump(), ", expected \"", kProjectFormatName, "\""));
+                         concat("format is ", format->dump(), ", expected \"", formatName, "\""));
 
     const auto version = document.find("version");
     if (version == document.end())
@@ -616,16 +657,24 @@ Expected<Json> upgradeToCurrentVersion(const Json& document, const std::string& 
     if (!version->is_number_integer())
         return makeError(ErrorCode::TypeMismatch, file, "version", "expected an integer, got " + typeOf(*version));
     // Unsigned first: a huge version must not wrap to a negative one.
-    const bool huge = version->is_number_unsigned() &&
-                      version->get<std::uint64_t>() > static_cast<std::uint64_t>(kProjectFormatVersion);
-    if (huge || version->get<std::int64_t>() > kProjectFormatVersion)
+    const bool huge =
+        version->is_number_unsigned() && version->get<std::uint64_t>() > static_cast<std::uint64_t>(newest);
+    if (huge || version->get<std::int64_t>() > newest)
         return makeError(ErrorCode::NewerVersion, file, "version",
-                         concat("project format version ", version->dump(), " is newer than this build reads (up to "
-                                "version ", kProjectFormatVersion, "); open it with a newer LPV Studio"));
+                         concat(what, " format version ", version->dump(), " is newer than this build reads (up to "
+                                "version ", newest, "); open it with a newer LPV Studio"));
     const std::int64_t from = version->get<std::int64_t>();
     if (from < 1)
         return makeError(ErrorCode::OutOfRange, file, "version",
-                         concat("project format version ", from, " does not exist (the first is 1)"));
+                         concat(what, " format version ", from, " does not exist (the first is 1)"));
+    return from;
+}
+
+Expected<Json> upgradeToCurrentVersion(const Json& document, const std::string& file) {
+    const auto checked = checkFormat(document, file, kProjectFormatName, kProjectFormatVersion, "project");
+    if (!checked)
+        return std::unexpected(checked.error());
+    const std::int64_t from = *checked;
 
     Json current = document;
     const std::span<const Migration> steps(kMigrations);
@@ -758,7 +807,23 @@ Json toJson(const CameraPath& p) {
     Json j = Json::object();
     j["name"] = p.name;
     j["keyframes"] = std::move(keyframes);
+    j["closed"] = p.closed;
+    j["constantSpeed"] = p.constantSpeed;
     return j;
+}
+
+// The shortest decimal number of degrees that reads back as `radians` exactly.
+Json degreesNumber(float radians) {
+    const double exact = degreesFromRadians(radians);
+    for (int digits = 1; digits <= 17; ++digits) {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, exact);
+        double d = 0.0;
+        const auto [end, ec] = std::from_chars(buffer, buffer + std::strlen(buffer), d);
+        if (ec == std::errc() && radiansFromDegrees(d) == radians)
+            return d;
+    }
+    return exact;
 }
 
 // Only the overrides, sorted by key (ParameterSet keeps them sorted).
@@ -865,6 +930,42 @@ Json projectToJson(const Project& project, const std::vector<std::string>& asset
         }
         doc["presets"] = std::move(presets);
     }
+    return doc;
+}
+
+Expected<CameraPath> cameraPathFromDocument(const Json& document, const std::string& file) {
+    const auto version = checkFormat(document, file, kCameraPathFormatName, kCameraPathFormatVersion, "camera path");
+    if (!version)
+        return std::unexpected(version.error());
+    Reader r(file);
+    Fields top(r, document, "");
+    CameraPath p;
+    top.text("name", p.name);
+    p.keyframes = readArray<CameraKeyframe>(top, "keyframes", readPathFileKeyframe);
+    readPathFlags(top, p);
+    checkKeyframeOrder(top, p.keyframes);
+    if (!r.ok())
+        return std::unexpected(r.error());
+    return p;
+}
+
+Json cameraPathToDocument(const CameraPath& p) {
+    Json doc = Json::object();
+    doc["format"] = kCameraPathFormatName;
+    doc["version"] = kCameraPathFormatVersion;
+    doc["name"] = p.name;
+    doc["closed"] = p.closed;
+    doc["constantSpeed"] = p.constantSpeed;
+    Json keyframes = Json::array();
+    for (const CameraKeyframe& k : p.keyframes) {
+        Json j = Json::object();
+        j["time"] = number(k.time);
+        j["position"] = numbers(k.position);
+        j["orientation"] = numbers(k.orientation);
+        j["fovYDegrees"] = degreesNumber(k.fovY);
+        keyframes.push_back(std::move(j));
+    }
+    doc["keyframes"] = std::move(keyframes);
     return doc;
 }
 

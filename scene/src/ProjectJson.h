@@ -2,6 +2,7 @@
 // Private to lpv_scene: the project file's JSON document <-> Project
 // (docs/project-format.md). The geometry of meshes is not in the JSON; it
 // lives in the mesh assets the document refers to.
+#include "lpv/scene/CameraPathFile.h"
 #include "lpv/scene/Project.h"
 
 #include <nlohmann/json.hpp>
@@ -41,6 +42,11 @@ Json projectToJson(const Project& project, const std::vector<std::string>& asset
 // An asset path must stay inside the project's folder: relative, '/'
 // separators, no "." or ".." components, no drive letters.
 Expected<void> checkAssetPath(const std::string& path, const std::string& file, const std::string& location);
+
+// A camera path file (docs/camera-paths.md): format name and version, then
+// the same checks as a project's camera path, the field of view in degrees.
+Expected<CameraPath> cameraPathFromDocument(const Json& document, const std::string& file);
+Json cameraPathToDocument(const CameraPath& path);
 
 // Parses the text of a project file. Errors: Truncated (empty or cut off),
 // NotJson, NonFinite (a number too large for a double, e.g. 1e999); the

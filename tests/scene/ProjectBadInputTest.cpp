@@ -447,6 +447,56 @@ TEST_F(ProjectBadInput, PresetsWrittenBeforePresetsExistedLoad) {
     EXPECT_EQ(*loaded, expected);
 }
 
+// The damaged project with one camera path, closed and at constant speed.
+static Project projectWithAPath() {
+    Project p = goodProject();
+    CameraPath path{"tour", {{0.0f, {0, 1, 2}, {1, 0, 0, 0}, 0.5f}, {2.5f, {3, 1, 2}, {1, 0, 0, 0}, 0.5f}}};
+    path.closed = true;
+    path.constantSpeed = true;
+    p.scene.cameraPaths = {path};
+    return p;
+}
+
+TEST_F(ProjectBadInput, PathFlagsOfTheWrongTypeAreTypeMismatch) {
+    ASSERT_TRUE(saveProject(projectWithAPath(), bad_));
+    editBad("\"closed\": true", "\"closed\": 1");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "cameraPaths[0].closed");
+    EXPECT_TRUE(contains(e.message, "expected true or false")) << e.message;
+}
+
+TEST_F(ProjectBadInput, ConstantSpeedOfTheWrongTypeIsTypeMismatch) {
+    ASSERT_TRUE(saveProject(projectWithAPath(), bad_));
+    editBad("\"constantSpeed\": true", "\"constantSpeed\": null");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "cameraPaths[0].constantSpeed");
+}
+
+TEST_F(ProjectBadInput, UnsortedKeyframesAreInvalidValue) {
+    ASSERT_TRUE(saveProject(projectWithAPath(), bad_));
+    editBad("\"time\": 2.5", "\"time\": -0.0");
+    // -0 == 0: equal times are a cut, allowed; an earlier time is not.
+    ASSERT_TRUE(loadProject(bad_));
+    ASSERT_TRUE(saveProject(projectWithAPath(), bad_));
+    editBad("\"time\": 0.0,", "\"time\": 3,");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::InvalidValue);
+    EXPECT_EQ(e.location, "cameraPaths[0].keyframes[1].time");
+}
+
+TEST_F(ProjectBadInput, PathsWrittenBeforeTheFlagsExistedLoadOpenAndTimed) {
+    ASSERT_TRUE(saveProject(projectWithAPath(), bad_));
+    editBad(",\n      \"closed\": true,\n      \"constantSpeed\": true", "");
+    const auto loaded = loadProject(bad_);
+    ASSERT_TRUE(loaded) << loaded.error().describe();
+    ASSERT_EQ(loaded->scene.cameraPaths.size(), 1u);
+    EXPECT_FALSE(loaded->scene.cameraPaths[0].closed);
+    EXPECT_FALSE(loaded->scene.cameraPaths[0].constantSpeed);
+    EXPECT_EQ(loaded->scene.cameraPaths[0].keyframes, projectWithAPath().scene.cameraPaths[0].keyframes);
+}
+
 TEST_F(ProjectBadInput, ObjectMeshIndexOutOfRange) {
     editBad("\"mesh\": 0", "\"mesh\": 5");
     const Error e = loadFails(bad_);

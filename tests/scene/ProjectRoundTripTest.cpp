@@ -157,7 +157,10 @@ Project richProject() {
                             {2.5f, {3, 1, 2}, glm::angleAxis(0.5f, glm::vec3(0, 1, 0)), 0.9f},
                             {2.5f, {4, 1, 1}, glm::angleAxis(1.0f, glm::vec3(0, 1, 0)), 1.0f},
                             {7.25f, {5, 2, 0}, glm::quat(0.0f, 0.0f, 1.0f, 0.0f), 0.5f}};
-    s.cameraPaths = {flythrough, CameraPath{"empty path", {}}};
+    flythrough.closed = true;
+    CameraPath steady{"steady", {{1.0f, {0, 0, 0}, {1, 0, 0, 0}, 0.8f}}};
+    steady.constantSpeed = true;
+    s.cameraPaths = {flythrough, steady, CameraPath{"empty path", {}}};
 
     s.sky.color = {0.3f, 0.45f, 0.9f};
     s.sky.intensity = 0.75f;
@@ -263,6 +266,8 @@ TEST_F(ProjectRoundTrip, EqualityNoticesEveryKindOfChange) {
         {"camera", [](Project& p) { p.scene.cameras[1].farPlane = 999.0f; }},
         {"keyframe", [](Project& p) { p.scene.cameraPaths[0].keyframes[3].time = 8.0f; }},
         {"camera path", [](Project& p) { p.scene.cameraPaths.pop_back(); }},
+        {"closed path", [](Project& p) { p.scene.cameraPaths[0].closed = false; }},
+        {"constant speed", [](Project& p) { p.scene.cameraPaths[1].constantSpeed = false; }},
         {"sky", [](Project& p) { p.scene.sky.intensity = 0.0f; }},
         {"parameter", [](Project& p) { p.parameters = ParameterSet{}; }},
         {"preset name", [](Project& p) { p.presets[1].name = "other"; }},

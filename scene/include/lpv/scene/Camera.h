@@ -31,9 +31,16 @@ struct CameraKeyframe {
     bool operator==(const CameraKeyframe&) const = default;
 };
 
+// Played back through scene::CameraSpline (CameraSpline.h, docs/camera-paths.md).
 struct CameraPath {
     std::string name;
-    std::vector<CameraKeyframe> keyframes; // sorted by time
+    std::vector<CameraKeyframe> keyframes; // sorted by time; equal times make a cut
+    // A closed path returns from the last key to the first; the closing
+    // segment lasts as long as the mean segment, and time wraps around.
+    bool closed = false;
+    // Time maps to distance along the path (constant speed over the whole
+    // path); the key times then only set the total duration.
+    bool constantSpeed = false;
 
     bool operator==(const CameraPath&) const = default;
 };

@@ -22,6 +22,7 @@ enum class ErrorCode {
     UnknownParameter,
     IndexOutOfRange,
     InvalidValue,
+    Cancelled, // the user stopped a long operation (a video export); not a failure to report
 };
 
 const char* toString(ErrorCode code);
