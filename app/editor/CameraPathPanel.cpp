@@ -3,7 +3,7 @@
 #include "VideoExportDialog.h"
 #include "Viewport.h"
 
-#include "lpv/scene/CameraPathIo.h"
+#include "lpv/scene/CameraPathFile.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Project.h"
 
