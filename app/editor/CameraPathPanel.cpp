@@ -238,8 +238,10 @@ void CameraPathPanel::deletePath() {
 }
 
 void CameraPathPanel::addKeyFromView() {
-    if (!path())
-        newPath();
+    if (!path()) {
+        newPath(); // its first key is the view, at 0 s
+        return;
+    }
     const scene::CameraPath* p = path();
     // At the timeline's time, or one second after the last key when the timeline sits at the end.
     double t = time_;
