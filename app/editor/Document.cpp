@@ -111,6 +111,14 @@ void Document::setCamera(int index, const scene::Camera& camera, const QString& 
         new ElementCommand<scene::Camera>(this, &scene::Scene::cameras, index, before, camera, Change::Cameras, text));
 }
 
+void Document::setCameraPath(int index, const scene::CameraPath& path, const QString& text) {
+    const scene::CameraPath& before = project_.scene.cameraPaths.at(std::size_t(index));
+    if (before == path)
+        return;
+    undoStack_->push(new ElementCommand<scene::CameraPath>(this, &scene::Scene::cameraPaths, index, before, path,
+                                                           Change::CameraPaths, text));
+}
+
 void Document::setSky(const scene::Sky& sky, const QString& text) {
     if (sky == project_.scene.sky)
         return;

@@ -77,6 +77,7 @@ public:
     void setLight(int index, const scene::Light& light, const QString& text);
     void setCamera(int index, const scene::Camera& camera, const QString& text);
     void setSky(const scene::Sky& sky, const QString& text);
+    void setCameraPath(int index, const scene::CameraPath& path, const QString& text);
     // Named parameter presets: save the current values under `name`
     // (replacing a preset of that name), apply one, delete one.
     void savePreset(const std::string& name);

@@ -2,6 +2,7 @@
 
 #include "AboutDialog.h"
 #include "Autosave.h"
+#include "CameraPathPanel.h"
 #include "EffectsPanel.h"
 #include "ImportJob.h"
 #include "OutlinerPanel.h"
@@ -149,6 +150,12 @@ void MainWindow::createDocks() {
             profiler_->clear();
     });
     QDockWidget* profilerDock = addDock(profiler_, "profiler", tr("Profiler"), Qt::BottomDockWidgetArea);
+
+    cameraPaths_ = new CameraPathPanel(document_, viewport_, this);
+    connect(cameraPaths_, &CameraPathPanel::currentPathChanged, viewport_, &Viewport::setShownPath);
+    QDockWidget* pathsDock = addDock(cameraPaths_, "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(profilerDock, pathsDock);
+    profilerDock->raise();
 
     effects_ = new EffectsPanel(document_, viewport_, this);
     connect(viewport_, &Viewport::lpvNoteChanged, effects_, &EffectsPanel::setRendererNote);

@@ -15,6 +15,7 @@ class QUndoView;
 namespace lpv::editor {
 
 class Autosave;
+class CameraPathPanel;
 class EffectsPanel;
 class OutlinerPanel;
 class ParameterInspector;
@@ -54,6 +55,7 @@ public:
     // A/B split: preset indices for the left and right halves (-1 = the current parameters).
     void setSplit(int presetA, int presetB);
     ProfilerPanel* profiler() const { return profiler_; }
+    CameraPathPanel* cameraPaths() const { return cameraPaths_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -96,6 +98,7 @@ private:
     QAction* splitAction_ = nullptr;
     std::pair<int, int> splitChoice_{-2, -2}; // preset indices; -1 = current parameters, -2 = off
     ProfilerPanel* profiler_ = nullptr;
+    CameraPathPanel* cameraPaths_ = nullptr;
     Autosave* autosave_ = nullptr;
     QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;

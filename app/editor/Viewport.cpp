@@ -3,6 +3,7 @@
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Picking.h"
 #include "lpv/scene/ProjectTextures.h"
 
@@ -295,6 +296,7 @@ void Viewport::drawOverlay() {
             }
         }
     }
+    drawPath(painter);
     if (split_) {
         painter.setPen(QPen(Qt::white, 2));
         painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
@@ -302,6 +304,86 @@ void Viewport::drawOverlay() {
         painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "A: " + splitLabels_[0]);
         painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "B: " + splitLabels_[1]);
     }
+}
+
+void Viewport::setShownPath(int index) {
+    shownPath_ = index;
+    update();
+}
+
+std::optional<QPointF> Viewport::keyScreenPosition(int key) const {
+    const auto& paths = document_->scene().cameraPaths;
+    if (shownPath_ < 0 || std::size_t(shownPath_) >= paths.size())
+        return std::nullopt;
+    const auto& keys = paths[std::size_t(shownPath_)].keyframes;
+    if (key < 0 || std::size_t(key) >= keys.size())
+        return std::nullopt;
+    const scene::Camera& camera = controller_.camera();
+    const glm::mat4 viewProj = camera.projection(float(width()) / float(std::max(height(), 1))) * camera.view();
+    const glm::vec4 c = viewProj * glm::vec4(keys[std::size_t(key)].position, 1.0f);
+    if (c.w <= 1e-4f)
+        return std::nullopt;
+    return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
+}
+
+void Viewport::drawPath(QPainter& painter) {
+    const auto& paths = document_->scene().cameraPaths;
+    if (shownPath_ < 0 || std::size_t(shownPath_) >= paths.size())
+        return;
+    const scene::CameraPath& path = paths[std::size_t(shownPath_)];
+    if (path.keyframes.empty())
+        return;
+    const scene::Camera& camera = controller_.camera();
+    const glm::mat4 viewProj = camera.projection(float(width()) / float(std::max(height(), 1))) * camera.view();
+    auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
+        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+        if (c.w <= 1e-4f)
+            return std::nullopt;
+        return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
+    };
+    // The curve, sampled finely enough to look smooth at any zoom that matters.
+    const scene::CameraSpline spline(path);
+    const int samples = 40 * int(path.keyframes.size());
+    painter.setPen(QPen(QColor(80, 200, 255), 2.0));
+    std::optional<QPointF> previous;
+    for (int i = 0; i <= samples; ++i) {
+        const auto p = project(spline.sample(spline.duration() * float(i) / float(samples)).position);
+        if (p && previous)
+            painter.drawLine(*previous, *p);
+        previous = p;
+    }
+    for (std::size_t k = 0; k < path.keyframes.size(); ++k) {
+        const auto p = project(path.keyframes[k].position);
+        if (!p)
+            continue;
+        const bool active = drag_ == Drag::PathKey && draggedKey_ == int(k);
+        painter.setPen(QPen(Qt::black, 1.0));
+        painter.setBrush(active ? QColor(255, 220, 60) : QColor(80, 200, 255));
+        painter.drawRect(QRectF(p->x() - 5, p->y() - 5, 10, 10));
+        // Which way the key looks: a short line along its forward axis.
+        const glm::vec3 forward = path.keyframes[k].orientation * glm::vec3(0.0f, 0.0f, -1.0f);
+        const float length = 0.05f * glm::length(path.keyframes[k].position - camera.position);
+        if (const auto tip = project(path.keyframes[k].position + forward * length))
+            painter.drawLine(*p, *tip);
+    }
+}
+
+void Viewport::dragPathKey(const QPoint& position) {
+    scene::CameraPath path = document_->scene().cameraPaths.at(std::size_t(shownPath_));
+    scene::CameraKeyframe& key = path.keyframes.at(std::size_t(draggedKey_));
+    // Along the plane through the key that faces the camera: the key stays at its depth.
+    const scene::Camera& camera = controller_.camera();
+    const glm::vec3 normal = glm::normalize(camera.target - camera.position);
+    const scene::Ray ray = scene::cameraRay(camera, float(position.x()) + 0.5f, float(position.y()) + 0.5f, width(),
+                                            height());
+    const float denominator = glm::dot(ray.direction, normal);
+    if (std::abs(denominator) < 1e-6f)
+        return;
+    const float t = glm::dot(key.position - ray.origin, normal) / denominator;
+    if (t <= 0.0f)
+        return;
+    key.position = ray.origin + t * ray.direction;
+    document_->setCameraPath(shownPath_, path, tr("Move camera key"));
 }
 
 void Viewport::selectAt(const QPoint& position) {
@@ -316,6 +398,16 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     movedSincePress_ = false;
     const glm::vec2 mouse(float(pressPosition_.x()), float(pressPosition_.y()));
     if (event->button() == Qt::LeftButton) {
+        // Camera path keys first: they are small and drawn on top.
+        const auto& paths = document_->scene().cameraPaths;
+        if (shownPath_ >= 0 && std::size_t(shownPath_) < paths.size())
+            for (int k = 0; k < int(paths[std::size_t(shownPath_)].keyframes.size()); ++k)
+                if (const auto p = keyScreenPosition(k);
+                    p && (QPointF(pressPosition_) - *p).manhattanLength() <= TransformGizmo::kGrabPixels * 1.5) {
+                    drag_ = Drag::PathKey;
+                    draggedKey_ = k;
+                    return;
+                }
         const auto axis = document_->selection().isObject() ? gizmo_.hitTest(mouse) : std::nullopt;
         if (axis) {
             drag_ = Drag::Gizmo;
@@ -345,6 +437,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     case Drag::Pan: controller_.pan(float(delta.x()), float(delta.y()), height()); break;
     case Drag::Look: controller_.look(float(delta.x()), float(delta.y())); break;
     case Drag::Sun: dragSun(delta); return;
+    case Drag::PathKey: dragPathKey(p); return;
     case Drag::Gizmo: {
         const int index = document_->selection().index;
         scene::Object object = document_->scene().objects[std::size_t(index)];
@@ -365,10 +458,11 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (event->button() == Qt::LeftButton && !movedSincePress_ && drag_ != Drag::Gizmo)
+    if (event->button() == Qt::LeftButton && !movedSincePress_ && drag_ != Drag::Gizmo && drag_ != Drag::PathKey)
         selectAt(event->position().toPoint());
     drag_ = Drag::None;
     gizmoAxis_ = -1;
+    draggedKey_ = -1;
     flyTimer_.stop();
     update();
 }

@@ -22,6 +22,8 @@
 #include <QSet>
 #include <QTimer>
 
+class QPainter;
+
 #include <optional>
 #include <set>
 #include <string>
@@ -65,6 +67,12 @@ public:
     void setResolutionScale(double scale);
     double resolutionScale() const { return resolutionScale_; }
 
+    // The camera path drawn in the view with its keys as draggable handles (-1 = none).
+    void setShownPath(int index);
+    int shownPath() const { return shownPath_; }
+    // Screen position (logical pixels) of a key of the shown path, if in front of the camera.
+    std::optional<QPointF> keyScreenPosition(int key) const;
+
     // Picks the object under a widget position (logical pixels) and selects it (or clears the selection).
     void selectAt(const QPoint& position);
 
@@ -99,6 +107,8 @@ private:
     void drawOverlay();
     void flyStep();
     void dragSun(const QPoint& delta);
+    void dragPathKey(const QPoint& position);
+    void drawPath(QPainter& painter);
     std::optional<glm::vec3> selectionPivot() const;
     int renderWidth() const;
     int renderHeight() const;
@@ -119,11 +129,13 @@ private:
     bool texturesRequestedAgain_ = false;
 
     // Mouse state.
-    enum class Drag { None, Orbit, Pan, Look, Gizmo, Sun };
+    enum class Drag { None, Orbit, Pan, Look, Gizmo, Sun, PathKey };
     Drag drag_ = Drag::None;
     QPoint pressPosition_, lastPosition_;
     bool movedSincePress_ = false;
     int gizmoAxis_ = -1;
+    int shownPath_ = -1;
+    int draggedKey_ = -1;
     scene::Transform gizmoStart_;
     QSet<int> heldKeys_;
     QTimer flyTimer_;

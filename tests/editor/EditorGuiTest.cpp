@@ -1,6 +1,8 @@
 // The editor through its real window under xvfb (OpenGL 4.5 on llvmpipe):
 // open, render, edit, undo/redo, save/reopen, import, pick, create, autosave.
 #include "Autosave.h"
+#include "CameraPathPanel.h"
+#include "VideoExportDialog.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "EffectsPanel.h"
@@ -14,6 +16,9 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QSpinBox>
 #include <QTableWidget>
 #include <QDir>
 #include <QImage>
@@ -342,6 +347,63 @@ TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
     EXPECT_TRUE(w.window.effects()->decisions()[std::size_t(row)].wanted);
     w.doc().undoStack()->undo();
     EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "auto");
+}
+
+TEST(EditorGui, CameraPathFromTheViewPlaysBackAndUndoes) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    CameraPathPanel* panel = w.window.cameraPaths();
+    Viewport* vp = w.window.viewport();
+    const lpv::scene::Camera start = vp->viewCamera();
+    panel->addKeyFromView(); // creates "path 1" with a key at 0 s
+    ASSERT_EQ(doc.scene().cameraPaths.size(), 1u);
+    lpv::scene::Camera moved = start;
+    moved.position += glm::vec3(1.0f, 0.0f, 0.0f);
+    moved.target += glm::vec3(1.0f, 0.0f, 0.0f);
+    vp->setViewCamera(moved);
+    panel->addKeyFromView(); // one second later
+    const auto& path = doc.scene().cameraPaths[0];
+    ASSERT_EQ(path.keyframes.size(), 2u);
+    EXPECT_FLOAT_EQ(path.keyframes[1].time, 1.0f);
+    EXPECT_EQ(vp->shownPath(), 0);
+    // Scrubbing drives the viewport camera along the path.
+    panel->setTime(0.0);
+    EXPECT_NEAR(glm::length(vp->viewCamera().position - start.position), 0.0f, 1e-4f);
+    panel->setTime(0.5);
+    EXPECT_NEAR(vp->viewCamera().position.x, start.position.x + 0.5f, 0.05f);
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene().cameraPaths[0].keyframes.size(), 1u);
+    doc.undoStack()->undo();
+    EXPECT_TRUE(doc.scene().cameraPaths.empty());
+}
+
+TEST(EditorGui, VideoExportFromTheEditorAndCancelLeavesNothing) {
+    OpenWindow w;
+    Document& doc = w.doc();
+    CameraPathPanel* panel = w.window.cameraPaths();
+    panel->addKeyFromView();
+    lpv::scene::Camera moved = w.window.viewport()->viewCamera();
+    moved.position += glm::vec3(0.5f, 0.0f, 0.0f);
+    w.window.viewport()->setViewCamera(moved);
+    panel->addKeyFromView();
+    QTemporaryDir dir;
+    VideoExportDialog dialog(&doc, 0, &w.window);
+    dialog.outputField()->setText(dir.filePath("path.mp4"));
+    dialog.widthField()->setValue(96);
+    dialog.heightField()->setValue(64);
+    dialog.fpsField()->setValue(10.0);
+    EXPECT_EQ(dialog.run(), QString());
+    EXPECT_GT(QFileInfo(dir.filePath("path.mp4")).size(), 0);
+
+    VideoExportDialog cancelled(&doc, 0, &w.window);
+    cancelled.outputField()->setText(dir.filePath("cancelled.mp4"));
+    cancelled.widthField()->setValue(96);
+    cancelled.heightField()->setValue(64);
+    cancelled.fpsField()->setValue(10.0);
+    cancelled.setCancelAfterFramesForTests(3);
+    EXPECT_EQ(cancelled.run(), "cancelled");
+    EXPECT_FALSE(QFileInfo::exists(dir.filePath("cancelled.mp4")));
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files).size(), 1) << "no temporary file left";
 }
 
 int main(int argc, char** argv) {
