@@ -86,7 +86,8 @@ int exportPath(Args& args) {
         if (extension != ".csv")
             return usageError("--fps applies to CSV export only", "path");
         const auto [end, ec] = std::from_chars(fpsText->data(), fpsText->data() + fpsText->size(), fps);
-        if (ec != std::errc() || end != fpsText->data() + fpsText->size() || !(fps > 0.0) || !std::isfinite(fps))
+        if (ec != std::errc() || end != fpsText->data() + fpsText->size() || !(fps > 0.0) ||
+            !std::isfinite(fps))
             return usageError("--fps must be a positive number, got '" + *fpsText + "'", "path");
     }
 
@@ -97,8 +98,8 @@ int exportPath(Args& args) {
     }
     const scene::CameraPath* path = findPath(*project, *name);
     if (!path) {
-        std::cerr << "lpv: " << pos[1] << ": no camera path named '" << *name << "' (paths: " << pathNames(*project)
-                  << ")\n";
+        std::cerr << "lpv: " << pos[1] << ": no camera path named '" << *name
+                  << "' (paths: " << pathNames(*project) << ")\n";
         return kFailure;
     }
     if (extension == ".json") {
@@ -141,7 +142,8 @@ int importPath(Args& args) {
         return kFailure;
     }
     auto& paths = project->scene.cameraPaths;
-    const auto existing = std::find_if(paths.begin(), paths.end(), [&](const auto& p) { return p.name == path->name; });
+    const auto existing =
+        std::find_if(paths.begin(), paths.end(), [&](const auto& p) { return p.name == path->name; });
     const bool replaced = existing != paths.end();
     if (replaced)
         *existing = *path;

@@ -7,8 +7,8 @@
 #include "lpv/video/VideoExport.h"
 
 #include <charconv>
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -66,7 +66,9 @@ Example:
 namespace {
 
 volatile std::sig_atomic_t interrupted = 0;
-extern "C" void onInterrupt(int) { interrupted = 1; }
+extern "C" void onInterrupt(int) {
+    interrupted = 1;
+}
 
 std::optional<int> parseCount(const std::string& s, int minimum) {
     int v = 0;
@@ -85,8 +87,8 @@ std::optional<double> parseRate(const std::string& s) {
 }
 
 // "KEY=VALUE" pairs; false (and the offending text in `bad`) if one has no '='.
-bool splitSettings(const std::vector<std::string>& texts, std::vector<std::pair<std::string, std::string>>& out,
-                   std::string& bad) {
+bool splitSettings(const std::vector<std::string>& texts,
+                   std::vector<std::pair<std::string, std::string>>& out, std::string& bad) {
     for (const std::string& kv : texts) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -202,8 +204,8 @@ int runVideo(Args args) {
     interrupted = 0;
     const auto result = video::renderVideo(
         *project, fs::absolute(pos.front()).parent_path(), options, [&](const video::VideoProgress& p) {
-            const std::string line = "frame " + std::to_string(p.frame) + "/" + std::to_string(p.frames) + ", " +
-                                     formatSeconds(p.elapsedSeconds) + " s elapsed, ~" +
+            const std::string line = "frame " + std::to_string(p.frame) + "/" + std::to_string(p.frames) +
+                                     ", " + formatSeconds(p.elapsedSeconds) + " s elapsed, ~" +
                                      formatSeconds(p.etaSeconds) + " s left";
             if (terminal) {
                 std::printf("\r%-60s", line.c_str());
@@ -226,7 +228,8 @@ int runVideo(Args args) {
     std::error_code ec;
     const auto bytes = format->format == video::VideoFormat::Mp4 ? fs::file_size(options.output, ec) : 0;
     if (format->format == video::VideoFormat::Mp4 && !ec)
-        std::printf("wrote %s (%d frames, %.0f KB)\n", options.output.string().c_str(), frames, double(bytes) / 1024.0);
+        std::printf("wrote %s (%d frames, %.0f KB)\n", options.output.string().c_str(), frames,
+                    double(bytes) / 1024.0);
     else
         std::printf("wrote %d frames into %s\n", frames,
                     (format->folder.empty() ? fs::path(".") : format->folder).string().c_str());

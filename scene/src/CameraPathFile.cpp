@@ -52,8 +52,7 @@ Expected<void> saveCameraPathFile(const CameraPath& path, const std::filesystem:
 namespace {
 
 // Shortest text that reads back as the same value.
-template <class T>
-void appendNumber(std::string& out, T v) {
+template <class T> void appendNumber(std::string& out, T v) {
     char buffer[64];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
     out.append(buffer, ec == std::errc() ? end : buffer);
@@ -76,9 +75,9 @@ std::string cameraPathToCsv(const CameraSpline& spline, double fps) {
         const double time = static_cast<double>(spline.startTime()) + i / fps;
         const CameraKeyframe k = spline.sample(static_cast<float>(time));
         appendNumber(out, time);
-        for (const float v : {k.position.x, k.position.y, k.position.z, k.orientation.x, k.orientation.y,
-                              k.orientation.z, k.orientation.w,
-                              static_cast<float>(k.fovY * (180.0 / std::numbers::pi))}) {
+        for (const float v :
+             {k.position.x, k.position.y, k.position.z, k.orientation.x, k.orientation.y, k.orientation.z,
+              k.orientation.w, static_cast<float>(k.fovY * (180.0 / std::numbers::pi))}) {
             out += ',';
             appendNumber(out, v);
         }

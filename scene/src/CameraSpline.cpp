@@ -85,8 +85,12 @@ glm::quat normalisedOrIdentity(const glm::quat& q) {
 
 } // namespace
 
-glm::vec3 forwardOf(const glm::quat& orientation) { return orientation * glm::vec3(0.0f, 0.0f, -1.0f); }
-glm::vec3 upOf(const glm::quat& orientation) { return orientation * glm::vec3(0.0f, 1.0f, 0.0f); }
+glm::vec3 forwardOf(const glm::quat& orientation) {
+    return orientation * glm::vec3(0.0f, 0.0f, -1.0f);
+}
+glm::vec3 upOf(const glm::quat& orientation) {
+    return orientation * glm::vec3(0.0f, 1.0f, 0.0f);
+}
 
 CameraSpline::CameraSpline(const CameraPath& path)
     : keys_(path.keyframes), closed_(path.closed), constantSpeed_(path.constantSpeed) {
@@ -108,9 +112,10 @@ CameraSpline::CameraSpline(const CameraPath& path)
 
     // --- segments and their durations ---
     const std::size_t count = closed_ ? n : n - 1;
-    const float closingDuration = std::max(0.0f, (keys_[n - 1].time - keys_[0].time) / static_cast<float>(n - 1));
+    const float closingDuration =
+        std::max(0.0f, (keys_[n - 1].time - keys_[0].time) / static_cast<float>(n - 1));
     segments_.resize(count);
-    std::vector<float> knot(count); // centripetal knot intervals
+    std::vector<float> knot(count);         // centripetal knot intervals
     std::vector<glm::vec3> rotation(count); // log of the relative rotation of each segment
     for (std::size_t i = 0; i < count; ++i) {
         Segment& s = segments_[i];
@@ -119,7 +124,8 @@ CameraSpline::CameraSpline(const CameraPath& path)
         s.start = keys_[i].time;
         s.duration = i + 1 < n ? std::max(0.0f, keys_[i + 1].time - keys_[i].time) : closingDuration;
         duration_ += s.duration;
-        knot[i] = std::max(std::sqrt(glm::distance(keys_[s.from].position, keys_[s.to].position)), kMinKnotInterval);
+        knot[i] = std::max(std::sqrt(glm::distance(keys_[s.from].position, keys_[s.to].position)),
+                           kMinKnotInterval);
         s.q0 = keys_[s.from].orientation;
         s.q3 = keys_[s.to].orientation;
         if (glm::dot(s.q0, s.q3) < 0.0f) // only the closing segment can need this
@@ -141,10 +147,10 @@ CameraSpline::CameraSpline(const CameraPath& path)
     };
 
     // --- per-key derivatives ---
-    std::vector<glm::vec3> tangent(n, glm::vec3(0.0f));  // dP/ds, s the centripetal curve parameter
-    std::vector<float> curveRate(n, 0.0f);                 // ds/dt
+    std::vector<glm::vec3> tangent(n, glm::vec3(0.0f));     // dP/ds, s the centripetal curve parameter
+    std::vector<float> curveRate(n, 0.0f);                  // ds/dt
     std::vector<glm::vec3> angularRate(n, glm::vec3(0.0f)); // d log(q) / dt, body frame
-    std::vector<float> fovRate(n, 0.0f);                   // dfov/dt
+    std::vector<float> fovRate(n, 0.0f);                    // dfov/dt
     for (std::size_t k = 0; k < n; ++k) {
         const auto in = incoming(k);
         const auto out = outgoing(k);
@@ -188,7 +194,8 @@ CameraSpline::CameraSpline(const CameraPath& path)
             s.uSlopeFrom = curveRate[s.from] / secant;
             s.uSlopeTo = curveRate[s.to] / secant;
         }
-        // Spherical Bezier: its derivative at each end is 3 log(q0^-1 q1) / duration = the key's angular rate.
+        // Spherical Bezier: its derivative at each end is 3 log(q0^-1 q1) / duration = the key's angular
+        // rate.
         s.q1 = s.q0 * expOf(angularRate[s.from] * (s.duration / 3.0f));
         s.q2 = s.q3 * expOf(-angularRate[s.to] * (s.duration / 3.0f));
         s.fovSlopeFrom = fovRate[s.from] * s.duration;
@@ -241,8 +248,8 @@ void CameraSpline::buildArcTable() {
         // A cut takes no time, so it has no place on the constant-speed clock either.
         if (s.duration <= 0.0f)
             continue;
-        const SpeedOf speed{keys_[s.from].position, s.tangentFrom, keys_[s.to].position, s.tangentTo, s.uSlopeFrom,
-                            s.uSlopeTo};
+        const SpeedOf speed{keys_[s.from].position, s.tangentFrom, keys_[s.to].position, s.tangentTo,
+                            s.uSlopeFrom,           s.uSlopeTo};
         arcTable_.push_back({total, i, 0.0f});
         for (int k = 1; k <= kArcSamplesPerSegment; ++k) {
             const float a = static_cast<float>(k - 1) / kArcSamplesPerSegment;
@@ -276,8 +283,8 @@ CameraKeyframe CameraSpline::evaluate(std::size_t segment, float tau) const {
     const glm::quat e = slerpAsGiven(b, c, tau);
     k.orientation = glm::normalize(slerpAsGiven(d, e, tau));
     const Hermite h = hermite(tau);
-    const float fov = h.h00 * keys_[s.from].fovY + h.h10 * s.fovSlopeFrom + h.h01 * keys_[s.to].fovY +
-                      h.h11 * s.fovSlopeTo;
+    const float fov =
+        h.h00 * keys_[s.from].fovY + h.h10 * s.fovSlopeFrom + h.h01 * keys_[s.to].fovY + h.h11 * s.fovSlopeTo;
     k.fovY = std::clamp(fov, kMinFov, kMaxFov);
     return k;
 }
@@ -324,13 +331,14 @@ CameraKeyframe CameraSpline::sample(float time) const {
                 // Linear guess, then Newton steps on the integrated length.
                 const Segment& s = segments_[segment];
                 const SpeedOf speed{keys_[s.from].position, s.tangentFrom, keys_[s.to].position, s.tangentTo,
-                                    s.uSlopeFrom, s.uSlopeTo};
+                                    s.uSlopeFrom,           s.uSlopeTo};
                 tau = lo.tau + (hi->tau - lo.tau) * (target - lo.length) / (hi->length - lo.length);
                 for (int iteration = 0; iteration < 2; ++iteration) {
                     const float v = speed(tau);
                     if (!(v > 0.0f))
                         break;
-                    tau = std::clamp(tau - (lo.length + speed.length(lo.tau, tau) - target) / v, lo.tau, hi->tau);
+                    tau = std::clamp(tau - (lo.length + speed.length(lo.tau, tau) - target) / v, lo.tau,
+                                     hi->tau);
                 }
             }
         }

@@ -20,7 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 std::string readText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -45,10 +47,11 @@ const char* kPathFile = R"({
 )";
 
 class VideoCommand : public testing::Test {
-protected:
+  protected:
     void SetUp() override {
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("lpv-cli-video-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+        dir_ = fs::temp_directory_path() /
+               ("lpv-cli-video-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         fs::copy(fs::path(cornellProject()).parent_path(), dir_ / "cornell", fs::copy_options::recursive);
@@ -75,8 +78,8 @@ protected:
 TEST_F(VideoCommand, HelpNamesTheOptions) {
     const RunResult help = runLpv("video --help");
     EXPECT_EQ(help.exitCode, 0);
-    for (const char* option : {"--path NAME", "--fps", "--width", "--height", "--set", "--compare-set", "--label-a",
-                               "--label-b", "%05d"})
+    for (const char* option : {"--path NAME", "--fps", "--width", "--height", "--set", "--compare-set",
+                               "--label-a", "--label-b", "%05d"})
         EXPECT_TRUE(contains(help.output, option)) << option;
     const RunResult all = runLpv("--help");
     EXPECT_TRUE(contains(all.output, "video PROJECT --path NAME -o OUT.mp4")) << all.output;
@@ -93,7 +96,7 @@ TEST_F(VideoCommand, UsageErrorsExitTwo) {
     for (const std::string& args : {
              "video " + project_ + " -o " + mp4,                               // no --path
              base,                                                             // no -o
-             base + " -o " + mp4 + " --width 161 --height 120",               // odd size for H.264
+             base + " -o " + mp4 + " --width 161 --height 120",                // odd size for H.264
              base + " -o " + mp4 + " --fps 0",                                 // frame rate
              base + " -o " + mp4 + " --set lpv.noSuchKey=1",                   // registry
              base + " -o " + mp4 + " --compare-set output.exposure=99",        // out of range
@@ -115,7 +118,8 @@ TEST_F(VideoCommand, FailuresExitOneNamingTheProblem) {
     const RunResult noPath = runLpv("video " + project_ + " --path tour -o " + (dir_ / "x.mp4").string());
     EXPECT_EQ(noPath.exitCode, 1);
     EXPECT_TRUE(contains(noPath.output, "no camera path named \"tour\" (paths: \"dolly\")")) << noPath.output;
-    const RunResult noProject = runLpv("video /nonexistent/p.lpvproj --path dolly -o " + (dir_ / "x.mp4").string());
+    const RunResult noProject =
+        runLpv("video /nonexistent/p.lpvproj --path dolly -o " + (dir_ / "x.mp4").string());
     EXPECT_EQ(noProject.exitCode, 1);
     EXPECT_TRUE(contains(noProject.output, "/nonexistent/p.lpvproj")) << noProject.output;
 }
@@ -202,11 +206,14 @@ TEST_F(VideoCommand, BadPathFileChangesNothing) {
     EXPECT_TRUE(contains(r.output, "keyframes[2].time")) << r.output;
     EXPECT_EQ(readText(project_), before);
 
-    EXPECT_EQ(runLpv("path export " + project_ + " --path dolly -o " + (dir_ / "x.txt").string()).exitCode, 2);
-    EXPECT_EQ(runLpv("path export " + project_ + " --path dolly -o " + (dir_ / "x.json").string() + " --fps 10")
-                  .exitCode,
+    EXPECT_EQ(runLpv("path export " + project_ + " --path dolly -o " + (dir_ / "x.txt").string()).exitCode,
               2);
-    const RunResult missing = runLpv("path export " + project_ + " --path nope -o " + (dir_ / "x.json").string());
+    EXPECT_EQ(
+        runLpv("path export " + project_ + " --path dolly -o " + (dir_ / "x.json").string() + " --fps 10")
+            .exitCode,
+        2);
+    const RunResult missing =
+        runLpv("path export " + project_ + " --path nope -o " + (dir_ / "x.json").string());
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_TRUE(contains(missing.output, "no camera path named 'nope' (paths: 'dolly')")) << missing.output;
     EXPECT_EQ(runLpv("path frobnicate " + project_).exitCode, 2);

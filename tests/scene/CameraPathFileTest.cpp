@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 CameraPath examplePath() {
     CameraPath p;
@@ -58,7 +60,7 @@ Error readFails(const std::string& text) {
 }
 
 class CameraPathFile : public TempDirTest {
-protected:
+  protected:
     CameraPathFile() : TempDirTest("lpv-path-") {}
 };
 
@@ -77,7 +79,8 @@ TEST(CameraPathJson, RoundTripIsExact) {
 
 TEST(CameraPathJson, TheFileLooksAsDocumented) {
     const std::string text = *cameraPathToJson(examplePath());
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"lpvstudio-camera-path\",\n  \"version\": 1,\n  \"name\": ", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"lpvstudio-camera-path\",\n  \"version\": 1,\n  \"name\": ", 0),
+              0u)
         << text;
     EXPECT_TRUE(contains(text, "\"closed\": true,\n  \"constantSpeed\": true,\n  \"keyframes\": [")) << text;
     // The field of view in degrees, as short as reads back exactly.
@@ -117,7 +120,8 @@ TEST(CameraPathJson, UnsortedTimesAreInvalidValue) {
     const Error e = readFails(editedExample("\"time\": 7.5", "\"time\": 1"));
     EXPECT_EQ(e.code, ErrorCode::InvalidValue);
     EXPECT_EQ(e.location, "keyframes[3].time");
-    EXPECT_TRUE(contains(e.message, "keyframe time 1 is earlier than the previous keyframe's 1.25")) << e.message;
+    EXPECT_TRUE(contains(e.message, "keyframe time 1 is earlier than the previous keyframe's 1.25"))
+        << e.message;
 }
 
 TEST(CameraPathJson, WrongTypesAreTypeMismatch) {
@@ -140,16 +144,18 @@ TEST(CameraPathJson, WrongTypesAreTypeMismatch) {
 }
 
 TEST(CameraPathJson, OrientationNeedsFourNumbers) {
-    const Error e = readFails(editedExample("\"orientation\": [\n        0.0,\n        0.0,\n        1.0,\n        0.0\n      ]",
-                                            "\"orientation\": [0, 0, 1]"));
+    const Error e = readFails(
+        editedExample("\"orientation\": [\n        0.0,\n        0.0,\n        1.0,\n        0.0\n      ]",
+                      "\"orientation\": [0, 0, 1]"));
     EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
     EXPECT_EQ(e.location, "keyframes[2].orientation");
     EXPECT_TRUE(contains(e.message, "expected an array of 4 numbers, got an array of 3")) << e.message;
 }
 
 TEST(CameraPathJson, ZeroQuaternionIsInvalidValue) {
-    const Error e = readFails(editedExample("\"orientation\": [\n        0.0,\n        0.0,\n        1.0,\n        0.0\n      ]",
-                                            "\"orientation\": [0, 0, 0, 0]"));
+    const Error e = readFails(
+        editedExample("\"orientation\": [\n        0.0,\n        0.0,\n        1.0,\n        0.0\n      ]",
+                      "\"orientation\": [0, 0, 0, 0]"));
     EXPECT_EQ(e.code, ErrorCode::InvalidValue);
     EXPECT_EQ(e.location, "keyframes[2].orientation");
 }

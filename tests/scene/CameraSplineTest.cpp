@@ -18,7 +18,9 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-glm::quat yaw(float radians) { return glm::angleAxis(radians, glm::vec3(0, 1, 0)); }
+glm::quat yaw(float radians) {
+    return glm::angleAxis(radians, glm::vec3(0, 1, 0));
+}
 
 // Angle of the rotation between two orientations (q and -q are the same);
 // atan2 rather than acos(dot), which loses small angles in float.
@@ -29,7 +31,9 @@ float rotationAngle(const glm::quat& a, const glm::quat& b) {
 
 // The sign a matrix-to-quaternion conversion picks (w >= 0), which puts
 // keys more than 180 degrees from identity in the other hemisphere.
-glm::quat canonical(const glm::quat& q) { return q.w < 0.0f ? -q : q; }
+glm::quat canonical(const glm::quat& q) {
+    return q.w < 0.0f ? -q : q;
+}
 
 // Uneven times and distances, turning orientations, changing field of view.
 CameraPath windingPath(bool closed) {
@@ -46,8 +50,12 @@ CameraPath windingPath(bool closed) {
     return p;
 }
 
-glm::vec3 velocityLeft(const CameraSpline& s, float t, float h) { return (s.sample(t).position - s.sample(t - h).position) / h; }
-glm::vec3 velocityRight(const CameraSpline& s, float t, float h) { return (s.sample(t + h).position - s.sample(t).position) / h; }
+glm::vec3 velocityLeft(const CameraSpline& s, float t, float h) {
+    return (s.sample(t).position - s.sample(t - h).position) / h;
+}
+glm::vec3 velocityRight(const CameraSpline& s, float t, float h) {
+    return (s.sample(t + h).position - s.sample(t).position) / h;
+}
 
 // Body-frame angular velocity (rad/s) from two nearby samples.
 glm::vec3 angularVelocity(const glm::quat& a, const glm::quat& b, float h) {
@@ -59,8 +67,8 @@ glm::vec3 angularVelocity(const glm::quat& a, const glm::quat& b, float h) {
     return s > 0.0f ? v * (2.0f * std::atan2(s, r.w) / s / h) : glm::vec3(0.0f);
 }
 
-void expectSameDirectionAndSpeed(const glm::vec3& left, const glm::vec3& right, float tolerance, const char* what,
-                                 float t) {
+void expectSameDirectionAndSpeed(const glm::vec3& left, const glm::vec3& right, float tolerance,
+                                 const char* what, float t) {
     const float scale = std::max({glm::length(left), glm::length(right), 1.0f});
     EXPECT_LT(glm::length(left - right), tolerance * scale)
         << what << " at t=" << t << ": left (" << left.x << ", " << left.y << ", " << left.z << ") right ("
@@ -117,7 +125,8 @@ TEST(CameraSpline, FirstDerivativeIsContinuousAtKeys) {
     const CameraSpline spline(windingPath(false));
     constexpr float h = 1e-3f;
     for (const float t : {1.0f, 1.5f, 3.5f}) {
-        expectSameDirectionAndSpeed(velocityLeft(spline, t, h), velocityRight(spline, t, h), 0.02f, "velocity", t);
+        expectSameDirectionAndSpeed(velocityLeft(spline, t, h), velocityRight(spline, t, h), 0.02f,
+                                    "velocity", t);
         const glm::quat before = spline.sample(t - h).orientation;
         const glm::quat at = spline.sample(t).orientation;
         const glm::quat after = spline.sample(t + h).orientation;
@@ -148,10 +157,12 @@ TEST(CameraSpline, ClosedLoopIsC1AtTheSeam) {
     const glm::vec3 right = (spline.sample(start + h).position - spline.sample(start).position) / h;
     expectSameDirectionAndSpeed(left, right, 0.02f, "velocity at the seam", start);
     // Also where the closing segment begins (the last key).
-    expectSameDirectionAndSpeed(velocityLeft(spline, 4.0f, h), velocityRight(spline, 4.0f, h), 0.02f, "velocity",
-                                4.0f);
-    const glm::vec3 wLeft = angularVelocity(spline.sample(end - h).orientation, spline.sample(end).orientation, h);
-    const glm::vec3 wRight = angularVelocity(spline.sample(start).orientation, spline.sample(start + h).orientation, h);
+    expectSameDirectionAndSpeed(velocityLeft(spline, 4.0f, h), velocityRight(spline, 4.0f, h), 0.02f,
+                                "velocity", 4.0f);
+    const glm::vec3 wLeft =
+        angularVelocity(spline.sample(end - h).orientation, spline.sample(end).orientation, h);
+    const glm::vec3 wRight =
+        angularVelocity(spline.sample(start).orientation, spline.sample(start + h).orientation, h);
     expectSameDirectionAndSpeed(wLeft, wRight, 0.02f, "angular velocity at the seam", start);
 }
 
@@ -160,8 +171,9 @@ TEST(CameraSpline, ConstantSpeedKeepsSpeedWithinTwoPercentOnVeryUnevenKeys) {
     path.constantSpeed = true;
     // Keys 0.1 to 15 units apart, at even times, with a sharp bend.
     path.keyframes = {
-        {0.0f, {0, 0, 0}, yaw(0), 0.8f},    {1.0f, {0.1f, 0, 0}, yaw(0), 0.8f}, {2.0f, {0.3f, 0, 0.1f}, yaw(0), 0.8f},
-        {3.0f, {15, 0, 2}, yaw(0), 0.8f},   {4.0f, {15, 3, 12}, yaw(0), 0.8f},  {5.0f, {14.5f, 3, 12.2f}, yaw(0), 0.8f},
+        {0.0f, {0, 0, 0}, yaw(0), 0.8f},       {1.0f, {0.1f, 0, 0}, yaw(0), 0.8f},
+        {2.0f, {0.3f, 0, 0.1f}, yaw(0), 0.8f}, {3.0f, {15, 0, 2}, yaw(0), 0.8f},
+        {4.0f, {15, 3, 12}, yaw(0), 0.8f},     {5.0f, {14.5f, 3, 12.2f}, yaw(0), 0.8f},
         {6.0f, {-10, 0, 14}, yaw(0), 0.8f},
     };
     const CameraSpline spline(path);
@@ -226,7 +238,8 @@ TEST(CameraSpline, ATurnOfMoreThan180DegreesGoesTheShortWayPerSegment) {
     // quaternions lie in opposite hemispheres (dot < 0).
     CameraPath path;
     for (int i = 0; i < 4; ++i)
-        path.keyframes.push_back({float(i), {0, 0, float(i)}, canonical(yaw(glm::radians(100.0f * i))), 0.8f});
+        path.keyframes.push_back(
+            {float(i), {0, 0, float(i)}, canonical(yaw(glm::radians(100.0f * i))), 0.8f});
     ASSERT_LT(glm::dot(path.keyframes[1].orientation, path.keyframes[2].orientation), 0.0f);
     const CameraSpline spline(path);
     for (int segment = 0; segment < 3; ++segment) {
@@ -330,7 +343,8 @@ TEST(CameraSpline, KeysAtTheSameTimeMakeACut) {
             const CameraSpline spline(path);
             for (int i = 0; i <= 400; ++i) {
                 const CameraKeyframe k = spline.sample(spline.duration() * i / 400.0f);
-                ASSERT_TRUE(std::isfinite(k.position.x) && std::isfinite(k.orientation.w) && std::isfinite(k.fovY))
+                ASSERT_TRUE(std::isfinite(k.position.x) && std::isfinite(k.orientation.w) &&
+                            std::isfinite(k.fovY))
                     << i;
             }
         }

@@ -28,11 +28,11 @@ namespace fs = std::filesystem;
 namespace {
 
 class VideoExport : public testing::Test {
-protected:
+  protected:
     void SetUp() override {
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::path(testing::TempDir()) / ("lpv-video-" + std::string(info->name()) + "-" +
-                                               std::to_string(::getpid()));
+        dir_ = fs::path(testing::TempDir()) /
+               ("lpv-video-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -76,9 +76,9 @@ DecodedVideo decode(const fs::path& file) {
         while (avcodec_receive_frame(codec, frame) == 0) {
             if (out.frames == 0) {
                 out.firstFrameRgb.resize(std::size_t(frame->width) * std::size_t(frame->height) * 3);
-                SwsContext* sws = sws_getContext(frame->width, frame->height, AVPixelFormat(frame->format),
-                                                 frame->width, frame->height, AV_PIX_FMT_RGB24, SWS_BILINEAR, nullptr,
-                                                 nullptr, nullptr);
+                SwsContext* sws =
+                    sws_getContext(frame->width, frame->height, AVPixelFormat(frame->format), frame->width,
+                                   frame->height, AV_PIX_FMT_RGB24, SWS_BILINEAR, nullptr, nullptr, nullptr);
                 std::uint8_t* dst[1] = {out.firstFrameRgb.data()};
                 const int stride[1] = {frame->width * 3};
                 sws_scale(sws, frame->data, frame->linesize, 0, frame->height, dst, stride);
@@ -154,7 +154,8 @@ TEST_F(VideoExport, TwoSecondsAt30FpsIs60DecodableFramesOfTheRightSize) {
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(ok) << ok.error().describe();
-    std::printf("exported 60 frames of 160x120 in %.2f s with %s\n", seconds, video::videoEncoderName().c_str());
+    std::printf("exported 60 frames of 160x120 in %.2f s with %s\n", seconds,
+                video::videoEncoderName().c_str());
     EXPECT_EQ(entries(), std::set<std::string>{"cornell.mp4"}) << "no temporary file left";
 
     ASSERT_EQ(reports.size(), 60u);
@@ -175,7 +176,9 @@ TEST_F(VideoExport, TwoSecondsAt30FpsIs60DecodableFramesOfTheRightSize) {
     EXPECT_NEAR(v.fps, 30.0, 1e-6);
     // Colours survive RGB -> yuv420p -> RGB: the red wall on the left, the green one on the right.
     ASSERT_EQ(v.firstFrameRgb.size(), 160u * 120u * 3u);
-    const auto pixel = [&](int x, int y, int c) { return int(v.firstFrameRgb[(std::size_t(y) * 160 + std::size_t(x)) * 3 + std::size_t(c)]); };
+    const auto pixel = [&](int x, int y, int c) {
+        return int(v.firstFrameRgb[(std::size_t(y) * 160 + std::size_t(x)) * 3 + std::size_t(c)]);
+    };
     EXPECT_GT(pixel(35, 60, 0), pixel(35, 60, 1) + 20) << "left wall red";
     EXPECT_GT(pixel(125, 60, 1), pixel(125, 60, 0) + 20) << "right wall green";
 }
@@ -189,10 +192,11 @@ TEST_F(VideoExport, CancelledExportLeavesNoFileAndNoTemporaryFile) {
     options.height = 64;
     options.warmupFrames = 0;
     int calls = 0;
-    const auto result = video::renderVideo(project, cornellDir(), options, [&](const video::VideoProgress& p) {
-        ++calls;
-        return p.frame < 5;
-    });
+    const auto result =
+        video::renderVideo(project, cornellDir(), options, [&](const video::VideoProgress& p) {
+            ++calls;
+            return p.frame < 5;
+        });
     ASSERT_FALSE(result);
     EXPECT_EQ(result.error().code, scene::ErrorCode::Cancelled);
     EXPECT_EQ(calls, 5);
@@ -243,8 +247,8 @@ TEST_F(VideoExport, PngSequenceHasOneFilePerFrame) {
     std::set<std::string> shots;
     for (const auto& e : fs::directory_iterator(dir_ / "shots"))
         shots.insert(e.path().filename().string());
-    EXPECT_EQ(shots, (std::set<std::string>{"notes.txt", "take-0.png", "take-1.png", "take-2.png", "take-3.png",
-                                            "take-4.png"}));
+    EXPECT_EQ(shots, (std::set<std::string>{"notes.txt", "take-0.png", "take-1.png", "take-2.png",
+                                            "take-3.png", "take-4.png"}));
 }
 
 TEST_F(VideoExport, SideBySideHalvesDifferWhenTheSetsDo) {

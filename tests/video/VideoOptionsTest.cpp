@@ -15,7 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 VideoOptions smallOptions() {
     VideoOptions o;
@@ -70,7 +72,8 @@ TEST(VideoOutput, UnsupportedNamesAreInvalidValue) {
         EXPECT_EQ(out.error().code, scene::ErrorCode::InvalidValue) << name;
         EXPECT_EQ(out.error().location, "output") << name;
     }
-    EXPECT_TRUE(contains(videoOutputFor("clip.mov").error().message, "use .mp4, a folder")) << "names the choices";
+    EXPECT_TRUE(contains(videoOutputFor("clip.mov").error().message, "use .mp4, a folder"))
+        << "names the choices";
 }
 
 TEST(VideoOutput, FrameFileNamesArePadded) {
@@ -132,7 +135,8 @@ TEST(VideoOptions, BadOverridesAreTheRegistrysErrors) {
     EXPECT_TRUE(contains(e.message, "lpv.noSuchKey")) << e.message;
 
     o.setA.clear();
-    o.setB = std::vector<std::pair<std::string, std::string>>{{"output.exposure", "0"}, {"output.exposure", "99"}};
+    o.setB =
+        std::vector<std::pair<std::string, std::string>>{{"output.exposure", "0"}, {"output.exposure", "99"}};
     e = checkFails(o);
     EXPECT_EQ(e.code, scene::ErrorCode::OutOfRange);
     EXPECT_EQ(e.location, "setB[1]");

@@ -10,7 +10,9 @@
 
 namespace lpv::test {
 
-inline std::filesystem::path cornellDir() { return std::filesystem::path(kSourceDir) / "projects" / "cornell-box"; }
+inline std::filesystem::path cornellDir() {
+    return std::filesystem::path(kSourceDir) / "projects" / "cornell-box";
+}
 
 // The built-in Cornell box plus "dolly": `seconds` long, from the published
 // camera forward and to the side, turning a little.

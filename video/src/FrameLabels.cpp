@@ -90,16 +90,18 @@ const Glyph& glyphFor(char c) {
     return kFont[0];
 }
 
-// Blends `colour` over the pixel with `alpha` (0..255).
+// Blends the grey `value` over the pixel with opacity `alpha` (0..255).
 void blend(scene::Image8& image, int x, int y, std::uint8_t value, int alpha) {
-    std::uint8_t* p = image.pixels.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                             static_cast<std::size_t>(x)) *
-                                                static_cast<std::size_t>(image.channels);
+    std::uint8_t* p =
+        image.pixels.data() +
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) *
+            static_cast<std::size_t>(image.channels);
     for (int c = 0; c < 3; ++c)
         p[c] = static_cast<std::uint8_t>((p[c] * (255 - alpha) + value * alpha + 127) / 255);
 }
 
-void fillRect(scene::Image8& image, int x0, int y0, int x1, int y1, std::uint8_t value, int alpha, int clipRight) {
+void fillRect(scene::Image8& image, int x0, int y0, int x1, int y1, std::uint8_t value, int alpha,
+              int clipRight) {
     x0 = std::max(x0, 0);
     y0 = std::max(y0, 0);
     x1 = std::min({x1, image.width, clipRight});
@@ -111,20 +113,25 @@ void fillRect(scene::Image8& image, int x0, int y0, int x1, int y1, std::uint8_t
 
 } // namespace
 
-int labelScale(int height) { return std::max(1, height / 180); }
+int labelScale(int height) {
+    return std::max(1, height / 180);
+}
 
 int labelWidth(std::string_view text, int scale) {
     return text.empty() ? 0 : (kAdvance * static_cast<int>(text.size()) - 1) * scale;
 }
 
-int labelHeight(int scale) { return kGlyphHeight * scale; }
+int labelHeight(int scale) {
+    return kGlyphHeight * scale;
+}
 
 void drawLabel(scene::Image8& image, int x, int y, std::string_view text, int scale, int clipRight) {
     if (text.empty() || image.channels < 3)
         return;
     const int pad = kPadding * scale;
     // A translucent box keeps the text readable over bright and dark frames alike.
-    fillRect(image, x, y, x + labelWidth(text, scale) + 2 * pad, y + labelHeight(scale) + 2 * pad, 0, 150, clipRight);
+    fillRect(image, x, y, x + labelWidth(text, scale) + 2 * pad, y + labelHeight(scale) + 2 * pad, 0, 150,
+             clipRight);
     for (std::size_t i = 0; i < text.size(); ++i) {
         const Glyph& g = glyphFor(text[i]);
         const int gx = x + pad + static_cast<int>(i) * kAdvance * scale;
@@ -136,8 +143,9 @@ void drawLabel(scene::Image8& image, int x, int y, std::string_view text, int sc
     }
 }
 
-scene::Image8 sideBySide(const std::vector<std::uint8_t>& left, int leftWidth, const std::vector<std::uint8_t>& right,
-                         int rightWidth, int height, std::string_view leftLabel, std::string_view rightLabel) {
+scene::Image8 sideBySide(const std::vector<std::uint8_t>& left, int leftWidth,
+                         const std::vector<std::uint8_t>& right, int rightWidth, int height,
+                         std::string_view leftLabel, std::string_view rightLabel) {
     scene::Image8 out;
     out.width = leftWidth + rightWidth;
     out.height = height;
@@ -146,9 +154,10 @@ scene::Image8 sideBySide(const std::vector<std::uint8_t>& left, int leftWidth, c
     const auto rowBytes = [](int w) { return static_cast<std::size_t>(w) * 4u; };
     for (int y = 0; y < height; ++y) {
         std::uint8_t* row = out.pixels.data() + static_cast<std::size_t>(y) * rowBytes(out.width);
-        std::memcpy(row, left.data() + static_cast<std::size_t>(y) * rowBytes(leftWidth), rowBytes(leftWidth));
-        std::memcpy(row + rowBytes(leftWidth), right.data() + static_cast<std::size_t>(y) * rowBytes(rightWidth),
-                    rowBytes(rightWidth));
+        std::memcpy(row, left.data() + static_cast<std::size_t>(y) * rowBytes(leftWidth),
+                    rowBytes(leftWidth));
+        std::memcpy(row + rowBytes(leftWidth),
+                    right.data() + static_cast<std::size_t>(y) * rowBytes(rightWidth), rowBytes(rightWidth));
     }
     fillRect(out, leftWidth - 1, 0, leftWidth + 1, height, 230, 255, out.width);
     const int scale = labelScale(height);

@@ -100,10 +100,12 @@ Mp4Writer::Mp4Writer(Mp4Writer&&) noexcept = default;
 Mp4Writer& Mp4Writer::operator=(Mp4Writer&&) noexcept = default;
 Mp4Writer::~Mp4Writer() = default;
 
-const std::string& Mp4Writer::encoder() const { return state_->encoder; }
+const std::string& Mp4Writer::encoder() const {
+    return state_->encoder;
+}
 
-scene::Expected<Mp4Writer> Mp4Writer::open(const std::filesystem::path& file, const std::string& where, int width,
-                                           int height, double fps, int crf) {
+scene::Expected<Mp4Writer> Mp4Writer::open(const std::filesystem::path& file, const std::string& where,
+                                           int width, int height, double fps, int crf) {
     quietFfmpegLog();
     Mp4Writer writer;
     State& s = *writer.state_;
@@ -112,7 +114,8 @@ scene::Expected<Mp4Writer> Mp4Writer::open(const std::filesystem::path& file, co
     s.height = height;
     const std::string name = file.string();
     // The muxer is named: the temporary file's name has no .mp4 extension.
-    if (const int r = avformat_alloc_output_context2(&s.format, nullptr, "mp4", name.c_str()); r < 0 || !s.format)
+    if (const int r = avformat_alloc_output_context2(&s.format, nullptr, "mp4", name.c_str());
+        r < 0 || !s.format)
         return s.fail("cannot set up the MP4 muxer", r);
 
     const AVCodec* encoder = findEncoder();
@@ -129,7 +132,8 @@ scene::Expected<Mp4Writer> Mp4Writer::open(const std::filesystem::path& file, co
     s.codec->pix_fmt = AV_PIX_FMT_YUV420P;
     s.codec->time_base = av_inv_q(rate);
     s.codec->framerate = rate;
-    s.codec->gop_size = std::max(1, static_cast<int>(std::lround(fps * 2.0))); // a key frame every 2 s, for seeking
+    s.codec->gop_size =
+        std::max(1, static_cast<int>(std::lround(fps * 2.0))); // a key frame every 2 s, for seeking
     s.codec->color_range = AVCOL_RANGE_MPEG;
     s.codec->colorspace = AVCOL_SPC_BT709;
     s.codec->color_primaries = AVCOL_PRI_BT709;

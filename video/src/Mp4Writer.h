@@ -13,10 +13,10 @@
 namespace lpv::video::detail {
 
 class Mp4Writer {
-public:
+  public:
     // `file` is written (the temporary name); `where` names the output in errors.
-    static scene::Expected<Mp4Writer> open(const std::filesystem::path& file, const std::string& where, int width,
-                                           int height, double fps, int crf);
+    static scene::Expected<Mp4Writer> open(const std::filesystem::path& file, const std::string& where,
+                                           int width, int height, double fps, int crf);
 
     Mp4Writer(Mp4Writer&&) noexcept;
     Mp4Writer& operator=(Mp4Writer&&) noexcept;
@@ -27,7 +27,7 @@ public:
     scene::Expected<void> finish();
     const std::string& encoder() const;
 
-private:
+  private:
     Mp4Writer();
     struct State;
     std::unique_ptr<State> state_;

@@ -88,9 +88,10 @@ const scene::CameraPath* findPath(const scene::Scene& s, const std::string& name
 
 // The project's parameters with `overrides` applied; errors are located at
 // "setA[i]" (`name`) of `file` (the output) and keep the registry's message.
-scene::Expected<scene::ParameterSet> withOverrides(const scene::ParameterSet& base,
-                                                  const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                  const std::string& file, const std::string& name) {
+scene::Expected<scene::ParameterSet>
+withOverrides(const scene::ParameterSet& base,
+              const std::vector<std::pair<std::string, std::string>>& overrides, const std::string& file,
+              const std::string& name) {
     scene::ParameterSet out = base;
     for (std::size_t i = 0; i < overrides.size(); ++i)
         if (auto ok = out.setFromText(overrides[i].first, overrides[i].second, file); !ok) {
@@ -105,8 +106,8 @@ scene::Expected<scene::ParameterSet> withOverrides(const scene::ParameterSet& ba
 // Makes the renamed file or folder durable (POSIX; best effort).
 void syncPath([[maybe_unused]] const fs::path& path, [[maybe_unused]] bool folder) {
 #ifndef _WIN32
-    const int fd = ::open(path.empty() ? "." : path.c_str(), folder ? (O_RDONLY | O_DIRECTORY | O_CLOEXEC)
-                                                                     : (O_RDONLY | O_CLOEXEC));
+    const int fd = ::open(path.empty() ? "." : path.c_str(),
+                          folder ? (O_RDONLY | O_DIRECTORY | O_CLOEXEC) : (O_RDONLY | O_CLOEXEC));
     if (fd >= 0) {
         ::fsync(fd);
         ::close(fd);
@@ -117,7 +118,7 @@ void syncPath([[maybe_unused]] const fs::path& path, [[maybe_unused]] bool folde
 // Where frames go while rendering, and how they reach the target. Removes
 // the temporary file or folder unless commit() succeeded.
 class PendingOutput {
-public:
+  public:
     PendingOutput(const PendingOutput&) = delete;
     PendingOutput& operator=(const PendingOutput&) = delete;
     ~PendingOutput() {
@@ -127,7 +128,8 @@ public:
         }
     }
 
-    static scene::Expected<std::unique_ptr<PendingOutput>> create(const VideoOutput& out, const std::string& where) {
+    static scene::Expected<std::unique_ptr<PendingOutput>> create(const VideoOutput& out,
+                                                                  const std::string& where) {
         auto p = std::unique_ptr<PendingOutput>(new PendingOutput());
         p->out_ = out;
         p->where_ = where;
@@ -136,8 +138,8 @@ public:
         if (out.format == VideoFormat::Mp4) {
             fs::create_directories(folder, ec);
             if (ec)
-                return makeError(ErrorCode::IoError, where, "", "cannot create the folder " + folder.string() + ": " +
-                                                                     ec.message());
+                return makeError(ErrorCode::IoError, where, "",
+                                 "cannot create the folder " + folder.string() + ": " + ec.message());
             p->target_ = folder / out.pattern;
             p->temp_ = folder / (out.pattern + tempSuffix());
             return p;
@@ -188,7 +190,7 @@ public:
         return {};
     }
 
-private:
+  private:
     PendingOutput() = default;
     VideoOutput out_;
     std::string where_;
@@ -222,8 +224,9 @@ scene::Expected<VideoOutput> videoOutputFor(const fs::path& output) {
         return VideoOutput{VideoFormat::PngSequence, output.parent_path(), kFolderPattern};
     if (name.find('%') != std::string::npos) {
         if (!findPlaceholder(name))
-            return makeError(ErrorCode::InvalidValue, where, "output",
-                             "a numbered file name needs exactly one %d or %0Nd (N up to 99), such as frame-%05d.png");
+            return makeError(
+                ErrorCode::InvalidValue, where, "output",
+                "a numbered file name needs exactly one %d or %0Nd (N up to 99), such as frame-%05d.png");
         if (!lower(name).ends_with(".png"))
             return makeError(ErrorCode::InvalidValue, where, "output",
                              "numbered frames are written as PNG: end the name with .png");
@@ -249,7 +252,9 @@ int videoFrameCount(double duration, double fps) {
     return static_cast<int>(std::clamp(count, 1.0, 1e9));
 }
 
-std::string videoEncoderName() { return detail::chooseEncoderName(); }
+std::string videoEncoderName() {
+    return detail::chooseEncoderName();
+}
 
 scene::Expected<void> checkVideoOptions(const scene::Project& project, const VideoOptions& options) {
     const std::string where = options.output.string();
@@ -262,15 +267,16 @@ scene::Expected<void> checkVideoOptions(const scene::Project& project, const Vid
         for (const scene::CameraPath& p : project.scene.cameraPaths)
             names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
         return makeError(ErrorCode::InvalidValue, where, "pathName",
-                         "the project has no camera path named \"" + options.pathName + "\" (paths: " +
-                             (names.empty() ? std::string("none") : names) + ")");
+                         "the project has no camera path named \"" + options.pathName +
+                             "\" (paths: " + (names.empty() ? std::string("none") : names) + ")");
     }
     if (path->keyframes.empty())
         return makeError(ErrorCode::InvalidValue, where, "pathName",
                          "the camera path \"" + options.pathName + "\" has no keyframes");
     const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
     if (options.width < 1 || options.height < 1 || options.width > kMaxSide || options.height > kMaxSide)
-        return makeError(ErrorCode::OutOfRange, where, options.width < 1 || options.width > kMaxSide ? "width" : "height",
+        return makeError(ErrorCode::OutOfRange, where,
+                         options.width < 1 || options.width > kMaxSide ? "width" : "height",
                          "the frame size " + size + " is outside 1.." + std::to_string(kMaxSide));
     if (options.setB && options.width < 2)
         return makeError(ErrorCode::OutOfRange, where, "width", "side by side needs a width of at least 2");
@@ -304,7 +310,8 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
     const scene::CameraSpline spline(*findPath(project.scene, options.pathName));
     const scene::ParameterSet paramsA = *withOverrides(project.parameters, options.setA, where, "setA");
     const std::optional<scene::ParameterSet> paramsB =
-        options.setB ? std::optional(*withOverrides(project.parameters, *options.setB, where, "setB")) : std::nullopt;
+        options.setB ? std::optional(*withOverrides(project.parameters, *options.setB, where, "setB"))
+                     : std::nullopt;
     // Near and far planes (the path has none) from the camera the project would render with.
     const scene::Camera base =
         project.scene.cameras.empty() ? scene::framingCamera(project.scene) : project.scene.cameras.front();
@@ -335,8 +342,8 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
         return std::unexpected(pending.error());
     std::optional<detail::Mp4Writer> mp4;
     if (output.format == VideoFormat::Mp4) {
-        auto writer = detail::Mp4Writer::open((*pending)->temp(), where, options.width, options.height, options.fps,
-                                              options.crf);
+        auto writer = detail::Mp4Writer::open((*pending)->temp(), where, options.width, options.height,
+                                              options.fps, options.crf);
         if (!writer)
             return std::unexpected(writer.error());
         mp4.emplace(std::move(*writer));
@@ -353,8 +360,8 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
         }
         if (auto ok = renderers[1].render(project.scene, *paramsB, camera, widthB, options.height); !ok)
             return ok;
-        out = sideBySide(renderers[0].readDisplay(), widthA, renderers[1].readDisplay(), widthB, options.height,
-                         options.labelA, options.labelB);
+        out = sideBySide(renderers[0].readDisplay(), widthA, renderers[1].readDisplay(), widthB,
+                         options.height, options.labelA, options.labelB);
         return {};
     };
 
@@ -370,7 +377,9 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
         if (mp4) {
             if (auto ok = mp4->write(image.pixels.data()); !ok)
                 return ok;
-        } else if (auto ok = importers::writeImage((*pending)->temp() / frameFileName(output.pattern, i), image); !ok) {
+        } else if (auto ok =
+                       importers::writeImage((*pending)->temp() / frameFileName(output.pattern, i), image);
+                   !ok) {
             return ok;
         }
         const double elapsed = secondsSince(began);
@@ -378,7 +387,8 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
         const VideoProgress p{i + 1, frames, elapsed, perFrame * (frames - i - 1)};
         if (progress && !progress(p))
             return makeError(ErrorCode::Cancelled, where, "",
-                             "cancelled after frame " + std::to_string(i + 1) + " of " + std::to_string(frames));
+                             "cancelled after frame " + std::to_string(i + 1) + " of " +
+                                 std::to_string(frames));
     }
     if (mp4)
         if (auto ok = mp4->finish(); !ok)

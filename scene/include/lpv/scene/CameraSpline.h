@@ -28,7 +28,7 @@
 namespace lpv::scene {
 
 class CameraSpline {
-public:
+  public:
     explicit CameraSpline(const CameraPath& path);
 
     // Time of the last key minus the first; a closed path adds its closing
@@ -52,7 +52,7 @@ public:
     // sample(time); near/far planes and name stay base's. With no keys: base.
     Camera cameraAt(float time, const Camera& base) const;
 
-private:
+  private:
     struct Segment {
         std::size_t from = 0, to = 0; // key indices (to wraps to 0 on the closing segment)
         float start = 0.0f;           // time at `from`

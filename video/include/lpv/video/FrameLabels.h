@@ -27,7 +27,8 @@ void drawLabel(scene::Image8& image, int x, int y, std::string_view text, int sc
 // `left` fills [0, leftWidth), `right` the rest, a 2-pixel light divider
 // between them, each labelled at its top-left corner (no box when the label
 // is empty).
-scene::Image8 sideBySide(const std::vector<std::uint8_t>& left, int leftWidth, const std::vector<std::uint8_t>& right,
-                         int rightWidth, int height, std::string_view leftLabel, std::string_view rightLabel);
+scene::Image8 sideBySide(const std::vector<std::uint8_t>& left, int leftWidth,
+                         const std::vector<std::uint8_t>& right, int rightWidth, int height,
+                         std::string_view leftLabel, std::string_view rightLabel);
 
 } // namespace lpv::video

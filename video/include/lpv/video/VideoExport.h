@@ -58,7 +58,8 @@ struct VideoProgress {
 // never holds a half-written video. Cancelling returns ErrorCode::Cancelled.
 // Creates and destroys its own GL context on the calling thread.
 Expected<void> renderVideo(const scene::Project& project, const std::filesystem::path& projectDir,
-                           const VideoOptions& options, const std::function<bool(const VideoProgress&)>& progress);
+                           const VideoOptions& options,
+                           const std::function<bool(const VideoProgress&)>& progress);
 
 // Everything renderVideo checks before it opens a context: the path exists
 // and has keys, sizes, frame rate, output kind, parameter overrides. Errors
