@@ -126,8 +126,11 @@ void lpvSendChannel(int a, float sigma, float dc, vec3 v, float t0, vec4 tSide, 
 
 // The source cell's (r, g, b) sent along sigma e_a into the neighbour, through
 // the blocking potential on the face between them (zero: no occlusion).
-void lpvSend(int a, float sigma, vec4 r, vec4 g, vec4 b, vec4 blocking, inout vec3 accDc, inout vec3 accNR,
-             inout vec3 accNG, inout vec3 accNB) {
+// `directed` is the destination cell's dilated VPL normal for directed
+// propagation (zero: undirected): each re-emitted lobe n_f is weighted by
+// min(1, 1 + n_f . directed), folded into the faces' transmittances.
+void lpvSend(int a, float sigma, vec4 r, vec4 g, vec4 b, vec4 blocking, vec3 directed, inout vec3 accDc,
+             inout vec3 accNR, inout vec3 accNG, inout vec3 accNB) {
     int ib = (a + 1) % 3, ic = (a + 2) % 3;
     // Transmittance 1 - clamp(B(-w)) per face.
     float bDc = SH_Y0 * blocking.x;
@@ -135,6 +138,9 @@ void lpvSend(int a, float sigma, vec4 r, vec4 g, vec4 b, vec4 blocking, inout ve
     float t0 = 1.0 - clamp(bDc - sigma * bV[a], 0.0, 1.0);
     float bSide = bDc - sigma * LPV_SIDE_MAIN * bV[a];
     vec4 tSide = vec4(1.0) - clamp(vec4(bSide) - LPV_SIDE_OFF * vec4(bV[ib], -bV[ib], bV[ic], -bV[ic]), 0.0, 1.0);
+    // Face normals: sigma e_a (front), +-e_b, +-e_c (sides).
+    t0 *= min(1.0, 1.0 + sigma * directed[a]);
+    tSide *= min(vec4(1.0), vec4(1.0) + vec4(directed[ib], -directed[ib], directed[ic], -directed[ic]));
     lpvSendChannel(a, sigma, SH_Y0 * r.x, lpvVectorPart(r), t0, tSide, accDc.r, accNR);
     lpvSendChannel(a, sigma, SH_Y0 * g.x, lpvVectorPart(g), t0, tSide, accDc.g, accNG);
     lpvSendChannel(a, sigma, SH_Y0 * b.x, lpvVectorPart(b), t0, tSide, accDc.b, accNB);
@@ -147,12 +153,15 @@ vec4 lpvFinishChannel(float accDc, vec3 accN) {
 
 // The same from the face table, for a direction known only at run time (the
 // raster scatter's vertex shader, one point per direction).
-void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, inout vec4 outR, inout vec4 outG,
-                              inout vec4 outB) {
+void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, vec3 directed, inout vec4 outR,
+                              inout vec4 outG, inout vec4 outB) {
     for (int f = 0; f < 5; ++f) {
         vec4 basis = LPV_FACE_BASIS[5 * i + f];
         float blocked = dot(blocking, vec4(basis.x, -basis.yzw));
-        vec4 lobe = LPV_FACE_LOBE[5 * i + f] * (1.0 - clamp(blocked, 0.0, 1.0));
+        vec4 table = LPV_FACE_LOBE[5 * i + f];
+        // The lobe is c (1, -n.y, n.z, -n.x) up to scale: its face normal n_f, for directed propagation.
+        vec3 faceNormal = normalize(vec3(-table.w, -table.y, table.z));
+        vec4 lobe = table * ((1.0 - clamp(blocked, 0.0, 1.0)) * min(1.0, 1.0 + dot(faceNormal, directed)));
         outR += max(0.0, dot(r, basis)) * lobe;
         outG += max(0.0, dot(g, basis)) * lobe;
         outB += max(0.0, dot(b, basis)) * lobe;
@@ -236,14 +245,24 @@ vec4 lpvBlockingBetween(int k, ivec3 q, int a, float sigma) {
     return lpvFaceBlocking(a, ivec3(faceCell.xy, k * uGridSize + faceCell.z));
 }
 #endif
+#ifdef LPV_WITH_DIRECTED
+// Directed propagation: the dilated VPL normals (lpv_normals.comp), stacked
+// like the LPV; w = 1 where a cell has one.
+layout(binding = 7) uniform sampler3D uLpvNormals;
+uniform bool uDirected;
+
+vec3 lpvDirectedNormal(int k, ivec3 p) {
+    return uDirected ? texelFetch(uLpvNormals, ivec3(p.xy, k * uGridSize + p.z), 0).xyz : vec3(0.0);
+}
+#endif
 #ifdef LPV_WITH_SOURCES
 layout(binding = 0) uniform sampler3D uSourceR;
 layout(binding = 1) uniform sampler3D uSourceG;
 layout(binding = 2) uniform sampler3D uSourceB;
 
 // Gather: light from the neighbour q = p - sigma e_a, if it is inside and not dark.
-void lpvGatherFrom(int a, float sigma, int k, ivec3 p, inout vec3 accDc, inout vec3 nR, inout vec3 nG,
-                   inout vec3 nB) {
+void lpvGatherFrom(int a, float sigma, int k, ivec3 p, vec3 directed, inout vec3 accDc, inout vec3 nR,
+                   inout vec3 nG, inout vec3 nB) {
     ivec3 q = p;
     q[a] -= int(sigma);
     if (!lpvInsideCascade(q))
@@ -252,19 +271,20 @@ void lpvGatherFrom(int a, float sigma, int k, ivec3 p, inout vec3 accDc, inout v
     vec4 r = texelFetch(uSourceR, source, 0), g = texelFetch(uSourceG, source, 0), b = texelFetch(uSourceB, source, 0);
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return; // dark neighbours send nothing: skip the face math and the GV
-    lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), accDc, nR, nG, nB);
+    lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), directed, accDc, nR, nG, nB);
 }
 
 // The whole gather for destination cell p of cascade k.
 void lpvGather(int k, ivec3 p, out vec4 r, out vec4 g, out vec4 b) {
     vec3 accDc = vec3(0.0), nR = vec3(0.0), nG = vec3(0.0), nB = vec3(0.0);
+    vec3 directed = lpvDirectedNormal(k, p);
     // Literal directions, so that the compiler folds every axis index.
-    lpvGatherFrom(0, 1.0, k, p, accDc, nR, nG, nB);
-    lpvGatherFrom(0, -1.0, k, p, accDc, nR, nG, nB);
-    lpvGatherFrom(1, 1.0, k, p, accDc, nR, nG, nB);
-    lpvGatherFrom(1, -1.0, k, p, accDc, nR, nG, nB);
-    lpvGatherFrom(2, 1.0, k, p, accDc, nR, nG, nB);
-    lpvGatherFrom(2, -1.0, k, p, accDc, nR, nG, nB);
+    lpvGatherFrom(0, 1.0, k, p, directed, accDc, nR, nG, nB);
+    lpvGatherFrom(0, -1.0, k, p, directed, accDc, nR, nG, nB);
+    lpvGatherFrom(1, 1.0, k, p, directed, accDc, nR, nG, nB);
+    lpvGatherFrom(1, -1.0, k, p, directed, accDc, nR, nG, nB);
+    lpvGatherFrom(2, 1.0, k, p, directed, accDc, nR, nG, nB);
+    lpvGatherFrom(2, -1.0, k, p, directed, accDc, nR, nG, nB);
     r = lpvFinishChannel(accDc.r, nR);
     g = lpvFinishChannel(accDc.g, nG);
     b = lpvFinishChannel(accDc.b, nB);

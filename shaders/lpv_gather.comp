@@ -9,6 +9,7 @@
 // memory tile of the sources (8x4x4 cells and a border) fetched less but ran
 // 1.6x slower on llvmpipe, whose barriers are expensive (docs/lpv.md).
 #define LPV_WITH_FACE_BLOCKING
+#define LPV_WITH_DIRECTED
 #define LPV_WITH_SOURCES
 #include "sh.glsl"
 #include "lpv_common.glsl"

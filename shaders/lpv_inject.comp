@@ -16,6 +16,11 @@ uniform float uCellSize[6];
 uniform float uInjectionOffset; // cells
 
 layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; }; // 12 per cell: channel * 4 + coefficient
+// Directed propagation: per cell the VPL normals' sum in fixed point and their
+// count (lpv_normals.comp averages them). Scale 2^30 / texels per tile: even
+// every texel of a tile in one cell stays below 2^30.
+layout(std430, binding = 3) buffer LpvNormalSums { int normalSums[]; }; // 4 per cell: x, y, z, count
+uniform bool uDirected;
 
 void main() {
     ivec3 texel = ivec3(gl_GlobalInvocationID);
@@ -39,6 +44,13 @@ void main() {
     ivec3 cell = min(ivec3(floor(u)), ivec3(uGridSize - 1));
     float scale = lpvFixedScale(k);
     vec4 lobe = shCosineLobe(n) * (scale / SH_PI);
+    if (uDirected) {
+        int nb = lpvCellIndex(k, cell) * 4;
+        float normalScale = 1073741824.0 / float(uTexelsPerTile);
+        for (int j = 0; j < 3; ++j)
+            atomicAdd(normalSums[nb + j], int(round(n[j] * normalScale)));
+        atomicAdd(normalSums[nb + 3], 1);
+    }
     int base = lpvCellIndex(k, cell) * 12;
     for (int c = 0; c < 3; ++c) {
         if (flux[c] == 0.0)

@@ -3,6 +3,7 @@
 // fragment of this slice. Targets 0-2 take the step's result, 3-5 are the
 // accumulator with additive blending.
 #define LPV_WITH_FACE_BLOCKING
+#define LPV_WITH_DIRECTED
 #define LPV_WITH_SOURCES
 #include "sh.glsl"
 #include "lpv_common.glsl"

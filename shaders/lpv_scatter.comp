@@ -4,6 +4,7 @@
 // (lpv_common.glsl); lpv_resolve.comp then writes the floats and accumulates.
 #define LPV_WITH_FACE_BLOCKING
 #define LPV_WITH_FIXED_POINT
+#define LPV_WITH_DIRECTED
 #include "sh.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
@@ -20,7 +21,7 @@ void pushInto(int a, float sigma, int k, ivec3 q, vec4 r, vec4 g, vec4 b, float 
     if (!lpvInsideCascade(p))
         return;
     vec3 accDc = vec3(0.0), nR = vec3(0.0), nG = vec3(0.0), nB = vec3(0.0);
-    lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), accDc, nR, nG, nB);
+    lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), lpvDirectedNormal(k, p), accDc, nR, nG, nB);
     vec4 outR = lpvFinishChannel(accDc.r, nR), outG = lpvFinishChannel(accDc.g, nG),
          outB = lpvFinishChannel(accDc.b, nB);
     int base = lpvCellIndex(k, p) * 12;

@@ -20,7 +20,9 @@ constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 
 // SSBO bindings shared by the shaders (lpv_common.glsl and the passes).
-constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2;
+constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2, kNormalSumsBinding = 3;
+// Texture unit of the directed propagation's normals (lpv_common.glsl, LPV_WITH_DIRECTED).
+constexpr GLuint kNormalsUnit = 7;
 
 std::vector<glm::vec4> readVolumeBlock(GLuint texture, int size, int firstSlice) {
     std::vector<glm::vec4> v(std::size_t(size) * std::size_t(size) * std::size_t(size));
@@ -49,6 +51,9 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
     // The registry only admits the four names.
     s.variant = lpvVariantFromName(params.getEnum("lpv.variant")).value_or(LpvVariant::ComputeGather);
+    // auto: whenever the LPV runs (SceneAnalysis says the same); off by default in the registry.
+    s.directed = params.getEnum("lpv.directedPropagation") != "off";
+    s.directedDilation = params.getInt("lpv.directedDilation");
     return s;
 }
 
@@ -67,6 +72,8 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.gvFromCamera_, {"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}},
         {&pass.gvMerge_, {"lpv_gv_merge.comp"}, {}},
         {&pass.faceBlocking_, {"lpv_face_blocking.comp"}, {}},
+        {&pass.normals_, {"lpv_normals.comp"}, {}},
+        {&pass.normalsDilate_, {"lpv_normals.comp"}, {"NORMALS_DILATE 1"}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
@@ -116,14 +123,21 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         disable("volumes do not fit");
         return ok;
     }
+    volumes_.ensureDirected(settings.directed);
     cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
     tileSize_ = rsm.tileSize;
     injectionOffset_ = settings.injectionOffset;
     active_ = true;
 
     timer.begin("lpvInject");
-    inject(rsm);
+    inject(rsm, settings.directed);
     timer.end("lpvInject");
+    normalsIndex_ = -1;
+    if (settings.directed) {
+        timer.begin("lpvNormals");
+        buildNormals(settings.directedDilation);
+        timer.end("lpvNormals");
+    }
     if (settings.occlusion) {
         timer.begin("gvInject");
         injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
@@ -138,11 +152,12 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
             std::to_string(settings.propagationSteps) + " steps, " + lpvVariantName(settings.variant) +
             (settings.occlusion ? ", occlusion from the RSM" +
                                       std::string(settings.gvFromCamera && camera ? " and the camera" : "")
-                                : ", no occlusion");
+                                : ", no occlusion") +
+            (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "");
     return {};
 }
 
-void LpvPass::inject(const LpvRsmInput& rsm) {
+void LpvPass::inject(const LpvRsmInput& rsm, bool directed) {
     const int tiles = volumes_.cascades();
     const GLuint zero = 0;
     glClearNamedBufferData(volumes_.scales.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -170,6 +185,9 @@ void LpvPass::inject(const LpvRsmInput& rsm) {
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), rsm.tileSize * rsm.tileSize);
     glProgramUniform1i(p, loc(p, "uScaleSlot"), -1);
     glProgramUniform1f(p, loc(p, "uInjectionOffset"), injectionOffset_);
+    glProgramUniform1i(p, loc(p, "uDirected"), directed ? 1 : 0);
+    if (directed)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNormalSumsBinding, volumes_.normalSums.id());
     glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -257,6 +275,31 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     glMemoryBarrier(kComputeResults);
 }
 
+void LpvPass::buildNormals(int dilation) {
+    const int n = volumes_.gridSize();
+    const GLuint gx = groups(n, 4), gz = groups(n * volumes_.cascades(), 4);
+    GLuint p = normals_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNormalSumsBinding, volumes_.normalSums.id());
+    glBindImageTexture(0, volumes_.normals[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(gx, gx, gz);
+    glMemoryBarrier(kComputeResults);
+    normalsIndex_ = 0;
+    p = normalsDilate_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    for (int i = 0; i < dilation; ++i) {
+        glBindTextureUnit(0, volumes_.normals[std::size_t(normalsIndex_)].id());
+        glBindImageTexture(0, volumes_.normals[std::size_t(1 - normalsIndex_)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           GL_RGBA32F);
+        glDispatchCompute(gx, gx, gz);
+        glMemoryBarrier(kComputeResults);
+        normalsIndex_ = 1 - normalsIndex_;
+    }
+}
+
 void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {
     // Layout bindings: sources 0..2, the GV 3, the face blocking 4..6.
     for (int c = 0; c < 3; ++c)
@@ -265,6 +308,9 @@ void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const 
         glBindTextureUnit(GLuint(4 + a), volumes_.faceBlocking[std::size_t(a)].id());
     glBindTextureUnit(3, volumes_.geometry.id()); // uGv, layout binding 3
     glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
+    const bool directed = normalsIndex_ >= 0;
+    glBindTextureUnit(kNormalsUnit, directed ? volumes_.normals[std::size_t(normalsIndex_)].id() : 0);
+    glProgramUniform1i(program, loc(program, "uDirected"), directed ? 1 : 0);
 }
 
 void LpvPass::propagate(const LpvSettings& settings) {

@@ -35,6 +35,10 @@ struct LpvSettings {
     bool occlusion = true;
     bool gvFromCamera = true;
     LpvVariant variant = LpvVariant::ComputeGather;
+    // Directed propagation (docs/lpv.md): a normals volume from the VPLs,
+    // dilated this many cells, keeps light from flowing back into its emitter.
+    bool directed = false;
+    int directedDilation = 1;
 
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };
@@ -82,9 +86,11 @@ class LpvPass {
 
   private:
     LpvPass() = default;
-    void inject(const LpvRsmInput& rsm);
+    void inject(const LpvRsmInput& rsm, bool directed);
     void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
     void propagate(const LpvSettings& settings);
+    // Directed propagation: the injected normal sums to averages, then dilated.
+    void buildNormals(int dilation);
     // Fixed-point sums to floats into volume `destination` and the accumulator,
     // decoded with the scale of `scaleSlot` (-1: injection); the result's
     // largest coefficient goes to `recordSlot` (lpv_common.glsl).
@@ -95,11 +101,13 @@ class LpvPass {
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
+    Program normals_, normalsDilate_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;
     bool active_ = false;
     int readIndex_ = 0; // volume holding the last step's result
+    int normalsIndex_ = -1; // normals texture the propagation reads; -1: undirected
     int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)
     int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
     float injectionOffset_ = 1.0f;

@@ -38,8 +38,24 @@ std::size_t LpvVolumes::allocatedBytes() const {
     const std::size_t n = std::size_t(gridSize_), k = std::size_t(cascades_), m = n + 1;
     if (n == 0)
         return 0;
+    const std::size_t directed = normals[0] ? 2 * n * n * n * k * kTexelBytes + 4 * n * n * n * k * 4 : 0;
     return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
-           8 * m * m * m * k * 4 + 3 * k * 4;
+           8 * m * m * m * k * 4 + 3 * k * 4 + directed;
+}
+
+void LpvVolumes::ensureDirected(bool directed) {
+    if (!directed || gridSize_ == 0) {
+        for (Texture& t : normals)
+            t.reset();
+        normalSums.reset();
+        return;
+    }
+    if (normals[0])
+        return;
+    for (Texture& t : normals)
+        t = makeVolume(gridSize_, gridSize_, gridSize_ * cascades_);
+    normalSums = makeZeroBuffer(4 * std::size_t(gridSize_) * std::size_t(gridSize_) * std::size_t(gridSize_) *
+                                std::size_t(cascades_) * 4);
 }
 
 void LpvVolumes::release() {
@@ -56,6 +72,9 @@ void LpvVolumes::release() {
     scales.reset();
     for (Framebuffer& f : rasterTarget)
         f.reset();
+    for (Texture& t : normals)
+        t.reset();
+    normalSums.reset();
     gridSize_ = cascades_ = 0;
 }
 

@@ -21,6 +21,8 @@ class LpvVolumes {
     // Allocates for N cells per axis and K cascades, or names the parameter
     // that does not fit the GPU (texture size, buffer size, memory).
     scene::Expected<void> ensure(int gridSize, int cascades);
+    // The normals volume of directed propagation, allocated only while it runs.
+    void ensureDirected(bool directed);
     void release();
 
     int gridSize() const { return gridSize_; }
@@ -36,6 +38,11 @@ class LpvVolumes {
     Buffer scales;                       // 3K uint (float bits): brightest texel per tile, then the largest
                                          // |coefficient| per cascade of two volumes (lpv_common.glsl)
     std::array<Framebuffer, 2> rasterTarget; // [i]: volume[i] (0-2) + accumulator (3-5), layered
+    // Directed propagation only (ensureDirected): the averaged VPL normals per
+    // cell, ping-pong for the dilation (RGBA32F, N x N x N K), and their
+    // fixed-point sums at injection (4 int per cell).
+    std::array<Texture, 2> normals;
+    Buffer normalSums;
 
   private:
     int gridSize_ = 0;

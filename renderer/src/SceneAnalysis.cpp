@@ -105,9 +105,14 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
             d.reason += "; the pass is not implemented yet (issue #6)";
         out.push_back(std::move(d));
     };
-    add(decide("Directed propagation", "lpv.directedPropagation", params, lpv.wanted,
-               "the LPV runs: keeps light from flowing back onto the surfaces that emitted it",
-               "the LPV does not run"));
+    EffectDecision directed = decide("Directed propagation", "lpv.directedPropagation", params, lpv.wanted,
+                                     "the LPV runs: keeps light from flowing back onto the surfaces that emitted it",
+                                     "the LPV does not run");
+    if (directed.wanted && !lpv.wanted) {
+        directed.wanted = false; // forced on, but there is no LPV to direct
+        directed.reason = "forced on by lpv.directedPropagation, but the LPV does not run (" + lpv.reason + ")";
+    }
+    out.push_back(directed);
     const int percent = int(std::lround(100.0f * t.openSkyFraction));
     const bool skyLit = s.sky.intensity > 0.0f;
     add(decide("Sky light injection", "effects.skyInjection", params,

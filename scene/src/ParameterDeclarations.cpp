@@ -64,6 +64,9 @@ std::vector<ParameterInfo> declareParameters() {
         choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",
                "Directed propagation: a normals volume keeps light from flowing back onto its emitter",
                P::LpvInjection | P::LpvPropagation | P::Shading),
+        integer("lpv.directedDilation", 1, 0, 8, "cells", "LPV",
+                "How far the VPL normals of directed propagation spread from the cells they were injected into",
+                P::LpvPropagation | P::Shading),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
         // --- Effects (thesis extensions) ---

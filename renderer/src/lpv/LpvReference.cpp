@@ -124,7 +124,57 @@ float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& trave
     return 1.0f - std::clamp(blocked, 0.0f, 1.0f);
 }
 
-ShGrid propagateStep(const ShGrid& source, const GvGrid* gv) {
+NormalGrid::NormalGrid(int cells) : n(cells) {
+    normal.assign(std::size_t(cells) * std::size_t(cells) * std::size_t(cells), glm::vec4(0.0f));
+}
+
+NormalGrid injectNormals(const GridFrame& grid, std::span<const Vpl> vpls, float offsetCells) {
+    NormalGrid out(grid.n);
+    std::vector<int> count(out.normal.size(), 0);
+    std::vector<glm::dvec3> sum(out.normal.size(), glm::dvec3(0.0));
+    for (const Vpl& v : vpls) {
+        const glm::vec3 moved = v.position + v.normal * (offsetCells * grid.cellSize);
+        const glm::ivec3 c = cellOf((moved - grid.origin) / grid.cellSize);
+        if (!out.inside(c.x, c.y, c.z))
+            continue;
+        const std::size_t i = out.index(c.x, c.y, c.z);
+        sum[i] += glm::dvec3(glm::normalize(v.normal));
+        ++count[i];
+    }
+    for (std::size_t i = 0; i < out.normal.size(); ++i)
+        if (count[i] > 0)
+            out.normal[i] = glm::vec4(glm::vec3(sum[i] / double(count[i])), 1.0f);
+    return out;
+}
+
+NormalGrid dilateNormals(const NormalGrid& normals) {
+    NormalGrid out = normals;
+    const int n = normals.n;
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                if (normals.at(x, y, z).w > 0.0f)
+                    continue; // a cell keeps the normals of its own VPLs
+                glm::vec3 sum(0.0f);
+                int count = 0;
+                for (const glm::ivec3& d : kAxes) {
+                    const glm::ivec3 q = glm::ivec3(x, y, z) + d;
+                    if (normals.inside(q.x, q.y, q.z) && normals.at(q.x, q.y, q.z).w > 0.0f) {
+                        sum += glm::vec3(normals.at(q.x, q.y, q.z));
+                        ++count;
+                    }
+                }
+                if (count > 0)
+                    out.normal[out.index(x, y, z)] = glm::vec4(sum / float(count), 1.0f);
+            }
+    return out;
+}
+
+float directedWeight(const glm::vec3& faceNormal, const glm::vec4& cellNormal) {
+    return std::min(1.0f, 1.0f + glm::dot(faceNormal, glm::vec3(cellNormal)));
+}
+
+ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* normals) {
     const int n = source.n;
     ShGrid out(n);
     const auto& faces = propagationFaces();
@@ -141,7 +191,9 @@ ShGrid propagateStep(const ShGrid& source, const GvGrid* gv) {
                     const float t = gv ? transmittance(*gv, glm::vec3(q) + 0.5f + 0.5f * glm::vec3(f.travel),
                                                        f.direction)
                                        : 1.0f;
-                    const dvec4 lobe(sh::cosineLobe(f.normal));
+                    // Directed propagation: less of what heads back into the emitting surface.
+                    const float directed = normals ? directedWeight(f.normal, normals->at(x, y, z)) : 1.0f;
+                    const dvec4 lobe(sh::cosineLobe(f.normal) * directed);
                     for (int c = 0; c < 3; ++c) {
                         // Negative lobes are an artefact of two bands: they carry no light.
                         const double intensity =
@@ -157,11 +209,11 @@ ShGrid propagateStep(const ShGrid& source, const GvGrid* gv) {
     return out;
 }
 
-ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps) {
+ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps, const NormalGrid* normals) {
     ShGrid accumulated = injected;
     ShGrid current = injected;
     for (int i = 0; i < steps; ++i) {
-        current = propagateStep(current, gv);
+        current = propagateStep(current, gv, normals);
         accumulated += current;
     }
     return accumulated;

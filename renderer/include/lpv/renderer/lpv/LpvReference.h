@@ -90,10 +90,33 @@ GvGrid mergeByMax(const GvGrid& a, const GvGrid& b);
 // Transmittance of light travelling along unit `travel` through GV coordinate `g`.
 float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& travel);
 
-// One propagation step (gather); `gv` null = no occlusion.
-ShGrid propagateStep(const ShGrid& source, const GvGrid* gv);
+// Directed propagation (docs/lpv.md): per cell the average unit normal of the
+// VPLs injected into it (xyz) and whether any was (w = 1), then dilated.
+struct NormalGrid {
+    int n = 0;
+    std::vector<glm::vec4> normal; // index as ShGrid
+
+    explicit NormalGrid(int cells = 0);
+    std::size_t index(int x, int y, int z) const {
+        return std::size_t(x) + std::size_t(n) * (std::size_t(y) + std::size_t(n) * std::size_t(z));
+    }
+    bool inside(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x < n && y < n && z < n; }
+    const glm::vec4& at(int x, int y, int z) const { return normal[index(x, y, z)]; }
+};
+// The VPLs' normals, averaged per cell they are injected into (same cell as injectVpls).
+NormalGrid injectNormals(const GridFrame& grid, std::span<const Vpl> vpls, float offsetCells);
+// One dilation: a cell without normals takes the average of its 6 neighbours that have one.
+NormalGrid dilateNormals(const NormalGrid& normals);
+// The weight of light re-emitted into a cell along face normal n_f, given the
+// cell's (dilated) normal d: min(1, 1 + n_f . d). Light heading back into the
+// surface that emitted it (n_f = -d) is removed; sideways or away it is kept.
+float directedWeight(const glm::vec3& faceNormal, const glm::vec4& cellNormal);
+
+// One propagation step (gather); `gv` null = no occlusion, `normals` null = undirected.
+ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* normals = nullptr);
 // V_0 + V_1 + ... + V_steps, V_0 = injected.
-ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps);
+ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps,
+                              const NormalGrid* normals = nullptr);
 
 // Total flux (W) of all cells of one channel: the integral of I over the sphere, summed.
 double totalFlux(const ShGrid& grid, int channel);
