@@ -7,7 +7,10 @@
 
 #include <filesystem>
 
+#include "lpv/renderer/SceneAnalysis.h"
+
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -30,6 +33,10 @@ one row per frame, then median/min/max over the frames rendered.
                         OUT-KEY-V.png, and compares their GPU times; several
                         such keys render every combination
   --frames N            Frames to render for the timing table (default 5)
+  --explain             Before rendering, print the scene analysis: for each
+                        effect whether its passes run and why, e.g. that sky
+                        light injection is skipped in a closed scene, from
+                        the scene and the --set values
   --dump LIST           Also write the renderer's internal images beside OUT,
                         comma-separated: shadow (every shadow map / cascade
                         depth), rsm (position, normal and flux of every RSM
@@ -72,6 +79,7 @@ int runRender(Args args) {
     const auto heightText = args.option("--height");
     const auto framesText = args.option("--frames");
     const auto dumpText = args.option("--dump");
+    const bool explain = args.flag("--explain");
     RenderRequest request;
     request.cameraName = args.option("--camera");
     request.sets = args.options("--set");
@@ -122,6 +130,8 @@ int runRender(Args args) {
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
     const scene::ParameterSet base = setup->project.parameters;
     std::vector<std::pair<std::string, double>> totals;
+    const renderer::SceneTraits traits =
+        explain ? renderer::analyseSceneTraits(setup->project.scene) : renderer::SceneTraits{};
     for (const auto& combination : runs) {
         setup->project.parameters = base;
         for (const auto& [key, value] : combination)
@@ -130,6 +140,15 @@ int runRender(Args args) {
         if (!combination.empty()) {
             out.replace_filename(out.stem().string() + combinationSuffix(combination) + out.extension().string());
             std::printf("\n== %s\n", combinationSuffix(combination).substr(1).c_str());
+        }
+        if (explain) {
+            std::printf("scene analysis (%d%% of %d sky probes open):\n",
+                        int(std::lround(100.0f * traits.openSkyFraction)), traits.skyProbes);
+            for (const renderer::EffectDecision& e :
+                 renderer::decideEffects(setup->project.scene, traits, setup->project.parameters, &setup->camera,
+                                         float(*width) / float(*height)))
+                std::printf("  %-26s %-4s %s = %s: %s\n", e.effect.c_str(), e.runs() ? "run" : "skip",
+                            e.parameter.c_str(), e.setting.c_str(), e.reason.c_str());
         }
         setup->renderer->timer().clearHistory();
         if (!renderFrames(*setup, *width, *height, *frames))
