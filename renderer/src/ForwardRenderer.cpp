@@ -2,6 +2,7 @@
 
 #include "FrameContext.h"
 #include "LpvPass.h"
+#include "SkyHeightPass.h"
 #include "MaterialGpu.h"
 #include "RsmPass.h"
 #include "ShadowPass.h"
@@ -62,6 +63,11 @@ struct ForwardRenderer::Impl {
     std::optional<LpvPass> lpv;
     // Created on the first frame that wants sun rays: a pass that never runs allocates nothing.
     std::optional<SunRaysPass> sunRays;
+    // Sky light injection's top-down depth map, likewise created on first use
+    // and dropped again when the sky is not injected.
+    std::optional<SkyHeightPass> skyHeight;
+    // What the scene's geometry says (open sky...): rays are cast once per scene change.
+    std::optional<SceneTraits> traits;
     std::vector<EffectDecision> frameEffects;
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
@@ -185,8 +191,33 @@ struct ForwardRenderer::Impl {
         input.normal = rsm->normalArray();
         input.flux = rsm->fluxArray();
         input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
-        return lpv->run(LpvSettings::fromParameters(frame.params), input, gBufferValid ? &previousCamera : nullptr,
-                        frame.timer);
+        const LpvSettings settings = LpvSettings::fromParameters(frame.params);
+
+        if (!traits)
+            traits = analyseSceneTraits(frame.scene);
+        EffectDecision sky = decideSkyInjection(frame.scene, *traits, frame.params);
+        frameEffects.push_back(decideDirectedPropagation(frame.params, true, ""));
+        frameEffects.push_back(sky);
+        std::optional<LpvSkyInput> skyInput;
+        if (sky.runs() && !input.cascades.empty()) {
+            if (!skyHeight) {
+                auto created = SkyHeightPass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                skyHeight.emplace(std::move(*created));
+            }
+            auto rendered = skyHeight->render(frame, *sceneGpu, *materialGpu, input.cascades.back(),
+                                              SkyHeightPass::resolutionFor(settings.gridSize,
+                                                                           int(input.cascades.size())));
+            if (!rendered)
+                return std::unexpected(rendered.error());
+            skyInput = *rendered;
+            skyInput->radiance = frame.scene.sky.color * frame.scene.sky.intensity;
+        } else {
+            skyHeight.reset(); // a pass that does not run holds no GPU memory
+        }
+        return lpv->run(settings, input, gBufferValid ? &previousCamera : nullptr, frame.timer,
+                        skyInput ? &*skyInput : nullptr);
     }
 
     void renderTonemap(const FrameContext& frame) {
@@ -233,17 +264,20 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
 }
 
 void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
+    impl_->traits.reset();
     impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
 }
 
 void ForwardRenderer::updateObjects(const scene::Scene& scene) {
+    impl_->traits.reset(); // moved or hidden objects can open or close the sky
     if (!impl_->sceneGpu)
         return setScene(scene);
     impl_->sceneGpu->updateDraws(scene);
 }
 
 void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures) {
+    impl_->traits.reset();
     if (!impl_->sceneGpu)
         return setScene(scene, textures);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
@@ -284,14 +318,15 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         return ok;
     if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
+    d.frameEffects.clear();
     if (auto ok = d.runLpv(frame); !ok)
         return ok;
     d.renderForward(frame);
     d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};
     d.gBufferValid = true;
-    d.frameEffects = {decideSunRays(scene, params, &camera, float(width) / float(height))};
-    if (d.frameEffects[0].runs()) {
+    d.frameEffects.push_back(decideSunRays(scene, params, &camera, float(width) / float(height)));
+    if (d.frameEffects.back().runs()) {
         if (!d.sunRays) {
             auto created = SunRaysPass::create();
             if (!created)

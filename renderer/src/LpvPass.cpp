@@ -74,6 +74,7 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.faceBlocking_, {"lpv_face_blocking.comp"}, {}},
         {&pass.normals_, {"lpv_normals.comp"}, {}},
         {&pass.normalsDilate_, {"lpv_normals.comp"}, {"NORMALS_DILATE 1"}},
+        {&pass.skyInject_, {"lpv_sky_inject.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
@@ -113,7 +114,7 @@ void LpvPass::setCascadeUniforms(GLuint program) const {
 }
 
 scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
-                                   const LpvCameraInput* camera, GpuTimer& timer) {
+                                   const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky) {
     if (rsm.cascades.empty() || rsm.tileSize <= 0) {
         disable("no RSM to inject from");
         return {};
@@ -132,6 +133,11 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     timer.begin("lpvInject");
     inject(rsm, settings.directed);
     timer.end("lpvInject");
+    if (sky && sky->depth && sky->size > 0) {
+        timer.begin("skyInject");
+        injectSky(*sky);
+        timer.end("skyInject");
+    }
     normalsIndex_ = -1;
     if (settings.directed) {
         timer.begin("lpvNormals");
@@ -153,7 +159,8 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
             (settings.occlusion ? ", occlusion from the RSM" +
                                       std::string(settings.gvFromCamera && camera ? " and the camera" : "")
                                 : ", no occlusion") +
-            (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "");
+            (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
+            (sky && sky->depth ? ", sky light injected" : "");
     return {};
 }
 
@@ -298,6 +305,32 @@ void LpvPass::buildNormals(int dilation) {
         glMemoryBarrier(kComputeResults);
         normalsIndex_ = 1 - normalsIndex_;
     }
+}
+
+void LpvPass::injectSky(const LpvSkyInput& sky) {
+    const GLuint p = skyInject_.id();
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
+    for (int c = 0; c < 3; ++c) {
+        glBindImageTexture(GLuint(c), volumes_.volume[0].channel[std::size_t(c)].id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           GL_RGBA32F);
+        glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
+                           GL_READ_WRITE, GL_RGBA32F);
+    }
+    glBindTextureUnit(0, sky.depth);
+    glProgramUniform1i(p, loc(p, "uSkyDepth"), 0);
+    glProgramUniform2fv(p, loc(p, "uSkyMin"), 1, glm::value_ptr(sky.min));
+    glProgramUniform1f(p, loc(p, "uSkyTexel"), sky.texelSize);
+    glProgramUniform1i(p, loc(p, "uSkySize"), sky.size);
+    glProgramUniform1f(p, loc(p, "uSkyTop"), sky.top);
+    glProgramUniform1f(p, loc(p, "uSkyBottom"), sky.bottom);
+    glProgramUniform3fv(p, loc(p, "uSkyRadiance"), 1, glm::value_ptr(sky.radiance));
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glProgramUniform1i(p, loc(p, "uScaleSlot"), 0);
+    const int n = volumes_.gridSize();
+    glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(volumes_.cascades()));
+    glMemoryBarrier(kComputeResults);
 }
 
 void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {

@@ -59,13 +59,25 @@ struct LpvCameraInput {
     float pixelAngle = 0.0f; // 2 tan(fovY / 2) / height
 };
 
+// Sky light injection: a top-down depth map of the scene (SkyHeightPass) and
+// the sky's radiance (docs/lpv.md).
+struct LpvSkyInput {
+    GLuint depth = 0;          // 2D array of 1 layer, DEPTH_COMPONENT32F, size x size; 1 = no surface
+    int size = 0;
+    glm::vec2 min{0.0f};       // world x, z of texel (0, 0)'s corner
+    float texelSize = 1.0f;
+    float top = 1.0f, bottom = 0.0f; // world heights of depth 0 and depth 1
+    glm::vec3 radiance{0.0f};
+};
+
 class LpvPass {
   public:
     static scene::Expected<LpvPass> create();
 
     // Injection, geometry volume and propagation for this frame.
+    // `sky` (may be null): inject sky light as well.
     scene::Expected<void> run(const LpvSettings& settings, const LpvRsmInput& rsm, const LpvCameraInput* camera,
-                              GpuTimer& timer);
+                              GpuTimer& timer, const LpvSkyInput* sky = nullptr);
     // Nothing to inject (no sun): frees the volumes, shading reads no LPV.
     void disable(std::string reason);
 
@@ -91,6 +103,7 @@ class LpvPass {
     void propagate(const LpvSettings& settings);
     // Directed propagation: the injected normal sums to averages, then dilated.
     void buildNormals(int dilation);
+    void injectSky(const LpvSkyInput& sky);
     // Fixed-point sums to floats into volume `destination` and the accumulator,
     // decoded with the scale of `scaleSlot` (-1: injection); the result's
     // largest coefficient goes to `recordSlot` (lpv_common.glsl).
@@ -101,7 +114,7 @@ class LpvPass {
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
-    Program normals_, normalsDilate_;
+    Program normals_, normalsDilate_, skyInject_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;

@@ -105,27 +105,46 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
             d.reason += "; the pass is not implemented yet (issue #6)";
         out.push_back(std::move(d));
     };
-    EffectDecision directed = decide("Directed propagation", "lpv.directedPropagation", params, lpv.wanted,
-                                     "the LPV runs: keeps light from flowing back onto the surfaces that emitted it",
-                                     "the LPV does not run");
-    if (directed.wanted && !lpv.wanted) {
-        directed.wanted = false; // forced on, but there is no LPV to direct
-        directed.reason = "forced on by lpv.directedPropagation, but the LPV does not run (" + lpv.reason + ")";
+    out.push_back(decideDirectedPropagation(params, lpv.wanted, lpv.reason));
+    EffectDecision sky = decideSkyInjection(s, t, params);
+    if (sky.wanted && !lpv.wanted) {
+        sky.wanted = false; // the sky is injected into the LPV: without one there is nowhere to put it
+        sky.reason += "; but the LPV does not run (" + lpv.reason + ")";
     }
-    out.push_back(directed);
-    const int percent = int(std::lround(100.0f * t.openSkyFraction));
-    const bool skyLit = s.sky.intensity > 0.0f;
-    add(decide("Sky light injection", "effects.skyInjection", params,
-               skyLit && t.openSkyFraction > kOpenSkyThreshold,
-               "open scene: " + std::to_string(percent) + "% of the upward probe rays reach the sky",
-               !skyLit ? "the sky's intensity is 0"
-                       : "closed scene: " + std::to_string(percent) + "% of the upward probe rays reach the sky"));
+    out.push_back(sky);
     add(decide("Subsurface LPV", "effects.subsurface", params, t.hasTranslucentMaterial,
                "a visible material is translucent", "no visible material is translucent"));
     add(decide("Glossy LPV reflections", "effects.glossyReflections", params, t.hasGlossyMaterial,
                "a visible material is glossy", "no visible material is glossy"));
     out.push_back(decideSunRays(s, params, camera, aspect));
     return out;
+}
+
+EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool lpvRuns, const std::string& lpvReason) {
+    EffectDecision d = decide("Directed propagation", "lpv.directedPropagation", params, lpvRuns,
+                              "the LPV runs: keeps light from flowing back onto the surfaces that emitted it",
+                              "the LPV does not run");
+    if (d.wanted && !lpvRuns) {
+        d.wanted = false; // forced on, but there is no LPV to direct
+        d.reason = "forced on by lpv.directedPropagation, but the LPV does not run (" + lpvReason + ")";
+    }
+    return d;
+}
+
+EffectDecision decideSkyInjection(const scene::Scene& s, const SceneTraits& t, const scene::ParameterSet& params) {
+    const int percent = int(std::lround(100.0f * t.openSkyFraction));
+    const bool skyLit = s.sky.intensity > 0.0f;
+    EffectDecision d = decide("Sky light injection", "effects.skyInjection", params,
+                              skyLit && t.openSkyFraction > kOpenSkyThreshold,
+                              "open scene: " + std::to_string(percent) + "% of the downward probe rays reach the ground",
+                              !skyLit ? "the sky's intensity is 0"
+                                      : "closed scene: " + std::to_string(percent) +
+                                            "% of the downward probe rays reach the ground");
+    if (d.wanted && !skyLit) {
+        d.wanted = false;
+        d.reason = "forced on by effects.skyInjection, but the sky's intensity is 0";
+    }
+    return d;
 }
 
 const scene::Light* sunOf(const scene::Scene& s) {

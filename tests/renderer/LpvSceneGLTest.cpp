@@ -110,4 +110,67 @@ TEST_F(LpvSceneGLTest, CornellWallsBleedTheirColourOntoTheWhiteBlocks) {
     }
 }
 
+// Sky light: the open box (a courtyard) calls for it and gets bluish light on
+// its white floor; the closed box (a room) does not call for it, and its
+// image is the same with the setting off.
+Frame renderWithSky(renderer::ForwardRenderer& r, const scene::Project& project, const char* sky,
+                    std::string* decision) {
+    scene::ParameterSet params = project.parameters;
+    EXPECT_TRUE(params.setFromText("effects.skyInjection", sky, "test").has_value());
+    r.setScene(project.scene);
+    for (int i = 0; i < 2; ++i) {
+        auto ok = r.render(project.scene, params, project.scene.cameras.front(), kWidth, kHeight);
+        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
+    }
+    for (const auto& e : r.frameEffects())
+        if (e.parameter == "effects.skyInjection")
+            *decision = std::string(e.runs() ? "run: " : "skip: ") + e.reason;
+    return {r.readHdr(), r.readGBufferAlbedo(), r.readGBufferNormal()};
+}
+
+// Summed HDR over white pixels facing up (the floor and the blocks' tops).
+glm::dvec3 whiteFacingUp(const Frame& f) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
+        const bool white = std::abs(f.albedo[4 * i] - 0.725f) < 0.02f && std::abs(f.albedo[4 * i + 1] - 0.71f) < 0.02f;
+        if (white && f.normal[4 * i + 1] > 0.9f)
+            sum += glm::dvec3(f.hdr[4 * i], f.hdr[4 * i + 1], f.hdr[4 * i + 2]);
+    }
+    return sum;
+}
+
+TEST_F(LpvSceneGLTest, OpenCourtyardReceivesSkyLightClosedRoomDoesNot) {
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    std::string decision;
+
+    scene::Project open = openCornellBox(1.0f);
+    open.scene.sky = {glm::vec3(0.5f, 0.7f, 1.0f), 1.0f}; // the built-in box is an interior: no sky
+    const glm::dvec3 openOff = whiteFacingUp(renderWithSky(*r, open, "off", &decision));
+    const glm::dvec3 openAuto = whiteFacingUp(renderWithSky(*r, open, "auto", &decision));
+    std::cout << "[ figures ] open box: sky " << decision << "; white floor HDR sum off " << openOff.b << " (blue), auto "
+              << openAuto.b << "; added light r/g/b " << (openAuto - openOff).r << " / " << (openAuto - openOff).g
+              << " / " << (openAuto - openOff).b << "\n";
+    EXPECT_EQ(decision.rfind("run", 0), 0u) << decision;
+    EXPECT_NE(r->lpvNote().find("sky light injected"), std::string::npos) << r->lpvNote();
+    const glm::dvec3 added = openAuto - openOff;
+    EXPECT_GT(added.b, 0.05 * openOff.b) << "the sky adds at least 5% on the floor";
+    EXPECT_GT(added.b, 1.5 * added.r) << "and the added light has the sky's blue tint";
+
+    // The closed box with a sun on its roof: the LPV runs, the sky is not called for.
+    scene::Project closed = scene::makeCornellBoxProject();
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    sun.intensity = 3.0f;
+    closed.scene.lights.push_back(sun);
+    closed.scene.sky = open.scene.sky; // a sky there is, but the room is closed
+    const Frame closedOff = renderWithSky(*r, closed, "off", &decision);
+    const Frame closedAuto = renderWithSky(*r, closed, "auto", &decision);
+    std::cout << "[ figures ] closed box: sky " << decision << "\n";
+    EXPECT_EQ(decision.rfind("skip", 0), 0u) << decision;
+    EXPECT_EQ(r->lpvNote().find("sky"), std::string::npos) << r->lpvNote();
+    EXPECT_EQ(closedOff.hdr, closedAuto.hdr);
+}
+
 } // namespace

@@ -72,8 +72,10 @@ protected:
         for (std::size_t i = 0; i < hdr.size(); i += 4)
             f.meanHdr += (hdr[i] + hdr[i + 1] + hdr[i + 2]) / 3.0;
         f.meanHdr /= double(hdr.size() / 4);
-        f.ran = r->frameEffects().at(0).runs();
-        f.reason = r->frameEffects().at(0).reason;
+        // The decisions of the frame end with the sun rays'.
+        EXPECT_EQ(r->frameEffects().back().effect, "Sun rays");
+        f.ran = r->frameEffects().back().runs();
+        f.reason = r->frameEffects().back().reason;
         r->timer().resolveAll();
         const auto table = r->timer().table();
         f.timed = std::any_of(table.begin(), table.end(), [](const auto& t) { return t.pass == "sunRays"; });

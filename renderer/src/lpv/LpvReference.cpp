@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace lpv::renderer::lpvref {
 
@@ -172,6 +173,41 @@ NormalGrid dilateNormals(const NormalGrid& normals) {
 
 float directedWeight(const glm::vec3& faceNormal, const glm::vec4& cellNormal) {
     return std::min(1.0f, 1.0f + glm::dot(faceNormal, glm::vec3(cellNormal)));
+}
+
+float columnTop(const HeightMap& map, float x0, float z0, float x1, float z1) {
+    // Texels whose centres lie in [x0, x1) x [z0, z1).
+    auto first = [&](float w, float lo) { return int(std::ceil((w - lo) / map.texelSize - 0.5f)); };
+    int i0 = first(x0, map.min.x), i1 = first(x1, map.min.x) - 1;
+    int j0 = first(z0, map.min.y), j1 = first(z1, map.min.y) - 1;
+    if (i1 < i0 || j1 < j0) { // narrower than a texel: the one under the centre
+        i0 = i1 = int(std::floor((0.5f * (x0 + x1) - map.min.x) / map.texelSize));
+        j0 = j1 = int(std::floor((0.5f * (z0 + z1) - map.min.y) / map.texelSize));
+    }
+    float top = -std::numeric_limits<float>::infinity();
+    for (int j = std::max(j0, 0); j <= std::min(j1, map.size - 1); ++j)
+        for (int i = std::max(i0, 0); i <= std::min(i1, map.size - 1); ++i)
+            top = std::max(top, map.height[std::size_t(i) + std::size_t(map.size) * std::size_t(j)]);
+    return top;
+}
+
+ShGrid injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& radiance) {
+    ShGrid out(grid.n);
+    const glm::vec4 lobe = sh::cosineLobe({0.0f, -1.0f, 0.0f}); // light travelling down
+    for (int z = 0; z < grid.n; ++z)
+        for (int x = 0; x < grid.n; ++x) {
+            const float x0 = grid.origin.x + float(x) * grid.cellSize, z0 = grid.origin.z + float(z) * grid.cellSize;
+            const float top = columnTop(map, x0, z0, x0 + grid.cellSize, z0 + grid.cellSize);
+            // The first cell above the highest surface; cell 0 when it lies below the cascade.
+            const float above = std::floor((top - grid.origin.y) / grid.cellSize) + 1.0f;
+            const int y = int(std::clamp(above, 0.0f, float(grid.n)));
+            if (y >= grid.n)
+                continue; // covered above the cascade's top
+            // Intensity Phi / pi * cosine lobe, Phi = pi L s^2.
+            for (int c = 0; c < 3; ++c)
+                out.at(c, x, y, z) += radiance[c] * grid.cellSize * grid.cellSize * lobe;
+        }
+    return out;
 }
 
 ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* normals) {

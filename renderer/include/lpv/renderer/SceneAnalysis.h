@@ -46,6 +46,13 @@ const scene::Light* sunOf(const scene::Scene& scene);
 EffectDecision decideSunRays(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera* camera,
                              float aspect);
 
+// Sky light injection's decision alone (the renderer makes it every frame from cached traits).
+EffectDecision decideSkyInjection(const scene::Scene& scene, const SceneTraits& traits,
+                                  const scene::ParameterSet& params);
+// Directed propagation's decision, given whether the LPV runs.
+EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool lpvRuns,
+                                         const std::string& lpvReason);
+
 // The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
 std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
                                           const scene::ParameterSet& params, const scene::Camera* camera,

@@ -112,6 +112,22 @@ NormalGrid dilateNormals(const NormalGrid& normals);
 // surface that emitted it (n_f = -d) is removed; sideways or away it is kept.
 float directedWeight(const glm::vec3& faceNormal, const glm::vec4& cellNormal);
 
+// Sky light injection (docs/lpv.md): a top-down height map of the highest
+// surface per texel (texel (i, j) covers min + [i, i+1] x [j, j+1] texelSize
+// in x and z; -infinity where nothing is). Per column of cells the highest
+// surface over the texels whose centres lie in the column (the texel under the
+// column's centre if none does); the first cell above it receives a VPL
+// facing down with flux pi * radiance * cellSize^2 (the sky's irradiance on
+// the cell's top face).
+struct HeightMap {
+    glm::vec2 min{0.0f}; // world x, z of texel (0, 0)'s corner
+    float texelSize = 1.0f;
+    int size = 0;
+    std::vector<float> height; // texel (i, j) at i + size * j
+};
+float columnTop(const HeightMap& map, float x0, float z0, float x1, float z1);
+ShGrid injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& radiance);
+
 // One propagation step (gather); `gv` null = no occlusion, `normals` null = undirected.
 ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* normals = nullptr);
 // V_0 + V_1 + ... + V_steps, V_0 = injected.
