@@ -102,6 +102,9 @@ int benchLpv(Args args) {
         return usageError("--width, --height and --frames must be positive integers, --warmup zero or more", "bench");
     if (!tiles || !steps)
         return usageError("--tiles takes sizes 32..1024 and --steps counts 0..64, comma-separated", "bench");
+    // A benchmark measures the LPV being computed: no reuse of the last frame's
+    // volumes (a later --set lpv.reuse=true wins).
+    request.sets.insert(request.sets.begin(), "lpv.reuse=false");
     request.projectFile = pos.front();
     int exitCode = kOk;
     auto setup = prepareRender(request, "bench", exitCode);

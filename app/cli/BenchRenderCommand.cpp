@@ -42,6 +42,9 @@ int benchRender(Args args) {
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
 
+    // A benchmark measures the LPV being computed: no reuse of the last frame's
+    // volumes (a later --set lpv.reuse=true wins).
+    request.sets.insert(request.sets.begin(), "lpv.reuse=false");
     request.projectFile = pos.front();
     int exitCode = kOk;
     auto setup = prepareRender(request, "bench", exitCode);

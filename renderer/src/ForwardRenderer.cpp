@@ -2,6 +2,7 @@
 
 #include "FrameContext.h"
 #include "LpvPass.h"
+#include "LpvReuseKey.h"
 #include "SkyHeightPass.h"
 #include "MaterialGpu.h"
 #include "RsmPass.h"
@@ -68,6 +69,10 @@ struct ForwardRenderer::Impl {
     std::optional<SkyHeightPass> skyHeight;
     // What the scene's geometry says (open sky...): rays are cast once per scene change.
     std::optional<SceneTraits> traits;
+    // What the LPV in the volumes was computed from; bumped / reset on scene changes.
+    std::uint64_t sceneGeneration = 0;
+    std::optional<LpvReuseKey> lpvKey;
+    std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
@@ -171,10 +176,12 @@ struct ForwardRenderer::Impl {
 
     Expected<void> runLpv(const FrameContext& frame) {
         if (!rsm->active()) {
+            lpvKey.reset();
             lpv->disable("no directional light: nothing to inject");
             return {};
         }
         if (frame.params.getFloat("lpv.intensity") <= 0.0) {
+            lpvKey.reset();
             lpv->disable("lpv.intensity is 0");
             return {};
         }
@@ -198,6 +205,19 @@ struct ForwardRenderer::Impl {
         EffectDecision sky = decideSkyInjection(frame.scene, *traits, frame.params);
         frameEffects.push_back(decideDirectedPropagation(frame.params, true, ""));
         frameEffects.push_back(sky);
+        // Nothing the LPV is computed from changed: the volumes still hold this frame's answer.
+        LpvReuseKey key{sceneGeneration, frame.scene.lights, frame.scene.sky, lpvParameterValues(frame.params),
+                        input.cascades, settings.occlusion && settings.gvFromCamera && gBufferValid,
+                        glm::mat4(1.0f), 0};
+        if (key.cameraGv) {
+            key.cameraInverseViewProj = previousCamera.inverseViewProj;
+            key.gBufferGeneration = gBufferSceneGeneration;
+        }
+        if (frame.params.getBool("lpv.reuse") && lpv->active() && lpvKey && *lpvKey == key) {
+            lpv->reuse();
+            return {};
+        }
+        lpvKey.reset();
         std::optional<LpvSkyInput> skyInput;
         if (sky.runs() && !input.cascades.empty()) {
             if (!skyHeight) {
@@ -216,8 +236,11 @@ struct ForwardRenderer::Impl {
         } else {
             skyHeight.reset(); // a pass that does not run holds no GPU memory
         }
-        return lpv->run(settings, input, gBufferValid ? &previousCamera : nullptr, frame.timer,
-                        skyInput ? &*skyInput : nullptr);
+        auto ran = lpv->run(settings, input, gBufferValid ? &previousCamera : nullptr, frame.timer,
+                            skyInput ? &*skyInput : nullptr);
+        if (ran && lpv->active())
+            lpvKey = std::move(key);
+        return ran;
     }
 
     void renderTonemap(const FrameContext& frame) {
@@ -265,12 +288,14 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
 
 void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
     impl_->traits.reset();
+    ++impl_->sceneGeneration;
     impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
 }
 
 void ForwardRenderer::updateObjects(const scene::Scene& scene) {
     impl_->traits.reset(); // moved or hidden objects can open or close the sky
+    ++impl_->sceneGeneration;
     if (!impl_->sceneGpu)
         return setScene(scene);
     impl_->sceneGpu->updateDraws(scene);
@@ -278,6 +303,7 @@ void ForwardRenderer::updateObjects(const scene::Scene& scene) {
 
 void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures) {
     impl_->traits.reset();
+    ++impl_->sceneGeneration;
     if (!impl_->sceneGpu)
         return setScene(scene, textures);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
@@ -325,6 +351,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};
     d.gBufferValid = true;
+    d.gBufferSceneGeneration = d.sceneGeneration;
     d.frameEffects.push_back(decideSunRays(scene, params, &camera, float(width) / float(height)));
     if (d.frameEffects.back().runs()) {
         if (!d.sunRays) {

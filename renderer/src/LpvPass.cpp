@@ -99,6 +99,8 @@ void LpvPass::disable(std::string reason) {
     note_ = "LPV: off (" + std::move(reason) + ")";
 }
 
+void LpvPass::reuse() { note_ = "LPV: reused, nothing changed since the last frame (" + computedNote_ + ")"; }
+
 void LpvPass::setCascadeUniforms(GLuint program) const {
     const std::vector<LpvCascade>& cascades = cascades_;
     std::array<glm::vec3, 6> origin{};
@@ -161,6 +163,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
                                 : ", no occlusion") +
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
             (sky && sky->depth ? ", sky light injected" : "");
+    computedNote_ = note_.substr(5); // without "LPV: "
     return {};
 }
 

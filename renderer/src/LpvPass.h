@@ -80,6 +80,8 @@ class LpvPass {
                               GpuTimer& timer, const LpvSkyInput* sky = nullptr);
     // Nothing to inject (no sun): frees the volumes, shading reads no LPV.
     void disable(std::string reason);
+    // Nothing the LPV is computed from changed: keep the volumes as they are.
+    void reuse();
 
     bool active() const { return active_; }
     // One line: what ran and why (or why not), e.g. for `lpv render`.
@@ -125,6 +127,7 @@ class LpvPass {
     int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
     float injectionOffset_ = 1.0f;
     std::string note_ = "LPV: not run yet";
+    std::string computedNote_; // what the last computed frame ran
 };
 
 } // namespace lpv::renderer

@@ -36,6 +36,7 @@ struct LpvCascade {
 
     float extent() const { return cellSize * float(gridSize); }
     scene::Bounds bounds() const { return {origin, origin + glm::vec3(extent())}; }
+    bool operator==(const LpvCascade&) const = default;
 };
 
 struct LpvCascadeSettings {

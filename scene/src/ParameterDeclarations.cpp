@@ -67,6 +67,11 @@ std::vector<ParameterInfo> declareParameters() {
         integer("lpv.directedDilation", 1, 0, 8, "cells", "LPV",
                 "How far the VPL normals of directed propagation spread from the cells they were injected into",
                 P::LpvPropagation | P::Shading),
+        boolean("lpv.reuse", true, "LPV",
+                "Keep last frame's LPV when nothing it is computed from changed (scene, lights, sky, LPV "
+                "parameters, cascade positions, the camera when the geometry volume reads its G-buffer); "
+                "benchmarks turn it off",
+                P::None),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
         // --- Effects (thesis extensions) ---

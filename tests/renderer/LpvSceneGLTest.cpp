@@ -173,4 +173,69 @@ TEST_F(LpvSceneGLTest, OpenCourtyardReceivesSkyLightClosedRoomDoesNot) {
     EXPECT_EQ(closedOff.hdr, closedAuto.hdr);
 }
 
+// "LPV: reused, nothing changed since the last frame": a frame whose scene,
+// lights, LPV parameters, cascades and camera are the last frame's skips
+// injection and propagation (no timer for them) and draws the same image;
+// a change to any of them, or lpv.reuse = false, computes it again.
+struct TimedFrame {
+    std::vector<float> hdr;
+    std::string note;
+    bool lpvTimed = false;
+};
+
+TimedFrame timedFrame(renderer::ForwardRenderer& r, const scene::Project& project, const scene::ParameterSet& params) {
+    r.timer().clearHistory();
+    auto ok = r.render(project.scene, params, project.scene.cameras.front(), kWidth, kHeight);
+    EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
+    r.timer().resolveAll();
+    TimedFrame f{r.readHdr(), r.lpvNote(), false};
+    for (const auto& row : r.timer().table())
+        f.lpvTimed |= row.samples > 0 && (row.pass == "lpvInject" || row.pass == "lpvPropagate");
+    return f;
+}
+
+TEST_F(LpvSceneGLTest, UnchangedFrameReusesTheLpv) {
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    scene::Project project = openCornellBox(1.0f);
+    scene::ParameterSet params = project.parameters;
+    r->setScene(project.scene);
+    const TimedFrame first = timedFrame(*r, project, params);
+    const TimedFrame second = timedFrame(*r, project, params); // now with the camera's G-buffer: computed again
+    EXPECT_TRUE(first.lpvTimed);
+    EXPECT_TRUE(second.lpvTimed) << second.note;
+    const TimedFrame third = timedFrame(*r, project, params);
+    EXPECT_FALSE(third.lpvTimed);
+    EXPECT_EQ(third.note.rfind("LPV: reused, nothing changed since the last frame", 0), 0u) << third.note;
+    EXPECT_EQ(third.hdr, second.hdr);
+
+    // Exposure does not feed the LPV: still reused.
+    ASSERT_TRUE(params.set("output.exposure", 1.0).has_value());
+    EXPECT_FALSE(timedFrame(*r, project, params).lpvTimed);
+    // A propagation parameter does.
+    ASSERT_TRUE(params.set("lpv.propagationSteps", 6).has_value());
+    EXPECT_TRUE(timedFrame(*r, project, params).lpvTimed);
+    EXPECT_FALSE(timedFrame(*r, project, params).lpvTimed);
+    // So does a light.
+    project.scene.lights[0].intensity = 2.0f;
+    EXPECT_TRUE(timedFrame(*r, project, params).lpvTimed);
+    // And a moved object.
+    project.scene.objects.back().transform.translation.x += 0.1f;
+    r->updateObjects(project.scene);
+    EXPECT_TRUE(timedFrame(*r, project, params).lpvTimed);
+    // Once more: the camera G-buffer the geometry volume reads now shows the moved object.
+    EXPECT_TRUE(timedFrame(*r, project, params).lpvTimed);
+    // Turned off, every frame computes, and gets what the reused frame showed.
+    const TimedFrame settled = timedFrame(*r, project, params);
+    ASSERT_TRUE(params.set("lpv.reuse", false).has_value());
+    const TimedFrame recomputed = timedFrame(*r, project, params);
+    EXPECT_FALSE(settled.lpvTimed);
+    EXPECT_TRUE(recomputed.lpvTimed);
+    double maxDiff = 0.0;
+    for (std::size_t i = 0; i < settled.hdr.size(); ++i)
+        maxDiff = std::max(maxDiff, double(std::abs(settled.hdr[i] - recomputed.hdr[i])));
+    std::cout << "[ figures ] reused against recomputed frame: max HDR difference " << maxDiff << "\n";
+    EXPECT_LT(maxDiff, 1e-5);
+}
+
 } // namespace
