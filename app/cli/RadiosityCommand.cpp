@@ -61,7 +61,7 @@ namespace {
 
 std::atomic<bool> gInterrupted{false};
 
-extern "C" void onInterrupt(int) {
+extern "C" void onRadiosityInterrupt(int) {
     gInterrupted = true;
 }
 
@@ -256,7 +256,7 @@ int runRadiosity(Args args) {
         }
     };
     milestones.check(radiosity::progressOf(session.solver(), 0.0, 0));
-    const auto previous = std::signal(SIGINT, onInterrupt);
+    const auto previous = std::signal(SIGINT, onRadiosityInterrupt);
     auto reason = radiosity::solve(session.solver(), *formFactors, options);
     if (reason && refine && *reason == radiosity::StopReason::Converged) {
         const std::size_t split = session.refine(float(*refine));

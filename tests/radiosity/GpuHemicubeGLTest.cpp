@@ -7,6 +7,7 @@
 #include "lpv/radiosity/ProgressiveSolver.h"
 #include "lpv/renderer/GpuHemicube.h"
 
+#include <algorithm>
 #include <numeric>
 
 using namespace lpv;
@@ -117,7 +118,14 @@ TEST_F(GpuHemicubeGLTest, BatchesGiveTheSameFactorsAsSingleShooters) {
     std::vector<float> a, b;
     ASSERT_TRUE(batched->compute(shooters, a).has_value()); // 10 shooters: a batch of 8, then 2
     ASSERT_TRUE(single->compute(shooters, b).has_value());
-    EXPECT_EQ(a, b);
+    ASSERT_EQ(a.size(), b.size());
+    // The same pixels up to the rasteriser's rounding of window coordinates,
+    // which differs with the viewport's offset in the batch's tall target.
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, double(std::abs(a[i] - b[i])));
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_GT(*std::max_element(a.begin(), a.end()), 0.05f);
 }
 
 TEST_F(GpuHemicubeGLTest, HemicubeImageHoldsPatchIdsOfTheLastBatch) {
