@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace lpv::renderer {
@@ -55,23 +56,50 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
     h->raster_ = std::move(*raster);
     h->accumulate_ = std::move(*accumulate);
 
-    // Every patch as its own triangles (IDs are per vertex, so no sharing).
+    // Every patch as its own triangles (IDs are per vertex, so no sharing),
+    // in Morton order of their centres, cut into clusters for culling.
+    scene::Bounds bounds;
+    for (const radiosity::Patch& p : mesh.patches)
+        for (int k = 0; k < p.cornerCount; ++k)
+            bounds.extend(p.corners[std::size_t(k)]);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
+    order.reserve(mesh.size());
+    const glm::vec3 size = glm::max(bounds.size(), glm::vec3(1e-6f));
+    for (std::uint32_t i = 0; i < mesh.size(); ++i) {
+        const glm::vec3 q = glm::clamp((mesh.patches[i].center - bounds.min) / size, 0.0f, 1.0f) * 1023.0f;
+        std::uint64_t code = 0;
+        for (int b = 9; b >= 0; --b)
+            code = (code << 3) | (std::uint64_t((std::uint32_t(q.x) >> b) & 1u) << 2) |
+                   (std::uint64_t((std::uint32_t(q.y) >> b) & 1u) << 1) | std::uint64_t((std::uint32_t(q.z) >> b) & 1u);
+        order.emplace_back(code, i);
+    }
+    std::sort(order.begin(), order.end());
+    constexpr std::size_t kClusterPatches = 256;
     std::vector<HemicubeVertex> verts;
     verts.reserve(mesh.size() * 6);
-    scene::Bounds bounds;
-    for (std::uint32_t i = 0; i < mesh.size(); ++i) {
-        const radiosity::Patch& p = mesh.patches[i];
-        const auto& c = p.corners;
-        verts.push_back({c[0], i});
-        verts.push_back({c[1], i});
-        verts.push_back({c[2], i});
-        if (p.cornerCount == 4) {
+    for (std::size_t start = 0; start < order.size(); start += kClusterPatches) {
+        Cluster cluster;
+        cluster.first = GLint(verts.size());
+        scene::Bounds cb;
+        for (std::size_t k = start; k < std::min(order.size(), start + kClusterPatches); ++k) {
+            const std::uint32_t i = order[k].second;
+            const radiosity::Patch& p = mesh.patches[i];
+            const auto& c = p.corners;
             verts.push_back({c[0], i});
+            verts.push_back({c[1], i});
             verts.push_back({c[2], i});
-            verts.push_back({c[3], i});
+            if (p.cornerCount == 4) {
+                verts.push_back({c[0], i});
+                verts.push_back({c[2], i});
+                verts.push_back({c[3], i});
+            }
+            for (int j = 0; j < p.cornerCount; ++j)
+                cb.extend(c[std::size_t(j)]);
         }
-        for (int k = 0; k < p.cornerCount; ++k)
-            bounds.extend(c[std::size_t(k)]);
+        cluster.count = GLsizei(verts.size()) - cluster.first;
+        cluster.min = cb.min;
+        cluster.max = cb.max;
+        h->clusters_.push_back(cluster);
     }
     const float extent = bounds.empty() ? 1.0f : std::max(glm::length(bounds.size()), 1e-3f);
     // The near plane must be closer than the thinnest gap the scene has (the
@@ -145,7 +173,37 @@ void GpuHemicube::renderShooter(const radiosity::Patch& shooter, int row) const 
         const glm::mat4 viewProj = proj * view;
         glProgramUniformMatrix4fv(raster_.id(), loc, 1, GL_FALSE, glm::value_ptr(viewProj));
         glViewport(face.x, row * resolution_ + face.y, face.width, face.height);
-        glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+        // Frustum planes (Gribb-Hartmann) in clip space -w<=x,y<=w, 0<=z<=w.
+        std::array<glm::vec4, 6> planes;
+        const glm::vec4 r0(viewProj[0][0], viewProj[1][0], viewProj[2][0], viewProj[3][0]);
+        const glm::vec4 r1(viewProj[0][1], viewProj[1][1], viewProj[2][1], viewProj[3][1]);
+        const glm::vec4 r2(viewProj[0][2], viewProj[1][2], viewProj[2][2], viewProj[3][2]);
+        const glm::vec4 r3(viewProj[0][3], viewProj[1][3], viewProj[2][3], viewProj[3][3]);
+        planes = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
+        firsts_.clear();
+        counts_.clear();
+        for (const Cluster& c : clusters_) {
+            bool outside = false;
+            for (const glm::vec4& pl : planes) {
+                const glm::vec3 far(pl.x >= 0 ? c.max.x : c.min.x, pl.y >= 0 ? c.max.y : c.min.y,
+                                    pl.z >= 0 ? c.max.z : c.min.z);
+                if (glm::dot(glm::vec3(pl), far) + pl.w < 0.0f) {
+                    outside = true;
+                    break;
+                }
+            }
+            if (outside)
+                continue;
+            // Neighbouring clusters merge into one range.
+            if (!firsts_.empty() && firsts_.back() + counts_.back() == c.first)
+                counts_.back() += c.count;
+            else {
+                firsts_.push_back(c.first);
+                counts_.push_back(c.count);
+            }
+        }
+        if (!firsts_.empty())
+            glMultiDrawArrays(GL_TRIANGLES, firsts_.data(), counts_.data(), GLsizei(firsts_.size()));
     }
 }
 

@@ -10,6 +10,7 @@
 #include "lpv/scene/Error.h"
 
 #include <memory>
+#include <vector>
 
 namespace lpv::renderer {
 
@@ -37,7 +38,18 @@ class GpuHemicube final : public radiosity::FormFactorSource {
     GpuHemicube() = default;
     void renderShooter(const radiosity::Patch& shooter, int row) const;
 
+    // Patches are drawn in spatially sorted clusters; a cluster whose bounds
+    // lie outside a face's frustum is skipped (a face sees a quarter to a half
+    // of the scene, so this saves most of the triangles on big scenes).
+    struct Cluster {
+        glm::vec3 min{0.0f}, max{0.0f};
+        GLint first = 0;
+        GLsizei count = 0;
+    };
     const radiosity::PatchMesh* mesh_ = nullptr;
+    std::vector<Cluster> clusters_;
+    mutable std::vector<GLint> firsts_; // scratch of renderShooter
+    mutable std::vector<GLsizei> counts_;
     int resolution_ = 0;
     int maxBatch_ = 1;
     int lastBatch_ = 0;
