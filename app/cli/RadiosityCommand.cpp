@@ -232,9 +232,12 @@ int runRadiosity(Args args) {
     };
     if (!makeSource())
         return kFailure;
-    std::printf("form factors: %s, hemicube %d px, %d shooters per batch, target residual %g\n",
-                formFactors->name(), useCpu ? 0 : gpu->resolution(), useCpu ? batch : gpu->preferredBatch(),
-                residualTarget);
+    if (useCpu)
+        std::printf("form factors: %s, %d shooters per batch, target residual %g\n", formFactors->name(),
+                    batch, residualTarget);
+    else
+        std::printf("form factors: %s, hemicube %d px, %d shooters per batch, target residual %g\n",
+                    formFactors->name(), gpu->resolution(), gpu->preferredBatch(), residualTarget);
 
     Milestones milestones;
     radiosity::SolveOptions options;

@@ -70,7 +70,8 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
         std::uint64_t code = 0;
         for (int b = 9; b >= 0; --b)
             code = (code << 3) | (std::uint64_t((std::uint32_t(q.x) >> b) & 1u) << 2) |
-                   (std::uint64_t((std::uint32_t(q.y) >> b) & 1u) << 1) | std::uint64_t((std::uint32_t(q.z) >> b) & 1u);
+                   (std::uint64_t((std::uint32_t(q.y) >> b) & 1u) << 1) |
+                   std::uint64_t((std::uint32_t(q.z) >> b) & 1u);
         order.emplace_back(code, i);
     }
     std::sort(order.begin(), order.end());
