@@ -29,6 +29,9 @@ Commands:
                               Write a camera path as JSON, or as CSV per frame (--fps)
   path import PROJECT FILE.json
                               Add or replace a camera path of the project from a JSON file
+  radiosity PROJECT [-o OUT.lpvproj]
+                              Solve the diffuse light with GPU progressive radiosity (hemicubes),
+                              saved into the project; a second run resumes
 
 Options:
   -h, --help                  Show this help
@@ -66,6 +69,7 @@ int dispatch(std::vector<std::string> args) {
         {"info", {runInfo, printInfoHelp}},
         {"video", {runVideo, printVideoHelp}},
         {"path", {runPath, printPathHelp}},
+        {"radiosity", {runRadiosity, printRadiosityHelp}},
     };
     auto it = commands.find(command);
     if (it == commands.end())

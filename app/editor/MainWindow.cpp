@@ -9,6 +9,7 @@
 #include "ParameterInspector.h"
 #include "PresetBar.h"
 #include "ProfilerPanel.h"
+#include "RadiosityPanel.h"
 #include "PropertyPanel.h"
 #include "Viewport.h"
 
@@ -155,6 +156,9 @@ void MainWindow::createDocks() {
     connect(cameraPaths_, &CameraPathPanel::currentPathChanged, viewport_, &Viewport::setShownPath);
     QDockWidget* pathsDock = addDock(cameraPaths_, "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, pathsDock);
+    radiosity_ = new RadiosityPanel(document_, this);
+    QDockWidget* radiosityDock = addDock(radiosity_, "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(profilerDock, radiosityDock);
     profilerDock->raise();
 
     effects_ = new EffectsPanel(document_, viewport_, this);

@@ -17,6 +17,7 @@ namespace lpv::editor {
 class Autosave;
 class CameraPathPanel;
 class EffectsPanel;
+class RadiosityPanel;
 class OutlinerPanel;
 class ParameterInspector;
 class PresetBar;
@@ -49,6 +50,7 @@ public:
     Viewport* viewport() const { return viewport_; }
     OutlinerPanel* outliner() const { return outliner_; }
     EffectsPanel* effects() const { return effects_; }
+    RadiosityPanel* radiosity() const { return radiosity_; }
     PropertyPanel* properties() const { return properties_; }
     ParameterInspector* inspector() const { return inspector_; }
     PresetBar* presetBar() const { return presetBar_; }
@@ -92,6 +94,7 @@ private:
     Viewport* viewport_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
+    RadiosityPanel* radiosity_ = nullptr;
     PropertyPanel* properties_ = nullptr;
     ParameterInspector* inspector_ = nullptr;
     PresetBar* presetBar_ = nullptr;

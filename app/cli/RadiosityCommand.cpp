@@ -1,0 +1,360 @@
+// `lpv radiosity`: progressive radiosity with GPU hemicubes, saved into the
+// project (docs/radiosity.md). A second run resumes where the first stopped.
+#include "Cli.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/importers/SceneTextures.h"
+#include "lpv/radiosity/RadiositySession.h"
+#include "lpv/radiosity/SolveLoop.h"
+#include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/GpuHemicube.h"
+#include "lpv/renderer/RadiosityView.h"
+#include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectTextures.h"
+
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace lpv::cli {
+
+void printRadiosityHelp() {
+    std::cout << R"(Usage: lpv radiosity PROJECT.lpvproj [options]
+
+Solves the project's diffuse light by progressive refinement: the patches
+with the most unshot energy shoot it, a batch at a time, through hemicubes
+rendered on the GPU (EGL: the GPU where present, Mesa llvmpipe otherwise).
+Emissive materials are the light sources. Prints progress (shots, residual =
+unshot / emitted energy, shooters per second) and the time each residual
+decade was first reached. The solution (patches and radiosity, with a
+checksum) goes into PROJECT.assets/radiosity.lpvrad, or into OUT's assets
+with -o; running again resumes an unfinished solve. Ctrl+C pauses: the
+solution so far is saved.
+
+  -o, --output FILE     Save the project with its solution as FILE (default: in place)
+  --residual R          Stop at this residual (default radiosity.convergenceThreshold)
+  --max-seconds S       Stop after S seconds of solving in this run (default: no limit)
+  --restart             Ignore a saved solution and start over
+  --refine T            After converging, split patches whose radiosity differs
+                        from a neighbour's by more than T (relative, e.g. 0.3),
+                        then solve on to the residual again
+  --set KEY=VALUE       Override a registry parameter (radiosity.maxPatchArea,
+                        radiosity.hemicubeResolution, radiosity.shootersPerBatch, ...)
+  --image FILE          Also render the solution to an image (camera: --camera or the first)
+  --view MODE           radiosity (default), ambient (plus Cohen's ambient term
+                        for the unshot energy), unshot, shot
+  --wireframe           Draw the patch edges over the image
+  --camera NAME         Camera for --image
+  --width N, --height N Size of --image (default 800x600)
+  --hemicube-image FILE Write the first shooter's hemicube of the last batch (patch IDs as colours)
+  --cpu                 Use the CPU reference form factors instead of the GPU (small scenes only)
+  --progress-interval S Seconds between progress lines (default 1)
+)";
+}
+
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+
+extern "C" void onRadiosityInterrupt(int) {
+    gInterrupted = true;
+}
+
+std::optional<double> parseNumber(const std::string& s) {
+    double v = 0.0;
+    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || ptr != s.data() + s.size() || !(v >= 0.0))
+        return std::nullopt;
+    return v;
+}
+
+// Relative texture paths point into the source project's folder; a copy saved
+// elsewhere gets them copied into its own assets.
+void makeTexturePathsAbsolute(scene::Scene& s, const std::filesystem::path& projectDir) {
+    for (scene::Material& m : s.materials)
+        for (std::string* slot : scene::textureSlots(m))
+            if (!slot->empty() && std::filesystem::path(*slot).is_relative())
+                *slot = (projectDir / *slot).lexically_normal().string();
+}
+
+importers::Image8 hemicubeImage(const std::vector<std::uint32_t>& ids, int width, int height) {
+    importers::Image8 image{width, height, 4, std::vector<std::uint8_t>(std::size_t(width * height) * 4, 0)};
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::uint32_t id = ids[std::size_t((height - 1 - y) * width + x)];
+            std::uint8_t* px = &image.pixels[std::size_t(y * width + x) * 4];
+            px[3] = 255;
+            if (id == 0)
+                continue;
+            std::uint32_t h =
+                id * 2654435761u; // Knuth's multiplicative hash: neighbours get distinct colours
+            px[0] = std::uint8_t(64 + (h >> 24) % 192);
+            px[1] = std::uint8_t(64 + (h >> 16) % 192);
+            px[2] = std::uint8_t(64 + (h >> 8) % 192);
+        }
+    return image;
+}
+
+struct Milestones {
+    double next = 0.1;
+    void check(const radiosity::SolveProgress& p) {
+        while (p.residual <= next && next >= 1e-5) {
+            std::printf("reached residual %g after %.2f s, %llu shots, %zu patches\n", next, p.seconds,
+                        static_cast<unsigned long long>(p.shots), p.patches);
+            next /= 10.0;
+        }
+    }
+};
+
+} // namespace
+
+int runRadiosity(Args args) {
+    auto output = args.option("--output");
+    if (auto o = args.option("-o"))
+        output = o;
+    const auto residualText = args.option("--residual");
+    const auto secondsText = args.option("--max-seconds");
+    const auto refineText = args.option("--refine");
+    const auto imageFile = args.option("--image");
+    const auto viewText = args.option("--view");
+    const auto cameraName = args.option("--camera");
+    const auto widthText = args.option("--width");
+    const auto heightText = args.option("--height");
+    const auto hemicubeFile = args.option("--hemicube-image");
+    const auto intervalText = args.option("--progress-interval");
+    const bool restart = args.flag("--restart");
+    const bool wireframe = args.flag("--wireframe");
+    const bool useCpu = args.flag("--cpu");
+    const auto sets = args.options("--set");
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "radiosity");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "radiosity");
+    const auto pos = args.positionals();
+    if (pos.size() != 1)
+        return usageError("expected exactly one project file", "radiosity");
+    const auto maxSeconds = parseNumber(secondsText.value_or("0"));
+    const auto interval = parseNumber(intervalText.value_or("1"));
+    const auto width = parseNumber(widthText.value_or("800"));
+    const auto height = parseNumber(heightText.value_or("600"));
+    if (!maxSeconds || !interval || !width || !height || *width < 1 || *height < 1)
+        return usageError("--max-seconds, --progress-interval, --width and --height must be positive numbers",
+                          "radiosity");
+    const std::string view = viewText.value_or("radiosity");
+    if (view != "radiosity" && view != "ambient" && view != "unshot" && view != "shot")
+        return usageError("--view must be radiosity, ambient, unshot or shot", "radiosity");
+    std::optional<double> refine;
+    if (refineText && !(refine = parseNumber(*refineText)))
+        return usageError("--refine needs a positive number", "radiosity");
+
+    const std::filesystem::path projectFile = pos.front();
+    auto project = scene::loadProject(projectFile);
+    if (!project) {
+        std::cerr << "lpv: " << project.error().describe() << "\n";
+        return kFailure;
+    }
+    for (const std::string& kv : sets) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos)
+            return usageError("--set expects KEY=VALUE, got '" + kv + "'", "radiosity");
+        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok)
+            return usageError(ok.error().describe(), "radiosity");
+    }
+    const scene::ParameterSet& params = project->parameters;
+    double residualTarget = params.getFloat("radiosity.convergenceThreshold");
+    if (residualText) {
+        const auto r = parseNumber(*residualText);
+        if (!r || *r <= 0.0 || *r > 1.0)
+            return usageError("--residual must be in (0, 1]", "radiosity");
+        residualTarget = *r;
+    }
+    scene::Camera camera = project->scene.cameras.empty() ? scene::framingCamera(project->scene)
+                                                          : project->scene.cameras.front();
+    if (cameraName) {
+        const scene::Camera* c = project->scene.findCamera(*cameraName);
+        if (!c) {
+            std::cerr << "lpv: " << projectFile.string() << ": no camera named '" << *cameraName << "'\n";
+            return kFailure;
+        }
+        camera = *c;
+    }
+
+    auto context = renderer::HeadlessContext::create();
+    if (!context) {
+        std::cerr << "lpv: " << context.error().describe() << "\n";
+        return kFailure;
+    }
+    std::printf("GL: %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str());
+
+    const auto textures = importers::loadSceneTextures(project->scene, projectFile.parent_path());
+    const std::filesystem::path savedFile = radiosity::solutionPath(projectFile);
+    std::optional<radiosity::StoredSolution> saved;
+    if (!restart && std::filesystem::exists(savedFile)) {
+        auto loaded = radiosity::loadSolution(savedFile, project->scene.materials.size(),
+                                              project->scene.objects.size());
+        if (loaded)
+            saved = std::move(*loaded);
+        else
+            std::printf("ignoring the saved solution: %s\n", loaded.error().describe().c_str());
+    }
+    const float maxPatchArea = params.getFloat("radiosity.maxPatchArea");
+    const auto meshStart = std::chrono::steady_clock::now();
+    radiosity::RadiositySession session(project->scene, textures.images, maxPatchArea, std::move(saved));
+    std::printf("patches: %zu (%zu source quads, %zu source triangles, max area %g m^2), meshed in %.2f s\n",
+                session.mesh().size(), session.mesh().sourceQuads, session.mesh().sourceTriangles,
+                maxPatchArea,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count());
+    if (!session.note().empty())
+        std::printf("%s\n", session.note().c_str());
+
+    const int resolution = params.getInt("radiosity.hemicubeResolution");
+    const int batch = params.getInt("radiosity.shootersPerBatch");
+    std::unique_ptr<radiosity::FormFactorSource> formFactors;
+    renderer::GpuHemicube* gpu = nullptr;
+    auto makeSource = [&]() -> bool {
+        if (useCpu) {
+            formFactors = std::make_unique<radiosity::CpuFormFactors>(session.mesh());
+            return true;
+        }
+        auto h = renderer::GpuHemicube::create(session.mesh(), resolution, batch);
+        if (!h) {
+            std::cerr << "lpv: " << h.error().describe() << "\n";
+            return false;
+        }
+        gpu = h->get();
+        formFactors = std::move(*h);
+        return true;
+    };
+    if (!makeSource())
+        return kFailure;
+    if (useCpu)
+        std::printf("form factors: %s, %d shooters per batch, target residual %g\n", formFactors->name(),
+                    batch, residualTarget);
+    else
+        std::printf("form factors: %s, hemicube %d px, %d shooters per batch, target residual %g\n",
+                    formFactors->name(), gpu->resolution(), gpu->preferredBatch(), residualTarget);
+
+    Milestones milestones;
+    radiosity::SolveOptions options;
+    options.residualTarget = residualTarget;
+    options.maxSeconds = *maxSeconds;
+    options.shootersPerBatch = useCpu ? batch : gpu->preferredBatch();
+    options.progressInterval = 0.0; // every batch: milestones are checked here, lines printed at `interval`
+    options.cancel = &gInterrupted;
+    auto lastLine = std::chrono::steady_clock::now();
+    options.progress = [&](const radiosity::SolveProgress& p) {
+        milestones.check(p);
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - lastLine).count() >= *interval) {
+            std::printf("radiosity: %llu shots, %llu batches, residual %.5f, %.0f patches/s, %.1f s\n",
+                        static_cast<unsigned long long>(p.shots), static_cast<unsigned long long>(p.batches),
+                        p.residual, p.shootersPerSecond, p.seconds);
+            std::fflush(stdout);
+            lastLine = now;
+        }
+    };
+    milestones.check(radiosity::progressOf(session.solver(), 0.0, 0));
+    const auto previous = std::signal(SIGINT, onRadiosityInterrupt);
+    auto reason = radiosity::solve(session.solver(), *formFactors, options);
+    if (reason && refine && *reason == radiosity::StopReason::Converged) {
+        const std::size_t split = session.refine(float(*refine));
+        std::printf(
+            "refined %zu patches whose radiosity differs from a neighbour's by more than %g: %zu patches\n",
+            split, *refine, session.mesh().size());
+        if (split > 0) {
+            if (!makeSource())
+                return kFailure;
+            reason = radiosity::solve(session.solver(), *formFactors, options);
+        }
+    }
+    std::signal(SIGINT, previous);
+    if (!reason) {
+        std::cerr << "lpv: " << reason.error().describe() << "\n";
+        return kFailure;
+    }
+    const auto& state = session.solver().state();
+    const auto& b = state.balance;
+    const glm::dvec3 unshot = session.solver().unshotPower();
+    const double emitted = b.emitted.x + b.emitted.y + b.emitted.z;
+    std::printf("stopped: %s; %llu shots, residual %.5f, %.2f s in total\n", radiosity::toString(*reason),
+                static_cast<unsigned long long>(state.shots), session.solver().residual(), state.seconds);
+    if (emitted > 0.0)
+        std::printf(
+            "energy: emitted %.4g = absorbed %.4g + unshot %.4g + escaped %.4g (balance error %.2g)\n",
+            emitted, b.absorbed.x + b.absorbed.y + b.absorbed.z, unshot.x + unshot.y + unshot.z,
+            b.escaped.x + b.escaped.y + b.escaped.z,
+            std::abs(emitted - (b.absorbed.x + b.absorbed.y + b.absorbed.z) -
+                     (unshot.x + unshot.y + unshot.z) - (b.escaped.x + b.escaped.y + b.escaped.z)) /
+                emitted);
+    else
+        std::printf("nothing emits light: give a material an emissive colour\n");
+
+    std::filesystem::path target = projectFile;
+    if (output) {
+        target = *output;
+        scene::Project copy = *project;
+        makeTexturePathsAbsolute(copy.scene, std::filesystem::absolute(projectFile).parent_path());
+        if (auto copied = scene::copyTexturesIntoProject(copy.scene, target); !copied) {
+            std::cerr << "lpv: " << copied.error().describe() << "\n";
+            return kFailure;
+        }
+        if (auto ok = scene::saveProject(copy, target); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return kFailure;
+        }
+        std::printf("wrote %s\n", target.string().c_str());
+    }
+    const auto solutionFile = radiosity::solutionPath(target);
+    if (auto ok = radiosity::saveSolution(session.stored(), solutionFile); !ok) {
+        std::cerr << "lpv: " << ok.error().describe() << "\n";
+        return kFailure;
+    }
+    std::printf("wrote %s\n", solutionFile.string().c_str());
+
+    if (hemicubeFile && gpu) {
+        const auto ids = gpu->readHemicube(0);
+        if (!ids.empty()) {
+            if (auto ok = importers::writeImage(*hemicubeFile,
+                                                hemicubeImage(ids, 3 * gpu->resolution(), gpu->resolution()));
+                !ok) {
+                std::cerr << "lpv: " << ok.error().describe() << "\n";
+                return kFailure;
+            }
+            std::printf("wrote %s\n", hemicubeFile->c_str());
+        }
+    }
+    if (imageFile) {
+        auto viewer = renderer::RadiosityView::create();
+        if (!viewer) {
+            std::cerr << "lpv: " << viewer.error().describe() << "\n";
+            return kFailure;
+        }
+        std::vector<glm::vec3> values = state.radiosity;
+        if (view == "unshot")
+            values = state.unshot;
+        else if (view == "shot")
+            for (std::size_t i = 0; i < values.size(); ++i)
+                values[i] -= state.unshot[i];
+        else if (view == "ambient") {
+            const auto ambient = session.solver().ambient();
+            for (std::size_t i = 0; i < values.size(); ++i)
+                values[i] += ambient[i];
+        }
+        viewer->setPatches(session.mesh(), values, params.getBool("radiosity.smoothing"));
+        viewer->render(camera, int(*width), int(*height), params.getFloat("output.exposure"), wireframe);
+        importers::Image8 image{int(*width), int(*height), 4, viewer->readDisplay()};
+        if (auto ok = importers::writeImage(*imageFile, image); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return kFailure;
+        }
+        std::printf("wrote %s\n", imageFile->c_str());
+    }
+    return kOk;
+}
+
+} // namespace lpv::cli

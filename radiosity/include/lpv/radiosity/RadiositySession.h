@@ -1,0 +1,47 @@
+#pragma once
+// One radiosity solve of a scene as the CLI and the editor run it: mesh the
+// scene, resume a saved solution when it was solved for this very scene,
+// refine where the light changes fast, and package the result for saving.
+#include "lpv/radiosity/ProgressiveSolver.h"
+#include "lpv/radiosity/SolutionFile.h"
+#include "lpv/scene/Image.h"
+#include "lpv/scene/Scene.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace lpv::radiosity {
+
+class RadiositySession {
+  public:
+    // `saved` (from loadSolution) is resumed if its scene signature matches
+    // the scene meshed with `maxPatchArea`; otherwise the solve starts over and
+    // note() says why.
+    RadiositySession(const scene::Scene& scene, const scene::TextureImages& textures, float maxPatchArea,
+                     std::optional<StoredSolution> saved = std::nullopt);
+
+    const PatchMesh& mesh() const { return *mesh_; }
+    ProgressiveSolver& solver() { return *solver_; }
+    const ProgressiveSolver& solver() const { return *solver_; }
+    bool resumed() const { return resumed_; }
+    const std::string& note() const { return note_; }
+
+    // Splits patches whose radiosity differs from a neighbour's by more than
+    // `threshold` (relative), carrying the solution over. The mesh and solver
+    // are replaced (a form factor source built on the old mesh must be rebuilt).
+    // Returns how many patches were split.
+    std::size_t refine(float threshold);
+
+    StoredSolution stored() const;
+
+  private:
+    std::unique_ptr<PatchMesh> mesh_;
+    std::unique_ptr<ProgressiveSolver> solver_;
+    std::uint64_t signature_ = 0;
+    float maxPatchArea_ = 0.0f;
+    bool resumed_ = false;
+    std::string note_;
+};
+
+} // namespace lpv::radiosity

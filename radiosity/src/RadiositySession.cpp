@@ -1,0 +1,61 @@
+#include "lpv/radiosity/RadiositySession.h"
+
+#include <cstdio>
+
+namespace lpv::radiosity {
+
+RadiositySession::RadiositySession(const scene::Scene& scene, const scene::TextureImages& textures,
+                                   float maxPatchArea, std::optional<StoredSolution> saved)
+    : maxPatchArea_(maxPatchArea) {
+    auto fresh = std::make_unique<PatchMesh>(buildPatchMesh(scene, {maxPatchArea}));
+    const SurfaceProperties freshSurfaces = surfaceProperties(*fresh, scene, textures);
+    signature_ = sceneSignature(*fresh, freshSurfaces);
+    if (saved && saved->sceneSignature == signature_) {
+        mesh_ = std::make_unique<PatchMesh>(std::move(saved->mesh));
+        solver_ = std::make_unique<ProgressiveSolver>(*mesh_, surfaceProperties(*mesh_, scene, textures));
+        if (solver_->restore(std::move(saved->state))) {
+            resumed_ = true;
+            char text[160];
+            std::snprintf(
+                text, sizeof(text), "resuming the saved solution: %zu patches, %llu shots, residual %.4g",
+                mesh_->size(), static_cast<unsigned long long>(solver_->state().shots), solver_->residual());
+            note_ = text;
+            return;
+        }
+    }
+    if (saved)
+        note_ = "the saved solution was solved for another scene or patch size; starting over";
+    mesh_ = std::move(fresh);
+    solver_ = std::make_unique<ProgressiveSolver>(*mesh_, freshSurfaces);
+}
+
+std::size_t RadiositySession::refine(float threshold) {
+    const std::vector<std::uint32_t> which = solver_->patchesToRefine(threshold);
+    if (which.empty())
+        return 0;
+    std::vector<std::uint32_t> parentOf;
+    auto refined = std::make_unique<PatchMesh>(refinePatches(*mesh_, which, parentOf));
+    // Children keep their parent's material, so its reflectance and emission.
+    SurfaceProperties surfaces;
+    for (std::uint32_t parent : parentOf) {
+        surfaces.reflectance.push_back(solver_->surfaces().reflectance[parent]);
+        surfaces.emission.push_back(solver_->surfaces().emission[parent]);
+    }
+    SolverState state = refineState(solver_->state(), parentOf);
+    auto next = std::make_unique<ProgressiveSolver>(*refined, std::move(surfaces));
+    (void)next->restore(std::move(state)); // sizes match by construction
+    solver_ = std::move(next);
+    mesh_ = std::move(refined);
+    return which.size();
+}
+
+StoredSolution RadiositySession::stored() const {
+    StoredSolution s;
+    s.mesh.patches = mesh_->patches;
+    s.state = solver_->state();
+    s.sceneSignature = signature_;
+    s.maxPatchArea = maxPatchArea_;
+    return s;
+}
+
+} // namespace lpv::radiosity

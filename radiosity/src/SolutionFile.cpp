@@ -1,0 +1,223 @@
+#include "lpv/radiosity/SolutionFile.h"
+
+#include "lpv/scene/MeshAsset.h"
+#include "lpv/scene/Project.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace lpv::radiosity {
+namespace {
+
+constexpr char kMagic[8] = {'L', 'P', 'V', 'R', 'A', 'D', '\0', '\1'};
+// magic 8, version 4, patch count 4, signature 8, max patch area 4, reserved 4, payload size 8, checksum 8
+constexpr std::size_t kHeaderSize = 48;
+
+class Writer {
+  public:
+    template <class T> void put(const T& v) {
+        const auto* p = reinterpret_cast<const char*>(&v);
+        bytes.append(p, sizeof(T));
+    }
+    void putVec3(const glm::vec3& v) {
+        put(v.x);
+        put(v.y);
+        put(v.z);
+    }
+    void putDVec3(const glm::dvec3& v) {
+        put(v.x);
+        put(v.y);
+        put(v.z);
+    }
+    std::string bytes;
+};
+
+class Reader {
+  public:
+    Reader(std::string_view data, std::size_t base) : data_(data), base_(base) {}
+    template <class T> bool get(T& v) {
+        if (pos_ + sizeof(T) > data_.size())
+            return false;
+        std::memcpy(&v, data_.data() + pos_, sizeof(T));
+        pos_ += sizeof(T);
+        return true;
+    }
+    bool getVec3(glm::vec3& v) { return get(v.x) && get(v.y) && get(v.z); }
+    bool getDVec3(glm::dvec3& v) { return get(v.x) && get(v.y) && get(v.z); }
+    std::size_t offset() const { return base_ + pos_; }
+    bool atEnd() const { return pos_ == data_.size(); }
+
+  private:
+    std::string_view data_;
+    std::size_t base_;
+    std::size_t pos_ = 0;
+};
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties& surfaces) {
+    Writer w;
+    for (std::size_t i = 0; i < unrefined.size(); ++i) {
+        const Patch& p = unrefined.patches[i];
+        w.put(p.cornerCount);
+        for (int k = 0; k < p.cornerCount; ++k)
+            w.putVec3(p.corners[std::size_t(k)]);
+        w.put(p.material);
+        w.putVec3(surfaces.reflectance[i]);
+        w.putVec3(surfaces.emission[i]);
+    }
+    return scene::contentHash64(w.bytes);
+}
+
+std::filesystem::path solutionPath(const std::filesystem::path& projectFile) {
+    return projectFile.parent_path() / (projectFile.stem().string() + ".assets") / "radiosity.lpvrad";
+}
+
+std::string encodeSolution(const StoredSolution& s) {
+    Writer payload;
+    for (const Patch& p : s.mesh.patches) {
+        payload.put(p.cornerCount);
+        for (int k = 0; k < 4; ++k) {
+            payload.putVec3(p.corners[std::size_t(k)]);
+            payload.put(p.uvs[std::size_t(k)].x);
+            payload.put(p.uvs[std::size_t(k)].y);
+        }
+        payload.put(p.material);
+        payload.put(p.object);
+    }
+    for (std::size_t i = 0; i < s.mesh.size(); ++i) {
+        payload.putVec3(s.state.radiosity[i]);
+        payload.putVec3(s.state.unshot[i]);
+    }
+    payload.put(s.state.shots);
+    payload.put(s.state.batches);
+    payload.put(s.state.seconds);
+    payload.putDVec3(s.state.balance.emitted);
+    payload.putDVec3(s.state.balance.absorbed);
+    payload.putDVec3(s.state.balance.escaped);
+
+    Writer header;
+    header.bytes.append(kMagic, sizeof(kMagic));
+    header.put(kSolutionVersion);
+    header.put(std::uint32_t(s.mesh.size()));
+    header.put(s.sceneSignature);
+    header.put(s.maxPatchArea);
+    header.put(std::uint32_t(0));
+    header.put(std::uint64_t(payload.bytes.size()));
+    header.put(scene::contentHash64(payload.bytes));
+    return header.bytes + payload.bytes;
+}
+
+scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std::string& fileName,
+                                               std::size_t materialCount, std::size_t objectCount) {
+    using scene::ErrorCode;
+    using scene::makeError;
+    auto at = [](std::size_t offset) { return "byte offset " + std::to_string(offset); };
+    if (bytes.size() < kHeaderSize)
+        return makeError(ErrorCode::Truncated, fileName, at(bytes.size()),
+                         "the header needs " + std::to_string(kHeaderSize) + " bytes");
+    if (std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
+        return makeError(ErrorCode::UnknownFormat, fileName, at(0), "not a radiosity solution (bad magic)");
+    Reader h(bytes.substr(8, kHeaderSize - 8), 8);
+    std::uint32_t version = 0, patchCount = 0, reserved = 0;
+    std::uint64_t payloadSize = 0, checksum = 0;
+    StoredSolution s;
+    h.get(version);
+    h.get(patchCount);
+    h.get(s.sceneSignature);
+    h.get(s.maxPatchArea);
+    h.get(reserved);
+    h.get(payloadSize);
+    h.get(checksum);
+    if (version > kSolutionVersion)
+        return makeError(ErrorCode::NewerVersion, fileName, at(8),
+                         "version " + std::to_string(version) + " is newer than this program's " +
+                             std::to_string(kSolutionVersion));
+    if (bytes.size() - kHeaderSize != payloadSize)
+        return makeError(ErrorCode::Truncated, fileName, at(bytes.size()),
+                         "the header announces " + std::to_string(payloadSize) +
+                             " payload bytes, the file has " + std::to_string(bytes.size() - kHeaderSize));
+    const std::string_view payload = bytes.substr(kHeaderSize);
+    if (scene::contentHash64(payload) != checksum)
+        return makeError(ErrorCode::ChecksumMismatch, fileName, at(kHeaderSize),
+                         "the payload's checksum does not match the header");
+    Reader r(payload, kHeaderSize);
+    s.mesh.patches.resize(patchCount);
+    for (std::uint32_t i = 0; i < patchCount; ++i) {
+        Patch& p = s.mesh.patches[i];
+        const std::size_t start = r.offset();
+        bool ok = r.get(p.cornerCount);
+        for (int k = 0; k < 4 && ok; ++k)
+            ok = r.getVec3(p.corners[std::size_t(k)]) && r.get(p.uvs[std::size_t(k)].x) &&
+                 r.get(p.uvs[std::size_t(k)].y);
+        ok = ok && r.get(p.material) && r.get(p.object);
+        if (!ok)
+            return makeError(ErrorCode::Truncated, fileName, at(r.offset()),
+                             "patch " + std::to_string(i) + " is cut off");
+        if (p.cornerCount != 3 && p.cornerCount != 4)
+            return makeError(ErrorCode::InvalidValue, fileName, at(start),
+                             "patch " + std::to_string(i) + " has " + std::to_string(p.cornerCount) +
+                                 " corners");
+        for (int k = 0; k < p.cornerCount; ++k)
+            if (!finite(p.corners[std::size_t(k)]))
+                return makeError(ErrorCode::NonFinite, fileName, at(start),
+                                 "patch " + std::to_string(i) + " has a non-finite corner");
+        if (p.material >= materialCount || p.object >= objectCount)
+            return makeError(ErrorCode::IndexOutOfRange, fileName, at(start),
+                             "patch " + std::to_string(i) + " names material " + std::to_string(p.material) +
+                                 " and object " + std::to_string(p.object) + "; the project has " +
+                                 std::to_string(materialCount) + " and " + std::to_string(objectCount));
+    }
+    s.state.radiosity.resize(patchCount);
+    s.state.unshot.resize(patchCount);
+    for (std::uint32_t i = 0; i < patchCount; ++i) {
+        const std::size_t start = r.offset();
+        if (!r.getVec3(s.state.radiosity[i]) || !r.getVec3(s.state.unshot[i]))
+            return makeError(ErrorCode::Truncated, fileName, at(r.offset()),
+                             "radiosity of patch " + std::to_string(i) + " is cut off");
+        if (!finite(s.state.radiosity[i]) || !finite(s.state.unshot[i]))
+            return makeError(ErrorCode::NonFinite, fileName, at(start),
+                             "radiosity of patch " + std::to_string(i) + " is not finite");
+    }
+    auto& b = s.state.balance;
+    if (!r.get(s.state.shots) || !r.get(s.state.batches) || !r.get(s.state.seconds) ||
+        !r.getDVec3(b.emitted) || !r.getDVec3(b.absorbed) || !r.getDVec3(b.escaped))
+        return makeError(ErrorCode::Truncated, fileName, at(r.offset()), "the solver counters are cut off");
+    if (!r.atEnd())
+        return makeError(ErrorCode::InvalidValue, fileName, at(r.offset()),
+                         "unexpected bytes after the solution");
+    for (Patch& p : s.mesh.patches) {
+        computePatchGeometry(p); // centre, normal and area follow from the corners
+    }
+    buildAdjacency(s.mesh);
+    return s;
+}
+
+scene::Expected<void> saveSolution(const StoredSolution& solution, const std::filesystem::path& file) {
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec)
+        return scene::makeError(scene::ErrorCode::IoError, file.parent_path().string(), "",
+                                "cannot create the folder: " + ec.message());
+    return scene::writeFileAtomically(file, encodeSolution(solution));
+}
+
+scene::Expected<StoredSolution> loadSolution(const std::filesystem::path& file, std::size_t materialCount,
+                                             std::size_t objectCount) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file, ec);
+    std::ifstream in(file, std::ios::binary);
+    if (ec || !in)
+        return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "", "cannot open the file");
+    std::string bytes(size, '\0');
+    if (!in.read(bytes.data(), std::streamsize(size)))
+        return scene::makeError(scene::ErrorCode::IoError, file.string(), "", "cannot read the file");
+    return decodeSolution(bytes, file.string(), materialCount, objectCount);
+}
+
+} // namespace lpv::radiosity

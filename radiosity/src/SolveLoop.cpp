@@ -1,0 +1,74 @@
+#include "lpv/radiosity/SolveLoop.h"
+
+#include <chrono>
+
+namespace lpv::radiosity {
+
+const char* toString(StopReason reason) {
+    switch (reason) {
+    case StopReason::Converged:
+        return "converged";
+    case StopReason::TimeBudget:
+        return "time budget reached";
+    case StopReason::Cancelled:
+        return "paused";
+    case StopReason::NothingToShoot:
+        return "nothing left to shoot";
+    }
+    return "?";
+}
+
+SolveProgress progressOf(const ProgressiveSolver& solver, double sessionSeconds, std::uint64_t sessionShots) {
+    SolveProgress p;
+    p.shots = solver.state().shots;
+    p.batches = solver.state().batches;
+    p.residual = solver.residual();
+    p.seconds = solver.state().seconds;
+    p.shootersPerSecond = sessionSeconds > 0.0 ? double(sessionShots) / sessionSeconds : 0.0;
+    p.patches = solver.mesh().size();
+    return p;
+}
+
+scene::Expected<StopReason> solve(ProgressiveSolver& solver, FormFactorSource& formFactors,
+                                  const SolveOptions& options) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    auto lastReport = start;
+    auto lastStep = start;
+    const std::uint64_t shotsBefore = solver.state().shots;
+    auto elapsed = [&](Clock::time_point t) { return std::chrono::duration<double>(t - start).count(); };
+    auto report = [&](Clock::time_point now) {
+        if (options.progress)
+            options.progress(progressOf(solver, elapsed(now), solver.state().shots - shotsBefore));
+    };
+    for (;;) {
+        if (solver.residual() <= options.residualTarget) {
+            report(Clock::now());
+            return StopReason::Converged;
+        }
+        if (options.cancel && options.cancel->load()) {
+            report(Clock::now());
+            return StopReason::Cancelled;
+        }
+        if (options.maxSeconds > 0.0 && elapsed(Clock::now()) >= options.maxSeconds) {
+            report(Clock::now());
+            return StopReason::TimeBudget;
+        }
+        auto shot = solver.step(formFactors, options.shootersPerBatch);
+        if (!shot)
+            return std::unexpected(shot.error());
+        const auto now = Clock::now();
+        solver.mutableState().seconds += std::chrono::duration<double>(now - lastStep).count();
+        lastStep = now;
+        if (*shot == 0) {
+            report(now);
+            return StopReason::NothingToShoot;
+        }
+        if (std::chrono::duration<double>(now - lastReport).count() >= options.progressInterval) {
+            report(now);
+            lastReport = now;
+        }
+    }
+}
+
+} // namespace lpv::radiosity
