@@ -71,7 +71,7 @@ std::vector<ParameterInfo> declareParameters() {
                 "Keep last frame's LPV when nothing it is computed from changed (scene, lights, sky, LPV "
                 "parameters, cascade positions, the camera when the geometry volume reads its G-buffer); "
                 "benchmarks turn it off",
-                P::None),
+                P::LpvInjection | P::GeometryVolume | P::LpvPropagation),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
         // --- Effects (thesis extensions) ---
