@@ -39,8 +39,11 @@ int runBench(Args args);
 int runVersion(); // `lpv --version`, in VersionCommand.cpp
 int runVideo(Args args);
 int runPath(Args args);
+int runReference(Args args); // `lpv reference`, in ReferenceCommand.cpp
+int runCompare(Args args);   // `lpv compare`, in CompareCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
+int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
 
 void printRenderHelp();
 void printParamsHelp();
@@ -50,5 +53,7 @@ void printImportHelp();
 void printBenchHelp();
 void printVideoHelp();
 void printPathHelp();
+void printReferenceHelp();
+void printCompareHelp();
 
 } // namespace lpv::cli
