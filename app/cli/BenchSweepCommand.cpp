@@ -79,22 +79,10 @@ std::vector<glm::vec3> readRgb(const std::vector<float>& rgba) {
     return out;
 }
 
-// A centre crop of an irradiance image, mapped x / (x + key) so every crop shares one exposure.
+// A centre crop of an irradiance image; one key gives every crop the same exposure.
 scene::Image8 crop(const std::vector<glm::vec3>& pixels, int width, int height, float key) {
     const int w = std::min(width, 200), h = std::min(height, 150);
-    const int x0 = (width - w) / 2, y0 = (height - h) / 2;
-    scene::Image8 out{w, h, 4, std::vector<std::uint8_t>(std::size_t(w) * std::size_t(h) * 4, 255)};
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const glm::vec3 c = pixels[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)];
-            for (int k = 0; k < 3; ++k) {
-                const float v = std::isfinite(c[k]) ? std::max(c[k], 0.0f) : 0.0f;
-                const float mapped = std::pow(v / (v + key), 1.0f / 2.2f);
-                out.pixels[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4 + std::size_t(k)] =
-                    std::uint8_t(std::lround(255.0f * mapped));
-            }
-        }
-    return out;
+    return previewImage(pixels, width, (width - w) / 2, (height - h) / 2, w, h, key);
 }
 
 double numeric(const std::string& value, std::size_t index) {
@@ -416,10 +404,7 @@ int benchSweep(Args args) {
     if (!writePng("error-time.png", scatterPlot("Indirect light error against GPU time",
                                                 "total GPU ms per frame", "indirect MARE %", points)))
         return kFailure;
-    double refMean = 0.0;
-    for (std::size_t i = 0; i < ref.pixelCount(); ++i)
-        refMean += reference::luminance(ref.indirectMulti[i]) * ref.coverage[i];
-    const float key = float(std::max(refMean / double(std::max<std::size_t>(ref.pixelCount(), 1)), 1e-6));
+    const float key = meanLuminance(ref.indirectMulti, ref.coverage);
     std::vector<std::pair<std::string, scene::Image8>> crops{
         {"reference (" + std::to_string(ref.samplesPerPixel) + " spp)",
          crop(ref.indirectMulti, ref.width, ref.height, key)}};

@@ -78,10 +78,10 @@ int runCompare(Args args) {
     if (json) {
         std::printf(
             "{\"layer\": \"%s\", \"pixels\": %zu, \"relMse\": %.6g, \"noiseRelMse\": %.6g, \"mare\": %.6g, "
-            "\"noiseMare\": %.6g, \"ssim\": %.6g, \"relMseBelowNoise\": %s, \"mareBelowNoise\": %s, "
-            "\"referenceSpp\": %d}\n",
-            layer.c_str(), m.pixels, m.relMse, m.noiseRelMse, m.mare, m.noiseMare, m.ssim,
-            m.relMseBelowNoise() ? "true" : "false", m.mareBelowNoise() ? "true" : "false",
+            "\"noiseMare\": %.6g, \"ssim\": %.6g, \"meanTest\": %.6g, \"meanReference\": %.6g, "
+            "\"relMseBelowNoise\": %s, \"mareBelowNoise\": %s, \"referenceSpp\": %d}\n",
+            layer.c_str(), m.pixels, m.relMse, m.noiseRelMse, m.mare, m.noiseMare, m.ssim, m.meanTest,
+            m.meanReference, m.relMseBelowNoise() ? "true" : "false", m.mareBelowNoise() ? "true" : "false",
             r.samplesPerPixel);
     } else {
         std::printf("%s vs %s (layer %s, %zu pixels, reference %d spp)\n", pos[0].c_str(), pos[1].c_str(),

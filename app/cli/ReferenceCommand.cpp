@@ -6,6 +6,7 @@
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
 
+#include "lpv/importers/ImageIO.h"
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/reference/PathTracer.h"
 
@@ -38,6 +39,8 @@ Compare a renderer image with it using `lpv compare`.
   --bounces N           Diffuse bounces in the multi-bounce layer (reference.bounces, default 4)
   --threads N           Worker threads (default: every hardware thread)
   --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=true
+  --preview             Also write REF-image.png and REF-indirect.png to look at
+                        (x / (x + mean), gamma 2.2)
 )";
 }
 
@@ -62,6 +65,7 @@ std::optional<reference::ReferenceImage> traceReference(const scene::Project& pr
     settings.bounces = project.parameters.getInt("reference.bounces");
     settings.maxSeconds = project.parameters.getFloat("reference.maxSeconds");
     settings.skyLight = project.parameters.getBool("reference.skyLight");
+    settings.emissiveLight = project.parameters.getBool("reference.emissiveLight");
     if (request.printProgress)
         std::printf("reference: %zu triangles, %dx%d, up to %d spp, %d bounces%s\n", embree->triangleCount(),
                     settings.width, settings.height, settings.samplesPerPixel, settings.bounces,
@@ -69,16 +73,16 @@ std::optional<reference::ReferenceImage> traceReference(const scene::Project& pr
                         ? (", at most " + std::to_string(settings.maxSeconds) + " s").c_str()
                         : "");
     const reference::PathTracer tracer(*embree, project.scene, camera, settings);
+    double lastPrinted = -1.0;
     auto image = tracer.render([&](const reference::TraceProgress& p) {
-        if (request.printProgress) {
-            // One line, rewritten: pass, percentage and the time so far.
-            std::printf("\rreference: %d/%d spp, %.1f s", p.samplesDone, p.samplesTarget, p.seconds);
+        // About once a second, and the last pass: enough to see it move, not a flood in a log.
+        if (request.printProgress && (p.seconds - lastPrinted >= 1.0 || p.samplesDone == p.samplesTarget)) {
+            lastPrinted = p.seconds;
+            std::printf("reference: %d/%d spp, %.1f s\n", p.samplesDone, p.samplesTarget, p.seconds);
             std::fflush(stdout);
         }
         return true;
     });
-    if (request.printProgress)
-        std::printf("\n");
     return image;
 }
 
@@ -93,6 +97,7 @@ int runReference(Args args) {
     const auto seconds = args.option("--max-seconds");
     const auto bounces = args.option("--bounces");
     const auto cameraName = args.option("--camera");
+    const bool preview = args.flag("--preview");
     std::vector<std::string> sets = args.options("--set");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "reference");
@@ -145,6 +150,7 @@ int runReference(Args args) {
         {"lpv:seconds", std::to_string(image->seconds)},
         {"lpv:bounces", std::to_string(project->parameters.getInt("reference.bounces"))},
         {"lpv:skyLight", project->parameters.getBool("reference.skyLight") ? "true" : "false"},
+        {"lpv:emissiveLight", project->parameters.getBool("reference.emissiveLight") ? "true" : "false"},
     };
     if (auto ok = writeReferenceExr(*output, *image, attributes); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
@@ -154,6 +160,22 @@ int runReference(Args args) {
                 double(image->samplesPerPixel) * double(image->pixelCount()) /
                     std::max(image->seconds, 1e-9));
     std::printf("wrote %s\n", output->c_str());
+    if (preview) {
+        const std::filesystem::path out(*output);
+        for (const auto& [suffix, pixels] :
+             {std::pair{"-image.png", &image->image}, std::pair{"-indirect.png", &image->indirectMulti}}) {
+            std::filesystem::path png = out;
+            png.replace_filename(out.stem().string() + suffix);
+            const float key = meanLuminance(*pixels, image->coverage);
+            if (auto ok = importers::writeImage(
+                    png, previewImage(*pixels, image->width, 0, 0, image->width, image->height, key));
+                !ok) {
+                std::cerr << "lpv: " << ok.error().describe() << "\n";
+                return kFailure;
+            }
+            std::printf("wrote %s\n", png.string().c_str());
+        }
+    }
     return kOk;
 }
 

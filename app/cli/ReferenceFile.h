@@ -4,6 +4,7 @@
 // in its header, and the renderer's float images `lpv compare` reads.
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/scene/Error.h"
+#include "lpv/scene/Image.h"
 
 #include <filesystem>
 #include <map>
@@ -30,5 +31,13 @@ struct RgbImage {
     std::string outputView; // final, indirect, direct; empty if unknown
 };
 scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file);
+
+// A linear image to look at: x / (x + key) per channel, then gamma 2.2 (RGBA8);
+// one key for several images gives them one exposure. The rectangle
+// [x0, x0 + w) x [y0, y0 + h) of the `width` x `height` image.
+scene::Image8 previewImage(const std::vector<glm::vec3>& pixels, int width, int x0, int y0, int w, int h,
+                           float key);
+// The mean luminance of `pixels` where `mask` > 0.5: a key for previewImage.
+float meanLuminance(const std::vector<glm::vec3>& pixels, const std::vector<float>& mask);
 
 } // namespace lpv::cli

@@ -114,6 +114,7 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
         const double t = std::isfinite(yt[i]) ? double(yt[i]) : 0.0;
         const double r = yr[i];
         const double d = t - r;
+        m.meanTest += t;
         m.relMse += d * d / (r * r + eps * eps);
         m.mare += std::abs(d) / (std::abs(r) + eps);
         if (referenceVariance) {
@@ -125,6 +126,8 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
         }
     }
     const double count = double(m.pixels);
+    m.meanTest /= count;
+    m.meanReference = meanRef;
     m.relMse /= count;
     m.mare /= count;
     m.noiseRelMse /= count;
@@ -134,11 +137,13 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
 }
 
 std::string describe(const ErrorMetrics& m) {
-    char text[256];
+    char text[320];
     std::snprintf(text, sizeof text,
-                  "relMSE %.4g (reference noise %.2g%s), MARE %.2f%% (noise %.2f%%%s), SSIM %.4f", m.relMse,
-                  m.noiseRelMse, m.relMseBelowNoise() ? ", below noise" : "", 100.0 * m.mare,
-                  100.0 * m.noiseMare, m.mareBelowNoise() ? ", below noise" : "", m.ssim);
+                  "relMSE %.4g (reference noise %.2g%s), MARE %.2f%% (noise %.2f%%%s), SSIM %.4f, mean %.4g "
+                  "(reference %.4g)",
+                  m.relMse, m.noiseRelMse, m.relMseBelowNoise() ? ", below noise" : "", 100.0 * m.mare,
+                  100.0 * m.noiseMare, m.mareBelowNoise() ? ", below noise" : "", m.ssim, m.meanTest,
+                  m.meanReference);
     return text;
 }
 

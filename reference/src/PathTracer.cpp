@@ -150,8 +150,9 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
             break;
         }
         const SurfaceSample hs = embree_.surface(*hit);
+        const glm::vec3 emitted = settings_.emissiveLight ? hs.emissive : glm::vec3(0.0f);
         const glm::vec3 reflected =
-            hs.emissive +
+            emitted +
             hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal);
         multi += throughput * reflected;
         if (depth == 1)

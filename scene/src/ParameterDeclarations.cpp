@@ -142,6 +142,10 @@ std::vector<ParameterInfo> declareParameters() {
                 "Path-traced reference: rays that escape the scene see the sky's radiance (off matches the renderer, "
                 "whose sky only colours the background)",
                 P::Reference),
+        boolean("reference.emissiveLight", false, "Reference",
+                "Path-traced reference: emissive surfaces light other surfaces (off matches the renderer, where "
+                "emission is only seen and a light such as the Cornell box's spot stands for the emitter)",
+                P::Reference),
     };
 }
 

@@ -35,7 +35,7 @@ double jsonNumber(const std::string& json, const std::string& key) {
 }
 
 class ReferenceCommand : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         dir_ = fs::temp_directory_path() / ("lpv-reference-" + std::to_string(::getpid()));
         fs::remove_all(dir_);
@@ -67,7 +67,8 @@ TEST_F(ReferenceCommand, WritesEveryLayerAndItsSettings) {
     ASSERT_TRUE(image) << image.error().describe();
     EXPECT_EQ(image->width, 40);
     EXPECT_EQ(image->height, 30);
-    for (const char* name : {"R", "indirect1.G", "indirect.B", "variance.R", "indirect.variance.G", "coverage.Y"})
+    for (const char* name :
+         {"R", "indirect1.G", "indirect.B", "variance.R", "indirect.variance.G", "coverage.Y"})
         EXPECT_NE(std::ranges::find(image->names, name), image->names.end()) << name;
     const auto spp = std::ranges::find(image->attributes, std::string("lpv:spp"),
                                        &std::pair<std::string, std::string>::first);
@@ -83,26 +84,32 @@ TEST_F(ReferenceCommand, ComparesTheLpvIndirectViewWithTheReference) {
     const RunResult rendered = runLpv("render '" + project_ + "' -o '" + lpvExr.string() +
                                       "' --width 40 --height 30 --frames 2 --set output.view=indirect");
     ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
-    const RunResult compared = runLpv("compare '" + lpvExr.string() + "' '" + (dir_ / "ref.exr").string() + "' --json");
+    const RunResult compared = runLpv("compare '" + lpvExr.string() + "' '" + (dir_ / "ref.exr").string() +
+                                      "' --layer indirect1 --json");
     ASSERT_EQ(compared.exitCode, 0) << compared.output;
-    EXPECT_NE(compared.output.find("\"layer\": \"indirect\""), std::string::npos) << compared.output;
-    const double mare = jsonNumber(compared.output, "mare");
+    EXPECT_NE(compared.output.find("\"layer\": \"indirect1\""), std::string::npos) << compared.output;
     const double ssim = jsonNumber(compared.output, "ssim");
-    EXPECT_TRUE(std::isfinite(mare)) << compared.output;
+    EXPECT_TRUE(std::isfinite(jsonNumber(compared.output, "mare"))) << compared.output;
     EXPECT_GT(jsonNumber(compared.output, "noiseMare"), 0.0) << "8 spp leave measurable noise";
     EXPECT_GE(ssim, -1.0);
     EXPECT_LE(ssim, 1.0);
-    // Units agree (irradiance against irradiance): a factor of pi or of the
-    // albedo would put the mean relative error near or above 100%.
-    EXPECT_LT(mare, 0.9) << compared.output;
+    // Units agree: the LPV injects sunlight reflected once, so its mean
+    // irradiance is close to the reference's one-bounce layer (0.94x at
+    // 160x120, 256 spp, docs/reference.md). A slip of pi or of the albedo
+    // (about 0.7 here) in either would put the ratio outside 0.6..1.6.
+    const double ratio =
+        jsonNumber(compared.output, "meanTest") / jsonNumber(compared.output, "meanReference");
+    EXPECT_GT(ratio, 0.6) << compared.output;
+    EXPECT_LT(ratio, 1.6) << compared.output;
 }
 
 TEST_F(ReferenceCommand, RefusesImagesOfAnotherSize) {
     ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
     const fs::path small = dir_ / "small.exr";
-    ASSERT_EQ(runLpv("render '" + project_ + "' -o '" + small.string() + "' --width 20 --height 15 --frames 1")
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        runLpv("render '" + project_ + "' -o '" + small.string() + "' --width 20 --height 15 --frames 1")
+            .exitCode,
+        0);
     const RunResult r = runLpv("compare '" + small.string() + "' '" + (dir_ / "ref.exr").string() + "'");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("20x15"), std::string::npos) << r.output;
@@ -118,8 +125,8 @@ TEST_F(ReferenceCommand, SweepWritesTablesPlotsAndTheCheapestSettings) {
                                (dir_ / "ref.exr").string() + "' --out '" + out.string() +
                                "' --width 40 --height 30 --frames 2 --warmup 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* file : {"sweep.csv", "sweep.json", "sweep.md", "time-lpv.propagationSteps.png", "error-time.png",
-                             "crops.png"})
+    for (const char* file : {"sweep.csv", "sweep.json", "sweep.md", "time-lpv.propagationSteps.png",
+                             "error-time.png", "crops.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const std::string csv = readText(out / "sweep.csv");
     EXPECT_EQ(std::ranges::count(csv, '\n'), 3) << csv; // header + two settings

@@ -32,6 +32,7 @@ TEST(Metrics, UniformScaleErrorHasClosedForm) {
     const ErrorMetrics m = compareImages({16, 8, &test}, {16, 8, &ref}, nullptr, nullptr);
     EXPECT_NEAR(m.relMse, double(k * k) / (1.0 + 1e-4), 1e-6);
     EXPECT_NEAR(m.mare, double(k) / 1.01, 1e-6);
+    EXPECT_NEAR(m.meanTest / m.meanReference, 1.0 + k, 1e-6);
     // Both constant: SSIM's contrast and structure terms are 1; the mean term is
     // (2xy + c1) / (x^2 + y^2 + c1) with x, y mapped by v / (v + r).
     const double x = (r * (1.0 + k)) / (r * (1.0 + k) + r), y = 0.5, c1 = 1e-4;

@@ -115,7 +115,13 @@ TEST(PathTracer, FurnaceBoxConvergesToAnalyticRadiance) {
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree);
     const int bounces = 40;
-    const reference::ReferenceImage image = reference::PathTracer(*embree, s, c, small(64, bounces)).render();
+    auto settings = small(64, bounces);
+    settings.emissiveLight = true;
+    const reference::ReferenceImage image = reference::PathTracer(*embree, s, c, settings).render();
+    settings.emissiveLight = false; // the renderer's convention: emission is seen, it lights nothing
+    const reference::ReferenceImage seen = reference::PathTracer(*embree, s, c, settings).render();
+    EXPECT_EQ(seen.image[0], glm::vec3(le));
+    EXPECT_EQ(seen.indirectMulti[0], glm::vec3(0.0f));
     double sumImage = 0.0, sumOne = 0.0, sumMulti = 0.0, sumVar = 0.0;
     for (std::size_t i = 0; i < image.pixelCount(); ++i) {
         ASSERT_EQ(image.coverage[i], 1.0f);

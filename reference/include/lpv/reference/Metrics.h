@@ -28,6 +28,10 @@ struct ErrorMetrics {
     double relMse = 0.0;    // mean (t - r)^2 / (r^2 + eps^2)
     double mare = 0.0;      // mean |t - r| / (r + eps)
     double ssim = 1.0;      // mean SSIM over kept pixels, 1 = identical
+    // Mean luminance of each image over the kept pixels: their ratio shows a
+    // global bias (a missing pi or albedo, an intensity setting) at a glance.
+    double meanTest = 0.0;
+    double meanReference = 0.0;
     // What the reference's noise alone contributes (0 for a noiseless reference).
     double noiseRelMse = 0.0; // mean sigma^2 / (r^2 + eps^2)
     double noiseMare = 0.0;   // mean sqrt(2/pi) sigma / (r + eps): E|N(0, sigma)|
@@ -52,7 +56,8 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
 double ssimLuminance(const std::vector<float>& a, const std::vector<float>& b, int width, int height,
                      const std::vector<float>* mask);
 
-// "relMSE 0.0123 (noise 0.0004), MARE 8.1% (noise 1.2%), SSIM 0.912" with "below noise" where it is.
+// "relMSE 0.0123 (noise 0.0004), MARE 8.1% (noise 1.2%), SSIM 0.912, mean 0.95x the reference"
+// with "below noise" where it is.
 std::string describe(const ErrorMetrics& m);
 
 } // namespace lpv::reference

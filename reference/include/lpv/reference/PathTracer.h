@@ -23,7 +23,11 @@ struct PathTracerSettings {
     double maxSeconds = 0.0;  // reference.maxSeconds; 0 = until samplesPerPixel
     int bounces = 4;          // reference.bounces: diffuse reflections counted in indirectMulti
     bool skyLight = false;    // reference.skyLight: rays that escape see the sky's radiance
-    int threads = 0;          // 0 = std::thread::hardware_concurrency()
+    // reference.emissiveLight: emissive surfaces light others. Off matches the
+    // renderer, where emission is only seen, and where a light (the Cornell
+    // box's spot) already stands for the emitting panel: both would count it twice.
+    bool emissiveLight = false;
+    int threads = 0; // 0 = std::thread::hardware_concurrency()
 };
 
 struct TraceProgress {
