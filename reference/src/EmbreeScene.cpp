@@ -29,7 +29,6 @@ struct EmbreeScene::Impl {
     std::vector<scene::Material> materials;
     std::vector<MaterialTextures> textures;
     std::vector<bool> maybeCutOut; // per material: needs the alpha filter
-    float extent = 1.0f;
 
     ~Impl() {
         if (scene)
@@ -65,7 +64,6 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
     }
 
     std::vector<glm::vec3> positions;
-    scene::Bounds bounds;
     for (std::size_t o = 0; o < s.objects.size(); ++o) {
         const scene::Object& object = s.objects[o];
         if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= s.meshes.size())
@@ -97,7 +95,6 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                 const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
                 for (int c = 0; c < 3; ++c) {
                     positions.push_back(p[c]);
-                    bounds.extend(p[c]);
                     const float len = glm::length(n[c]);
                     d.normals.push_back(std::isfinite(len) && len > 0.0f ? n[c] / len : face);
                     d.uvs.push_back(uv[c]);
@@ -110,7 +107,6 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
         for (const scene::Submesh& sub : mesh.submeshes)
             addRange(sub.firstIndex, sub.indexCount, int(sub.materialIndex));
     }
-    d.extent = bounds.empty() ? 1.0f : std::max(glm::length(bounds.size()), 1e-3f);
 
     d.scene = rtcNewScene(d.device);
     rtcSetSceneFlags(d.scene, RTC_SCENE_FLAG_ROBUST);
@@ -229,9 +225,6 @@ SurfaceSample EmbreeScene::surface(const Hit& hit) const {
 
 std::size_t EmbreeScene::triangleCount() const {
     return impl_->triangleMaterial.size();
-}
-float EmbreeScene::sceneExtent() const {
-    return impl_->extent;
 }
 
 } // namespace lpv::reference

@@ -23,6 +23,15 @@ float smoothstep(float e0, float e1, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
+// Secondary rays start this far off the surface: a few hundred float ulps of
+// the position, so they cannot hit their own triangle again, yet far below
+// the thickness of real walls (a fixed fraction of the scene's size would
+// jump a 1 mm gap in a 100 m scene and leak light).
+glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n) {
+    const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return p + n * (2e-5f * scale);
+}
+
 // Welford's running mean and M2, per channel.
 struct Welford {
     glm::vec3 mean{0.0f};
@@ -48,7 +57,6 @@ PathTracer::PathTracer(const EmbreeScene& embree, const scene::Scene& scene, con
     inverseViewProjection_ = glm::inverse(camera.projection(aspect) * camera.view());
     // ForwardRenderer clears to the sky colour times its intensity.
     background_ = scene.sky.color * scene.sky.intensity;
-    epsilon_ = 1e-4f * embree.sceneExtent();
 }
 
 glm::vec3 PathTracer::escapedRadiance() const {
@@ -58,7 +66,7 @@ glm::vec3 PathTracer::escapedRadiance() const {
 glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3& p,
                                       const glm::vec3& offsetNormal, const glm::vec3& n, glm::vec3& l) const {
     glm::vec3 irradiance = light.color * light.intensity;
-    const glm::vec3 origin = p + offsetNormal * epsilon_;
+    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
     float maxT = std::numeric_limits<float>::infinity();
     if (light.type == scene::LightType::Directional) {
         l = -glm::normalize(light.direction);
@@ -141,7 +149,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
         if (glm::dot(w, ng) <= 0.0f)
             break; // below the true surface: the shading normal leans past the face
         const auto hit =
-            embree_.intersect(pos + ng * epsilon_, w, 0.0f, std::numeric_limits<float>::infinity());
+            embree_.intersect(offsetOrigin(pos, ng), w, 0.0f, std::numeric_limits<float>::infinity());
         if (!hit) {
             const glm::vec3 sky = throughput * escapedRadiance();
             multi += sky;

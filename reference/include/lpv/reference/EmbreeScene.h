@@ -45,8 +45,6 @@ class EmbreeScene {
     SurfaceSample surface(const Hit& hit) const;
 
     std::size_t triangleCount() const;
-    // Length of the scene's bounding box diagonal: ray offsets scale with it.
-    float sceneExtent() const;
 
   private:
     EmbreeScene();

@@ -65,7 +65,6 @@ class PathTracer {
     PathTracerSettings settings_;
     glm::mat4 inverseViewProjection_{1.0f};
     glm::vec3 background_{0.0f};
-    float epsilon_ = 1e-4f;
 
     glm::vec3 escapedRadiance() const;
     // Irradiance one light delivers at p toward n (0 when shadowed); `l` = unit direction to the light.
