@@ -31,7 +31,7 @@ scene::Image8 scatterPlot(const std::string& title, const std::string& xLabel, c
 // Images (RGBA8, same size) side by side in rows of `perRow`, each with its caption below.
 scene::Image8 contactSheet(const std::vector<std::pair<std::string, scene::Image8>>& images, int perRow);
 
-// The indices of the points not dominated by another (lower or equal x and y, one strictly lower).
+// Which points no other dominates (x and y lower or equal, one lower; y within 0.1% counts as equal).
 std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points);
 
 } // namespace lpv::cli
