@@ -326,11 +326,10 @@ int benchSweep(Args args) {
         if (!renderFrames(*setup, *width, *height, 1))
             return kFailure;
         run.indirectPixels = readRgb(setup->renderer->readHdr());
-        const reference::ImageView refSize{ref.width, ref.height, nullptr};
         auto measure = [&](const std::vector<glm::vec3>& test, const std::vector<glm::vec3>& r,
                            const std::vector<glm::vec3>& var) {
-            return reference::compareImages({*width, *height, &test}, {refSize.width, refSize.height, &r},
-                                            &var, &ref.coverage);
+            return reference::compareImages({*width, *height, &test}, {ref.width, ref.height, &r}, &var,
+                                            &ref.coverage);
         };
         run.indirect = measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
         run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
