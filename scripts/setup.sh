@@ -10,6 +10,7 @@ PACKAGES=(
   qt6-base-dev libqt6opengl6-dev qt6-charts-dev libqt6charts6 libglm-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0
   libopenimageio-dev libtinygltf-dev libassimp-dev libopenmesh-dev libxxhash-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+  libembree-dev fonts-dejavu-core
   xvfb xauth
   desktop-file-utils appstream shared-mime-info
 )

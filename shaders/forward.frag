@@ -31,6 +31,10 @@ uniform float uLightRange[MAX_LIGHTS];
 uniform vec2 uLightCosCone[MAX_LIGHTS];      // cos(outer), cos(inner)
 
 uniform vec3 uCameraPos;
+// output.view: 0 final image; 1 the LPV's indirect irradiance (W/m^2, no
+// albedo, the quantity the path-traced reference's indirect channel holds);
+// 2 direct light and emission only. Blended surfaces add nothing to 1.
+uniform int uOutputView;
 
 void main() {
     if (materialCutOut(vUv))
@@ -69,8 +73,15 @@ void main() {
         float visibility = shadowVisibility(i, vWorldPos, n, l, dist);
         radiance += surfaceBrdf(s, l, v) * irradianceColor * ndotl * visibility;
     }
+    if (uOutputView == 1) {
+        vec3 e = uLpvCascadeCount > 0 ? lpvIrradiance(vWorldPos, n) * s.occlusion : vec3(0.0);
+        outColor = uAlphaMode == 2 ? vec4(0.0) : vec4(e, 1.0);
+        outNormal = vec4(n, 1.0);
+        outAlbedo = vec4(s.albedo, 1.0);
+        return;
+    }
     // Indirect diffuse light from the LPV; metals have no diffuse part.
-    if (uLpvCascadeCount > 0) {
+    if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
         radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
     }

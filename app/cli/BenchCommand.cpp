@@ -18,6 +18,7 @@ namespace lpv::cli {
 namespace fs = std::filesystem;
 
 void printBenchLpvHelp();
+void printBenchSweepHelp();
 
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
@@ -25,6 +26,7 @@ void printBenchHelp() {
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
                                  --csv FILE --markdown FILE]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
+       lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR ... see below]
 
 bench render: renders the project headless at the given size (default
 1280x720) for --warmup frames (default 5, not counted) and then --frames
@@ -36,6 +38,7 @@ by the command and the machine: CPU, cores, GL renderer and version).
 
 )";
     printBenchLpvHelp();
+    printBenchSweepHelp();
     std::cout << R"(
 bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture
@@ -46,6 +49,7 @@ the source. Nothing is asserted: the figures depend on the machine.
 
 Example:
   lpv bench lpv sibenik.lpvproj --markdown lpv-bench.md --csv lpv-bench.csv
+  lpv bench cornell.lpvproj --sweep lpv.propagationSteps=0,4,8,16 --reference ref.exr --out sweep
   lpv bench import ../shared/scenes/sponza/sponza.obj ../shared/scenes/sibenik/sibenik.obj
 )";
 }
@@ -140,7 +144,9 @@ int benchImport(Args& args) {
 int runBench(Args args) {
     const auto pos = args.positionals();
     if (pos.empty())
-        return usageError("which benchmark? (import, render, lpv)", "bench");
+        return usageError("which benchmark? (import, render, lpv, or a project with --sweep)", "bench");
+    if (fs::path(pos.front()).extension() == ".lpvproj")
+        return benchSweep(std::move(args));
     if (pos.front() == "render")
         return benchRender(std::move(args));
     if (pos.front() == "lpv")

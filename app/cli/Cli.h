@@ -40,8 +40,11 @@ int runVersion(); // `lpv --version`, in VersionCommand.cpp
 int runVideo(Args args);
 int runPath(Args args);
 int runRadiosity(Args args); // `lpv radiosity`, in RadiosityCommand.cpp
+int runReference(Args args); // `lpv reference`, in ReferenceCommand.cpp
+int runCompare(Args args);   // `lpv compare`, in CompareCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
+int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
 
 void printRenderHelp();
 void printParamsHelp();
@@ -52,5 +55,7 @@ void printBenchHelp();
 void printVideoHelp();
 void printPathHelp();
 void printRadiosityHelp();
+void printReferenceHelp();
+void printCompareHelp();
 
 } // namespace lpv::cli

@@ -23,7 +23,10 @@ Renders the project headless (EGL: the GPU where present, Mesa llvmpipe
 otherwise), writes the image and prints per-pass GPU times (timer queries):
 one row per frame, then median/min/max over the frames rendered.
 
-  -o, --output FILE     Image to write (.png, .jpg, .exr, ...), required
+  -o, --output FILE     Image to write (.png, .jpg, .exr, ...), required; .exr
+                        holds the linear HDR image before exposure and
+                        tonemapping (with --set output.view=indirect: the LPV's
+                        indirect irradiance, for `lpv compare`)
   --width N             Image width in pixels (default 1280)
   --height N            Image height in pixels (default 720)
   --camera NAME         Named camera of the project (default: the first)
@@ -67,6 +70,16 @@ std::vector<std::string> splitCommas(const std::string& s) {
         start = comma + 1;
     }
     return out;
+}
+
+scene::Expected<void> writeHdrExr(const std::filesystem::path& out, RenderSetup& setup, int width, int height) {
+    const std::vector<float> rgba = setup.renderer->readHdr();
+    importers::FloatChannels image{width, height, {"R", "G", "B"}, {}, {}};
+    image.pixels.reserve(std::size_t(width) * std::size_t(height) * 3);
+    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4)
+        image.pixels.insert(image.pixels.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+    return importers::writeImageChannels(out, image,
+                                         {{"lpv:outputView", setup.project.parameters.getEnum("output.view")}});
 }
 
 } // namespace
@@ -153,9 +166,13 @@ int runRender(Args args) {
         setup->renderer->timer().clearHistory();
         if (!renderFrames(*setup, *width, *height, *frames))
             return kFailure;
-        importers::Image8 image{*width, *height, 4, setup->renderer->readDisplay()};
-        if (auto ok = importers::writeImage(out, image); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
+        // EXR keeps the linear HDR radiance (or the view output.view picks), before exposure and tonemapping,
+        // so `lpv compare` can measure it against the path-traced reference.
+        const bool hdr = out.extension() == ".exr";
+        const auto written = hdr ? writeHdrExr(out, *setup, *width, *height)
+                                 : importers::writeImage(out, {*width, *height, 4, setup->renderer->readDisplay()});
+        if (!written) {
+            std::cerr << "lpv: " << written.error().describe() << "\n";
             return kFailure;
         }
         const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();

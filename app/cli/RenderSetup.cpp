@@ -14,6 +14,20 @@
 namespace lpv::cli {
 
 
+std::optional<scene::Camera> pickCamera(const scene::Scene& s, const std::optional<std::string>& name,
+                                        const std::string& projectFile) {
+    if (!name)
+        return s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front();
+    if (const scene::Camera* c = s.findCamera(*name))
+        return *c;
+    std::string names;
+    for (const auto& cam : s.cameras)
+        names += (names.empty() ? "" : ", ") + cam.name;
+    std::cerr << "lpv: " << projectFile << ": no camera named '" << *name
+              << "' (cameras: " << (names.empty() ? "none" : names) << ")\n";
+    return std::nullopt;
+}
+
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
     exitCode = kFailure;
     auto project = scene::loadProject(request.projectFile);
@@ -34,21 +48,10 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
     }
 
     RenderSetup setup;
-    const scene::Scene& s = project->scene;
-    if (request.cameraName) {
-        const scene::Camera* c = s.findCamera(*request.cameraName);
-        if (!c) {
-            std::string names;
-            for (const auto& cam : s.cameras)
-                names += (names.empty() ? "" : ", ") + cam.name;
-            std::cerr << "lpv: " << request.projectFile << ": no camera named '" << *request.cameraName
-                      << "' (cameras: " << (names.empty() ? "none" : names) << ")\n";
-            return std::nullopt;
-        }
-        setup.camera = *c;
-    } else {
-        setup.camera = s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front();
-    }
+    auto camera = pickCamera(project->scene, request.cameraName, request.projectFile);
+    if (!camera)
+        return std::nullopt;
+    setup.camera = *camera;
 
     auto context = renderer::HeadlessContext::create();
     if (!context) {

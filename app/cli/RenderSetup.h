@@ -25,6 +25,11 @@ struct RenderRequest {
     std::vector<std::string> sets; // KEY=VALUE
 };
 
+// The named camera, or the project's first (a framing camera when it has none);
+// an unknown name prints the cameras there are and gives nothing.
+std::optional<scene::Camera> pickCamera(const scene::Scene& scene, const std::optional<std::string>& name,
+                                        const std::string& projectFile);
+
 // On failure prints the message (naming the file or the option) and returns
 // the exit code in `exitCode`.
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode);

@@ -27,6 +27,11 @@ Commands:
                               (side by side with --compare-set), with a progress line
   path export PROJECT --path NAME -o FILE.json|FILE.csv
                               Write a camera path as JSON, or as CSV per frame (--fps)
+  reference PROJECT -o REF.exr
+                              Path-trace (CPU, Embree) the reference image and indirect light
+                              with per-pixel variance (--spp, --max-seconds, --bounces)
+  compare TEST.exr REF.exr    Error of a rendered EXR against the reference: relMSE, MARE,
+                              SSIM, each beside the reference's own noise
   path import PROJECT FILE.json
                               Add or replace a camera path of the project from a JSON file
   radiosity PROJECT [-o OUT.lpvproj]
@@ -70,6 +75,8 @@ int dispatch(std::vector<std::string> args) {
         {"video", {runVideo, printVideoHelp}},
         {"path", {runPath, printPathHelp}},
         {"radiosity", {runRadiosity, printRadiosityHelp}},
+        {"reference", {runReference, printReferenceHelp}},
+        {"compare", {runCompare, printCompareHelp}},
     };
     auto it = commands.find(command);
     if (it == commands.end())

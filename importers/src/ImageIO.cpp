@@ -16,7 +16,9 @@ namespace {
 // Writes through a temporary beside the target, then renames: a failed or
 // interrupted write never leaves a half-written image at `file`.
 scene::Expected<void> writeAtomically(const std::filesystem::path& file, int width, int height, int channels,
-                                      OIIO::TypeDesc type, const void* pixels) {
+                                      OIIO::TypeDesc type, const void* pixels,
+                                      const std::vector<std::string>& channelNames = {},
+                                      const std::vector<std::pair<std::string, std::string>>& attributes = {}) {
     static std::atomic<unsigned> counter{0};
     // The temporary keeps the real extension last so OpenImageIO picks the same format.
     std::filesystem::path tmp = file;
@@ -29,6 +31,12 @@ scene::Expected<void> writeAtomically(const std::filesystem::path& file, int wid
     // Our pixels are straight (not premultiplied) alpha; say so, or formats
     // with associated alpha (TGA, TIFF) would change the colours.
     spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!channelNames.empty()) {
+        spec.channelnames = channelNames;
+        spec.alpha_channel = -1; // named layers: none of them is coverage alpha
+    }
+    for (const auto& [name, value] : attributes)
+        spec.attribute(name, value);
     if (!out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close()) {
         std::string err = out->geterror();
         out.reset();
@@ -62,6 +70,42 @@ scene::Expected<void> writeImageFloat(const std::filesystem::path& file, int wid
         pixels.size() != std::size_t(width) * std::size_t(height) * std::size_t(channels))
         return makeError(ErrorCode::InvalidValue, file.string(), "", "image size and pixel count disagree");
     return writeAtomically(file, width, height, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+}
+
+scene::Expected<void> writeImageChannels(const std::filesystem::path& file, const FloatChannels& image,
+                                         const std::vector<std::pair<std::string, std::string>>& attributes) {
+    const std::size_t channels = image.names.size();
+    if (image.width <= 0 || image.height <= 0 || channels == 0 ||
+        image.pixels.size() != std::size_t(image.width) * std::size_t(image.height) * channels)
+        return makeError(ErrorCode::InvalidValue, file.string(), "", "image size and pixel count disagree");
+    return writeAtomically(file, image.width, image.height, int(channels), OIIO::TypeDesc::FLOAT,
+                           image.pixels.data(), image.names, attributes);
+}
+
+scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& file) {
+    if (!std::filesystem::exists(file))
+        return makeError(ErrorCode::FileNotFound, file.string(), "", "no such file");
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in)
+        return makeError(ErrorCode::UnknownFormat, file.string(), "", "not a readable image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > kMaxImageSide ||
+        spec.height > kMaxImageSide || spec.nchannels > 64)
+        return makeError(ErrorCode::OutOfRange, file.string(), "header",
+                         "unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             "x" + std::to_string(spec.nchannels));
+    FloatChannels img;
+    img.width = spec.width;
+    img.height = spec.height;
+    for (int c = 0; c < spec.nchannels; ++c)
+        img.names.push_back(spec.channel_name(c));
+    img.pixels.resize(std::size_t(img.width) * std::size_t(img.height) * img.names.size());
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+        return makeError(ErrorCode::CorruptAsset, file.string(), "", "could not decode: " + in->geterror());
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+        if (p.type() == OIIO::TypeDesc::STRING)
+            img.attributes.emplace_back(p.name().string(), p.get_string());
+    return img;
 }
 
 scene::Expected<Image8> readImage8(const std::filesystem::path& file) {

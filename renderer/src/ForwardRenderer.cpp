@@ -31,6 +31,13 @@ constexpr GLuint kLpvFirstUnit = 16;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
+// output.view as forward.frag's uOutputView.
+int outputViewIndex(const std::string& name) {
+    if (name == "indirect") return 1;
+    if (name == "direct") return 2;
+    return 0;
+}
+
 int tonemapperIndex(const std::string& name) {
     if (name == "aces") return 0;
     if (name == "reinhard") return 1;
@@ -136,7 +143,9 @@ struct ForwardRenderer::Impl {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDisable(GL_CULL_FACE);
-        const glm::vec3 sky = frame.scene.sky.color * frame.scene.sky.intensity;
+        const int view = outputViewIndex(frame.params.getEnum("output.view"));
+        // The indirect view's background is no light, not the sky colour.
+        const glm::vec3 sky = view == 1 ? glm::vec3(0.0f) : frame.scene.sky.color * frame.scene.sky.intensity;
         const float background[] = {sky.r, sky.g, sky.b, 1.0f};
         const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
         glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 0, background);
@@ -146,6 +155,7 @@ struct ForwardRenderer::Impl {
         glUseProgram(fp);
         glProgramUniformMatrix4fv(fp, loc(fp, "uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
         glProgramUniform3fv(fp, loc(fp, "uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+        glProgramUniform1i(fp, loc(fp, "uOutputView"), view);
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
         lpv->bindForShading(fp, frame.params, kLpvFirstUnit);

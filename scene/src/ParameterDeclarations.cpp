@@ -119,6 +119,10 @@ std::vector<ParameterInfo> declareParameters() {
              P::Tonemap),
         choice("output.tonemapper", "aces", {"aces", "reinhard", "uncharted2", "linear"}, "Output",
                "Operator that maps HDR radiance to display values", P::Tonemap),
+        choice("output.view", "final", {"final", "indirect", "direct"}, "Output",
+               "What the camera image shows: the final image, only the LPV's indirect irradiance (W/m^2, no "
+               "albedo: what `lpv compare` measures against the path-traced reference), or direct light only",
+               P::Shading),
         integer("output.anisotropy", 8, 1, 16, "samples", "Output",
                 "Anisotropic texture filtering (1 = trilinear only); nearly free on GPUs, about 3x the "
                 "forward pass of textured scenes on llvmpipe",
@@ -138,6 +142,17 @@ std::vector<ParameterInfo> declareParameters() {
         integer("reference.samplesPerPixel", 64, 1, 65536, "spp", "Reference",
                 "Path-traced reference: samples per pixel", P::Reference),
         integer("reference.bounces", 4, 1, 64, "bounces", "Reference", "Path-traced reference: maximum bounces",
+                P::Reference),
+        real("reference.maxSeconds", 0.0, 0.0, 1e6, "s", "Reference",
+             "Path-traced reference: stop after the progressive pass that reaches this wall time (0 = no limit)",
+             P::Reference),
+        boolean("reference.skyLight", false, "Reference",
+                "Path-traced reference: rays that escape the scene see the sky's radiance (off matches the renderer, "
+                "whose sky only colours the background)",
+                P::Reference),
+        boolean("reference.emissiveLight", false, "Reference",
+                "Path-traced reference: emissive surfaces light other surfaces (off matches the renderer, where "
+                "emission is only seen and a light such as the Cornell box's spot stands for the emitter)",
                 P::Reference),
     };
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lpv::importers {
@@ -22,6 +23,20 @@ scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8
 // Floating-point pixels (rows top to bottom), for EXR and other HDR formats.
 scene::Expected<void> writeImageFloat(const std::filesystem::path& file, int width, int height, int channels,
                                       const std::vector<float>& pixels);
+// Any number of named float channels, interleaved per pixel (rows top to
+// bottom): multi-layer EXR such as the path-traced reference ("R", "G", "B",
+// "indirect.R", ...). String attributes travel in the file's header.
+struct FloatChannels {
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> names;
+    std::vector<float> pixels; // width * height * names.size()
+    std::vector<std::pair<std::string, std::string>> attributes;
+};
+scene::Expected<void> writeImageChannels(const std::filesystem::path& file, const FloatChannels& image,
+                                         const std::vector<std::pair<std::string, std::string>>& attributes = {});
+scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& file);
+
 scene::Expected<Image8> readImage8(const std::filesystem::path& file);
 
 // Four channels for use as a texture: grey, grey + alpha and RGB are expanded

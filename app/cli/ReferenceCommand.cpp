@@ -1,0 +1,182 @@
+// `lpv reference PROJECT -o ref.exr`: the path-traced reference of a camera
+// view (reference/PathTracer.h) written as a multi-layer EXR.
+#include "BenchReport.h"
+#include "Cli.h"
+#include "ReferenceFile.h"
+#include "ReferenceTrace.h"
+#include "RenderSetup.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/importers/SceneTextures.h"
+#include "lpv/reference/PathTracer.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace lpv::cli {
+
+void printReferenceHelp() {
+    std::cout << R"(Usage: lpv reference PROJECT.lpvproj -o REF.exr [options]
+
+Path-traces (CPU, Embree, every core) the camera's view through the same
+pixel centres the renderer's G-buffer has, progressively, one sample per
+pixel per pass, until the sample count or the time budget is reached, and
+writes a multi-layer EXR:
+  R,G,B                     full image (linear radiance, no exposure or tonemap)
+  indirect1.R,G,B           indirect diffuse irradiance at the primary hit, one bounce (W/m^2)
+  indirect.R,G,B            the same with up to --bounces bounces
+  variance.*, indirect1.variance.*, indirect.variance.*
+                            variance of each per-pixel mean (the reference's own noise)
+  coverage.Y                1 where the pixel sees geometry, 0 background
+The header records the settings (lpv:spp, lpv:seconds, lpv:bounces, ...).
+Compare a renderer image with it using `lpv compare`.
+
+  -o, --output FILE     EXR to write, required
+  --width N, --height N Image size (default 320x180; use the same for `lpv render`)
+  --camera NAME         Named camera of the project (default: the first)
+  --spp N               Samples per pixel (reference.samplesPerPixel, default 64)
+  --max-seconds S       Stop after the pass that reaches S seconds (reference.maxSeconds)
+  --bounces N           Diffuse bounces in the multi-bounce layer (reference.bounces, default 4)
+  --threads N           Worker threads (default: every hardware thread)
+  --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=true
+  --preview             Also write REF-image.png and REF-indirect.png to look at
+                        (x / (x + mean), gamma 2.2)
+)";
+}
+
+std::optional<reference::ReferenceImage> traceReference(const scene::Project& project,
+                                                        const std::filesystem::path& projectFile,
+                                                        const scene::Camera& camera,
+                                                        const ReferenceRequest& request) {
+    const auto textures =
+        importers::loadSceneTextures(project.scene, std::filesystem::absolute(projectFile).parent_path());
+    for (const std::string& w : textures.warnings)
+        std::cerr << "lpv: warning: " << w << "\n";
+    auto embree = reference::EmbreeScene::build(project.scene, textures.images);
+    if (!embree) {
+        std::cerr << "lpv: " << embree.error().describe() << "\n";
+        return std::nullopt;
+    }
+    reference::PathTracerSettings settings;
+    settings.width = request.width;
+    settings.height = request.height;
+    settings.threads = request.threads;
+    settings.samplesPerPixel = project.parameters.getInt("reference.samplesPerPixel");
+    settings.bounces = project.parameters.getInt("reference.bounces");
+    settings.maxSeconds = project.parameters.getFloat("reference.maxSeconds");
+    settings.skyLight = project.parameters.getBool("reference.skyLight");
+    settings.emissiveLight = project.parameters.getBool("reference.emissiveLight");
+    if (request.printProgress)
+        std::printf("reference: %zu triangles, %dx%d, up to %d spp, %d bounces%s\n", embree->triangleCount(),
+                    settings.width, settings.height, settings.samplesPerPixel, settings.bounces,
+                    settings.maxSeconds > 0.0
+                        ? (", at most " + std::to_string(settings.maxSeconds) + " s").c_str()
+                        : "");
+    const reference::PathTracer tracer(*embree, project.scene, camera, settings);
+    double lastPrinted = -1.0;
+    auto image = tracer.render([&](const reference::TraceProgress& p) {
+        // About once a second, and the last pass: enough to see it move, not a flood in a log.
+        if (request.printProgress && (p.seconds - lastPrinted >= 1.0 || p.samplesDone == p.samplesTarget)) {
+            lastPrinted = p.seconds;
+            std::printf("reference: %d/%d spp, %.1f s\n", p.samplesDone, p.samplesTarget, p.seconds);
+            std::fflush(stdout);
+        }
+        return true;
+    });
+    return image;
+}
+
+int runReference(Args args) {
+    auto output = args.option("--output");
+    if (auto o = args.option("-o"))
+        output = o;
+    const auto widthText = args.option("--width");
+    const auto heightText = args.option("--height");
+    const auto threadsText = args.option("--threads");
+    const auto spp = args.option("--spp");
+    const auto seconds = args.option("--max-seconds");
+    const auto bounces = args.option("--bounces");
+    const auto cameraName = args.option("--camera");
+    const bool preview = args.flag("--preview");
+    std::vector<std::string> sets = args.options("--set");
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "reference");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "reference");
+    const auto pos = args.positionals();
+    if (pos.size() != 1)
+        return usageError("expected exactly one project file", "reference");
+    if (!output)
+        return usageError("missing -o REF.exr", "reference");
+    if (std::filesystem::path(*output).extension() != ".exr")
+        return usageError("the reference is written as EXR: -o must end in .exr", "reference");
+    const auto width = parseCount(widthText.value_or("320"), 1);
+    const auto height = parseCount(heightText.value_or("180"), 1);
+    const auto threads = parseCount(threadsText.value_or("0"), 0);
+    if (!width || !height)
+        return usageError("--width and --height must be positive integers", "reference");
+    if (!threads)
+        return usageError("--threads must be a whole number", "reference");
+    // The flags are shorthands for registry parameters: one place checks their ranges.
+    if (spp)
+        sets.push_back("reference.samplesPerPixel=" + *spp);
+    if (seconds)
+        sets.push_back("reference.maxSeconds=" + *seconds);
+    if (bounces)
+        sets.push_back("reference.bounces=" + *bounces);
+
+    auto project = scene::loadProject(pos.front());
+    if (!project) {
+        std::cerr << "lpv: " << project.error().describe() << "\n";
+        return kFailure;
+    }
+    for (const std::string& kv : sets) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos)
+            return usageError("--set expects KEY=VALUE, got '" + kv + "'", "reference");
+        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok)
+            return usageError(ok.error().describe(), "reference");
+    }
+    const auto camera = pickCamera(project->scene, cameraName, pos.front());
+    if (!camera)
+        return kFailure;
+    const auto image = traceReference(*project, pos.front(), *camera, {*width, *height, *threads, true});
+    if (!image)
+        return kFailure;
+    const std::map<std::string, std::string> attributes{
+        {"lpv:project", pos.front()},
+        {"lpv:camera", camera->name},
+        {"lpv:spp", std::to_string(image->samplesPerPixel)},
+        {"lpv:seconds", std::to_string(image->seconds)},
+        {"lpv:bounces", std::to_string(project->parameters.getInt("reference.bounces"))},
+        {"lpv:skyLight", project->parameters.getBool("reference.skyLight") ? "true" : "false"},
+        {"lpv:emissiveLight", project->parameters.getBool("reference.emissiveLight") ? "true" : "false"},
+    };
+    if (auto ok = writeReferenceExr(*output, *image, attributes); !ok) {
+        std::cerr << "lpv: " << ok.error().describe() << "\n";
+        return kFailure;
+    }
+    std::printf("reference: %d spp in %.2f s (%.0f samples/s)\n", image->samplesPerPixel, image->seconds,
+                double(image->samplesPerPixel) * double(image->pixelCount()) /
+                    std::max(image->seconds, 1e-9));
+    std::printf("wrote %s\n", output->c_str());
+    if (preview) {
+        const std::filesystem::path out(*output);
+        for (const auto& [suffix, pixels] :
+             {std::pair{"-image.png", &image->image}, std::pair{"-indirect.png", &image->indirectMulti}}) {
+            std::filesystem::path png = out;
+            png.replace_filename(out.stem().string() + suffix);
+            const float key = meanLuminance(*pixels, image->coverage);
+            if (auto ok = importers::writeImage(
+                    png, previewImage(*pixels, image->width, 0, 0, image->width, image->height, key));
+                !ok) {
+                std::cerr << "lpv: " << ok.error().describe() << "\n";
+                return kFailure;
+            }
+            std::printf("wrote %s\n", png.string().c_str());
+        }
+    }
+    return kOk;
+}
+
+} // namespace lpv::cli

@@ -1,0 +1,105 @@
+#include "ReferenceFile.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/reference/Metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lpv::cli {
+
+scene::Expected<void> writeReferenceExr(const std::filesystem::path& file,
+                                        const reference::ReferenceImage& image,
+                                        const std::map<std::string, std::string>& attributes) {
+    const auto channels = reference::toChannels(image);
+    importers::FloatChannels out;
+    out.width = image.width;
+    out.height = image.height;
+    const std::size_t n = image.pixelCount();
+    out.pixels.resize(n * channels.size());
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        out.names.push_back(channels[c].name);
+        for (std::size_t i = 0; i < n; ++i)
+            out.pixels[i * channels.size() + c] = channels[c].values[i];
+    }
+    return importers::writeImageChannels(file, out, {attributes.begin(), attributes.end()});
+}
+
+scene::Expected<LoadedReference> readReferenceExr(const std::filesystem::path& file) {
+    auto in = importers::readImageChannels(file);
+    if (!in)
+        return std::unexpected(in.error());
+    const std::size_t n = std::size_t(in->width) * std::size_t(in->height);
+    const std::size_t stride = in->names.size();
+    if (std::ranges::find(in->names, "indirect.R") == in->names.end())
+        return scene::makeError(scene::ErrorCode::MissingField, file.string(), "channel indirect.R",
+                                "not a reference image (write one with `lpv reference`)");
+    std::vector<reference::Channel> channels;
+    for (std::size_t c = 0; c < stride; ++c) {
+        reference::Channel ch{in->names[c], std::vector<float>(n)};
+        for (std::size_t i = 0; i < n; ++i)
+            ch.values[i] = in->pixels[i * stride + c];
+        channels.push_back(std::move(ch));
+    }
+    LoadedReference out;
+    reference::fromChannels(channels, in->width, in->height, out.image);
+    for (const auto& [k, v] : in->attributes)
+        out.attributes[k] = v;
+    if (auto it = out.attributes.find("lpv:spp"); it != out.attributes.end())
+        out.image.samplesPerPixel = std::atoi(it->second.c_str());
+    return out;
+}
+
+scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file) {
+    auto in = importers::readImageChannels(file);
+    if (!in)
+        return std::unexpected(in.error());
+    auto index = [&](const char* name) {
+        return int(std::ranges::find(in->names, name) - in->names.begin());
+    };
+    const int r = index("R"), g = index("G"), b = index("B");
+    if (r >= int(in->names.size()) || g >= int(in->names.size()) || b >= int(in->names.size()))
+        return scene::makeError(scene::ErrorCode::MissingField, file.string(), "channels R, G, B",
+                                "the image has no R, G and B channels");
+    RgbImage out;
+    out.width = in->width;
+    out.height = in->height;
+    const std::size_t n = std::size_t(in->width) * std::size_t(in->height), stride = in->names.size();
+    out.pixels.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        out.pixels[i] = {in->pixels[i * stride + std::size_t(r)], in->pixels[i * stride + std::size_t(g)],
+                         in->pixels[i * stride + std::size_t(b)]};
+    for (const auto& [k, v] : in->attributes)
+        if (k == "lpv:outputView")
+            out.outputView = v;
+    return out;
+}
+
+scene::Image8 previewImage(const std::vector<glm::vec3>& pixels, int width, int x0, int y0, int w, int h,
+                           float key) {
+    scene::Image8 out{w, h, 4, std::vector<std::uint8_t>(std::size_t(w) * std::size_t(h) * 4, 255)};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::vec3 c = pixels[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)];
+            for (int k = 0; k < 3; ++k) {
+                const float v = std::isfinite(c[k]) ? std::max(c[k], 0.0f) : 0.0f;
+                const float mapped = std::pow(v / (v + key), 1.0f / 2.2f);
+                out.pixels[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4 + std::size_t(k)] =
+                    std::uint8_t(std::lround(255.0f * mapped));
+            }
+        }
+    return out;
+}
+
+float meanLuminance(const std::vector<glm::vec3>& pixels, const std::vector<float>& mask) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        if (i >= mask.size() || mask[i] > 0.5f) {
+            sum += reference::luminance(pixels[i]);
+            ++n;
+        }
+    return float(std::max(n ? sum / double(n) : 0.0, 1e-6));
+}
+
+} // namespace lpv::cli

@@ -1,0 +1,55 @@
+#pragma once
+// The scene flattened into world space and handed to Embree 3: one triangle
+// geometry for every visible object, with per-triangle material and the
+// vertex normals and UVs needed to shade a hit. Alpha-masked materials are
+// cut out by an intersection filter, like the renderer's discard.
+#include "lpv/reference/SurfaceLookup.h"
+#include "lpv/scene/Error.h"
+#include "lpv/scene/Image.h"
+#include "lpv/scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <optional>
+
+namespace lpv::reference {
+
+using scene::Expected;
+
+struct Hit {
+    float distance = 0.0f;
+    glm::vec3 position{0.0f};
+    glm::vec3 geometricNormal{0.0f}; // unit, facing the incoming ray
+    glm::vec3 shadingNormal{0.0f};   // interpolated vertex normal, unit, same side as geometricNormal
+    glm::vec2 uv{0.0f};
+    int material = -1; // index into Scene::materials, -1 = default grey
+};
+
+class EmbreeScene {
+  public:
+    // `textures` are the decoded images the renderer also gets (alpha masks
+    // are looked up in them); they must outlive the EmbreeScene.
+    static Expected<EmbreeScene> build(const scene::Scene& scene, const scene::TextureImages& textures);
+
+    EmbreeScene(EmbreeScene&&) noexcept;
+    EmbreeScene& operator=(EmbreeScene&&) noexcept;
+    ~EmbreeScene();
+
+    // Closest hit along origin + t dir, t in (tMin, tMax); dir need not be unit.
+    std::optional<Hit> intersect(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
+    // Anything between (shadow rays).
+    bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
+
+    // The material at a hit: albedo, emission and the direct-light BRDF terms.
+    SurfaceSample surface(const Hit& hit) const;
+
+    std::size_t triangleCount() const;
+
+  private:
+    EmbreeScene();
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace lpv::reference

@@ -1,0 +1,230 @@
+#include "lpv/reference/EmbreeScene.h"
+
+#include "lpv/reference/SurfaceLookup.h"
+
+#include <embree3/rtcore.h>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace lpv::reference {
+
+namespace {
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+struct EmbreeScene::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    // Flattened world-space streams; triangle i uses vertices 3i..3i+2.
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<int> triangleMaterial;
+    std::vector<scene::Material> materials;
+    std::vector<MaterialTextures> textures;
+    std::vector<bool> maybeCutOut; // per material: needs the alpha filter
+
+    ~Impl() {
+        if (scene)
+            rtcReleaseScene(scene);
+        if (device)
+            rtcReleaseDevice(device);
+    }
+
+    glm::vec2 uvAt(unsigned prim, float u, float v) const {
+        const std::size_t i = std::size_t(prim) * 3;
+        return (1.0f - u - v) * uvs[i] + u * uvs[i + 1] + v * uvs[i + 2];
+    }
+};
+
+EmbreeScene::EmbreeScene() : impl_(std::make_unique<Impl>()) {}
+EmbreeScene::EmbreeScene(EmbreeScene&&) noexcept = default;
+EmbreeScene& EmbreeScene::operator=(EmbreeScene&&) noexcept = default;
+EmbreeScene::~EmbreeScene() = default;
+
+Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::TextureImages& images) {
+    EmbreeScene out;
+    Impl& d = *out.impl_;
+    d.device = rtcNewDevice(nullptr);
+    if (!d.device)
+        return scene::makeError(scene::ErrorCode::InvalidValue, "", "Embree",
+                                "rtcNewDevice failed (error " +
+                                    std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    d.materials = s.materials;
+    for (const scene::Material& m : s.materials) {
+        d.textures.push_back(lookUpTextures(m, images));
+        d.maybeCutOut.push_back(m.additive || m.alphaMode != scene::AlphaMode::Opaque || m.colorKey ||
+                                !m.alphaTexture.empty());
+    }
+
+    std::vector<glm::vec3> positions;
+    for (std::size_t o = 0; o < s.objects.size(); ++o) {
+        const scene::Object& object = s.objects[o];
+        if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= s.meshes.size())
+            continue;
+        const scene::Mesh& mesh = s.meshes[std::size_t(object.mesh)];
+        const glm::mat4 world = s.worldMatrix(int(o));
+        const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(world));
+        auto addRange = [&](std::uint32_t first, std::uint32_t count, int material) {
+            for (std::uint32_t k = first; k + 3 <= std::size_t(first) + count && k + 3 <= mesh.indices.size();
+                 k += 3) {
+                glm::vec3 p[3];
+                glm::vec3 n[3];
+                glm::vec2 uv[3];
+                bool ok = true;
+                for (int c = 0; c < 3; ++c) {
+                    const std::uint32_t vi = mesh.indices[k + std::uint32_t(c)];
+                    if (vi >= mesh.positions.size()) {
+                        ok = false;
+                        break;
+                    }
+                    p[c] = glm::vec3(world * glm::vec4(mesh.positions[vi], 1.0f));
+                    n[c] = vi < mesh.normals.size() ? normalMatrix * mesh.normals[vi] : glm::vec3(0.0f);
+                    uv[c] = vi < mesh.uvs.size() ? mesh.uvs[vi] : glm::vec2(0.0f);
+                    ok = ok && finite(p[c]);
+                }
+                // Non-finite or degenerate triangles are left out rather than poisoning the BVH.
+                if (!ok || glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) <= 0.0f)
+                    continue;
+                const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+                for (int c = 0; c < 3; ++c) {
+                    positions.push_back(p[c]);
+                    const float len = glm::length(n[c]);
+                    d.normals.push_back(std::isfinite(len) && len > 0.0f ? n[c] / len : face);
+                    d.uvs.push_back(uv[c]);
+                }
+                d.triangleMaterial.push_back(material < int(s.materials.size()) ? material : -1);
+            }
+        };
+        if (mesh.submeshes.empty())
+            addRange(0, std::uint32_t(mesh.indices.size()), -1);
+        for (const scene::Submesh& sub : mesh.submeshes)
+            addRange(sub.firstIndex, sub.indexCount, int(sub.materialIndex));
+    }
+
+    d.scene = rtcNewScene(d.device);
+    rtcSetSceneFlags(d.scene, RTC_SCENE_FLAG_ROBUST);
+    if (!d.triangleMaterial.empty()) {
+        RTCGeometry g = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), positions.size()));
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), d.triangleMaterial.size()));
+        if (!v || !idx) {
+            rtcReleaseGeometry(g);
+            return scene::makeError(scene::ErrorCode::InvalidValue, "", "Embree",
+                                    "could not allocate " + std::to_string(d.triangleMaterial.size()) +
+                                        " triangles");
+        }
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            v[3 * i] = positions[i].x;
+            v[3 * i + 1] = positions[i].y;
+            v[3 * i + 2] = positions[i].z;
+            idx[i] = unsigned(i);
+        }
+        rtcSetGeometryUserData(g, &d);
+        // Masked texels are holes for every ray, as the renderer discards them in every pass.
+        RTCFilterFunctionN alphaFilter = [](const RTCFilterFunctionNArguments* args) {
+            const auto* impl = static_cast<const Impl*>(args->geometryUserPtr);
+            for (unsigned i = 0; i < args->N; ++i) {
+                if (args->valid[i] != -1)
+                    continue;
+                const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+                const int m = impl->triangleMaterial[prim];
+                if (m < 0 || !impl->maybeCutOut[std::size_t(m)])
+                    continue;
+                const glm::vec2 uv =
+                    impl->uvAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+                if (materialCutOut(impl->materials[std::size_t(m)], impl->textures[std::size_t(m)], uv))
+                    args->valid[i] = 0;
+            }
+        };
+        rtcSetGeometryIntersectFilterFunction(g, alphaFilter);
+        rtcSetGeometryOccludedFilterFunction(g, alphaFilter);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(d.scene, g);
+        rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(d.scene);
+    if (const RTCError e = rtcGetDeviceError(d.device); e != RTC_ERROR_NONE)
+        return scene::makeError(scene::ErrorCode::InvalidValue, "", "Embree",
+                                "building the BVH failed (error " + std::to_string(int(e)) + ")");
+    return out;
+}
+
+std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float tMin,
+                                          float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh{};
+    rh.ray.org_x = origin.x;
+    rh.ray.org_y = origin.y;
+    rh.ray.org_z = origin.z;
+    rh.ray.dir_x = dir.x;
+    rh.ray.dir_y = dir.y;
+    rh.ray.dir_z = dir.z;
+    rh.ray.tnear = tMin;
+    rh.ray.tfar = tMax;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+        return std::nullopt;
+    const Impl& d = *impl_;
+    const std::size_t i = std::size_t(rh.hit.primID) * 3;
+    Hit hit;
+    hit.distance = rh.ray.tfar;
+    hit.position = origin + dir * rh.ray.tfar;
+    glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+    if (glm::dot(ng, dir) > 0.0f)
+        ng = -ng;
+    const float u = rh.hit.u, v = rh.hit.v;
+    glm::vec3 ns = (1.0f - u - v) * d.normals[i] + u * d.normals[i + 1] + v * d.normals[i + 2];
+    const float len = glm::length(ns);
+    ns = len > 1e-12f ? ns / len : ng;
+    // Seen from behind: both normals face the viewer (the renderer draws without culling).
+    if (glm::dot(ns, ng) < 0.0f)
+        ns = -ns;
+    hit.geometricNormal = ng;
+    hit.shadingNormal = ns;
+    hit.uv = d.uvAt(rh.hit.primID, u, v);
+    hit.material = d.triangleMaterial[rh.hit.primID];
+    return hit;
+}
+
+bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray{};
+    ray.org_x = origin.x;
+    ray.org_y = origin.y;
+    ray.org_z = origin.z;
+    ray.dir_x = dir.x;
+    ray.dir_y = dir.y;
+    ray.dir_z = dir.z;
+    ray.tnear = tMin;
+    ray.tfar = tMax;
+    ray.mask = 0xFFFFFFFFu;
+    rtcOccluded1(impl_->scene, &context, &ray);
+    return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+SurfaceSample EmbreeScene::surface(const Hit& hit) const {
+    if (hit.material < 0)
+        return SurfaceSample{}; // the renderer's default material: grey 0.8 Lambert
+    const std::size_t m = std::size_t(hit.material);
+    return materialSurface(impl_->materials[m], impl_->textures[m], hit.uv);
+}
+
+std::size_t EmbreeScene::triangleCount() const {
+    return impl_->triangleMaterial.size();
+}
+
+} // namespace lpv::reference

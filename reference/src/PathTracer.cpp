@@ -1,0 +1,247 @@
+#include "lpv/reference/PathTracer.h"
+
+#include "Sampling.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+#include <vector>
+
+namespace lpv::reference {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr int kTile = 16;
+// Paths longer than this continue with probability = their throughput (Russian roulette).
+constexpr int kRouletteDepth = 3;
+
+float smoothstep(float e0, float e1, float x) {
+    const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+// Secondary rays start this far off the surface: a few hundred float ulps of
+// the position, so they cannot hit their own triangle again, yet far below
+// the thickness of real walls (a fixed fraction of the scene's size would
+// jump a 1 mm gap in a 100 m scene and leak light).
+glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n) {
+    const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return p + n * (2e-5f * scale);
+}
+
+// Welford's running mean and M2, per channel.
+struct Welford {
+    glm::vec3 mean{0.0f};
+    glm::vec3 m2{0.0f};
+    void add(const glm::vec3& x, int n) { // n = count including x
+        const glm::vec3 delta = x - mean;
+        mean += delta / float(n);
+        m2 += delta * (x - mean);
+    }
+    glm::vec3 varianceOfMean(int n) const { return n > 1 ? m2 / (float(n - 1) * float(n)) : glm::vec3(0.0f); }
+};
+
+struct PixelState {
+    Welford image, one, multi;
+};
+
+} // namespace
+
+PathTracer::PathTracer(const EmbreeScene& embree, const scene::Scene& scene, const scene::Camera& camera,
+                       PathTracerSettings settings)
+    : embree_(embree), scene_(scene), settings_(settings) {
+    const float aspect = float(settings_.width) / float(std::max(settings_.height, 1));
+    inverseViewProjection_ = glm::inverse(camera.projection(aspect) * camera.view());
+    // ForwardRenderer clears to the sky colour times its intensity.
+    background_ = scene.sky.color * scene.sky.intensity;
+}
+
+glm::vec3 PathTracer::escapedRadiance() const {
+    return settings_.skyLight ? background_ : glm::vec3(0.0f);
+}
+
+glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3& p,
+                                      const glm::vec3& offsetNormal, const glm::vec3& n, glm::vec3& l) const {
+    glm::vec3 irradiance = light.color * light.intensity;
+    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    float maxT = std::numeric_limits<float>::infinity();
+    if (light.type == scene::LightType::Directional) {
+        l = -glm::normalize(light.direction);
+    } else {
+        const glm::vec3 d = light.position - p;
+        const float dist = glm::length(d);
+        if (dist <= 0.0f)
+            return glm::vec3(0.0f);
+        l = d / dist;
+        float atten = 1.0f / std::max(dist * dist, 1e-8f);
+        if (light.range > 0.0f) {
+            // Smooth window to zero at the range (glTF convention, as forward.frag).
+            const float r = dist / light.range;
+            atten *= std::clamp(1.0f - r * r * r * r, 0.0f, 1.0f);
+        }
+        if (light.type == scene::LightType::Spot) {
+            const float cosAngle = glm::dot(-l, glm::normalize(light.direction));
+            atten *= smoothstep(std::cos(light.outerConeAngle), std::cos(light.innerConeAngle), cosAngle);
+        }
+        irradiance *= atten;
+        maxT = glm::length(light.position - origin) * (1.0f - 1e-4f);
+    }
+    const float ndotl = glm::dot(n, l);
+    if (ndotl <= 0.0f || irradiance == glm::vec3(0.0f))
+        return glm::vec3(0.0f);
+    if (light.castShadows && embree_.occluded(origin, l, 0.0f, maxT))
+        return glm::vec3(0.0f);
+    return irradiance * ndotl;
+}
+
+glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal,
+                                       const glm::vec3& n) const {
+    glm::vec3 e(0.0f);
+    glm::vec3 l;
+    for (const scene::Light& light : scene_.lights)
+        e += lightIrradiance(light, p, offsetNormal, n, l);
+    return e;
+}
+
+PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
+    PixelSample out;
+    // Through the pixel centre, as the rasteriser samples the G-buffer.
+    const float ndcX = 2.0f * (float(x) + 0.5f) / float(settings_.width) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(settings_.height);
+    const glm::vec4 nearH = inverseViewProjection_ * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    const glm::vec4 farH = inverseViewProjection_ * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    const glm::vec3 nearP = glm::vec3(nearH) / nearH.w;
+    const glm::vec3 farP = glm::vec3(farH) / farH.w;
+    const glm::vec3 dir = glm::normalize(farP - nearP);
+    const auto primary = embree_.intersect(nearP, dir, 0.0f, glm::length(farP - nearP));
+    if (!primary) {
+        out.radiance = background_;
+        return out;
+    }
+    out.covered = true;
+    Rng rng(std::uint32_t(x), std::uint32_t(y) * 65537u, std::uint32_t(sampleIndex));
+
+    const Hit& h = *primary;
+    const SurfaceSample s = embree_.surface(h);
+    const glm::vec3 v = -dir;
+    // Direct light with the renderer's full BRDF (brdf.glsl), so the direct parts agree.
+    glm::vec3 radiance = s.emissive;
+    for (const scene::Light& light : scene_.lights) {
+        glm::vec3 l;
+        const glm::vec3 e = lightIrradiance(light, h.position, h.geometricNormal, h.shadingNormal, l);
+        if (e != glm::vec3(0.0f))
+            radiance += surfaceBrdf(s, h.shadingNormal, l, v) * e;
+    }
+
+    // Indirect irradiance at the primary hit: E = pi * mean incoming radiance
+    // over cosine-weighted directions. Each later vertex is Lambertian.
+    glm::vec3 pos = h.position;
+    glm::vec3 ng = h.geometricNormal;
+    glm::vec3 n = h.shadingNormal;
+    glm::vec3 throughput(1.0f); // product of the diffuse albedos after the primary hit
+    glm::vec3 multi(0.0f);      // incoming radiance at the primary hit, all bounces
+    glm::vec3 one(0.0f);
+    for (int depth = 1; depth <= settings_.bounces; ++depth) {
+        const glm::vec3 w = cosineSample(n, rng.next(), rng.next());
+        if (glm::dot(w, ng) <= 0.0f)
+            break; // below the true surface: the shading normal leans past the face
+        const auto hit =
+            embree_.intersect(offsetOrigin(pos, ng), w, 0.0f, std::numeric_limits<float>::infinity());
+        if (!hit) {
+            const glm::vec3 sky = throughput * escapedRadiance();
+            multi += sky;
+            if (depth == 1)
+                one += sky;
+            break;
+        }
+        const SurfaceSample hs = embree_.surface(*hit);
+        const glm::vec3 emitted = settings_.emissiveLight ? hs.emissive : glm::vec3(0.0f);
+        const glm::vec3 reflected =
+            emitted +
+            hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal);
+        multi += throughput * reflected;
+        if (depth == 1)
+            one += reflected;
+        throughput *= hs.diffuse;
+        if (depth >= kRouletteDepth) {
+            const float keep = std::min(0.95f, std::max(throughput.x, std::max(throughput.y, throughput.z)));
+            if (keep <= 0.0f || rng.next() >= keep)
+                break;
+            throughput /= keep;
+        }
+        pos = hit->position;
+        ng = hit->geometricNormal;
+        n = hit->shadingNormal;
+    }
+    out.indirectOne = kPi * one;
+    out.indirectMulti = kPi * multi;
+    out.radiance = radiance + s.diffuse / kPi * out.indirectMulti;
+    return out;
+}
+
+ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    ReferenceImage result;
+    result.resize(settings_.width, settings_.height);
+    std::vector<PixelState> state(result.pixelCount());
+    const int tilesX = (settings_.width + kTile - 1) / kTile;
+    const int tilesY = (settings_.height + kTile - 1) / kTile;
+    const int tileCount = tilesX * tilesY;
+    const int threadCount =
+        settings_.threads > 0 ? settings_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int target = std::max(1, settings_.samplesPerPixel);
+
+    int done = 0;
+    double lastPass = 0.0;
+    while (done < target) {
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        // Stop before a pass that would run past the budget (the first pass always runs).
+        if (done > 0 && settings_.maxSeconds > 0.0 && elapsed + lastPass > settings_.maxSeconds)
+            break;
+        const auto passStart = Clock::now();
+        const int sampleIndex = done;
+        std::atomic<int> nextTile{0};
+        auto worker = [&] {
+            for (int t = nextTile++; t < tileCount; t = nextTile++) {
+                const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
+                for (int y = y0; y < std::min(y0 + kTile, settings_.height); ++y)
+                    for (int x = x0; x < std::min(x0 + kTile, settings_.width); ++x) {
+                        const PixelSample s = samplePixel(x, y, sampleIndex);
+                        const std::size_t i = std::size_t(y) * std::size_t(settings_.width) + std::size_t(x);
+                        PixelState& p = state[i];
+                        p.image.add(s.radiance, sampleIndex + 1);
+                        p.one.add(s.indirectOne, sampleIndex + 1);
+                        p.multi.add(s.indirectMulti, sampleIndex + 1);
+                        result.coverage[i] = s.covered ? 1.0f : 0.0f;
+                    }
+            }
+        };
+        std::vector<std::jthread> pool;
+        for (int k = 1; k < threadCount; ++k)
+            pool.emplace_back(worker);
+        worker();
+        pool.clear(); // joins
+        ++done;
+        lastPass = std::chrono::duration<double>(Clock::now() - passStart).count();
+        if (progress &&
+            !progress({done, target, std::chrono::duration<double>(Clock::now() - start).count()}))
+            break;
+    }
+    for (std::size_t i = 0; i < state.size(); ++i) {
+        result.image[i] = state[i].image.mean;
+        result.indirectOne[i] = state[i].one.mean;
+        result.indirectMulti[i] = state[i].multi.mean;
+        result.imageVariance[i] = state[i].image.varianceOfMean(done);
+        result.indirectOneVariance[i] = state[i].one.varianceOfMean(done);
+        result.indirectMultiVariance[i] = state[i].multi.varianceOfMean(done);
+    }
+    result.samplesPerPixel = done;
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+}
+
+} // namespace lpv::reference

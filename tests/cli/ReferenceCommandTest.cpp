@@ -1,0 +1,142 @@
+// `lpv reference`, `lpv compare` and `lpv bench PROJECT --sweep` as a user
+// runs them, on the built-in Cornell box at a tiny size: the reference EXR
+// has its layers and settings, the LPV's indirect view compares against it,
+// and the sweep writes its tables and plots.
+#include "RunLpv.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/scene/Project.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace lpv::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The number after "key": in a one-line JSON object.
+double jsonNumber(const std::string& json, const std::string& key) {
+    const auto at = json.find("\"" + key + "\": ");
+    return at == std::string::npos ? std::nan("") : std::atof(json.c_str() + at + key.size() + 4);
+}
+
+class ReferenceCommand : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        dir_ = fs::temp_directory_path() / ("lpv-reference-" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        // The built-in box has only its ceiling spot; the LPV injects sunlight,
+        // so a sun shines in through the open front, down onto the floor.
+        auto project = lpv::scene::loadProject(cornellProject());
+        ASSERT_TRUE(project) << project.error().describe();
+        lpv::scene::Light sun;
+        sun.name = "sun";
+        sun.direction = glm::normalize(glm::vec3(0.2f, -0.6f, 1.0f));
+        sun.intensity = 3.0f;
+        project->scene.lights.push_back(sun);
+        project_ = (dir_ / "cornell-sun.lpvproj").string();
+        ASSERT_TRUE(lpv::scene::saveProject(*project, project_));
+        traced_ = runLpv("reference '" + project_ + "' -o '" + (dir_ / "ref.exr").string() +
+                         "' --width 40 --height 30 --spp 8 --bounces 3");
+    }
+    static void TearDownTestSuite() { fs::remove_all(dir_); }
+    static inline fs::path dir_;
+    static inline std::string project_;
+    static inline RunResult traced_;
+};
+
+TEST_F(ReferenceCommand, WritesEveryLayerAndItsSettings) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    EXPECT_NE(traced_.output.find("8/8 spp"), std::string::npos) << traced_.output;
+    auto image = lpv::importers::readImageChannels(dir_ / "ref.exr");
+    ASSERT_TRUE(image) << image.error().describe();
+    EXPECT_EQ(image->width, 40);
+    EXPECT_EQ(image->height, 30);
+    for (const char* name :
+         {"R", "indirect1.G", "indirect.B", "variance.R", "indirect.variance.G", "coverage.Y"})
+        EXPECT_NE(std::ranges::find(image->names, name), image->names.end()) << name;
+    const auto spp = std::ranges::find(image->attributes, std::string("lpv:spp"),
+                                       &std::pair<std::string, std::string>::first);
+    ASSERT_NE(spp, image->attributes.end());
+    EXPECT_EQ(spp->second, "8");
+    for (float v : image->pixels)
+        ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST_F(ReferenceCommand, ComparesTheLpvIndirectViewWithTheReference) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const fs::path lpvExr = dir_ / "lpv.exr";
+    const RunResult rendered = runLpv("render '" + project_ + "' -o '" + lpvExr.string() +
+                                      "' --width 40 --height 30 --frames 2 --set output.view=indirect");
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+    const RunResult compared = runLpv("compare '" + lpvExr.string() + "' '" + (dir_ / "ref.exr").string() +
+                                      "' --layer indirect1 --json");
+    ASSERT_EQ(compared.exitCode, 0) << compared.output;
+    EXPECT_NE(compared.output.find("\"layer\": \"indirect1\""), std::string::npos) << compared.output;
+    const double ssim = jsonNumber(compared.output, "ssim");
+    EXPECT_TRUE(std::isfinite(jsonNumber(compared.output, "mare"))) << compared.output;
+    EXPECT_GT(jsonNumber(compared.output, "noiseMare"), 0.0) << "8 spp leave measurable noise";
+    EXPECT_GE(ssim, -1.0);
+    EXPECT_LE(ssim, 1.0);
+    // Units agree: the LPV injects sunlight reflected once, so its mean
+    // irradiance is close to the reference's one-bounce layer (0.94x at
+    // 160x120, 256 spp, docs/reference.md). A slip of pi or of the albedo
+    // (about 0.7 here) in either would put the ratio outside 0.6..1.6.
+    const double ratio =
+        jsonNumber(compared.output, "meanTest") / jsonNumber(compared.output, "meanReference");
+    EXPECT_GT(ratio, 0.6) << compared.output;
+    EXPECT_LT(ratio, 1.6) << compared.output;
+}
+
+TEST_F(ReferenceCommand, RefusesImagesOfAnotherSize) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const fs::path small = dir_ / "small.exr";
+    ASSERT_EQ(
+        runLpv("render '" + project_ + "' -o '" + small.string() + "' --width 20 --height 15 --frames 1")
+            .exitCode,
+        0);
+    const RunResult r = runLpv("compare '" + small.string() + "' '" + (dir_ / "ref.exr").string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("20x15"), std::string::npos) << r.output;
+    EXPECT_EQ(runLpv("compare '" + small.string() + "' '" + small.string() + "'").exitCode, 1)
+        << "an image without reference layers is not a reference";
+    EXPECT_EQ(runLpv("reference '" + project_ + "' -o x.png").exitCode, 2);
+}
+
+TEST_F(ReferenceCommand, SweepWritesTablesPlotsAndTheCheapestSettings) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const fs::path out = dir_ / "sweep";
+    const RunResult r = runLpv("bench '" + project_ + "' --sweep lpv.propagationSteps=0,4 --reference '" +
+                               (dir_ / "ref.exr").string() + "' --out '" + out.string() +
+                               "' --width 40 --height 30 --frames 2 --warmup 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* file : {"sweep.csv", "sweep.json", "sweep.md", "time-lpv.propagationSteps.png",
+                             "error-time.png", "crops.png"})
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+    const std::string csv = readText(out / "sweep.csv");
+    EXPECT_EQ(std::ranges::count(csv, '\n'), 3) << csv; // header + two settings
+    EXPECT_NE(csv.find("lpvPropagate_median_ms"), std::string::npos) << csv;
+    const std::string md = readText(out / "sweep.md");
+    EXPECT_NE(md.find("| propagationSteps=4 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("indirect MARE <= 10.0%"), std::string::npos) << md;
+    auto plot = lpv::importers::readImage8(out / "error-time.png");
+    ASSERT_TRUE(plot);
+    EXPECT_EQ(plot->width, 800);
+}
+
+} // namespace

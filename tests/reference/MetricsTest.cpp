@@ -1,0 +1,101 @@
+// Error metrics on synthetic images whose answer is known in closed form.
+#include "lpv/reference/Metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace lpv::reference;
+
+std::vector<glm::vec3> constant(int w, int h, float v) {
+    return std::vector<glm::vec3>(std::size_t(w * h), glm::vec3(v));
+}
+
+TEST(Metrics, IdenticalImagesHaveNoError) {
+    auto ref = constant(8, 8, 2.0f);
+    for (std::size_t i = 0; i < ref.size(); ++i)
+        ref[i] *= 1.0f + 0.1f * float(i % 7); // some structure for SSIM
+    const ErrorMetrics m = compareImages({8, 8, &ref}, {8, 8, &ref}, nullptr, nullptr);
+    EXPECT_EQ(m.pixels, 64u);
+    EXPECT_EQ(m.relMse, 0.0);
+    EXPECT_EQ(m.mare, 0.0);
+    EXPECT_NEAR(m.ssim, 1.0, 1e-12);
+}
+
+TEST(Metrics, UniformScaleErrorHasClosedForm) {
+    // t = (1 + k) r on a constant r: relMSE = k^2 r^2 / (r^2 + eps^2), MARE = k r / (r + eps), eps = 0.01 r.
+    const float r = 3.0f, k = 0.2f;
+    const auto ref = constant(16, 8, r);
+    const auto test = constant(16, 8, r * (1.0f + k));
+    const ErrorMetrics m = compareImages({16, 8, &test}, {16, 8, &ref}, nullptr, nullptr);
+    EXPECT_NEAR(m.relMse, double(k * k) / (1.0 + 1e-4), 1e-6);
+    EXPECT_NEAR(m.mare, double(k) / 1.01, 1e-6);
+    EXPECT_NEAR(m.meanTest / m.meanReference, 1.0 + k, 1e-6);
+    // Both constant: SSIM's contrast and structure terms are 1; the mean term is
+    // (2xy + c1) / (x^2 + y^2 + c1) with x, y mapped by v / (v + r).
+    const double x = (r * (1.0 + k)) / (r * (1.0 + k) + r), y = 0.5, c1 = 1e-4;
+    EXPECT_NEAR(m.ssim, (2 * x * y + c1) / (x * x + y * y + c1), 1e-6);
+}
+
+TEST(Metrics, MaskedPixelsAreLeftOut) {
+    auto ref = constant(4, 4, 1.0f);
+    auto test = ref;
+    std::vector<float> mask(16, 1.0f);
+    test[5] = glm::vec3(1000.0f); // the sky, say
+    mask[5] = 0.0f;
+    const ErrorMetrics m = compareImages({4, 4, &test}, {4, 4, &ref}, nullptr, &mask);
+    EXPECT_EQ(m.pixels, 15u);
+    EXPECT_EQ(m.relMse, 0.0);
+    const ErrorMetrics unmasked = compareImages({4, 4, &test}, {4, 4, &ref}, nullptr, nullptr);
+    EXPECT_GT(unmasked.relMse, 1000.0);
+}
+
+TEST(Metrics, ErrorBelowTheReferenceNoiseIsReportedAsSuch) {
+    // The reference's per-pixel sigma is 0.1 on r = 1 (grey: sigma_Y = 0.1).
+    const auto ref = constant(8, 8, 1.0f);
+    const std::vector<glm::vec3> variance(64, glm::vec3(0.01f));
+    const double eps2 = 1e-4;
+    auto close = constant(8, 8, 1.05f); // 5% off: inside the noise
+    ErrorMetrics m = compareImages({8, 8, &close}, {8, 8, &ref}, &variance, nullptr);
+    EXPECT_NEAR(m.noiseRelMse, 0.01 / (1.0 + eps2), 1e-6);
+    EXPECT_NEAR(m.noiseMare, std::sqrt(2.0 / 3.14159265358979) * 0.1 / 1.01, 1e-6);
+    EXPECT_TRUE(m.relMseBelowNoise());
+    EXPECT_TRUE(m.mareBelowNoise());
+    EXPECT_EQ(m.relMseDenoised(), 0.0);
+    EXPECT_NE(describe(m).find("below noise"), std::string::npos);
+
+    auto far = constant(8, 8, 1.5f); // 50% off: well above it
+    m = compareImages({8, 8, &far}, {8, 8, &ref}, &variance, nullptr);
+    EXPECT_FALSE(m.relMseBelowNoise());
+    EXPECT_FALSE(m.mareBelowNoise());
+    EXPECT_NEAR(m.relMseDenoised(), (0.25 - 0.01) / (1.0 + eps2), 1e-6);
+}
+
+TEST(Metrics, NonFiniteTestPixelsCountAsWrongNotAsNan) {
+    const auto ref = constant(4, 4, 1.0f);
+    auto test = ref;
+    test[3] = glm::vec3(std::nanf(""));
+    const ErrorMetrics m = compareImages({4, 4, &test}, {4, 4, &ref}, nullptr, nullptr);
+    EXPECT_TRUE(std::isfinite(m.relMse));
+    EXPECT_NEAR(m.mare, 1.0 / 1.01 / 16.0, 1e-9);
+}
+
+TEST(Metrics, SsimDropsWithNoiseButNotWithIdenticalStructure) {
+    const int w = 32, h = 32;
+    std::vector<float> a(std::size_t(w * h)), noisy(a.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            a[std::size_t(y * w + x)] = 1.0f + 0.5f * std::sin(0.3f * float(x)) * std::cos(0.2f * float(y));
+            // A deterministic high-frequency pattern stands in for noise.
+            noisy[std::size_t(y * w + x)] =
+                a[std::size_t(y * w + x)] * (1.0f + 0.4f * float(((x * 7 + y * 13) % 5) - 2) / 2.0f);
+        }
+    EXPECT_NEAR(ssimLuminance(a, a, w, h, nullptr), 1.0, 1e-9);
+    const double s = ssimLuminance(noisy, a, w, h, nullptr);
+    EXPECT_LT(s, 0.95);
+    EXPECT_GT(s, 0.0);
+}
+
+} // namespace
