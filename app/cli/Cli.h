@@ -39,6 +39,7 @@ int runBench(Args args);
 int runVersion(); // `lpv --version`, in VersionCommand.cpp
 int runVideo(Args args);
 int runPath(Args args);
+int runDump(Args args); // `lpv dump`, in DumpCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 
@@ -50,5 +51,6 @@ void printImportHelp();
 void printBenchHelp();
 void printVideoHelp();
 void printPathHelp();
+void printDumpHelp();
 
 } // namespace lpv::cli

@@ -29,6 +29,9 @@ Commands:
                               Write a camera path as JSON, or as CSV per frame (--fps)
   path import PROJECT FILE.json
                               Add or replace a camera path of the project from a JSON file
+  dump PROJECT --what lpv|gv|leak|backside|rsm|shadow -o OUT.png
+                              Write a visualizer image (LPV slice, geometry volume, leak maps,
+                              RSM or shadow tiles) as the editor's Visualizers dock shows it
 
 Options:
   -h, --help                  Show this help
@@ -66,6 +69,7 @@ int dispatch(std::vector<std::string> args) {
         {"info", {runInfo, printInfoHelp}},
         {"video", {runVideo, printVideoHelp}},
         {"path", {runPath, printPathHelp}},
+        {"dump", {runDump, printDumpHelp}},
     };
     auto it = commands.find(command);
     if (it == commands.end())

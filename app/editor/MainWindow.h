@@ -23,6 +23,7 @@ class PresetBar;
 class ProfilerPanel;
 class PropertyPanel;
 class Viewport;
+class VisualizerPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -56,6 +57,7 @@ public:
     void setSplit(int presetA, int presetB);
     ProfilerPanel* profiler() const { return profiler_; }
     CameraPathPanel* cameraPaths() const { return cameraPaths_; }
+    VisualizerPanel* visualizers() const { return visualizers_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -90,6 +92,7 @@ private:
 
     Document* document_ = nullptr;
     Viewport* viewport_ = nullptr;
+    VisualizerPanel* visualizers_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
     PropertyPanel* properties_ = nullptr;

@@ -1,6 +1,7 @@
 // lpvstudio: the LPV Studio editor. Opens the project given on the command
 // line, or the built-in Cornell box.
 #include "MainWindow.h"
+#include "VisualizerPanel.h"
 #include "Viewport.h"
 
 #include "lpv/app/BuiltInProjects.h"
@@ -8,6 +9,8 @@
 #include "lpv/scene/CornellBox.h"
 
 #include <QApplication>
+#include <QCheckBox>
+#include <QDockWidget>
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QTimer>
@@ -40,6 +43,11 @@ int main(int argc, char** argv) {
     QCommandLineOption size("size", "Window size for --screenshot, e.g. 1600x1000.", "WxH", "1600x1000");
     parser.addOption(screenshot);
     parser.addOption(size);
+    const QCommandLineOption visualizer(
+        "visualizer", "Open the Visualizers dock on VIEW: light, gv, leak, backside, rsm or shadow.", "VIEW");
+    const QCommandLineOption probes("visualizer-probes", "With --visualizer: draw the SH probe grid in the view.");
+    parser.addOption(visualizer);
+    parser.addOption(probes);
     // For smoke tests of an installed editor (tests/install, packaging/README.md).
     const QCommandLineOption quitAfter(
         "quit-after", "Quit after MS milliseconds, with exit code 1 if the viewport reported an error.",
@@ -70,6 +78,18 @@ int main(int argc, char** argv) {
         }
     } else {
         window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
+    }
+    if (parser.isSet(visualizer)) {
+        const QStringList views{"light", "gv", "leak", "backside", "rsm", "shadow"};
+        const int view = views.indexOf(parser.value(visualizer));
+        if (view < 0) {
+            fprintf(stderr, "lpvstudio: --visualizer must be one of %s\n", qPrintable(views.join(", ")));
+            return 2;
+        }
+        window.dock("visualizers")->show();
+        window.visualizers()->setView(lpv::editor::VisualizerPanel::View(view));
+        if (parser.isSet(probes))
+            window.visualizers()->findChild<QCheckBox*>("vizProbes")->setChecked(true);
     }
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');

@@ -87,6 +87,7 @@ scene::Expected<LpvPass> LpvPass::create() {
 void LpvPass::disable(std::string reason) {
     volumes_.release();
     cascades_.clear();
+    snapshot_.reset();
     active_ = false;
     note_ = "LPV: off (" + std::move(reason) + ")";
 }
@@ -119,6 +120,9 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
     tileSize_ = rsm.tileSize;
     injectionOffset_ = settings.injectionOffset;
+    occlusion_ = settings.occlusion;
+    propagationSteps_ = settings.propagationSteps;
+    snapshot_.reset();
     active_ = true;
 
     timer.begin("lpvInject");
@@ -129,6 +133,8 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
         timer.end("gvInject");
     }
+    // V_0 is overwritten by the first step, so a capture of it happens before propagation.
+    captureIfRequested(0, readIndex_);
     timer.begin("lpvPropagate");
     propagate(settings);
     timer.end("lpvPropagate");
@@ -340,6 +346,10 @@ void LpvPass::propagate(const LpvSettings& settings) {
         }
         }
         readIndex_ = write;
+        if (capture_ && capture_->step > 0) {
+            // The raster variants leave their framebuffer and blend state bound; a read-back does not touch them.
+            captureIfRequested(step + 1, readIndex_);
+        }
     }
     if (raster) {
         glDisable(GL_BLEND);
@@ -383,6 +393,47 @@ std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) cons
     for (int c = 0; c < 3; ++c)
         out[std::size_t(c)] = readVolumeBlock(volumes_.accumulator.channel[std::size_t(c)].id(), n, cascade * n);
     return out;
+}
+
+void LpvPass::setCapture(std::optional<LpvCaptureRequest> request) {
+    capture_ = request;
+    if (!capture_)
+        snapshot_.reset();
+}
+
+std::vector<LpvGridFrame> LpvPass::cascadeFrames() const {
+    std::vector<LpvGridFrame> frames;
+    if (!active_)
+        return frames;
+    for (const LpvCascade& c : cascades_)
+        frames.push_back({c.origin, c.cellSize, volumes_.gridSize()});
+    return frames;
+}
+
+void LpvPass::captureIfRequested(int step, int index) {
+    if (!capture_ || !active_)
+        return;
+    const int cascade = capture_->cascade;
+    if (cascade < 0 || cascade >= volumes_.cascades())
+        return;
+    // A request past the last step shows the last one.
+    if (step != std::clamp(capture_->step, 0, propagationSteps_))
+        return;
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    const int n = volumes_.gridSize();
+    LpvSnapshot s;
+    s.frame = {cascades_[std::size_t(cascade)].origin, cascades_[std::size_t(cascade)].cellSize, n};
+    s.cascade = cascade;
+    s.cascades = volumes_.cascades();
+    s.step = step;
+    s.propagationSteps = propagationSteps_;
+    for (std::size_t c = 0; c < 3; ++c) {
+        s.stepVolume[c] = readVolumeBlock(volumes_.volume[std::size_t(index)].channel[c].id(), n, cascade * n);
+        s.accumulatedToStep[c] = readVolumeBlock(volumes_.accumulator.channel[c].id(), n, cascade * n);
+    }
+    if (occlusion_)
+        s.geometry = readGeometryVolume(cascade);
+    snapshot_ = std::move(s);
 }
 
 std::vector<glm::vec4> LpvPass::readGeometryVolume(int cascade) const {

@@ -12,6 +12,7 @@
 #include "RsmCascades.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
+#include "lpv/renderer/LpvSnapshot.h"
 #include "lpv/scene/Error.h"
 
 #include <glm/glm.hpp>
@@ -80,6 +81,14 @@ class LpvPass {
     std::vector<DebugImage> debugImages() const;
     std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
 
+    // The visualizers' read-back: while a request is set, every run() copies
+    // that cascade's volumes at that step to the CPU (a GPU stall, so only
+    // while a view is open); nullopt stops it and frees the copy.
+    void setCapture(std::optional<LpvCaptureRequest> request);
+    const std::optional<LpvSnapshot>& snapshot() const { return snapshot_; }
+    // The cascades of the last run (empty when inactive).
+    std::vector<LpvGridFrame> cascadeFrames() const;
+
   private:
     LpvPass() = default;
     void inject(const LpvRsmInput& rsm);
@@ -92,6 +101,8 @@ class LpvPass {
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
+    // Copies volume `index` (V_step), the accumulator and the GV of the requested cascade into snapshot_.
+    void captureIfRequested(int step, int index);
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
@@ -103,6 +114,10 @@ class LpvPass {
     int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)
     int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
     float injectionOffset_ = 1.0f;
+    bool occlusion_ = true;
+    int propagationSteps_ = 0;
+    std::optional<LpvCaptureRequest> capture_;
+    std::optional<LpvSnapshot> snapshot_;
     std::string note_ = "LPV: not run yet";
 };
 
