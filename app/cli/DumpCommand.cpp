@@ -43,6 +43,7 @@ editor's Visualizers dock shows it (slice, false colour, legend).
   --max V               Fix the top of the colour range (default: the slice's maximum)
   --grey                Grey ramp instead of false colour
   --cell-pixels N       Pixels per cell (default 12)
+  --max-tile N          rsm, shadow: shrink each tile to at most N pixels across (default: full size)
   --wall-threshold T    Leak views: blocking from which a face is a wall (default 0.3)
   --width N --height N  Camera image size; the camera decides the cascades (default 1280x720)
   --camera NAME         Named camera of the project (default: the first)
@@ -112,6 +113,7 @@ int runDump(Args args) {
     const auto scaleText = args.option("--scale");
     const auto maxText = args.option("--max");
     const auto cellPixelsText = args.option("--cell-pixels");
+    const auto maxTileText = args.option("--max-tile");
     const auto thresholdText = args.option("--wall-threshold");
     const auto widthText = args.option("--width");
     const auto heightText = args.option("--height");
@@ -220,6 +222,9 @@ int runDump(Args args) {
             return usageError("--wall-threshold must be in 0..1", "dump");
         spec.wallThreshold = *t;
     }
+    const auto maxTile = parseInt(maxTileText.value_or("0"));
+    if (!maxTile || *maxTile < 0)
+        return usageError("--max-tile must be a non-negative integer", "dump");
     spec.colour.falseColour = !grey;
     const auto width = parseInt(widthText.value_or("1280"));
     const auto height = parseInt(heightText.value_or("720"));
@@ -247,7 +252,7 @@ int runDump(Args args) {
                       << ": no shadow maps (the scene has no light that casts shadows)\n";
             return kFailure;
         }
-        return writePng(*output, renderer::viz::tileRow(images)) ? kOk : kFailure;
+        return writePng(*output, renderer::viz::tileRow(images, *maxTile)) ? kOk : kFailure;
     }
     if (view == "rsm") {
         const auto all = setup->renderer->debugImages("rsm");
@@ -260,7 +265,7 @@ int runDump(Args args) {
             return usageError("--cascade " + std::to_string(spec.cascade) + " is outside 0.." +
                                   std::to_string(int(all.size() / 3) - 1) + " (the RSM tiles of this frame)",
                               "dump");
-        return writePng(*output, renderer::viz::tileRow(tiles)) ? kOk : kFailure;
+        return writePng(*output, renderer::viz::tileRow(tiles, *maxTile)) ? kOk : kFailure;
     }
 
     const auto frames3d = setup->renderer->lpvCascadeFrames();

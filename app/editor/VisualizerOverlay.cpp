@@ -20,14 +20,54 @@ QColor cascadeColour(int k) {
     return colours[std::size_t(k) % 6];
 }
 
+// World to widget pixels, with lines and polygons clipped to the near plane:
+// the cascades surround the camera, so most of their edges pass behind it.
 struct Projector {
     glm::mat4 viewProj;
     QSizeF size;
-    std::optional<QPointF> operator()(const glm::vec3& p) const {
-        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
-        if (c.w <= 1e-4f)
-            return std::nullopt;
+
+    glm::vec4 clip(const glm::vec3& p) const { return viewProj * glm::vec4(p, 1.0f); }
+    static float nearDistance(const glm::vec4& c) { return c.z + c.w; } // >= 0: in front of the near plane
+    QPointF toScreen(const glm::vec4& c) const {
         return QPointF((c.x / c.w * 0.5 + 0.5) * size.width(), (0.5 - c.y / c.w * 0.5) * size.height());
+    }
+    std::optional<QPointF> operator()(const glm::vec3& p) const {
+        const glm::vec4 c = clip(p);
+        if (nearDistance(c) < 0.0f || c.w <= 1e-6f)
+            return std::nullopt;
+        return toScreen(c);
+    }
+    void line(QPainter& painter, const glm::vec3& a, const glm::vec3& b) const {
+        glm::vec4 ca = clip(a), cb = clip(b);
+        const float da = nearDistance(ca), db = nearDistance(cb);
+        if (da < 0.0f && db < 0.0f)
+            return;
+        if (da < 0.0f)
+            ca = glm::mix(ca, cb, da / (da - db));
+        else if (db < 0.0f)
+            cb = glm::mix(ca, cb, da / (da - db));
+        if (ca.w <= 1e-6f || cb.w <= 1e-6f)
+            return;
+        painter.drawLine(toScreen(ca), toScreen(cb));
+    }
+    // Sutherland-Hodgman against the near plane.
+    QPolygonF polygon(const std::vector<glm::vec3>& corners) const {
+        std::vector<glm::vec4> in;
+        for (const glm::vec3& p : corners)
+            in.push_back(clip(p));
+        QPolygonF out;
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const glm::vec4 &a = in[i], &b = in[(i + 1) % in.size()];
+            const float da = nearDistance(a), db = nearDistance(b);
+            if (da >= 0.0f && a.w > 1e-6f)
+                out << toScreen(a);
+            if ((da < 0.0f) != (db < 0.0f)) {
+                const glm::vec4 c = glm::mix(a, b, da / (da - db));
+                if (c.w > 1e-6f)
+                    out << toScreen(c);
+            }
+        }
+        return out;
     }
 };
 
@@ -37,11 +77,8 @@ void drawBox(QPainter& painter, const Projector& project, const glm::vec3& lo, c
     };
     for (int i = 0; i < 8; ++i)
         for (int bit : {1, 2, 4})
-            if (!(i & bit)) {
-                const auto a = project(corner(i)), b = project(corner(i | bit));
-                if (a && b)
-                    painter.drawLine(*a, *b);
-            }
+            if (!(i & bit))
+                project.line(painter, corner(i), corner(i | bit));
 }
 
 void drawSlicePlane(QPainter& painter, const Projector& project, const renderer::LpvGridFrame& g,
@@ -51,17 +88,17 @@ void drawSlicePlane(QPainter& painter, const Projector& project, const renderer:
     const float offset = plane.geometryVolume ? float(plane.index) : float(plane.index) + 0.5f;
     const float at = g.origin[axis] + offset * g.cellSize;
     const int u = axis == 0 ? 2 : 0, v = axis == 1 ? 2 : 1;
-    QPolygonF polygon;
+    std::vector<glm::vec3> corners;
     for (const glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
         glm::vec3 p(0.0f);
         p[axis] = at;
         p[u] = g.origin[u] + c.x * g.extent();
         p[v] = g.origin[v] + c.y * g.extent();
-        const auto s = project(p);
-        if (!s)
-            return; // behind the camera: a clipped polygon would be wrong, draw nothing
-        polygon << *s;
+        corners.push_back(p);
     }
+    const QPolygonF polygon = project.polygon(corners);
+    if (polygon.size() < 3)
+        return;
     QColor fill = cascadeColour(plane.cascade);
     fill.setAlpha(60);
     painter.setBrush(fill);
@@ -109,6 +146,13 @@ void drawProbes(QPainter& painter, const Projector& project, const scene::Camera
             }
     if (brightest <= 0.0f)
         return;
+    // Cells with next to no light would be black dots over the scene: left out.
+    std::erase_if(probes, [&](const Probe& p) {
+        float dc = 0.0f;
+        for (int ch = 0; ch < 3; ++ch)
+            dc = std::max(dc, accum[std::size_t(ch)][p.cell].x * renderer::sh::kCos0 * 2.0f);
+        return dc < 0.01f * brightest;
+    });
     // Far probes first, so near ones cover them.
     std::sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& b) { return a.depth > b.depth; });
     for (const Probe& p : probes) {

@@ -210,10 +210,11 @@ void VisualizerPanel::syncRanges() {
     const int cascades = document_->parameters().getInt("lpv.cascades");
     const int grid = document_->parameters().getInt("lpv.gridSize");
     const QSignalBlocker b1(step_), b2(cascade_), b3(slice_);
-    const bool atEnd = step_->value() == step_->maximum();
+    // Follows the last step as the count changes (and starts there: what shading reads).
+    const bool atEnd = step_->value() == step_->maximum() || (step_->maximum() == 99 && step_->value() == 0);
     step_->setRange(0, steps);
     if (atEnd)
-        step_->setValue(steps); // following the last step as the count changes
+        step_->setValue(steps);
     cascade_->setRange(0, std::max(cascades - 1, 0));
     const int slices = grid + (view() == View::Geometry ? 1 : 0);
     const bool fresh = slice_->maximum() == 99 && slice_->value() == 0; // a QSlider's defaults: not set yet

@@ -10,6 +10,8 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QSpinBox>
 #include <QDockWidget>
 #include <QCommandLineParser>
 #include <QIcon>
@@ -46,8 +48,14 @@ int main(int argc, char** argv) {
     const QCommandLineOption visualizer(
         "visualizer", "Open the Visualizers dock on VIEW: light, gv, leak, backside, rsm or shadow.", "VIEW");
     const QCommandLineOption probes("visualizer-probes", "With --visualizer: draw the SH probe grid in the view.");
+    const QCommandLineOption vizSlice("visualizer-slice",
+                                      "With --visualizer: the cascade, axis and slice shown, e.g. 2:y:14.",
+                                      "CASCADE:AXIS:INDEX");
     parser.addOption(visualizer);
     parser.addOption(probes);
+    const QCommandLineOption vizLog("visualizer-log", "With --visualizer: logarithmic colour scale.");
+    parser.addOption(vizSlice);
+    parser.addOption(vizLog);
     // For smoke tests of an installed editor (tests/install, packaging/README.md).
     const QCommandLineOption quitAfter(
         "quit-after", "Quit after MS milliseconds, with exit code 1 if the viewport reported an error.",
@@ -86,10 +94,22 @@ int main(int argc, char** argv) {
             fprintf(stderr, "lpvstudio: --visualizer must be one of %s\n", qPrintable(views.join(", ")));
             return 2;
         }
+        // Tabbed with the inspector, so the picture gets the dock area's full height.
+        window.tabifyDockWidget(window.dock("inspector"), window.dock("visualizers"));
         window.dock("visualizers")->show();
+        window.dock("visualizers")->raise();
         window.visualizers()->setView(lpv::editor::VisualizerPanel::View(view));
         if (parser.isSet(probes))
             window.visualizers()->findChild<QCheckBox*>("vizProbes")->setChecked(true);
+        const QStringList slice = parser.value(vizSlice).split(':');
+        if (slice.size() == 3) {
+            window.visualizers()->findChild<QSpinBox*>("vizCascade")->setValue(slice[0].toInt());
+            window.visualizers()->findChild<QComboBox*>("vizAxis")->setCurrentText(slice[1]);
+            window.visualizers()->setSlice(slice[2].toInt());
+        }
+        if (parser.isSet(vizLog))
+            window.visualizers()->findChild<QComboBox*>("vizScale")->setCurrentIndex(1);
+        window.resizeDocks({window.dock("visualizers")}, {480}, Qt::Horizontal);
     }
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');

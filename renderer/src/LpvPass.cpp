@@ -123,6 +123,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     occlusion_ = settings.occlusion;
     propagationSteps_ = settings.propagationSteps;
     snapshot_.reset();
+    capturedStep_ = -1;
     active_ = true;
 
     timer.begin("lpvInject");
@@ -138,6 +139,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     timer.begin("lpvPropagate");
     propagate(settings);
     timer.end("lpvPropagate");
+    readCapture();
 
     const int n = settings.gridSize;
     note_ = "LPV: " + std::to_string(cascades) + " cascades of " + std::to_string(n) + "^3, " +
@@ -346,10 +348,8 @@ void LpvPass::propagate(const LpvSettings& settings) {
         }
         }
         readIndex_ = write;
-        if (capture_ && capture_->step > 0) {
-            // The raster variants leave their framebuffer and blend state bound; a read-back does not touch them.
+        if (capture_ && capture_->step > 0)
             captureIfRequested(step + 1, readIndex_);
-        }
     }
     if (raster) {
         glDisable(GL_BLEND);
@@ -397,8 +397,11 @@ std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) cons
 
 void LpvPass::setCapture(std::optional<LpvCaptureRequest> request) {
     capture_ = request;
-    if (!capture_)
+    if (!capture_) {
         snapshot_.reset();
+        captureCopy_ = {}; // a closed view keeps no GPU memory either
+        captureGrid_ = 0;
+    }
 }
 
 std::vector<LpvGridFrame> LpvPass::cascadeFrames() const {
@@ -419,17 +422,38 @@ void LpvPass::captureIfRequested(int step, int index) {
     // A request past the last step shows the last one.
     if (step != std::clamp(capture_->step, 0, propagationSteps_))
         return;
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     const int n = volumes_.gridSize();
+    if (captureGrid_ != n) {
+        for (Texture& t : captureCopy_) {
+            t = createTexture(GL_TEXTURE_3D);
+            glTextureStorage3D(t.id(), 1, GL_RGBA32F, n, n, n);
+        }
+        captureGrid_ = n;
+    }
+    // Image stores (compute) must land before the copy reads them.
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    for (std::size_t c = 0; c < 3; ++c) {
+        glCopyImageSubData(volumes_.volume[std::size_t(index)].channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, cascade * n,
+                           captureCopy_[c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+        glCopyImageSubData(volumes_.accumulator.channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, cascade * n,
+                           captureCopy_[3 + c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+    }
+    capturedStep_ = step;
+}
+
+void LpvPass::readCapture() {
+    if (capturedStep_ < 0 || !capture_)
+        return;
+    const int n = volumes_.gridSize(), cascade = capture_->cascade;
     LpvSnapshot s;
     s.frame = {cascades_[std::size_t(cascade)].origin, cascades_[std::size_t(cascade)].cellSize, n};
     s.cascade = cascade;
     s.cascades = volumes_.cascades();
-    s.step = step;
+    s.step = capturedStep_;
     s.propagationSteps = propagationSteps_;
     for (std::size_t c = 0; c < 3; ++c) {
-        s.stepVolume[c] = readVolumeBlock(volumes_.volume[std::size_t(index)].channel[c].id(), n, cascade * n);
-        s.accumulatedToStep[c] = readVolumeBlock(volumes_.accumulator.channel[c].id(), n, cascade * n);
+        s.stepVolume[c] = readVolumeBlock(captureCopy_[c].id(), n, 0);
+        s.accumulatedToStep[c] = readVolumeBlock(captureCopy_[3 + c].id(), n, 0);
     }
     if (occlusion_)
         s.geometry = readGeometryVolume(cascade);

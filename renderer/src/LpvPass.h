@@ -101,8 +101,12 @@ class LpvPass {
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
-    // Copies volume `index` (V_step), the accumulator and the GV of the requested cascade into snapshot_.
+    // At the requested step: copies volume `index` (V_step) and the
+    // accumulator of the requested cascade on the GPU (no stall inside the
+    // timed passes); readCapture() brings the copies and the GV to the CPU
+    // once the frame's LPV work is timed.
     void captureIfRequested(int step, int index);
+    void readCapture();
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
@@ -118,6 +122,9 @@ class LpvPass {
     int propagationSteps_ = 0;
     std::optional<LpvCaptureRequest> capture_;
     std::optional<LpvSnapshot> snapshot_;
+    std::array<Texture, 6> captureCopy_; // N^3 per channel: V_step (0-2), accumulator (3-5); only while capturing
+    int captureGrid_ = 0;
+    int capturedStep_ = -1; // -1: nothing copied this frame
     std::string note_ = "LPV: not run yet";
 };
 

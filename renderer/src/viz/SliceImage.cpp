@@ -87,11 +87,13 @@ struct Mapping {
         t = std::clamp(t, 0.0f, 1.0f);
         return isSigned ? sign * t : (v < 0.0f ? 0.0f : t);
     }
-    // The value at ramp position t (0..1, signed -1..1): the legend's labels.
+    // The value at ramp position t (0..1, signed -1..1): the legend's labels. A log
+    // ramp starts at `low` (signed: 0 in the middle, where everything below low lands).
     float valueAt(float t) const {
         const float m = std::abs(t);
-        const float v =
-            scale == Scale::Linear ? m * high : (m <= 0.0f ? 0.0f : low * std::pow(high / low, m));
+        const float v = scale == Scale::Linear
+                            ? m * high
+                            : (m <= 0.0f && isSigned ? 0.0f : low * std::pow(high / low, m));
         return t < 0.0f ? -v : v;
     }
 };
