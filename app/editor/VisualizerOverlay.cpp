@@ -20,54 +20,77 @@ QColor cascadeColour(int k) {
     return colours[std::size_t(k) % 6];
 }
 
-// World to widget pixels, with lines and polygons clipped to the near plane:
-// the cascades surround the camera, so most of their edges pass behind it.
+// World to widget pixels, with lines and polygons clipped to the view
+// frustum (with a guard band): the cascades surround the camera, so most of
+// their edges pass behind it or far outside the view, where QPainter would
+// drop them (it refuses coordinates beyond +-32767).
 struct Projector {
     glm::mat4 viewProj;
     QSizeF size;
 
     glm::vec4 clip(const glm::vec3& p) const { return viewProj * glm::vec4(p, 1.0f); }
-    static float nearDistance(const glm::vec4& c) { return c.z + c.w; } // >= 0: in front of the near plane
+    // Signed distances to the near plane and the four side planes (guard band 2x): >= 0 inside.
+    static float plane(int i, const glm::vec4& c) {
+        switch (i) {
+        case 0:
+            return c.z + c.w;
+        case 1:
+            return 2.0f * c.w + c.x;
+        case 2:
+            return 2.0f * c.w - c.x;
+        case 3:
+            return 2.0f * c.w + c.y;
+        default:
+            return 2.0f * c.w - c.y;
+        }
+    }
     QPointF toScreen(const glm::vec4& c) const {
         return QPointF((c.x / c.w * 0.5 + 0.5) * size.width(), (0.5 - c.y / c.w * 0.5) * size.height());
     }
     std::optional<QPointF> operator()(const glm::vec3& p) const {
         const glm::vec4 c = clip(p);
-        if (nearDistance(c) < 0.0f || c.w <= 1e-6f)
-            return std::nullopt;
+        for (int i = 0; i < 5; ++i)
+            if (plane(i, c) < 0.0f)
+                return std::nullopt;
         return toScreen(c);
     }
     void line(QPainter& painter, const glm::vec3& a, const glm::vec3& b) const {
         glm::vec4 ca = clip(a), cb = clip(b);
-        const float da = nearDistance(ca), db = nearDistance(cb);
-        if (da < 0.0f && db < 0.0f)
-            return;
-        if (da < 0.0f)
-            ca = glm::mix(ca, cb, da / (da - db));
-        else if (db < 0.0f)
-            cb = glm::mix(ca, cb, da / (da - db));
+        for (int i = 0; i < 5; ++i) {
+            const float da = plane(i, ca), db = plane(i, cb);
+            if (da < 0.0f && db < 0.0f)
+                return;
+            if (da < 0.0f)
+                ca = glm::mix(ca, cb, da / (da - db));
+            else if (db < 0.0f)
+                cb = glm::mix(ca, cb, da / (da - db));
+        }
         if (ca.w <= 1e-6f || cb.w <= 1e-6f)
             return;
         painter.drawLine(toScreen(ca), toScreen(cb));
     }
-    // Sutherland-Hodgman against the near plane.
+    // Sutherland-Hodgman against the same planes.
     QPolygonF polygon(const std::vector<glm::vec3>& corners) const {
         std::vector<glm::vec4> in;
         for (const glm::vec3& p : corners)
             in.push_back(clip(p));
-        QPolygonF out;
-        for (std::size_t i = 0; i < in.size(); ++i) {
-            const glm::vec4 &a = in[i], &b = in[(i + 1) % in.size()];
-            const float da = nearDistance(a), db = nearDistance(b);
-            if (da >= 0.0f && a.w > 1e-6f)
-                out << toScreen(a);
-            if ((da < 0.0f) != (db < 0.0f)) {
-                const glm::vec4 c = glm::mix(a, b, da / (da - db));
-                if (c.w > 1e-6f)
-                    out << toScreen(c);
+        for (int i = 0; i < 5 && !in.empty(); ++i) {
+            std::vector<glm::vec4> out;
+            for (std::size_t j = 0; j < in.size(); ++j) {
+                const glm::vec4 &a = in[j], &b = in[(j + 1) % in.size()];
+                const float da = plane(i, a), db = plane(i, b);
+                if (da >= 0.0f)
+                    out.push_back(a);
+                if ((da < 0.0f) != (db < 0.0f))
+                    out.push_back(glm::mix(a, b, da / (da - db)));
             }
+            in = std::move(out);
         }
-        return out;
+        QPolygonF polygon;
+        for (const glm::vec4& c : in)
+            if (c.w > 1e-6f)
+                polygon << toScreen(c);
+        return polygon;
     }
 };
 

@@ -1,8 +1,8 @@
 // lpvstudio: the LPV Studio editor. Opens the project given on the command
 // line, or the built-in Cornell box.
 #include "MainWindow.h"
-#include "VisualizerPanel.h"
 #include "Viewport.h"
+#include "VisualizerPanel.h"
 
 #include "lpv/app/BuiltInProjects.h"
 #include "lpv/app/VersionInfo.h"
@@ -11,10 +11,10 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QSpinBox>
-#include <QDockWidget>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QIcon>
+#include <QSpinBox>
 #include <QTimer>
 
 #include <cstdio>
@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     parser.addOption(size);
     const QCommandLineOption visualizer(
         "visualizer", "Open the Visualizers dock on VIEW: light, gv, leak, backside, rsm or shadow.", "VIEW");
-    const QCommandLineOption probes("visualizer-probes", "With --visualizer: draw the SH probe grid in the view.");
+    const QCommandLineOption probes("visualizer-probes",
+                                    "With --visualizer: draw the SH probe grid in the view.");
     const QCommandLineOption vizSlice("visualizer-slice",
                                       "With --visualizer: the cascade, axis and slice shown, e.g. 2:y:14.",
                                       "CASCADE:AXIS:INDEX");
@@ -97,7 +98,8 @@ int main(int argc, char** argv) {
         // Tabbed with the inspector, so the picture gets the dock area's full height.
         window.tabifyDockWidget(window.dock("inspector"), window.dock("visualizers"));
         window.dock("visualizers")->show();
-        window.dock("visualizers")->raise();
+        // Raised once the window is up: restoring the layout raises the inspector's tab.
+        QTimer::singleShot(0, &window, [&window] { window.dock("visualizers")->raise(); });
         window.visualizers()->setView(lpv::editor::VisualizerPanel::View(view));
         if (parser.isSet(probes))
             window.visualizers()->findChild<QCheckBox*>("vizProbes")->setChecked(true);
@@ -113,7 +115,8 @@ int main(int argc, char** argv) {
     }
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');
-        window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600, wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
+        window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
+                      wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
         window.show();
         const QString file = parser.value(screenshot);
         // Poll: textures decode in the background; then two more frames so the LPV and timings settle.

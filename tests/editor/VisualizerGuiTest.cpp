@@ -10,6 +10,7 @@
 
 #include "lpv/renderer/viz/LpvViews.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QMessageBox>
@@ -74,6 +75,15 @@ TEST(VisualizerGui, ClosedAsksNothingOpenFollowsSliceAndStep) {
     ASSERT_TRUE(waitUntil([&] { return panel->active() && !panel->image().isNull(); }))
         << panel->status().toStdString();
     ASSERT_TRUE(w.window.viewport()->visualizerRequest().lpv.has_value());
+
+    // The overlays draw over the view: cascade boxes and the slice plane on, then off.
+    QTest::qWait(100);
+    const QImage withOverlays = w.window.viewport()->grabFramebuffer();
+    panel->findChild<QCheckBox*>("vizBounds")->setChecked(false);
+    panel->findChild<QCheckBox*>("vizPlane")->setChecked(false);
+    const QImage without = w.window.viewport()->grabFramebuffer();
+    EXPECT_NE(withOverlays, without) << "cascade boxes and the slice plane must show in the view";
+    panel->findChild<QCheckBox*>("vizBounds")->setChecked(true);
 
     // Another slice: another picture, at once (the frame already holds the volume).
     panel->setSlice(3);
