@@ -35,6 +35,7 @@ uniform vec3 uCameraPos;
 // albedo, the quantity the path-traced reference's indirect channel holds);
 // 2 direct light and emission only. Blended surfaces add nothing to 1.
 uniform int uOutputView;
+uniform int uShadowCascadeTint; // 1: tint by sun shadow cascade (ForwardRenderer::setShadowCascadeTint)
 
 void main() {
     if (materialCutOut(vUv))
@@ -84,6 +85,13 @@ void main() {
     if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
         radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
+    }
+    if (uShadowCascadeTint != 0 && uSunShadowLight >= 0) {
+        const vec3 tints[6] = vec3[6](vec3(1.0, 0.35, 0.35), vec3(0.35, 0.86, 0.35), vec3(0.35, 0.6, 1.0),
+                                      vec3(1.0, 0.82, 0.24), vec3(0.86, 0.35, 1.0), vec3(0.31, 0.9, 0.9));
+        int k = sunCascadeIndex(vWorldPos);
+        if (k >= 0) // the tint keeps the surface's brightness, so shadows still read
+            radiance = mix(radiance, tints[k % 6] * max(dot(radiance, vec3(0.2126, 0.7152, 0.0722)), 0.05), 0.6);
     }
     float coverage = uAlphaMode == 2 ? clamp(materialCoverage(vUv), 0.0, 1.0) : 1.0;
     outColor = vec4(radiance * coverage, coverage);

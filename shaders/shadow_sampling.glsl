@@ -119,6 +119,15 @@ float sunVisibility(vec3 worldPos, vec3 n, vec3 toLight) {
     return 1.0;
 }
 
+// The sun cascade that shades `worldPos`, -1 beyond the last (the visualizers' cascade tint).
+int sunCascadeIndex(vec3 worldPos) {
+    float depth = -(uShadowCameraView * vec4(worldPos, 1.0)).z;
+    for (int k = 0; k < uCascadeCount && k < MAX_CASCADES; ++k)
+        if (depth <= uCascadeSplitFar[k])
+            return k;
+    return -1;
+}
+
 // Spot maps store distance / far: the blocker search region is the light's
 // radius at the receiver, the penumbra radius * (receiver - blocker) / blocker.
 float spotVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {

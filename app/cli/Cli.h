@@ -42,6 +42,7 @@ int runPath(Args args);
 int runRadiosity(Args args); // `lpv radiosity`, in RadiosityCommand.cpp
 int runReference(Args args); // `lpv reference`, in ReferenceCommand.cpp
 int runCompare(Args args);   // `lpv compare`, in CompareCommand.cpp
+int runDump(Args args); // `lpv dump`, in DumpCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
@@ -57,5 +58,6 @@ void printPathHelp();
 void printRadiosityHelp();
 void printReferenceHelp();
 void printCompareHelp();
+void printDumpHelp();
 
 } // namespace lpv::cli

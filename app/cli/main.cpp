@@ -37,6 +37,9 @@ Commands:
   radiosity PROJECT [-o OUT.lpvproj]
                               Solve the diffuse light with GPU progressive radiosity (hemicubes),
                               saved into the project; a second run resumes
+  dump PROJECT --what lpv|gv|leak|backside|rsm|shadow -o OUT.png
+                              Write a visualizer image (LPV slice, geometry volume, leak maps,
+                              RSM or shadow tiles) as the editor's Visualizers dock shows it
 
 Options:
   -h, --help                  Show this help
@@ -77,6 +80,7 @@ int dispatch(std::vector<std::string> args) {
         {"radiosity", {runRadiosity, printRadiosityHelp}},
         {"reference", {runReference, printReferenceHelp}},
         {"compare", {runCompare, printCompareHelp}},
+        {"dump", {runDump, printDumpHelp}},
     };
     auto it = commands.find(command);
     if (it == commands.end())

@@ -10,6 +10,7 @@
 #include "PresetBar.h"
 #include "ProfilerPanel.h"
 #include "RadiosityPanel.h"
+#include "VisualizerPanel.h"
 #include "PropertyPanel.h"
 #include "Viewport.h"
 
@@ -170,6 +171,11 @@ void MainWindow::createDocks() {
     tabifyDockWidget(inspectorDock, dock("properties"));
     tabifyDockWidget(inspectorDock, effectsDock);
     inspectorDock->raise();
+    // Hidden until asked for: while hidden it reads nothing back from the renderer.
+    visualizers_ = new VisualizerPanel(document_, viewport_, this);
+    QDockWidget* vizDock = addDock(visualizers_, "visualizers", tr("Visualizers"), Qt::RightDockWidgetArea);
+    connect(vizDock, &QDockWidget::visibilityChanged, visualizers_, &VisualizerPanel::setActive);
+    vizDock->hide();
     resizeDocks({profilerDock}, {220}, Qt::Vertical);
     resizeDocks({inspectorDock}, {400}, Qt::Horizontal);
 }

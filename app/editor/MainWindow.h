@@ -24,6 +24,7 @@ class PresetBar;
 class ProfilerPanel;
 class PropertyPanel;
 class Viewport;
+class VisualizerPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -58,6 +59,7 @@ public:
     void setSplit(int presetA, int presetB);
     ProfilerPanel* profiler() const { return profiler_; }
     CameraPathPanel* cameraPaths() const { return cameraPaths_; }
+    VisualizerPanel* visualizers() const { return visualizers_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -92,6 +94,7 @@ private:
 
     Document* document_ = nullptr;
     Viewport* viewport_ = nullptr;
+    VisualizerPanel* visualizers_ = nullptr;
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
     RadiosityPanel* radiosity_ = nullptr;

@@ -138,6 +138,8 @@ void Viewport::initializeGL() {
         return;
     }
     renderer_.emplace(std::move(*created));
+    renderer_->setLpvCapture(vizRequest_.lpv);
+    renderer_->setShadowCascadeTint(vizRequest_.shadowTint);
     pending_ = Change::Everything;
 }
 
@@ -223,6 +225,7 @@ void Viewport::paintGL() {
         renderer_->blitRegionTo(target, 0, 0, w, h, 0, 0, fullW, fullH);
     }
     lastError_.clear();
+    emitVisualizerFrame();
     emit frameRendered(renderer_->timer().table());
     const QString note = QString::fromStdString(renderer_->lpvNote());
     if (note != lastNote_) {
@@ -297,6 +300,7 @@ void Viewport::drawOverlay() {
         }
     }
     drawPath(painter);
+    drawVisualizerOverlay(painter, vizRequest_, vizFrame_.get(), camera, QSizeF(width(), height()));
     if (split_) {
         painter.setPen(QPen(Qt::white, 2));
         painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
@@ -304,6 +308,35 @@ void Viewport::drawOverlay() {
         painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "A: " + splitLabels_[0]);
         painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "B: " + splitLabels_[1]);
     }
+}
+
+void Viewport::setVisualizerRequest(const VisualizerRequest& request) {
+    vizRequest_ = request;
+    if (!request.active())
+        vizFrame_.reset(); // nothing shown: nothing kept
+    if (renderer_) {
+        makeCurrent();
+        renderer_->setLpvCapture(request.lpv);
+        renderer_->setShadowCascadeTint(request.shadowTint);
+        doneCurrent();
+    }
+    update();
+}
+
+void Viewport::emitVisualizerFrame() {
+    if (!vizRequest_.active())
+        return;
+    auto frame = std::make_shared<VisualizerFrame>();
+    frame->cascades = renderer_->lpvCascadeFrames();
+    frame->lpvNote = renderer_->lpvNote();
+    if (const renderer::LpvSnapshot* snapshot = renderer_->lpvSnapshot())
+        frame->lpv = *snapshot;
+    if (vizRequest_.rsm)
+        frame->rsm = renderer_->debugImages("rsm");
+    if (vizRequest_.shadow)
+        frame->shadow = renderer_->debugImages("shadow");
+    vizFrame_ = frame;
+    emit visualizerFrame(frame);
 }
 
 void Viewport::setShownPath(int index) {

@@ -12,6 +12,7 @@
 #include "CameraController.h"
 #include "Document.h"
 #include "TransformGizmo.h"
+#include "VisualizerOverlay.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuTimer.h"
@@ -24,6 +25,7 @@
 
 class QPainter;
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -76,6 +78,12 @@ public:
     // Picks the object under a widget position (logical pixels) and selects it (or clears the selection).
     void selectAt(const QPoint& position);
 
+    // What the Visualizers dock wants from each frame (read-backs) and draws
+    // over the view (cascade boxes, slice plane, probes). The default asks
+    // for nothing, and then the renderer reads nothing back.
+    void setVisualizerRequest(const VisualizerRequest& request);
+    const VisualizerRequest& visualizerRequest() const { return vizRequest_; }
+
 signals:
     // After every frame: the renderer's timing table (for the status bar and the profiler).
     void frameRendered(const std::vector<lpv::renderer::PassTiming>& timings);
@@ -86,6 +94,8 @@ signals:
     // Background texture decoding started (count of materials) or finished (0, with warnings).
     void texturesLoading(int materials);
     void texturesLoaded(const QStringList& warnings);
+    // After a frame rendered while a visualizer request is active: what it read back.
+    void visualizerFrame(std::shared_ptr<const lpv::editor::VisualizerFrame> frame);
 
 protected:
     void initializeGL() override;
@@ -109,6 +119,7 @@ private:
     void dragSun(const QPoint& delta);
     void dragPathKey(const QPoint& position);
     void drawPath(QPainter& painter);
+    void emitVisualizerFrame();
     std::optional<glm::vec3> selectionPivot() const;
     int renderWidth() const;
     int renderHeight() const;
@@ -140,6 +151,9 @@ private:
     QSet<int> heldKeys_;
     QTimer flyTimer_;
     QElapsedTimer flyClock_;
+
+    VisualizerRequest vizRequest_;
+    std::shared_ptr<const VisualizerFrame> vizFrame_; // the last read-back, for the probe overlay
 
     QString lastError_;
     QString glRenderer_;

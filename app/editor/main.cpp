@@ -2,14 +2,19 @@
 // line, or the built-in Cornell box.
 #include "MainWindow.h"
 #include "Viewport.h"
+#include "VisualizerPanel.h"
 
 #include "lpv/app/BuiltInProjects.h"
 #include "lpv/app/VersionInfo.h"
 #include "lpv/scene/CornellBox.h"
 
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QIcon>
+#include <QSpinBox>
 #include <QTimer>
 
 #include <cstdio>
@@ -40,6 +45,18 @@ int main(int argc, char** argv) {
     QCommandLineOption size("size", "Window size for --screenshot, e.g. 1600x1000.", "WxH", "1600x1000");
     parser.addOption(screenshot);
     parser.addOption(size);
+    const QCommandLineOption visualizer(
+        "visualizer", "Open the Visualizers dock on VIEW: light, gv, leak, backside, rsm or shadow.", "VIEW");
+    const QCommandLineOption probes("visualizer-probes",
+                                    "With --visualizer: draw the SH probe grid in the view.");
+    const QCommandLineOption vizSlice("visualizer-slice",
+                                      "With --visualizer: the cascade, axis and slice shown, e.g. 2:y:14.",
+                                      "CASCADE:AXIS:INDEX");
+    parser.addOption(visualizer);
+    parser.addOption(probes);
+    const QCommandLineOption vizLog("visualizer-log", "With --visualizer: logarithmic colour scale.");
+    parser.addOption(vizSlice);
+    parser.addOption(vizLog);
     // For smoke tests of an installed editor (tests/install, packaging/README.md).
     const QCommandLineOption quitAfter(
         "quit-after", "Quit after MS milliseconds, with exit code 1 if the viewport reported an error.",
@@ -71,9 +88,35 @@ int main(int argc, char** argv) {
     } else {
         window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
     }
+    if (parser.isSet(visualizer)) {
+        const QStringList views{"light", "gv", "leak", "backside", "rsm", "shadow"};
+        const int view = views.indexOf(parser.value(visualizer));
+        if (view < 0) {
+            fprintf(stderr, "lpvstudio: --visualizer must be one of %s\n", qPrintable(views.join(", ")));
+            return 2;
+        }
+        // Tabbed with the inspector, so the picture gets the dock area's full height.
+        window.tabifyDockWidget(window.dock("inspector"), window.dock("visualizers"));
+        window.dock("visualizers")->show();
+        // Raised once the window is up: restoring the layout raises the inspector's tab.
+        QTimer::singleShot(0, &window, [&window] { window.dock("visualizers")->raise(); });
+        window.visualizers()->setView(lpv::editor::VisualizerPanel::View(view));
+        if (parser.isSet(probes))
+            window.visualizers()->findChild<QCheckBox*>("vizProbes")->setChecked(true);
+        const QStringList slice = parser.value(vizSlice).split(':');
+        if (slice.size() == 3) {
+            window.visualizers()->findChild<QSpinBox*>("vizCascade")->setValue(slice[0].toInt());
+            window.visualizers()->findChild<QComboBox*>("vizAxis")->setCurrentText(slice[1]);
+            window.visualizers()->setSlice(slice[2].toInt());
+        }
+        if (parser.isSet(vizLog))
+            window.visualizers()->findChild<QComboBox*>("vizScale")->setCurrentIndex(1);
+        window.resizeDocks({window.dock("visualizers")}, {480}, Qt::Horizontal);
+    }
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');
-        window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600, wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
+        window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
+                      wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
         window.show();
         const QString file = parser.value(screenshot);
         // Poll: textures decode in the background; then two more frames so the LPV and timings settle.

@@ -84,6 +84,7 @@ struct ForwardRenderer::Impl {
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
+    bool shadowCascadeTint = false; // the visualizers' view of the sun's shadow cascades
     VertexArray emptyVao;
     DrawListStats cameraStats;
     // The camera G-buffer as the last forward pass left it: the LPV injects
@@ -159,6 +160,7 @@ struct ForwardRenderer::Impl {
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
         lpv->bindForShading(fp, frame.params, kLpvFirstUnit);
+        glProgramUniform1i(fp, loc(fp, "uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
         // Opaque and masked items first; blended ones (sorted last, back to
         // front) over them with depth test but no depth write, and without
@@ -326,6 +328,17 @@ int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
 const std::vector<EffectDecision>& ForwardRenderer::frameEffects() const { return impl_->frameEffects; }
+
+void ForwardRenderer::setShadowCascadeTint(bool on) { impl_->shadowCascadeTint = on; }
+
+void ForwardRenderer::setLpvCapture(std::optional<LpvCaptureRequest> request) { impl_->lpv->setCapture(request); }
+
+const LpvSnapshot* ForwardRenderer::lpvSnapshot() const {
+    const auto& snapshot = impl_->lpv->snapshot();
+    return snapshot ? &*snapshot : nullptr;
+}
+
+std::vector<LpvGridFrame> ForwardRenderer::lpvCascadeFrames() const { return impl_->lpv->cascadeFrames(); }
 
 std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) const {
     if (what == "shadow")

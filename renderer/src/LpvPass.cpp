@@ -95,6 +95,7 @@ scene::Expected<LpvPass> LpvPass::create() {
 void LpvPass::disable(std::string reason) {
     volumes_.release();
     cascades_.clear();
+    snapshot_.reset();
     active_ = false;
     note_ = "LPV: off (" + std::move(reason) + ")";
 }
@@ -130,6 +131,10 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
     tileSize_ = rsm.tileSize;
     injectionOffset_ = settings.injectionOffset;
+    occlusion_ = settings.occlusion;
+    propagationSteps_ = settings.propagationSteps;
+    snapshot_.reset();
+    capturedStep_ = -1;
     active_ = true;
 
     timer.begin("lpvInject");
@@ -151,9 +156,12 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
         timer.end("gvInject");
     }
+    // V_0 is overwritten by the first step, so a capture of it happens before propagation.
+    captureIfRequested(0, readIndex_);
     timer.begin("lpvPropagate");
     propagate(settings);
     timer.end("lpvPropagate");
+    readCapture();
 
     const int n = settings.gridSize;
     note_ = "LPV: " + std::to_string(cascades) + " cascades of " + std::to_string(n) + "^3, " +
@@ -422,6 +430,8 @@ void LpvPass::propagate(const LpvSettings& settings) {
         }
         }
         readIndex_ = write;
+        if (capture_ && capture_->step > 0)
+            captureIfRequested(step + 1, readIndex_);
     }
     if (raster) {
         glDisable(GL_BLEND);
@@ -465,6 +475,71 @@ std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) cons
     for (int c = 0; c < 3; ++c)
         out[std::size_t(c)] = readVolumeBlock(volumes_.accumulator.channel[std::size_t(c)].id(), n, cascade * n);
     return out;
+}
+
+void LpvPass::setCapture(std::optional<LpvCaptureRequest> request) {
+    capture_ = request;
+    if (!capture_) {
+        snapshot_.reset();
+        captureCopy_ = {}; // a closed view keeps no GPU memory either
+        captureGrid_ = 0;
+    }
+}
+
+std::vector<LpvGridFrame> LpvPass::cascadeFrames() const {
+    std::vector<LpvGridFrame> frames;
+    if (!active_)
+        return frames;
+    for (const LpvCascade& c : cascades_)
+        frames.push_back({c.origin, c.cellSize, volumes_.gridSize()});
+    return frames;
+}
+
+void LpvPass::captureIfRequested(int step, int index) {
+    if (!capture_ || !active_)
+        return;
+    const int cascade = capture_->cascade;
+    if (cascade < 0 || cascade >= volumes_.cascades())
+        return;
+    // A request past the last step shows the last one.
+    if (step != std::clamp(capture_->step, 0, propagationSteps_))
+        return;
+    const int n = volumes_.gridSize();
+    if (captureGrid_ != n) {
+        for (Texture& t : captureCopy_) {
+            t = createTexture(GL_TEXTURE_3D);
+            glTextureStorage3D(t.id(), 1, GL_RGBA32F, n, n, n);
+        }
+        captureGrid_ = n;
+    }
+    // Image stores (compute) must land before the copy reads them.
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    for (std::size_t c = 0; c < 3; ++c) {
+        glCopyImageSubData(volumes_.volume[std::size_t(index)].channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, cascade * n,
+                           captureCopy_[c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+        glCopyImageSubData(volumes_.accumulator.channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, cascade * n,
+                           captureCopy_[3 + c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n);
+    }
+    capturedStep_ = step;
+}
+
+void LpvPass::readCapture() {
+    if (capturedStep_ < 0 || !capture_)
+        return;
+    const int n = volumes_.gridSize(), cascade = capture_->cascade;
+    LpvSnapshot s;
+    s.frame = {cascades_[std::size_t(cascade)].origin, cascades_[std::size_t(cascade)].cellSize, n};
+    s.cascade = cascade;
+    s.cascades = volumes_.cascades();
+    s.step = capturedStep_;
+    s.propagationSteps = propagationSteps_;
+    for (std::size_t c = 0; c < 3; ++c) {
+        s.stepVolume[c] = readVolumeBlock(captureCopy_[c].id(), n, 0);
+        s.accumulatedToStep[c] = readVolumeBlock(captureCopy_[3 + c].id(), n, 0);
+    }
+    if (occlusion_)
+        s.geometry = readGeometryVolume(cascade);
+    snapshot_ = std::move(s);
 }
 
 std::vector<glm::vec4> LpvPass::readGeometryVolume(int cascade) const {

@@ -12,6 +12,7 @@
 #include "RsmCascades.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
+#include "lpv/renderer/LpvSnapshot.h"
 #include "lpv/scene/Error.h"
 
 #include <glm/glm.hpp>
@@ -98,6 +99,14 @@ class LpvPass {
     std::vector<DebugImage> debugImages() const;
     std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
 
+    // The visualizers' read-back: while a request is set, every run() copies
+    // that cascade's volumes at that step to the CPU (a GPU stall, so only
+    // while a view is open); nullopt stops it and frees the copy.
+    void setCapture(std::optional<LpvCaptureRequest> request);
+    const std::optional<LpvSnapshot>& snapshot() const { return snapshot_; }
+    // The cascades of the last run (empty when inactive).
+    std::vector<LpvGridFrame> cascadeFrames() const;
+
   private:
     LpvPass() = default;
     void inject(const LpvRsmInput& rsm, bool directed);
@@ -113,6 +122,12 @@ class LpvPass {
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
+    // At the requested step: copies volume `index` (V_step) and the
+    // accumulator of the requested cascade on the GPU (no stall inside the
+    // timed passes); readCapture() brings the copies and the GV to the CPU
+    // once the frame's LPV work is timed.
+    void captureIfRequested(int step, int index);
+    void readCapture();
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
@@ -126,6 +141,13 @@ class LpvPass {
     int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)
     int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
     float injectionOffset_ = 1.0f;
+    bool occlusion_ = true;
+    int propagationSteps_ = 0;
+    std::optional<LpvCaptureRequest> capture_;
+    std::optional<LpvSnapshot> snapshot_;
+    std::array<Texture, 6> captureCopy_; // N^3 per channel: V_step (0-2), accumulator (3-5); only while capturing
+    int captureGrid_ = 0;
+    int capturedStep_ = -1; // -1: nothing copied this frame
     std::string note_ = "LPV: not run yet";
     std::string computedNote_; // what the last computed frame ran
 };

@@ -5,6 +5,7 @@
 // (ShadowPass, ...); this class owns the targets and the order.
 #include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/GpuTimer.h"
+#include "lpv/renderer/LpvSnapshot.h"
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/Image.h"
@@ -75,6 +76,18 @@ public:
     // cascade the accumulated DC per channel and the geometry volume, slices
     // side by side). Unknown: empty.
     std::vector<DebugImage> debugImages(const std::string& what) const;
+    // The visualizers' LPV read-back (LpvSnapshot.h): while a request is set,
+    // each render() copies that cascade's volumes at that propagation step;
+    // nullopt (the default) reads nothing.
+    void setLpvCapture(std::optional<LpvCaptureRequest> request);
+    // The copy of the last frame, or null (no request, LPV off, cascade out of range).
+    const LpvSnapshot* lpvSnapshot() const;
+    // Where the LPV cascades of the last frame lie (empty when the LPV is off).
+    std::vector<LpvGridFrame> lpvCascadeFrames() const;
+    // Tints every surface by the sun shadow cascade that shades it (cascade k:
+    // the k-th colour of red, green, blue, yellow, magenta, cyan), for the
+    // shadow-map visualizer; off by default.
+    void setShadowCascadeTint(bool on);
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
