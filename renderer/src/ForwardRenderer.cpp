@@ -225,7 +225,8 @@ struct ForwardRenderer::Impl {
             key.cameraInverseViewProj = previousCamera.inverseViewProj;
             key.gBufferGeneration = gBufferSceneGeneration;
         }
-        if (frame.params.getBool("lpv.reuse") && lpv->active() && lpvKey && *lpvKey == key) {
+        // A visualizer that reads the volumes back watches the computation itself: no reuse while it does.
+        if (frame.params.getBool("lpv.reuse") && !lpv->capturing() && lpv->active() && lpvKey && *lpvKey == key) {
             lpv->reuse();
             return {};
         }

@@ -104,6 +104,7 @@ class LpvPass {
     // while a view is open); nullopt stops it and frees the copy.
     void setCapture(std::optional<LpvCaptureRequest> request);
     const std::optional<LpvSnapshot>& snapshot() const { return snapshot_; }
+    bool capturing() const { return capture_.has_value(); }
     // The cascades of the last run (empty when inactive).
     std::vector<LpvGridFrame> cascadeFrames() const;
 
