@@ -50,12 +50,8 @@ int benchRender(Args args) {
     auto setup = prepareRender(request, "bench", exitCode);
     if (!setup)
         return exitCode;
-    for (const auto& combination : plan.combinations)
-        for (const auto& [key, value] : combination) {
-            scene::ParameterSet probe = setup->project.parameters;
-            if (auto ok = probe.setFromText(key, value, "--set"); !ok)
-                return usageError(ok.error().describe(), "bench");
-        }
+    if (auto error = checkCombinations(plan, setup->project.parameters, "--set"))
+        return usageError(*error, "bench");
 
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;

@@ -263,12 +263,8 @@ int benchSweep(Args args) {
     auto setup = prepareRender(request, "bench", exitCode);
     if (!setup)
         return exitCode;
-    for (const auto& combination : plan.combinations)
-        for (const auto& [key, value] : combination) {
-            scene::ParameterSet probe = setup->project.parameters;
-            if (auto ok = probe.setFromText(key, value, "--sweep"); !ok)
-                return usageError(ok.error().describe(), "bench");
-        }
+    if (auto error = checkCombinations(plan, setup->project.parameters, "--sweep"))
+        return usageError(*error, "bench");
 
     reference::ReferenceImage ref;
     if (referenceFile) {

@@ -132,12 +132,8 @@ int runRender(Args args) {
     if (!setup)
         return exitCode;
     // Every swept value is checked against the registry before anything renders.
-    for (const auto& combination : plan.combinations)
-        for (const auto& [key, value] : combination) {
-            scene::ParameterSet probe = setup->project.parameters;
-            if (auto ok = probe.setFromText(key, value, "--set"); !ok)
-                return usageError(ok.error().describe(), "render");
-        }
+    if (auto error = checkCombinations(plan, setup->project.parameters, "--set"))
+        return usageError(*error, "render");
 
     const std::vector<std::vector<Setting>> runs =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;

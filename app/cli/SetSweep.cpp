@@ -63,4 +63,15 @@ std::string combinationSuffix(const std::vector<Setting>& combination) {
     return suffix;
 }
 
+std::optional<std::string> checkCombinations(const SetPlan& plan, const scene::ParameterSet& base,
+                                             const std::string& option) {
+    for (const auto& combination : plan.combinations)
+        for (const auto& [key, value] : combination) {
+            scene::ParameterSet probe = base;
+            if (auto ok = probe.setFromText(key, value, option); !ok)
+                return ok.error().describe();
+        }
+    return std::nullopt;
+}
+
 } // namespace lpv::cli
