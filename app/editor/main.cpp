@@ -15,6 +15,8 @@
 #include <QDockWidget>
 #include <QIcon>
 #include <QSpinBox>
+#include <QPainter>
+#include <QPixmap>
 #include <QTimer>
 
 #include <cstdio>
@@ -135,7 +137,15 @@ int main(int argc, char** argv) {
                 window.viewport()->update();
                 return;
             }
-            const bool saved = window.grab().save(file);
+            // QWidget::grab() leaves out what the viewport paints over its GL image with QPainter
+            // (gizmo, camera path, visualizer overlays); its own grabFramebuffer() has them.
+            QPixmap shot = window.grab();
+            {
+                QPainter painter(&shot);
+                painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)),
+                                  window.viewport()->grabFramebuffer());
+            }
+            const bool saved = shot.save(file);
             // The viewport's size and GPU time, so a screenshot run doubles as a measurement.
             const auto* vp = window.viewport();
             printf("lpvstudio: viewport %dx%d rendered at %.0f%%, last frame %.1f ms GPU (sum of passes)\n",
