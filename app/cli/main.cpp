@@ -21,19 +21,22 @@ Commands:
   bench import FILE...        Time importing scene files against loading the projects they become
   bench render PROJECT        Per-pass GPU times over many frames (default 1280x720, 60 frames)
   bench lpv PROJECT           The thesis' LPV measurements: RSM tile sizes, steps x variants x occlusion
+  bench PROJECT --sweep KEY=V1,V2 ...
+                              Sweep parameters: per-pass GPU time and error against a reference,
+                              CSV/JSON/Markdown report and PNG plots (--reference REF.exr)
   info PROJECT                Validate a project and print what it contains
   video PROJECT --path NAME -o OUT.mp4
                               Render a camera path offline into an H.264 MP4 or PNG sequence
                               (side by side with --compare-set), with a progress line
   path export PROJECT --path NAME -o FILE.json|FILE.csv
                               Write a camera path as JSON, or as CSV per frame (--fps)
+  path import PROJECT FILE.json
+                              Add or replace a camera path of the project from a JSON file
   reference PROJECT -o REF.exr
                               Path-trace (CPU, Embree) the reference image and indirect light
                               with per-pixel variance (--spp, --max-seconds, --bounces)
   compare TEST.exr REF.exr    Error of a rendered EXR against the reference: relMSE, MARE,
                               SSIM, each beside the reference's own noise
-  path import PROJECT FILE.json
-                              Add or replace a camera path of the project from a JSON file
   radiosity PROJECT [-o OUT.lpvproj]
                               Solve the diffuse light with GPU progressive radiosity (hemicubes),
                               saved into the project; a second run resumes
