@@ -17,7 +17,6 @@ uniform bool uHasEmissiveMap;
 uniform sampler2D uEmissiveMap;         // sRGB colour, multiplies uEmissive
 uniform bool uHasNormalMap;
 uniform sampler2D uNormalMap;           // tangent space, +Y = +v (OpenGL/glTF convention); also height-derived maps
-uniform bool uTwoSided;
 
 struct Surface {
     vec3 normal;     // shading normal (after normal mapping), world space, facing the viewer for two-sided materials
@@ -44,7 +43,7 @@ mat3 derivativeTangentFrame(vec3 n, vec3 p, vec2 uv) {
 
 // `n` the interpolated world normal, `tangent` the world tangent with the
 // handedness in w (bitangent = w * cross(n, t)); `backFacing` flips the frame
-// of two-sided materials seen from behind.
+// of faces seen from behind.
 vec3 materialNormal(vec3 n, vec4 tangent, vec2 uv, vec3 worldPos, bool backFacing) {
     n = normalize(n);
     if (backFacing) {
@@ -69,7 +68,14 @@ vec3 materialNormal(vec3 n, vec4 tangent, vec2 uv, vec3 worldPos, bool backFacin
 
 Surface materialSurface(vec3 n, vec4 tangent, vec2 uv, vec3 worldPos, vec3 toViewer) {
     Surface s;
-    bool backFacing = uTwoSided && dot(n, toViewer) < 0.0;
+    // Every face is shaded on the side it is seen from, as the RSM and the
+    // reference path tracer do: the renderer draws without culling, and a
+    // one-sided wall seen from inside must not take the sun that falls on its
+    // outside. The geometric normal decides (winding-independent, as Embree's Ng).
+    vec3 ng = cross(dFdx(worldPos), dFdy(worldPos));
+    if (dot(ng, toViewer) < 0.0)
+        ng = -ng;
+    bool backFacing = dot(n, ng) < 0.0;
     s.normal = materialNormal(n, tangent, uv, worldPos, backFacing);
     s.albedo = materialAlbedo(uv);
     s.specular = uSpecular;

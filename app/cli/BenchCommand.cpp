@@ -19,6 +19,7 @@ namespace fs = std::filesystem;
 
 void printBenchLpvHelp();
 void printBenchSweepHelp();
+void printBenchAccuracyReportHelp();
 
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
@@ -27,6 +28,7 @@ void printBenchHelp() {
                                  --csv FILE --markdown FILE]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR ... see below]
+       lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
 
 bench render: renders the project headless at the given size (default
 1280x720) for --warmup frames (default 5, not counted) and then --frames
@@ -39,6 +41,7 @@ by the command and the machine: CPU, cores, GL renderer and version).
 )";
     printBenchLpvHelp();
     printBenchSweepHelp();
+    printBenchAccuracyReportHelp();
     std::cout << R"(
 bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture
@@ -51,6 +54,7 @@ Example:
   lpv bench lpv sibenik.lpvproj --markdown lpv-bench.md --csv lpv-bench.csv
   lpv bench cornell.lpvproj --sweep lpv.propagationSteps=0,4,8,16 --reference ref.exr --out sweep
   lpv bench import ../shared/scenes/sponza/sponza.obj ../shared/scenes/sibenik/sibenik.obj
+  lpv bench report --out bench-report
 )";
 }
 
@@ -151,6 +155,8 @@ int runBench(Args args) {
         return benchRender(std::move(args));
     if (pos.front() == "lpv")
         return benchLpv(std::move(args));
+    if (pos.front() == "report")
+        return benchAccuracyReport(std::move(args));
     if (pos.front() == "import") {
         try {
             return benchImport(args);
@@ -158,7 +164,7 @@ int runBench(Args args) {
             return usageError("--repeat needs a whole number", "bench");
         }
     }
-    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv)", "bench");
+    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report)", "bench");
 }
 
 } // namespace lpv::cli

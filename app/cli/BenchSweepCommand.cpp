@@ -256,6 +256,9 @@ int benchSweep(Args args) {
     const SetPlan plan = planSettings(all, planError);
     if (!planError.empty())
         return usageError(planError, "bench");
+    // Timed frames must compute the LPV every frame, not reuse the first
+    // frame's volumes (a later --set lpv.reuse=true wins).
+    request.sets.push_back("lpv.reuse=false");
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
     request.projectFile = pos.front();

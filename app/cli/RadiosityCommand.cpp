@@ -45,7 +45,9 @@ solution so far is saved.
                         then solve on to the residual again
   --set KEY=VALUE       Override a registry parameter (radiosity.maxPatchArea,
                         radiosity.hemicubeResolution, radiosity.shootersPerBatch, ...)
-  --image FILE          Also render the solution to an image (camera: --camera or the first)
+  --image FILE          Also render the solution to an image (camera: --camera or the first);
+                        FILE.exr keeps linear radiance, to measure with `lpv compare`
+                        against `lpv reference --set reference.emissiveLight=true`
   --view MODE           radiosity (default), ambient (plus Cohen's ambient term
                         for the unshot energy), unshot, shot
   --wireframe           Draw the patch edges over the image
@@ -58,6 +60,15 @@ solution so far is saved.
 }
 
 namespace {
+
+scene::Expected<void> writeRadianceExr(const std::filesystem::path& file, int width, int height,
+                                       const std::vector<float>& rgba, const std::string& view) {
+    importers::FloatChannels image{width, height, {"R", "G", "B"}, {}, {}};
+    image.pixels.reserve(std::size_t(width) * std::size_t(height) * 3);
+    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4)
+        image.pixels.insert(image.pixels.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+    return importers::writeImageChannels(file, image, {{"lpv:outputView", "radiosity-" + view}});
+}
 
 std::atomic<bool> gInterrupted{false};
 
@@ -347,8 +358,12 @@ int runRadiosity(Args args) {
         }
         viewer->setPatches(session.mesh(), values, params.getBool("radiosity.smoothing"));
         viewer->render(camera, int(*width), int(*height), params.getFloat("output.exposure"), wireframe);
-        importers::Image8 image{int(*width), int(*height), 4, viewer->readDisplay()};
-        if (auto ok = importers::writeImage(*imageFile, image); !ok) {
+        // .exr keeps the linear radiance, for `lpv compare` against `lpv reference`.
+        const bool hdr = std::filesystem::path(*imageFile).extension() == ".exr";
+        auto ok = hdr ? writeRadianceExr(*imageFile, int(*width), int(*height), viewer->readRadiance(), view)
+                      : importers::writeImage(*imageFile, importers::Image8{int(*width), int(*height), 4,
+                                                                           viewer->readDisplay()});
+        if (!ok) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";
             return kFailure;
         }

@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -29,6 +30,15 @@ struct EmbreeScene::Impl {
     std::vector<scene::Material> materials;
     std::vector<MaterialTextures> textures;
     std::vector<bool> maybeCutOut; // per material: needs the alpha filter
+    // Emissive triangles: corners, material, and the running sum of
+    // area x luminance that picks one.
+    struct Emitter {
+        glm::vec3 p0, p1, p2;
+        unsigned prim;
+        float area;
+    };
+    std::vector<Emitter> emitters;
+    std::vector<float> emitterCdf;
 
     ~Impl() {
         if (scene)
@@ -100,6 +110,17 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                     d.uvs.push_back(uv[c]);
                 }
                 d.triangleMaterial.push_back(material < int(s.materials.size()) ? material : -1);
+                if (const int m = d.triangleMaterial.back(); m >= 0) {
+                    const scene::Material& mat = s.materials[std::size_t(m)];
+                    const float luminance =
+                        0.2126f * mat.emissive.r + 0.7152f * mat.emissive.g + 0.0722f * mat.emissive.b;
+                    const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+                    if (luminance > 0.0f && std::isfinite(luminance) && std::isfinite(area)) {
+                        d.emitters.push_back({p[0], p[1], p[2], unsigned(d.triangleMaterial.size() - 1), area});
+                        d.emitterCdf.push_back((d.emitterCdf.empty() ? 0.0f : d.emitterCdf.back()) +
+                                               area * luminance);
+                    }
+                }
             }
         };
         if (mesh.submeshes.empty())
@@ -225,6 +246,32 @@ SurfaceSample EmbreeScene::surface(const Hit& hit) const {
 
 std::size_t EmbreeScene::triangleCount() const {
     return impl_->triangleMaterial.size();
+}
+
+bool EmbreeScene::hasEmitters() const {
+    return !impl_->emitters.empty() && impl_->emitterCdf.back() > 0.0f;
+}
+
+EmitterSample EmbreeScene::sampleEmitter(float pick, float u1, float u2) const {
+    const Impl& d = *impl_;
+    EmitterSample out;
+    if (!hasEmitters())
+        return out;
+    const float total = d.emitterCdf.back();
+    const auto it = std::upper_bound(d.emitterCdf.begin(), d.emitterCdf.end(), pick * total);
+    const std::size_t k = std::min(std::size_t(it - d.emitterCdf.begin()), d.emitters.size() - 1);
+    const Impl::Emitter& e = d.emitters[k];
+    const float weight = d.emitterCdf[k] - (k > 0 ? d.emitterCdf[k - 1] : 0.0f);
+    // Uniform on the triangle (square-root warp of the unit square).
+    const float r = std::sqrt(u1);
+    const float b0 = 1.0f - r, b1 = r * (1.0f - u2), b2 = r * u2;
+    out.position = b0 * e.p0 + b1 * e.p1 + b2 * e.p2;
+    out.normal = glm::normalize(glm::cross(e.p1 - e.p0, e.p2 - e.p0));
+    const std::size_t m = std::size_t(d.triangleMaterial[e.prim]);
+    const glm::vec2 uv = b0 * d.uvs[3 * e.prim] + b1 * d.uvs[3 * e.prim + 1] + b2 * d.uvs[3 * e.prim + 2];
+    out.radiance = materialSurface(d.materials[m], d.textures[m], uv).emissive;
+    out.pdfArea = (weight / total) / e.area;
+    return out;
 }
 
 } // namespace lpv::reference

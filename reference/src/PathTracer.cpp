@@ -97,6 +97,29 @@ glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3
     return irradiance * ndotl;
 }
 
+glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
+                                        Rng& rng) const {
+    if (!settings_.emissiveLight || !embree_.hasEmitters())
+        return glm::vec3(0.0f);
+    const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
+    const EmitterSample e = embree_.sampleEmitter(pick, u1, u2);
+    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    const glm::vec3 d = e.position - origin;
+    const float dist2 = glm::dot(d, d);
+    if (e.pdfArea <= 0.0f || dist2 <= 1e-12f || e.radiance == glm::vec3(0.0f))
+        return glm::vec3(0.0f);
+    const float dist = std::sqrt(dist2);
+    const glm::vec3 l = d / dist;
+    const float cosReceiver = glm::dot(n, l);
+    const float cosEmitter = std::abs(glm::dot(e.normal, l));
+    if (cosReceiver <= 0.0f || glm::dot(offsetNormal, l) <= 0.0f || cosEmitter <= 0.0f)
+        return glm::vec3(0.0f);
+    // Stop short of the emitter's own triangle.
+    if (embree_.occluded(origin, l, 0.0f, dist * (1.0f - 1e-4f)))
+        return glm::vec3(0.0f);
+    return e.radiance * (cosReceiver * cosEmitter / (dist2 * e.pdfArea));
+}
+
 glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal,
                                        const glm::vec3& n) const {
     glm::vec3 e(0.0f);
@@ -144,6 +167,14 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     glm::vec3 throughput(1.0f); // product of the diffuse albedos after the primary hit
     glm::vec3 multi(0.0f);      // incoming radiance at the primary hit, all bounces
     glm::vec3 one(0.0f);
+    // Emitters' light reaches each vertex by next-event estimation (the
+    // radiance equivalent of irradiance E is E / pi); the last vertex gets
+    // none, so `bounces` counts the same segments as when rays hit emitters.
+    {
+        const glm::vec3 e = emitterIrradiance(h.position, h.geometricNormal, h.shadingNormal, rng) / kPi;
+        multi += e;
+        one += e;
+    }
     for (int depth = 1; depth <= settings_.bounces; ++depth) {
         const glm::vec3 w = cosineSample(n, rng.next(), rng.next());
         if (glm::dot(w, ng) <= 0.0f)
@@ -158,13 +189,17 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
             break;
         }
         const SurfaceSample hs = embree_.surface(*hit);
-        const glm::vec3 emitted = settings_.emissiveLight ? hs.emissive : glm::vec3(0.0f);
-        const glm::vec3 reflected =
-            emitted +
+        const glm::vec3 lit =
             hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal);
+        glm::vec3 reflected = lit;
+        // An emitter's light reflected here reaches the primary hit in depth + 1
+        // segments: in the multi-bounce layer only, and not after the last bounce.
+        if (depth < settings_.bounces)
+            reflected +=
+                hs.diffuse / kPi * emitterIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, rng);
         multi += throughput * reflected;
         if (depth == 1)
-            one += reflected;
+            one += lit;
         throughput *= hs.diffuse;
         if (depth >= kRouletteDepth) {
             const float keep = std::min(0.95f, std::max(throughput.x, std::max(throughput.y, throughput.z)));

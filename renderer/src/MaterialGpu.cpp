@@ -33,12 +33,11 @@ struct MaterialGpu::Locations {
         emissiveMap = at("uEmissiveMap");
         hasNormalMap = at("uHasNormalMap");
         normalMap = at("uNormalMap");
-        twoSided = at("uTwoSided");
     }
     GLint diffuse, hasBaseColorMap, baseColorMap, hasAlphaMap, alphaMap, alphaMode, alphaCutoff, opacity;
     GLint shadingModel, specular, shininess, hasSpecularMap, specularMap, metallic, roughness,
         hasMetallicRoughnessMap, metallicRoughnessMap, hasOcclusionMap, occlusionMap, emissive, hasEmissiveMap,
-        emissiveMap, hasNormalMap, normalMap, twoSided;
+        emissiveMap, hasNormalMap, normalMap;
 };
 
 MaterialGpu::MaterialGpu(const scene::Scene& scene, const scene::TextureImages& images) : materials_(scene.materials) {
@@ -115,7 +114,6 @@ void MaterialGpu::bind(GLuint program, std::uint32_t material, MaterialBindMode 
     glProgramUniform3fv(program, l.emissive, 1, glm::value_ptr(m.emissive));
     texture(l.hasEmissiveMap, l.emissiveMap, kEmissiveUnit, t.emissive);
     texture(l.hasNormalMap, l.normalMap, kNormalUnit, t.normal);
-    glProgramUniform1i(program, l.twoSided, m.twoSided ? 1 : 0);
 }
 
 } // namespace lpv::renderer

@@ -85,15 +85,21 @@ void RadiosityView::render(const scene::Camera& camera, int width, int height, f
         height_ = height;
         color_ = createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(color_.id(), 1, GL_RGBA8, width, height);
+        radiance_ = createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(radiance_.id(), 1, GL_RGBA32F, width, height);
         depth_ = createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
         fbo_ = createFramebuffer();
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, radiance_.id(), 0);
         glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+        const GLenum targets[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo_.id(), 2, targets);
     }
     const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, background);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, background);
     glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, width, height);
@@ -142,9 +148,24 @@ std::vector<std::uint8_t> RadiosityView::readDisplay() const {
     return pixels;
 }
 
+std::vector<float> RadiosityView::readRadiance() const {
+    std::vector<float> pixels(std::size_t(width_) * std::size_t(height_) * 4);
+    if (!radiance_)
+        return pixels;
+    glGetTextureImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+                      pixels.data());
+    const std::size_t row = std::size_t(width_) * 4;
+    for (int y = 0; y < height_ / 2; ++y)
+        std::swap_ranges(pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                         pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                         pixels.begin() + std::ptrdiff_t(std::size_t(height_ - 1 - y) * row));
+    return pixels;
+}
+
 void RadiosityView::blitTo(GLuint framebuffer, int width, int height) const {
     if (!fbo_)
         return;
+    glNamedFramebufferReadBuffer(fbo_.id(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(fbo_.id(), framebuffer, 0, 0, width_, height_, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }

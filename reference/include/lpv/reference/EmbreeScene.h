@@ -26,6 +26,14 @@ struct Hit {
     int material = -1; // index into Scene::materials, -1 = default grey
 };
 
+// A point on an emissive triangle, for next-event estimation.
+struct EmitterSample {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};   // unit, the triangle's face normal (emission leaves both sides)
+    glm::vec3 radiance{0.0f}; // emitted radiance there (material emissive x map)
+    float pdfArea = 0.0f;     // probability density per unit area of picking this point
+};
+
 class EmbreeScene {
   public:
     // `textures` are the decoded images the renderer also gets (alpha masks
@@ -45,6 +53,11 @@ class EmbreeScene {
     SurfaceSample surface(const Hit& hit) const;
 
     std::size_t triangleCount() const;
+
+    // Emissive triangles (materials with emission), picked in proportion to
+    // area x emitted luminance, then a uniform point on the one picked.
+    bool hasEmitters() const;
+    EmitterSample sampleEmitter(float pick, float u1, float u2) const;
 
   private:
     EmbreeScene();

@@ -16,6 +16,8 @@
 
 namespace lpv::reference {
 
+class Rng; // Sampling.h
+
 struct PathTracerSettings {
     int width = 320;
     int height = 180;
@@ -67,6 +69,12 @@ class PathTracer {
     glm::vec3 background_{0.0f};
 
     glm::vec3 escapedRadiance() const;
+    // With reference.emissiveLight: the irradiance emissive surfaces deliver at
+    // p toward n, estimated from one point sampled on them (next-event
+    // estimation; paths that hit an emitter by chance then add nothing, so
+    // a small bright panel does not leave the image speckled).
+    glm::vec3 emitterIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
+                                Rng& rng) const;
     // Irradiance one light delivers at p toward n (0 when shadowed); `l` = unit direction to the light.
     glm::vec3 lightIrradiance(const scene::Light& light, const glm::vec3& p, const glm::vec3& offsetNormal,
                               const glm::vec3& n, glm::vec3& l) const;

@@ -22,11 +22,14 @@ class RadiosityView {
     // Uploads the patches with one value per patch (radiance to show).
     void setPatches(const radiosity::PatchMesh& mesh, std::span<const glm::vec3> perPatch, bool smooth);
 
-    // Renders into the internal RGBA8 target (sRGB-encoded).
+    // Renders into the internal RGBA8 target (sRGB-encoded) and an RGBA32F
+    // target of linear radiance.
     void render(const scene::Camera& camera, int width, int height, float exposureEv, bool wireframe);
 
     // Rows top to bottom, RGBA8.
     std::vector<std::uint8_t> readDisplay() const;
+    // Rows top to bottom, RGBA32F: radiance (W/(m^2 sr)) at each pixel centre, 0 where no patch.
+    std::vector<float> readRadiance() const;
     void blitTo(GLuint framebuffer, int width, int height) const;
 
   private:
@@ -39,6 +42,7 @@ class RadiosityView {
     GLsizei triangleVertices_ = 0;
     GLsizei lineVertices_ = 0;
     Texture color_;
+    Texture radiance_;
     Texture depth_;
     Framebuffer fbo_;
     int width_ = 0;

@@ -1,0 +1,520 @@
+// `lpv bench report`: the accuracy-against-time report from one command.
+// For each scene (the built-in Cornell box, Sibenik and Sponza from
+// ../shared/scenes) it makes a project, traces the path-traced reference
+// once, runs one `lpv bench --sweep` per question (propagation steps, grid,
+// cascades, RSM tile, variant, each extension off/on), each varied alone
+// around the project's settings (the full cartesian product would be
+// thousands of renders), and, where the scene has emissive surfaces, measures
+// radiosity against the same reference as it converges. The summary
+// (report.md, report.json) names per scene the cheapest settings that reach
+// 10% and 5% indirect error; each sweep keeps its own CSV, JSON and plots.
+#include "BenchReport.h"
+#include "Cli.h"
+#include "ReferenceFile.h"
+
+#include "lpv/reference/Metrics.h"
+#include "lpv/scene/Project.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace lpv::cli {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+void printBenchAccuracyReportHelp() {
+    std::cout << R"(
+bench report [--out DIR] [--scenes DIR] [--scene NAME ...] [--quick] [options]:
+the README's accuracy-against-time report from one command. For each scene
+(cornell-box: the built-in template plus a sun through its open front;
+sibenik and sponza: imported from --scenes, default ../shared/scenes, with
+the sun `lpv import` adds) it creates the project in DIR/NAME/,
+traces the reference once (DIR/NAME/reference.exr, kept for later runs of
+the same size), then runs `lpv bench --sweep` once per question, each key
+varied alone around the project's settings:
+  steps      lpv.propagationSteps=0,1,2,4,8,16,32,64
+  grid       lpv.gridSize=16,32,64
+  cascades   lpv.cascades=1,2,3,4
+  rsm        rsm.tileSize=64,128,256,512,1024
+  variant    lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter
+  occlusion  lpv.occlusion=false,true
+  directed   lpv.directedPropagation=off,on
+  sky        effects.skyInjection=off,on
+Scenes with emissive surfaces (the Cornell box's ceiling light) also get a
+radiosity solve measured against a reference of the emissive light alone
+(the project's lights removed), at doubling solve times. Writes DIR/report.md
+(headline table: the project's settings, and the cheapest settings reaching
+10% and 5% indirect MARE per scene) and DIR/report.json; each sweep's CSV,
+JSON, Markdown and plots stay in DIR/NAME/QUESTION/.
+
+  --out DIR             Output folder (default bench-report)
+  --scenes DIR          Folder with sibenik/sibenik.obj and sponza/sponza.obj
+                        (default ../shared/scenes)
+  --scene NAME          Only this scene (cornell-box, sibenik, sponza); repeatable
+  --quick               Three questions with fewer values, 5 s of radiosity:
+                        a smoke run (minutes instead of most of an hour)
+  --width N --height N  Image size (default 320x180)
+  --frames N --warmup N Timed frames per setting (default 10) after warm-up (default 2)
+  --spp N               Reference samples per pixel (default 256)
+  --radiosity-seconds S Longest radiosity solve (default 160; solve times
+                        double from 5 s up to it)
+)";
+}
+
+namespace {
+
+struct Question {
+    std::string name;
+    std::string sweep;      // full report
+    std::string quickSweep; // --quick; empty = left out
+};
+
+const std::vector<Question> kQuestions = {
+    {"steps", "lpv.propagationSteps=0,1,2,4,8,16,32,64", "lpv.propagationSteps=0,4,16"},
+    {"grid", "lpv.gridSize=16,32,64", "lpv.gridSize=16,32"},
+    {"cascades", "lpv.cascades=1,2,3,4", ""},
+    {"rsm", "rsm.tileSize=64,128,256,512,1024", ""},
+    {"variant", "lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter", ""},
+    {"occlusion", "lpv.occlusion=false,true", "lpv.occlusion=false,true"},
+    {"directed", "lpv.directedPropagation=off,on", ""},
+    {"sky", "effects.skyInjection=off,on", ""},
+};
+
+struct SceneSpec {
+    std::string name;
+    std::string source; // relative to --scenes; empty = the built-in template
+};
+
+const std::vector<SceneSpec> kScenes = {
+    {"cornell-box", ""}, {"sibenik", "sibenik/sibenik.obj"}, {"sponza", "sponza/sponza.obj"}};
+
+// One render of a sweep, as its sweep.json gives it.
+struct ReportRun {
+    std::string question;
+    std::string setting; // "key=value"
+    bool projectSettings = false;
+    double totalMs = 0.0;
+    double indirectMare = 0.0;
+    double noiseMare = 0.0;
+    double imageMare = 0.0;
+};
+
+struct RadiosityPoint {
+    double seconds = 0.0; // cumulative wall time of the solve runs
+    reference::ErrorMetrics image;
+};
+
+struct SceneReport {
+    std::string name;
+    std::string projectFile;
+    std::string referenceNote;
+    std::vector<ReportRun> runs;
+    std::vector<std::string> failures;
+    std::vector<RadiosityPoint> radiosity;
+    std::string radiosityNote;
+};
+
+int call(int (*command)(Args), std::vector<std::string> args) {
+    std::printf("\n$ lpv");
+    for (const auto& a : args)
+        std::printf(" %s", a.c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+    return command(Args(std::move(args)));
+}
+
+std::string percent(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * v);
+    return buf;
+}
+
+std::string fixed(double v, int digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+// A fresh project for the scene; false (and a message) when it cannot be made.
+bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::path& project) {
+    std::error_code ec;
+    fs::remove(project, ec);
+    fs::remove_all(fs::path(project).replace_extension(".assets"), ec);
+    if (spec.source.empty()) {
+        if (call(runNew, {project.string(), "--template", "cornell-box"}) != kOk)
+            return false;
+        // The template is lit by its ceiling spot alone; a sun through the
+        // open front, down onto the floor, gives the LPV light to inject.
+        auto p = scene::loadProject(project);
+        if (!p) {
+            std::cerr << "lpv: " << p.error().describe() << "\n";
+            return false;
+        }
+        scene::Light sun;
+        sun.name = "sun (added by bench report)";
+        sun.direction = glm::normalize(glm::vec3(0.2f, -0.6f, 1.0f));
+        sun.intensity = 3.0f;
+        p->scene.lights.push_back(sun);
+        if (auto ok = scene::saveProject(*p, project); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return false;
+        }
+        return true;
+    }
+    const fs::path source = scenesDir / spec.source;
+    if (!fs::exists(source)) {
+        std::cerr << "lpv: " << source.string() << ": no such scene file (give --scenes DIR)\n";
+        return false;
+    }
+    return call(runImport, {source.string(), "-o", project.string()}) == kOk;
+}
+
+bool referenceMatches(const fs::path& file, int width, int height) {
+    if (!fs::exists(file))
+        return false;
+    auto ref = readReferenceExr(file);
+    return ref && ref->image.width == width && ref->image.height == height;
+}
+
+std::string describeReference(const fs::path& file) {
+    auto ref = readReferenceExr(file);
+    if (!ref)
+        return "unreadable";
+    auto attr = [&](const char* k) {
+        auto it = ref->attributes.find(k);
+        return it == ref->attributes.end() ? std::string("?") : it->second;
+    };
+    return std::to_string(ref->image.width) + "x" + std::to_string(ref->image.height) + ", " +
+           std::to_string(ref->image.samplesPerPixel) + " spp in " +
+           fixed(std::atof(attr("lpv:seconds").c_str()), 1) + " s";
+}
+
+// The runs of one sweep.json; `current` holds the project's own parameters to
+// recognise the run that changes nothing.
+std::vector<ReportRun> readSweep(const fs::path& file, const std::string& question,
+                                 const scene::ParameterSet& current) {
+    std::vector<ReportRun> out;
+    std::ifstream in(file);
+    const Json j = Json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("runs"))
+        return out;
+    for (const Json& r : j["runs"]) {
+        ReportRun run;
+        run.question = question;
+        run.projectSettings = true;
+        for (const auto& [key, value] : r["settings"].items()) {
+            run.setting += (run.setting.empty() ? "" : " ") + key + "=" + value.get<std::string>();
+            scene::ParameterSet changed = current;
+            if (!changed.setFromText(key, value.get<std::string>()) ||
+                !(changed.get(key) == current.get(key)))
+                run.projectSettings = false;
+        }
+        run.totalMs = r.value("totalMs", 0.0);
+        run.indirectMare = r["indirect"].value("mare", 0.0);
+        run.noiseMare = r["indirect"].value("noiseMare", 0.0);
+        run.imageMare = r["image"].value("mare", 0.0);
+        out.push_back(run);
+    }
+    return out;
+}
+
+bool hasEmissiveMaterial(const scene::Project& p) {
+    return std::ranges::any_of(p.scene.materials, [](const scene::Material& m) {
+        return m.emissive != glm::vec3(0.0f) || !m.emissiveTexture.empty();
+    });
+}
+
+// Radiosity against the reference of the emissive light alone, at doubling solve times.
+void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, int height, int spp,
+                      double maxSeconds) {
+    auto project = scene::loadProject(report.projectFile);
+    if (!project) {
+        report.radiosityNote = project.error().describe();
+        return;
+    }
+    if (!hasEmissiveMaterial(*project)) {
+        report.radiosityNote =
+            "not measured: no emissive material (radiosity shoots from emissive surfaces only)";
+        return;
+    }
+    const fs::path dir = sceneDir / "radiosity";
+    fs::create_directories(dir);
+    const fs::path emissiveProject = dir / (report.name + "-emissive.lpvproj");
+    project->name += "-emissive";
+    project->scene.lights.clear(); // their stand-ins for the emitters would light the scene twice
+    if (auto ok = scene::saveProject(*project, emissiveProject); !ok) {
+        report.radiosityNote = ok.error().describe();
+        return;
+    }
+    const fs::path ref = dir / "reference-emissive.exr";
+    if (!referenceMatches(ref, width, height) &&
+        call(runReference, {emissiveProject.string(), "-o", ref.string(), "--width", std::to_string(width),
+                            "--height", std::to_string(height), "--spp", std::to_string(spp), "--set",
+                            "reference.emissiveLight=true"}) != kOk) {
+        report.radiosityNote = "the emissive-light reference failed";
+        return;
+    }
+    auto loadedRef = readReferenceExr(ref);
+    if (!loadedRef) {
+        report.radiosityNote = loadedRef.error().describe();
+        return;
+    }
+    report.radiosityNote =
+        "project lights removed, reference.emissiveLight=true, reference " + describeReference(ref);
+    double solved = 0.0;
+    bool restart = true;
+    for (double target = 5.0; solved < maxSeconds - 1e-6; target = std::min(2.0 * target, maxSeconds)) {
+        const fs::path image = dir / ("radiosity-" + fixed(target, 0) + "s.exr");
+        std::vector<std::string> args{emissiveProject.string(),
+                                      "--max-seconds",
+                                      fixed(target - solved, 2),
+                                      "--residual",
+                                      "0.0001",
+                                      "--image",
+                                      image.string(),
+                                      "--width",
+                                      std::to_string(width),
+                                      "--height",
+                                      std::to_string(height),
+                                      "--progress-interval",
+                                      "10"};
+        if (restart)
+            args.push_back("--restart");
+        restart = false;
+        if (call(runRadiosity, args) != kOk) {
+            report.failures.push_back("radiosity run to " + fixed(target, 0) + " s");
+            return;
+        }
+        solved = target;
+        auto test = readRgbExr(image);
+        if (!test) {
+            report.failures.push_back(test.error().describe());
+            return;
+        }
+        const auto& r = loadedRef->image;
+        report.radiosity.push_back(
+            {solved, reference::compareImages({test->width, test->height, &test->pixels},
+                                              {r.width, r.height, &r.image}, &r.imageVariance, &r.coverage)});
+        std::printf("radiosity after %.0f s of solving: %s\n", solved,
+                    reference::describe(report.radiosity.back().image).c_str());
+    }
+}
+
+const ReportRun* cheapestBelow(const std::vector<ReportRun>& runs, double target) {
+    const ReportRun* best = nullptr;
+    for (const ReportRun& r : runs)
+        if (r.indirectMare <= target && (!best || r.totalMs < best->totalMs))
+            best = &r;
+    return best;
+}
+
+std::string runCell(const ReportRun* r) {
+    if (!r)
+        return "none of the sweeps";
+    return "`" + r->setting + "`: " + fixed(r->totalMs, 1) + " ms, " + percent(r->indirectMare);
+}
+
+std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::string& command,
+                           const std::string& machine) {
+    std::ostringstream out;
+    out << "# LPV Studio: what accuracy costs in time\n\n`" << command << "`\n\nMachine: " << machine
+        << "\n\nTime: the sum of the per-pass GPU medians of a frame (timer queries). Error: mean absolute "
+           "relative error (MARE) of the LPV's indirect irradiance against the path-traced multi-bounce "
+           "indirect irradiance at the same pixels, background masked. Each question varies one key around "
+           "the project's settings.\n\n";
+    out << "| scene | project settings | cheapest at <= 10% | cheapest at <= 5% | lowest error found |\n"
+           "|---|---|---|---|---|\n";
+    for (const SceneReport& s : scenes) {
+        const ReportRun* base = nullptr;
+        const ReportRun* lowest = nullptr;
+        for (const ReportRun& r : s.runs) {
+            if (r.projectSettings && !base)
+                base = &r;
+            if (!lowest || r.indirectMare < lowest->indirectMare)
+                lowest = &r;
+        }
+        out << "| " << s.name << " | "
+            << (base ? fixed(base->totalMs, 1) + " ms, " + percent(base->indirectMare) : "-") << " | "
+            << runCell(cheapestBelow(s.runs, 0.10)) << " | " << runCell(cheapestBelow(s.runs, 0.05)) << " | "
+            << runCell(lowest) << " |\n";
+    }
+    for (const SceneReport& s : scenes) {
+        out << "\n## " << s.name << "\n\nReference: " << s.referenceNote;
+        if (!s.runs.empty())
+            out << "; its own noise on the indirect light: MARE " << percent(s.runs.front().noiseMare);
+        out << ".\n\n| question | setting | GPU ms | indirect MARE | image MARE "
+               "|\n|---|---|---:|---:|---:|\n";
+        for (const ReportRun& r : s.runs)
+            out << "| " << r.question << " | `" << r.setting << "`" << (r.projectSettings ? " (project)" : "")
+                << " | " << fixed(r.totalMs, 2) << " | " << percent(r.indirectMare) << " | "
+                << percent(r.imageMare) << " |\n";
+        std::vector<std::string> questions;
+        for (const ReportRun& r : s.runs)
+            if (std::ranges::find(questions, r.question) == questions.end())
+                questions.push_back(r.question);
+        out << "\nPlots:";
+        for (const std::string& q : questions)
+            out << " [" << q << "](" << s.name << "/" << q << "/sweep.md)";
+        out << "\n\n### Radiosity against solve time\n\n" << s.radiosityNote << "\n\n";
+        if (!s.radiosity.empty()) {
+            out << "| solve wall time | image MARE | image relMSE | image SSIM |\n|---:|---:|---:|---:|\n";
+            for (const RadiosityPoint& p : s.radiosity)
+                out << "| " << fixed(p.seconds, 0) << " s | " << percent(p.image.mare)
+                    << (p.image.mareBelowNoise() ? " (below noise)" : "") << " | " << fixed(p.image.relMse, 4)
+                    << " | " << fixed(p.image.ssim, 3) << " |\n";
+        }
+        for (const std::string& f : s.failures)
+            out << "\n**Failed:** " << f << "\n";
+    }
+    return out.str();
+}
+
+std::string reportJson(const std::vector<SceneReport>& scenes, const std::string& command,
+                       const std::string& machine) {
+    Json j{{"command", command}, {"machine", machine}, {"scenes", Json::array()}};
+    for (const SceneReport& s : scenes) {
+        Json scene{{"name", s.name},
+                   {"reference", s.referenceNote},
+                   {"runs", Json::array()},
+                   {"radiosity", Json::array()},
+                   {"failures", s.failures}};
+        for (const ReportRun& r : s.runs)
+            scene["runs"].push_back({{"question", r.question},
+                                     {"setting", r.setting},
+                                     {"projectSettings", r.projectSettings},
+                                     {"totalMs", r.totalMs},
+                                     {"indirectMare", r.indirectMare},
+                                     {"noiseMare", r.noiseMare},
+                                     {"imageMare", r.imageMare}});
+        for (const RadiosityPoint& p : s.radiosity)
+            scene["radiosity"].push_back(
+                {{"seconds", p.seconds}, {"imageMare", p.image.mare}, {"imageRelMse", p.image.relMse}});
+        j["scenes"].push_back(scene);
+    }
+    return j.dump(2) + "\n";
+}
+
+} // namespace
+
+int benchAccuracyReport(Args args) {
+    const fs::path outDir = args.option("--out").value_or("bench-report");
+    const fs::path scenesDir = args.option("--scenes").value_or("../shared/scenes");
+    const std::vector<std::string> only = args.options("--scene");
+    const bool quick = args.flag("--quick");
+    const auto width = parseCount(args.option("--width").value_or("320"), 1);
+    const auto height = parseCount(args.option("--height").value_or("180"), 1);
+    const auto frames = parseCount(args.option("--frames").value_or("10"), 1);
+    const auto warmup = parseCount(args.option("--warmup").value_or("2"), 0);
+    const auto spp = parseCount(args.option("--spp").value_or("256"), 1);
+    const auto radiosityText = args.option("--radiosity-seconds");
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "bench");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "bench");
+    if (args.positionals().size() != 1)
+        return usageError("bench report takes no files (scenes come from --scenes)", "bench");
+    if (!width || !height || !frames || !warmup || !spp)
+        return usageError(
+            "--width, --height, --frames and --spp must be positive integers, --warmup zero or more",
+            "bench");
+    const auto radiosityCount = parseCount(radiosityText.value_or(quick ? "5" : "160"), 5);
+    if (!radiosityCount)
+        return usageError("--radiosity-seconds must be a whole number of seconds, at least 5", "bench");
+    for (const std::string& name : only)
+        if (std::ranges::find(kScenes, name, &SceneSpec::name) == kScenes.end())
+            return usageError("unknown scene '" + name + "' (cornell-box, sibenik, sponza)", "bench");
+
+    std::vector<SceneReport> reports;
+    std::string machine;
+    int status = kOk;
+    for (const SceneSpec& spec : kScenes) {
+        if (!only.empty() && std::ranges::find(only, spec.name) == only.end())
+            continue;
+        SceneReport report;
+        report.name = spec.name;
+        const fs::path sceneDir = outDir / spec.name;
+        std::error_code ec;
+        fs::create_directories(sceneDir, ec);
+        if (ec) {
+            std::cerr << "lpv: " << sceneDir.string() << ": cannot create the folder: " << ec.message()
+                      << "\n";
+            return kFailure;
+        }
+        const fs::path project = sceneDir / (spec.name + ".lpvproj");
+        report.projectFile = project.string();
+        std::printf("\n=== %s\n", spec.name.c_str());
+        if (!makeProject(spec, scenesDir, project)) {
+            report.failures.push_back("making the project");
+            reports.push_back(report);
+            status = kFailure;
+            continue;
+        }
+        const fs::path ref = sceneDir / "reference.exr";
+        if (referenceMatches(ref, *width, *height))
+            std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
+        else if (call(runReference, {project.string(), "-o", ref.string(), "--width", std::to_string(*width),
+                                     "--height", std::to_string(*height), "--spp", std::to_string(*spp)}) !=
+                 kOk) {
+            report.failures.push_back("tracing the reference");
+            reports.push_back(report);
+            status = kFailure;
+            continue;
+        }
+        report.referenceNote = describeReference(ref);
+        const auto loaded = scene::loadProject(project);
+        const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
+        for (const Question& q : kQuestions) {
+            const std::string& sweep = quick ? q.quickSweep : q.sweep;
+            if (sweep.empty())
+                continue;
+            const fs::path dir = sceneDir / q.name;
+            if (call(benchSweep,
+                     {project.string(), "--sweep", sweep, "--reference", ref.string(), "--out", dir.string(),
+                      "--width", std::to_string(*width), "--height", std::to_string(*height), "--frames",
+                      std::to_string(*frames), "--warmup", std::to_string(*warmup)}) != kOk) {
+                report.failures.push_back("sweep " + q.name + " (" + sweep + ")");
+                status = kFailure;
+                continue;
+            }
+            auto runs = readSweep(dir / "sweep.json", q.name, current);
+            report.runs.insert(report.runs.end(), runs.begin(), runs.end());
+            if (machine.empty()) {
+                std::ifstream in(dir / "sweep.json");
+                const Json j = Json::parse(in, nullptr, false);
+                if (!j.is_discarded())
+                    machine = j.value("machine", "");
+            }
+        }
+        measureRadiosity(report, sceneDir, *width, *height, *spp, double(*radiosityCount));
+        if (!report.failures.empty())
+            status = kFailure;
+        reports.push_back(std::move(report));
+    }
+
+    std::string command = "lpv bench report --out " + outDir.string() + " --scenes " + scenesDir.string() +
+                          " --width " + std::to_string(*width) + " --height " + std::to_string(*height) +
+                          " --frames " + std::to_string(*frames) + " --warmup " + std::to_string(*warmup) +
+                          " --spp " + std::to_string(*spp) + " --radiosity-seconds " +
+                          std::to_string(*radiosityCount);
+    for (const std::string& s : only)
+        command += " --scene " + s;
+    if (quick)
+        command += " --quick";
+    const std::optional<std::string> md = (outDir / "report.md").string(),
+                                     json = (outDir / "report.json").string();
+    if (!writeReportFiles(
+            {{md, reportMarkdown(reports, command, machine)}, {json, reportJson(reports, command, machine)}}))
+        return kFailure;
+    return status;
+}
+
+} // namespace lpv::cli
