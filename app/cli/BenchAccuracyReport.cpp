@@ -60,6 +60,7 @@ JSON, Markdown and plots stay in DIR/NAME/QUESTION/.
   --scenes DIR          Folder with sibenik/sibenik.obj and sponza/sponza.obj
                         (default ../shared/scenes)
   --scene NAME          Only this scene (cornell-box, sibenik, sponza); repeatable
+  --question NAME       Only this question (steps, grid, ...); repeatable
   --quick               Three questions with fewer values, 5 s of radiosity:
                         a smoke run (minutes instead of most of an hour)
   --width N --height N  Image size (default 320x180)
@@ -409,6 +410,7 @@ int benchAccuracyReport(Args args) {
     const fs::path outDir = args.option("--out").value_or("bench-report");
     const fs::path scenesDir = args.option("--scenes").value_or("../shared/scenes");
     const std::vector<std::string> only = args.options("--scene");
+    const std::vector<std::string> onlyQuestions = args.options("--question");
     const bool quick = args.flag("--quick");
     const auto width = parseCount(args.option("--width").value_or("320"), 1);
     const auto height = parseCount(args.option("--height").value_or("180"), 1);
@@ -429,6 +431,9 @@ int benchAccuracyReport(Args args) {
     const auto radiosityCount = parseCount(radiosityText.value_or(quick ? "5" : "160"), 5);
     if (!radiosityCount)
         return usageError("--radiosity-seconds must be a whole number of seconds, at least 5", "bench");
+    for (const std::string& name : onlyQuestions)
+        if (std::ranges::find(kQuestions, name, &Question::name) == kQuestions.end())
+            return usageError("unknown question '" + name + "' (see lpv bench --help)", "bench");
     for (const std::string& name : only)
         if (std::ranges::find(kScenes, name, &SceneSpec::name) == kScenes.end())
             return usageError("unknown scene '" + name + "' (cornell-box, sibenik, sponza)", "bench");
@@ -474,7 +479,8 @@ int benchAccuracyReport(Args args) {
         const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
         for (const Question& q : kQuestions) {
             const std::string& sweep = quick ? q.quickSweep : q.sweep;
-            if (sweep.empty())
+            if (sweep.empty() ||
+                (!onlyQuestions.empty() && std::ranges::find(onlyQuestions, q.name) == onlyQuestions.end()))
                 continue;
             const fs::path dir = sceneDir / q.name;
             if (call(benchSweep,
@@ -507,6 +513,8 @@ int benchAccuracyReport(Args args) {
                           std::to_string(*radiosityCount);
     for (const std::string& s : only)
         command += " --scene " + s;
+    for (const std::string& q : onlyQuestions)
+        command += " --question " + q;
     if (quick)
         command += " --quick";
     const std::optional<std::string> md = (outDir / "report.md").string(),
