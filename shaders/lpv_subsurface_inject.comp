@@ -1,7 +1,7 @@
 #version 450 core
 // Subsurface LPV injection (docs/lpv.md, LpvSubsurfaceReference's
-// injectSubsurface): an RSM texel whose material is translucent (flux.a, the
-// translucency, > 0) is a VPL pointing into the surface, along -normal, with
+// injectSubsurface): an RSM texel whose material is translucent (flux.a =
+// 1 + translucency, rsm.frag) is a VPL pointing into the surface, along -normal, with
 // no offset and flux * translucency, summed in fixed point into the sums the
 // LPV's injection left cleared (lpv_subsurface_resolve.comp reads them).
 // The fixed-point scale is the LPV injection's: flux * translucency never
@@ -13,7 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2DArray uRsmPosition;
 uniform sampler2DArray uRsmNormal;
-uniform sampler2DArray uRsmFlux; // rgb flux, a translucency (rsm.frag)
+uniform sampler2DArray uRsmFlux; // rgb flux, a = 1 + translucency (rsm.frag)
 uniform vec3 uOrigin[6];
 uniform float uCellSize[6];
 
@@ -29,7 +29,7 @@ void main() {
     if (position.w <= 0.0)
         return;
     vec4 fluxTexel = texelFetch(uRsmFlux, texel, 0);
-    float translucency = clamp(fluxTexel.a, 0.0, 1.0);
+    float translucency = clamp(fluxTexel.a - 1.0, 0.0, 1.0);
     if (!(translucency > 0.0))
         return;
     vec3 rawNormal = texelFetch(uRsmNormal, texel, 0).xyz;

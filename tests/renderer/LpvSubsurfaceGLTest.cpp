@@ -24,7 +24,7 @@ namespace ref = lpv::renderer::lpvref;
 namespace {
 
 // One RSM tile (RGBA32F 2D array of one layer, as exact as the CPU's numbers)
-// whose flux alpha carries each texel's translucency, as rsm.frag writes it.
+// whose flux alpha is 1 + each texel's translucency, as rsm.frag writes it.
 struct TranslucentRsm {
     Texture position, normal, flux;
     int tileSize = 0;
@@ -37,7 +37,7 @@ struct TranslucentRsm {
         for (std::size_t i = 0; i < texels.size() && i < count; ++i) {
             p[i] = glm::vec4(texels[i].vpl.position, 1.0f);
             n[i] = glm::vec4(texels[i].vpl.normal, 1.0f);
-            f[i] = glm::vec4(texels[i].vpl.flux, texels[i].translucency);
+            f[i] = glm::vec4(texels[i].vpl.flux, 1.0f + texels[i].translucency);
         }
         auto make = [&](Texture& t, const std::vector<glm::vec4>& data) {
             t = createTexture(GL_TEXTURE_2D_ARRAY);
