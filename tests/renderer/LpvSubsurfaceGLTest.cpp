@@ -9,6 +9,7 @@
 #include "LpvSubsurfacePass.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuTimer.h"
+#include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/renderer/lpv/LpvSubsurfaceReference.h"
 #include "lpv/scene/Primitives.h"
 
@@ -288,6 +289,44 @@ TEST_F(LpvSubsurfaceGLTest, WithoutTranslucentMaterialThePassDoesNotRunAndHoldsN
     EXPECT_TRUE(forced.decision.runs());
     EXPECT_TRUE(forced.timed);
     EXPECT_EQ(forced.hdr, opaque.hdr);
+}
+
+// The forward shader's two builds: with the subsurface sampler (17 in the
+// fragment stage, where GL_MAX_TEXTURE_IMAGE_UNITS allows) and without it
+// (GL's minimum of 16), which ForwardRenderer picks on such a driver.
+TEST_F(LpvSubsurfaceGLTest, ForwardShaderBuildsWithAndWithoutTheSubsurfaceSampler) {
+    auto countSamplers = [](GLuint program) {
+        GLint uniforms = 0, samplers = 0;
+        glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &uniforms);
+        for (GLint i = 0; i < uniforms; ++i) {
+            GLint size = 0;
+            GLenum type = 0;
+            char name[128];
+            glGetActiveUniform(program, GLuint(i), sizeof(name), nullptr, &size, &type, name);
+            samplers += type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_ARRAY ||
+                                type == GL_SAMPLER_2D_ARRAY_SHADOW || type == GL_SAMPLER_CUBE_MAP_ARRAY ||
+                                type == GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW || type == GL_SAMPLER_2D_SHADOW
+                            ? size
+                            : 0;
+        }
+        return samplers;
+    };
+    GLint units = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+    auto without = buildEmbeddedProgram({"forward.vert", "forward.frag"}, {"LPV_NO_SUBSURFACE_SAMPLER 1"});
+    ASSERT_TRUE(without.has_value()) << without.error().describe();
+    EXPECT_EQ(glGetUniformLocation(without->id(), "uLpvSubsurfaceVolume"), -1);
+    const int minimum = countSamplers(without->id());
+    std::cout << "[ figures ] GL_MAX_TEXTURE_IMAGE_UNITS " << units
+              << "; forward.frag samplers without the subsurface "
+              << "volume " << minimum << "\n";
+    EXPECT_LE(minimum, 16) << "the build for GL's minimum must fit it";
+    if (units < 17)
+        GTEST_SKIP() << "this GL cannot build the 17-sampler variant";
+    auto with = buildEmbeddedProgram({"forward.vert", "forward.frag"});
+    ASSERT_TRUE(with.has_value()) << with.error().describe();
+    EXPECT_NE(glGetUniformLocation(with->id(), "uLpvSubsurfaceVolume"), -1);
+    EXPECT_EQ(countSamplers(with->id()), minimum + 1);
 }
 
 } // namespace
