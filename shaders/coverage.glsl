@@ -9,6 +9,7 @@ uniform sampler2D uAlphaMap;        // red channel = alpha, unit 9
 uniform int uAlphaMode;             // 0 opaque, 1 mask, 2 blend
 uniform float uAlphaCutoff;
 uniform float uOpacity;
+uniform float uTranslucency;        // 0..1, light that passes through (subsurface LPV)
 
 // Alpha of the material at `uv` (1 for opaque materials).
 float materialCoverage(vec2 uv) {

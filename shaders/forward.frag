@@ -21,6 +21,7 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "shadow_sampling.glsl"
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
+#include "lpv_subsurface_lookup.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -85,6 +86,9 @@ void main() {
     if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
         radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
+        // Subsurface LPV: light that crossed a translucent material leaves through its other side.
+        if (uTranslucency > 0.0)
+            radiance += diffuseAlbedo / PI * lpvSubsurfaceIrradiance(vWorldPos, n) * uTranslucency;
     }
     if (uShadowCascadeTint != 0 && uSunShadowLight >= 0) {
         const vec3 tints[6] = vec3[6](vec3(1.0, 0.35, 0.35), vec3(0.35, 0.86, 0.35), vec3(0.35, 0.6, 1.0),

@@ -22,7 +22,7 @@ uniform vec3 uSunIrradiance;  // light colour * intensity, W/m^2 on a plane faci
 
 layout(location = 0) out vec4 outPosition; // xyz world position, w = 1 where a surface was seen
 layout(location = 1) out vec4 outNormal;   // xyz world normal facing the sun, w = 1
-layout(location = 2) out vec4 outFlux;     // rgb reflected flux of the texel (W), a = 1
+layout(location = 2) out vec4 outFlux;     // rgb reflected flux of the texel (W), a = 1 + translucency
 
 void main() {
     if (materialCutOut(vUv))
@@ -35,5 +35,7 @@ void main() {
     float intercepted = uAlphaMode == 2 ? materialCoverage(vUv) : 1.0;
     outPosition = vec4(vWorldPos, 1.0);
     outNormal = vec4(n, 1.0);
-    outFlux = vec4(materialAlbedo(vUv) * uSunIrradiance * (vTexelArea * intercepted), 1.0);
+    // a: 1 + the material's translucency for the subsurface LPV, so that a
+    // surface still reads as w != 0 (the debug views' "a surface was seen").
+    outFlux = vec4(materialAlbedo(vUv) * uSunIrradiance * (vTexelArea * intercepted), 1.0 + clamp(uTranslucency, 0.0, 1.0));
 }

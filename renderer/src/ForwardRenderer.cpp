@@ -2,6 +2,7 @@
 
 #include "FrameContext.h"
 #include "LpvPass.h"
+#include "LpvSubsurfacePass.h"
 #include "LpvReuseKey.h"
 #include "SkyHeightPass.h"
 #include "MaterialGpu.h"
@@ -28,6 +29,10 @@ constexpr int kMaxLights = 8;
 // Texture units of the LPV accumulators in the forward pass (after the shadow
 // maps and material textures; 16 samplers in the fragment stage in all).
 constexpr GLuint kLpvFirstUnit = 16;
+// The subsurface LPV's packed accumulator: a 17th fragment sampler, so only
+// where GL_MAX_TEXTURE_IMAGE_UNITS allows it (lpv_subsurface_lookup.glsl).
+constexpr GLuint kLpvSubsurfaceUnit = kLpvFirstUnit + 3;
+constexpr GLint kSamplersWithSubsurface = 17;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
@@ -74,6 +79,9 @@ struct ForwardRenderer::Impl {
     // Sky light injection's top-down depth map, likewise created on first use
     // and dropped again when the sky is not injected.
     std::optional<SkyHeightPass> skyHeight;
+    // The subsurface LPV: created on the first frame that wants it, dropped when not.
+    std::optional<LpvSubsurfacePass> subsurface;
+    bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
     // What the scene's geometry says (open sky...): rays are cast once per scene change.
     std::optional<SceneTraits> traits;
     // What the LPV in the volumes was computed from; bumped / reset on scene changes.
@@ -160,6 +168,10 @@ struct ForwardRenderer::Impl {
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
         lpv->bindForShading(fp, frame.params, kLpvFirstUnit);
+        if (subsurface && lpv->active())
+            subsurface->bindForShading(fp, kLpvSubsurfaceUnit);
+        else if (subsurfaceSampler)
+            LpvSubsurfacePass::bindNone(fp, kLpvSubsurfaceUnit);
         glProgramUniform1i(fp, loc(fp, "uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
         // Opaque and masked items first; blended ones (sorted last, back to
@@ -189,11 +201,13 @@ struct ForwardRenderer::Impl {
     Expected<void> runLpv(const FrameContext& frame) {
         if (!rsm->active()) {
             lpvKey.reset();
+            subsurface.reset();
             lpv->disable("no directional light: nothing to inject");
             return {};
         }
         if (frame.params.getFloat("lpv.intensity") <= 0.0) {
             lpvKey.reset();
+            subsurface.reset();
             lpv->disable("lpv.intensity is 0");
             return {};
         }
@@ -217,6 +231,12 @@ struct ForwardRenderer::Impl {
         EffectDecision sky = decideSkyInjection(frame.scene, *traits, frame.params);
         frameEffects.push_back(decideDirectedPropagation(frame.params, true, ""));
         frameEffects.push_back(sky);
+        EffectDecision sss = decideSubsurface(*traits, frame.params, true, "");
+        if (sss.wanted && !subsurfaceSampler) {
+            sss.wanted = false;
+            sss.reason += "; but this GL has fewer than 17 fragment texture units for its volume";
+        }
+        frameEffects.push_back(sss);
         // Nothing the LPV is computed from changed: the volumes still hold this frame's answer.
         LpvReuseKey key{sceneGeneration, frame.scene.lights, frame.scene.sky, lpvParameterValues(frame.params),
                         input.cascades, settings.occlusion && settings.gvFromCamera && gBufferValid,
@@ -251,9 +271,26 @@ struct ForwardRenderer::Impl {
         }
         auto ran = lpv->run(settings, input, gBufferValid ? &previousCamera : nullptr, frame.timer,
                             skyInput ? &*skyInput : nullptr);
+        if (ran && lpv->active() && sss.runs()) {
+            if (auto ok = runSubsurface(frame, input); !ok)
+                return ok;
+        } else {
+            subsurface.reset(); // a pass that does not run holds no GPU memory
+        }
         if (ran && lpv->active())
             lpvKey = std::move(key);
         return ran;
+    }
+
+    Expected<void> runSubsurface(const FrameContext& frame, const LpvRsmInput& input) {
+        if (!subsurface) {
+            auto created = LpvSubsurfacePass::create();
+            if (!created)
+                return std::unexpected(created.error());
+            subsurface.emplace(std::move(*created));
+        }
+        subsurface->run(LpvSubsurfaceSettings::fromParameters(frame.params), *lpv, input, frame.timer);
+        return {};
     }
 
     void renderTonemap(const FrameContext& frame) {
@@ -282,7 +319,13 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     ForwardRenderer r;
     auto shadows = ShadowPass::create();
     if (!shadows) return std::unexpected(shadows.error());
-    auto forward = buildEmbeddedProgram({"forward.vert", "forward.frag"});
+    GLint fragmentUnits = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
+    r.impl_->subsurfaceSampler = fragmentUnits >= kSamplersWithSubsurface;
+    auto forward = buildEmbeddedProgram({"forward.vert", "forward.frag"},
+                                        r.impl_->subsurfaceSampler
+                                            ? std::vector<std::string>{}
+                                            : std::vector<std::string>{"LPV_NO_SUBSURFACE_SAMPLER 1"});
     if (!forward) return std::unexpected(forward.error());
     auto tonemap = buildEmbeddedProgram({"fullscreen.vert", "tonemap.frag"});
     if (!tonemap) return std::unexpected(tonemap.error());
@@ -328,6 +371,9 @@ int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
+std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
+    return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;
+}
 const std::vector<EffectDecision>& ForwardRenderer::frameEffects() const { return impl_->frameEffects; }
 
 void ForwardRenderer::setShadowCascadeTint(bool on) { impl_->shadowCascadeTint = on; }

@@ -98,6 +98,10 @@ class LpvPass {
     // "lpv-K-accum" (rgb = DC of each channel per cell, slices side by side) and "lpv-K-gv".
     std::vector<DebugImage> debugImages() const;
     std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
+    // For passes that build on this frame's LPV (LpvSubsurfacePass): its
+    // volumes (fixed-point sums and scales) and cascades (empty when inactive).
+    const LpvVolumes& volumes() const { return volumes_; }
+    const std::vector<LpvCascade>& cascades() const { return cascades_; }
 
     // The visualizers' read-back: while a request is set, every run() copies
     // that cascade's volumes at that step to the CPU (a GPU stall, so only

@@ -31,7 +31,7 @@ struct LpvReuseKey {
 // The passes whose parameters make the LPV stale (the registry says which parameters invalidate which passes).
 inline constexpr scene::Pass kLpvPasses = scene::Pass::Rsm | scene::Pass::LpvInjection |
                                           scene::Pass::GeometryVolume | scene::Pass::LpvPropagation |
-                                          scene::Pass::SkyInjection;
+                                          scene::Pass::SkyInjection | scene::Pass::Subsurface;
 
 inline std::vector<scene::ParameterValue> lpvParameterValues(const scene::ParameterSet& params) {
     std::vector<scene::ParameterValue> values;

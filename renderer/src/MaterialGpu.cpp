@@ -17,6 +17,7 @@ struct MaterialGpu::Locations {
         alphaMode = at("uAlphaMode");
         alphaCutoff = at("uAlphaCutoff");
         opacity = at("uOpacity");
+        translucency = at("uTranslucency");
         shadingModel = at("uShadingModel");
         specular = at("uSpecular");
         shininess = at("uShininess");
@@ -34,7 +35,7 @@ struct MaterialGpu::Locations {
         hasNormalMap = at("uHasNormalMap");
         normalMap = at("uNormalMap");
     }
-    GLint diffuse, hasBaseColorMap, baseColorMap, hasAlphaMap, alphaMap, alphaMode, alphaCutoff, opacity;
+    GLint diffuse, hasBaseColorMap, baseColorMap, hasAlphaMap, alphaMap, alphaMode, alphaCutoff, opacity, translucency;
     GLint shadingModel, specular, shininess, hasSpecularMap, specularMap, metallic, roughness,
         hasMetallicRoughnessMap, metallicRoughnessMap, hasOcclusionMap, occlusionMap, emissive, hasEmissiveMap,
         emissiveMap, hasNormalMap, normalMap;
@@ -99,6 +100,7 @@ void MaterialGpu::bind(GLuint program, std::uint32_t material, MaterialBindMode 
     glProgramUniform1i(program, l.alphaMode, alphaMode);
     glProgramUniform1f(program, l.alphaCutoff, m.alphaCutoff);
     glProgramUniform1f(program, l.opacity, m.opacity);
+    glProgramUniform1f(program, l.translucency, std::clamp(m.translucency, 0.0f, 1.0f));
     if (mode != MaterialBindMode::Full)
         return;
 

@@ -112,8 +112,7 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
         sky.reason += "; but the LPV does not run (" + lpv.reason + ")";
     }
     out.push_back(sky);
-    add(decide("Subsurface LPV", "effects.subsurface", params, t.hasTranslucentMaterial,
-               "a visible material is translucent", "no visible material is translucent"));
+    out.push_back(decideSubsurface(t, params, lpv.wanted, lpv.reason));
     add(decide("Glossy LPV reflections", "effects.glossyReflections", params, t.hasGlossyMaterial,
                "a visible material is glossy", "no visible material is glossy"));
     out.push_back(decideSunRays(s, params, camera, aspect));
@@ -127,6 +126,17 @@ EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool
     if (d.wanted && !lpvRuns) {
         d.wanted = false; // forced on, but there is no LPV to direct
         d.reason = "forced on by lpv.directedPropagation, but the LPV does not run (" + lpvReason + ")";
+    }
+    return d;
+}
+
+EffectDecision decideSubsurface(const SceneTraits& t, const scene::ParameterSet& params, bool lpvRuns,
+                                const std::string& lpvReason) {
+    EffectDecision d = decide("Subsurface LPV", "effects.subsurface", params, t.hasTranslucentMaterial,
+                              "a visible material is translucent", "no visible material is translucent");
+    if (d.wanted && !lpvRuns) {
+        d.wanted = false; // injected from the LPV's RSM: without an LPV there is nothing to inject
+        d.reason += "; but the LPV does not run (" + lpvReason + ")";
     }
     return d;
 }

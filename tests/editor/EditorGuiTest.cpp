@@ -344,7 +344,11 @@ TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
     ASSERT_NE(combo, nullptr);
     combo->setCurrentText("on");
     EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "on");
-    EXPECT_TRUE(w.window.effects()->decisions()[std::size_t(row)].wanted);
+    // Forced on, but the subsurface LPV is injected from the LPV's RSM, and without a sun there is none.
+    const auto& forced = w.window.effects()->decisions()[std::size_t(row)];
+    EXPECT_NE(forced.reason.find("forced on by effects.subsurface"), std::string::npos) << forced.reason;
+    EXPECT_NE(forced.reason.find("the LPV does not run"), std::string::npos) << forced.reason;
+    EXPECT_FALSE(forced.runs());
     w.doc().undoStack()->undo();
     EXPECT_EQ(w.doc().parameters().getEnum("effects.subsurface"), "auto");
 }

@@ -93,6 +93,8 @@ public:
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
     // or "LPV: off (no directional light: nothing to inject)".
     std::string lpvNote() const;
+    // GPU memory of the subsurface LPV's volumes (0 while it does not run).
+    std::size_t subsurfaceAllocatedBytes() const;
     // The effect decisions of the last frame, each with its reason: directed
     // propagation and sky light injection (when the LPV ran), then sun rays.
     const std::vector<EffectDecision>& frameEffects() const;

@@ -53,6 +53,11 @@ EffectDecision decideSkyInjection(const scene::Scene& scene, const SceneTraits& 
 EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool lpvRuns,
                                          const std::string& lpvReason);
 
+// The subsurface LPV's decision, given whether the LPV runs (it is a second
+// volume set fed by the same RSM, so it needs the LPV).
+EffectDecision decideSubsurface(const SceneTraits& traits, const scene::ParameterSet& params, bool lpvRuns,
+                                const std::string& lpvReason);
+
 // The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
 std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
                                           const scene::ParameterSet& params, const scene::Camera* camera,
