@@ -124,8 +124,9 @@ struct SceneReport {
     std::string radiosityNote;
 };
 
-int call(int (*command)(Args), std::vector<std::string> args) {
-    std::printf("\n$ lpv");
+// Runs one `lpv` command in this process, echoing it as a user would type it.
+int call(const char* name, int (*command)(Args), std::vector<std::string> args) {
+    std::printf("\n$ lpv %s", name);
     for (const auto& a : args)
         std::printf(" %s", a.c_str());
     std::printf("\n");
@@ -151,7 +152,7 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     fs::remove(project, ec);
     fs::remove_all(fs::path(project).replace_extension(".assets"), ec);
     if (spec.source.empty()) {
-        if (call(runNew, {project.string(), "--template", "cornell-box"}) != kOk)
+        if (call("new", runNew, {project.string(), "--template", "cornell-box"}) != kOk)
             return false;
         // The template is lit by its ceiling spot alone; a sun through the
         // open front, down onto the floor, gives the LPV light to inject.
@@ -176,7 +177,7 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
         std::cerr << "lpv: " << source.string() << ": no such scene file (give --scenes DIR)\n";
         return false;
     }
-    return call(runImport, {source.string(), "-o", project.string()}) == kOk;
+    return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
 }
 
 bool referenceMatches(const fs::path& file, int width, int height) {
@@ -258,9 +259,10 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
     }
     const fs::path ref = dir / "reference-emissive.exr";
     if (!referenceMatches(ref, width, height) &&
-        call(runReference, {emissiveProject.string(), "-o", ref.string(), "--width", std::to_string(width),
-                            "--height", std::to_string(height), "--spp", std::to_string(spp), "--set",
-                            "reference.emissiveLight=true"}) != kOk) {
+        call("reference", runReference,
+             {emissiveProject.string(), "-o", ref.string(), "--width", std::to_string(width), "--height",
+              std::to_string(height), "--spp", std::to_string(spp), "--set",
+              "reference.emissiveLight=true"}) != kOk) {
         report.radiosityNote = "the emissive-light reference failed";
         return;
     }
@@ -291,7 +293,7 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         if (restart)
             args.push_back("--restart");
         restart = false;
-        if (call(runRadiosity, args) != kOk) {
+        if (call("radiosity", runRadiosity, args) != kOk) {
             report.failures.push_back("radiosity run to " + fixed(target, 0) + " s");
             return;
         }
@@ -466,9 +468,9 @@ int benchAccuracyReport(Args args) {
         const fs::path ref = sceneDir / "reference.exr";
         if (referenceMatches(ref, *width, *height))
             std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
-        else if (call(runReference, {project.string(), "-o", ref.string(), "--width", std::to_string(*width),
-                                     "--height", std::to_string(*height), "--spp", std::to_string(*spp)}) !=
-                 kOk) {
+        else if (call("reference", runReference,
+                      {project.string(), "-o", ref.string(), "--width", std::to_string(*width), "--height",
+                       std::to_string(*height), "--spp", std::to_string(*spp)}) != kOk) {
             report.failures.push_back("tracing the reference");
             reports.push_back(report);
             status = kFailure;
@@ -483,7 +485,7 @@ int benchAccuracyReport(Args args) {
                 (!onlyQuestions.empty() && std::ranges::find(onlyQuestions, q.name) == onlyQuestions.end()))
                 continue;
             const fs::path dir = sceneDir / q.name;
-            if (call(benchSweep,
+            if (call("bench", benchSweep,
                      {project.string(), "--sweep", sweep, "--reference", ref.string(), "--out", dir.string(),
                       "--width", std::to_string(*width), "--height", std::to_string(*height), "--frames",
                       std::to_string(*frames), "--warmup", std::to_string(*warmup)}) != kOk) {
