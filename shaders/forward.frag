@@ -21,6 +21,7 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "shadow_sampling.glsl"
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
+#include "lpv_glossy.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -85,6 +86,11 @@ void main() {
     if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
         radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
+    }
+    // Glossy reflections: the LPV ray-marched along the reflection vector (lpv_glossy.glsl).
+    if (uOutputView == 0 && lpvGlossyRuns(uGlossiness)) {
+        vec3 f0 = uShadingModel == 1 ? mix(vec3(0.04), s.albedo, s.metallic) : max(s.specular, vec3(0.04));
+        radiance += lpvGlossyReflection(vWorldPos, n, v, f0, uGlossiness) * s.occlusion;
     }
     if (uShadowCascadeTint != 0 && uSunShadowLight >= 0) {
         const vec3 tints[6] = vec3[6](vec3(1.0, 0.35, 0.35), vec3(0.35, 0.86, 0.35), vec3(0.35, 0.6, 1.0),

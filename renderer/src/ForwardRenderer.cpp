@@ -1,6 +1,7 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include "FrameContext.h"
+#include "GlossyReflections.h"
 #include "LpvPass.h"
 #include "LpvReuseKey.h"
 #include "SkyHeightPass.h"
@@ -81,6 +82,7 @@ struct ForwardRenderer::Impl {
     std::optional<LpvReuseKey> lpvKey;
     std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
+    bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
@@ -160,6 +162,7 @@ struct ForwardRenderer::Impl {
         setLightUniforms(fp, frame.scene);
         shadows->bindForShading(fp, frame, 0);
         lpv->bindForShading(fp, frame.params, kLpvFirstUnit);
+        bindGlossyReflections(fp, frame.params, glossyRuns);
         glProgramUniform1i(fp, loc(fp, "uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
         // Opaque and masked items first; blended ones (sorted last, back to
@@ -371,6 +374,10 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.frameEffects.clear();
     if (auto ok = d.runLpv(frame); !ok)
         return ok;
+    if (!d.traits)
+        d.traits = analyseSceneTraits(scene);
+    d.frameEffects.push_back(decideGlossyReflections(*d.traits, params, d.lpv->active(), d.lpv->note()));
+    d.glossyRuns = d.frameEffects.back().runs();
     d.renderForward(frame);
     d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};
