@@ -96,7 +96,7 @@ std::vector<ParameterInfo> declareParameters() {
                P::GlossyReflections | P::Shading),
         integer("effects.glossySteps", 16, 1, 128, "steps", "Effects",
                 "Ray-march steps for glossy LPV reflections", P::GlossyReflections | P::Shading),
-        real("effects.glossyThreshold", 0.1, 0.0, 1.0, "", "Effects",
+        real("effects.glossyThreshold", 0.5, 0.0, 1.0, "", "Effects",
              "Materials with a glossiness at or below this get no LPV reflection (and do not make auto run "
              "it)",
              P::GlossyReflections | P::Shading),
