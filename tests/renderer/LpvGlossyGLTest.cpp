@@ -143,3 +143,34 @@ TEST_F(LpvGlossyGLTest, MarchMatchesTheCpuTwin) {
     EXPECT_LT(relative, 1e-4f);
     EXPECT_LT(worstReflectance, 1e-5f);
 }
+
+// The march reuses the diffuse lookup's accumulator samplers: the forward
+// program's fragment stage must stay within the 16 units GL 4.5 guarantees.
+TEST_F(LpvGlossyGLTest, ForwardPassAddsNoSampler) {
+    auto program = buildEmbeddedProgram({"forward.vert", "forward.frag"});
+    ASSERT_TRUE(program.has_value()) << program.error().describe();
+    const GLuint p = program->id();
+    GLint count = 0;
+    glGetProgramInterfaceiv(p, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+    int samplers = 0;
+    bool glossyActive = false;
+    for (GLint i = 0; i < count; ++i) {
+        const GLenum props[] = {GL_TYPE, GL_ARRAY_SIZE, GL_REFERENCED_BY_FRAGMENT_SHADER};
+        GLint values[3] = {};
+        glGetProgramResourceiv(p, GL_UNIFORM, GLuint(i), 3, props, 3, nullptr, values);
+        char name[128] = {};
+        glGetProgramResourceName(p, GL_UNIFORM, GLuint(i), sizeof name, nullptr, name);
+        glossyActive |= std::string(name) == "uGlossySteps";
+        const GLenum type = GLenum(values[0]);
+        const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_ARRAY ||
+                             type == GL_SAMPLER_2D_ARRAY_SHADOW || type == GL_SAMPLER_2D_SHADOW ||
+                             type == GL_SAMPLER_CUBE || type == GL_SAMPLER_CUBE_SHADOW ||
+                             type == GL_SAMPLER_CUBE_MAP_ARRAY || type == GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW;
+        if (sampler && values[2] != 0)
+            samplers += values[1];
+    }
+    std::cout << "[ figures ] forward.frag: " << samplers << " samplers\n";
+    EXPECT_TRUE(glossyActive) << "the march is compiled into the forward pass";
+    EXPECT_LE(samplers, 16);
+    EXPECT_GT(samplers, 0);
+}
