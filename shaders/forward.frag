@@ -22,6 +22,7 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
+#include "lpv_glossy.glsl"
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -89,6 +90,11 @@ void main() {
         // Subsurface LPV: light that crossed a translucent material leaves through its other side.
         if (uTranslucency > 0.0)
             radiance += diffuseAlbedo / PI * lpvSubsurfaceIrradiance(vWorldPos, n) * uTranslucency;
+    }
+    // Glossy reflections: the LPV ray-marched along the reflection vector (lpv_glossy.glsl).
+    if (uOutputView == 0 && lpvGlossyRuns(uGlossiness)) {
+        vec3 f0 = uShadingModel == 1 ? mix(vec3(0.04), s.albedo, s.metallic) : max(s.specular, vec3(0.04));
+        radiance += lpvGlossyReflection(vWorldPos, n, v, f0, uGlossiness) * s.occlusion;
     }
     if (uShadowCascadeTint != 0 && uSunShadowLight >= 0) {
         const vec3 tints[6] = vec3[6](vec3(1.0, 0.35, 0.35), vec3(0.35, 0.86, 0.35), vec3(0.35, 0.6, 1.0),

@@ -1,6 +1,7 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include "FrameContext.h"
+#include "GlossyReflections.h"
 #include "LpvPass.h"
 #include "LpvSubsurfacePass.h"
 #include "LpvReuseKey.h"
@@ -89,6 +90,7 @@ struct ForwardRenderer::Impl {
     std::optional<LpvReuseKey> lpvKey;
     std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
+    bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
@@ -172,6 +174,7 @@ struct ForwardRenderer::Impl {
             subsurface->bindForShading(fp, kLpvSubsurfaceUnit);
         else if (subsurfaceSampler)
             LpvSubsurfacePass::bindNone(fp, kLpvSubsurfaceUnit);
+        bindGlossyReflections(fp, frame.params, glossyRuns);
         glProgramUniform1i(fp, loc(fp, "uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
         const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
         // Opaque and masked items first; blended ones (sorted last, back to
@@ -417,6 +420,10 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.frameEffects.clear();
     if (auto ok = d.runLpv(frame); !ok)
         return ok;
+    if (!d.traits)
+        d.traits = analyseSceneTraits(scene);
+    d.frameEffects.push_back(decideGlossyReflections(*d.traits, params, d.lpv->active(), d.lpv->note()));
+    d.glossyRuns = d.frameEffects.back().runs();
     d.renderForward(frame);
     d.previousCamera = {d.depth.id(), d.gNormal.id(), glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};

@@ -116,6 +116,9 @@ void MaterialGpu::bind(GLuint program, std::uint32_t material, MaterialBindMode 
     glProgramUniform3fv(program, l.emissive, 1, glm::value_ptr(m.emissive));
     texture(l.hasEmissiveMap, l.emissiveMap, kEmissiveUnit, t.emissive);
     texture(l.hasNormalMap, l.normalMap, kNormalUnit, t.normal);
+    // Glossy LPV reflections (shaders/lpv_glossy.glsl); a program without them ignores location -1.
+    glProgramUniform1f(program, glGetUniformLocation(program, "uGlossiness"),
+                       std::clamp(m.glossiness, 0.0f, 1.0f));
 }
 
 } // namespace lpv::renderer

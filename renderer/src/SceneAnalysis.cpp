@@ -2,7 +2,9 @@
 
 #include "lpv/scene/Picking.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace lpv::renderer {
@@ -59,6 +61,7 @@ SceneTraits analyseSceneTraits(const scene::Scene& s) {
             continue;
         t.hasTranslucentMaterial |= s.materials[m].translucency > 0.0f;
         t.hasGlossyMaterial |= s.materials[m].glossiness > 0.0f;
+        t.maxGlossiness = std::max(t.maxGlossiness, s.materials[m].glossiness);
     }
     const scene::Bounds b = s.worldBounds();
     if (b.empty())
@@ -113,8 +116,7 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     }
     out.push_back(sky);
     out.push_back(decideSubsurface(t, params, lpv.wanted, lpv.reason));
-    add(decide("Glossy LPV reflections", "effects.glossyReflections", params, t.hasGlossyMaterial,
-               "a visible material is glossy", "no visible material is glossy"));
+    out.push_back(decideGlossyReflections(t, params, lpv.wanted, lpv.reason));
     out.push_back(decideSunRays(s, params, camera, aspect));
     return out;
 }
@@ -153,6 +155,26 @@ EffectDecision decideSkyInjection(const scene::Scene& s, const SceneTraits& t, c
     if (d.wanted && !skyLit) {
         d.wanted = false;
         d.reason = "forced on by effects.skyInjection, but the sky's intensity is 0";
+    }
+    return d;
+}
+
+EffectDecision decideGlossyReflections(const SceneTraits& t, const scene::ParameterSet& params, bool lpvRuns,
+                                       const std::string& lpvReason) {
+    const float threshold = params.getFloat("effects.glossyThreshold");
+    char glossiness[64];
+    std::snprintf(glossiness, sizeof glossiness, "glossiness up to %.2f, threshold %.2f",
+                  double(t.maxGlossiness), double(threshold));
+    const bool glossy = t.maxGlossiness > threshold;
+    EffectDecision d =
+        decide("Glossy LPV reflections", "effects.glossyReflections", params, glossy && lpvRuns,
+               std::string("a visible material is glossy (") + glossiness +
+                   "): the LPV is ray-marched along its reflections",
+               !glossy ? std::string("no visible material is glossy enough (") + glossiness + ")"
+                       : "the LPV does not run (" + lpvReason + ")");
+    if (d.wanted && !lpvRuns) {
+        d.wanted = false; // forced on, but there is no LPV to march through
+        d.reason = "forced on by effects.glossyReflections, but the LPV does not run (" + lpvReason + ")";
     }
     return d;
 }

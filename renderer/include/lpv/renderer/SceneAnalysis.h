@@ -32,6 +32,8 @@ struct SceneTraits {
     // (0 = closed room, near 1 = open ground); see SceneAnalysis.cpp.
     float openSkyFraction = 0.0f;
     int skyProbes = 0;
+    // The largest glossiness of a visible material (auto compares it with effects.glossyThreshold).
+    float maxGlossiness = 0.0f;
 };
 
 // A share of open sky above which `auto` injects sky light.
@@ -57,6 +59,9 @@ EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool
 // volume set fed by the same RSM, so it needs the LPV).
 EffectDecision decideSubsurface(const SceneTraits& traits, const scene::ParameterSet& params, bool lpvRuns,
                                 const std::string& lpvReason);
+// Glossy LPV reflections' decision, given whether the LPV runs (they march through it).
+EffectDecision decideGlossyReflections(const SceneTraits& traits, const scene::ParameterSet& params,
+                                       bool lpvRuns, const std::string& lpvReason);
 
 // The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
 std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
