@@ -101,13 +101,6 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
                                         : "lpv.intensity is 0";
     out.push_back(lpv);
 
-    auto add = [&](EffectDecision d) {
-        // The thesis' extensions are issue #6; until a pass exists, say so rather than pretend it runs.
-        d.implemented = false;
-        if (d.wanted)
-            d.reason += "; the pass is not implemented yet (issue #6)";
-        out.push_back(std::move(d));
-    };
     out.push_back(decideDirectedPropagation(params, lpv.wanted, lpv.reason));
     EffectDecision sky = decideSkyInjection(s, t, params);
     if (sky.wanted && !lpv.wanted) {
