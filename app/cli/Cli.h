@@ -46,6 +46,7 @@ int runDump(Args args); // `lpv dump`, in DumpCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
+int benchFlicker(Args args); // `lpv bench PROJECT --flicker`, in BenchFlickerCommand.cpp
 
 void printRenderHelp();
 void printParamsHelp();
