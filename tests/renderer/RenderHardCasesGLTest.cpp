@@ -141,8 +141,11 @@ TEST_F(HardCaseRenderGLTest, GrazingSunStaysFiniteAndBelowOneBounce) {
     EXPECT_GT(mean[0], 0.0); // the wall still reflects the grazing sun onto the floor
     // One bounce off Lambertian surfaces of albedo 0.8 lit by irradiance <= 1
     // gives irradiance <= 0.8 (radiance <= 0.8 / pi from every direction).
-    // Measured peaks xx / xx; the LPV's coarse cells may overshoot near the
-    // wall's foot, so the bound is the physical one, not a tighter one.
+    // Measured peaks 0.267 / 0.344 and means 0.116 / 0.147 (sun 1 / 45
+    // degrees up). The bound is the physical one rather than the measured
+    // value plus a margin: the LPV's coarse cells can overshoot near the
+    // wall's foot, which is an accuracy question (docs/reference.md), not
+    // a numerical one.
     EXPECT_LT(peak[0], kAlbedo);
     EXPECT_LT(peak[1], kAlbedo);
 }
@@ -193,7 +196,7 @@ TEST_F(HardCaseRenderGLTest, NanInfAndZeroAreaTrianglesRenderFinite) {
     scene::Mesh mesh;
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     mesh.positions = {{-4, 0, -4}, {4, 0, -4}, {4, 0, 4},   {-4, 0, 4},       {-4, 0, 2}, {4, 0, 2}, {4, 3, 2},
-                      {-4, 3, 2},  {nan, 1, 0}, {0, inf, 0}, {1e38f, -1e38f, 1e38f}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
+                      {-4, 3, 2},  {nan, 1, 0}, {0, inf, 0}, {-inf, 0, nan}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
     mesh.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1},
                     {0, 0, -1}, {nan, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     mesh.indices = {0, 2, 1, 0, 3, 2, 4, 6, 5, 4, 7, 6, 8, 9, 10, 8, 0, 1, 9, 1, 2, 11, 12, 13, 11, 11, 12};
@@ -231,6 +234,7 @@ TEST_F(HardCaseRenderGLTest, CascadeBoundaryOnABrightWallLeavesABoundedSeam) {
     ASSERT_GE(cascades.size(), 2u);
     // Profile of the indirect light on the wall face (normal -x), 0.5..2.5 m high, by z.
     constexpr float kStrip = 0.1f, kZ0 = -8.0f;
+    constexpr int kMinPixels = 35;
     std::vector<double> sum(160, 0.0);
     std::vector<int> count(160, 0);
     for (int y = 0; y < kHeight; ++y)
@@ -260,7 +264,9 @@ TEST_F(HardCaseRenderGLTest, CascadeBoundaryOnABrightWallLeavesABoundedSeam) {
     double seam = 0.0;
     int boundaries = 0;
     for (int b = 0; b + 1 < int(sum.size()); ++b) {
-        if (count[std::size_t(b)] < 4 || count[std::size_t(b) + 1] < 4)
+        // Far away a strip is a few pixels that land on the bright or the dark
+        // side of the LPV's cell-scale pattern; near strips average it out.
+        if (count[std::size_t(b)] < kMinPixels || count[std::size_t(b) + 1] < kMinPixels)
             continue;
         const double a = sum[std::size_t(b)] / count[std::size_t(b)];
         const double c = sum[std::size_t(b) + 1] / count[std::size_t(b) + 1];
@@ -281,6 +287,12 @@ TEST_F(HardCaseRenderGLTest, CascadeBoundaryOnABrightWallLeavesABoundedSeam) {
     std::cout << "[ figures ] wall across " << cascades.size() << " cascades: largest jump between 10 cm strips at a "
               << "boundary " << seam << ", 90th percentile elsewhere " << typical << ", largest elsewhere "
               << elsewhere.back() << "\n";
-    // Measured xx at a boundary and xx elsewhere (90th percentile).
-    EXPECT_LT(seam, 1.0);
+    // Measured 5.6% at the boundaries (cascades 0|1 at z = -3.6 and 1|2 at
+    // z = -0.2) against 11% for the 90th percentile of the other strips
+    // (the LPV's own cell-scale pattern, 0.25 m cells): the handover adds no
+    // step that stands out. Bounds: below that pattern's 90th percentile,
+    // and under 8% (the measured 5.6% plus 40% for other rasterisers'
+    // pixel coverage of the strips).
+    EXPECT_LT(seam, typical);
+    EXPECT_LT(seam, 0.08);
 }
