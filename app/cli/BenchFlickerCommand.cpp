@@ -51,7 +51,7 @@ namespace {
 
 struct FlickerRun {
     std::vector<Setting> settings;
-    double meanFlicker = 0.0; // mean over pairs of the mean relative change
+    double meanFlicker = 0.0;  // mean over pairs of the mean relative change
     double worstFlicker = 0.0; // largest per-pair mean
     double p95Flicker = 0.0;   // mean over pairs of the 95th percentile
     double keptFraction = 0.0; // kept pixels / pixels with geometry, mean over pairs
@@ -87,8 +87,9 @@ std::string flickerMarkdown(const std::vector<FlickerRun>& runs, const std::stri
                             const std::string& machine, const std::string& motion) {
     std::ostringstream out;
     char buf[512];
-    out << "# Flicker of the indirect light\n\n`" << command << "`\n\nMachine: " << machine << "\n\nMotion: "
-        << motion << "\n\n| settings | flicker mean | worst pair | p95 | pixels kept | total GPU ms | indirect "
+    out << "# Flicker of the indirect light\n\n`" << command << "`\n\nMachine: " << machine
+        << "\n\nMotion: " << motion
+        << "\n\n| settings | flicker mean | worst pair | p95 | pixels kept | total GPU ms | indirect "
         << "MARE |\n|---|---:|---:|---:|---:|---:|---:|\n";
     for (const FlickerRun& r : runs) {
         std::snprintf(buf, sizeof buf, "| %s | %.2f%% | %.2f%% | %.2f%% | %.0f%% | %.3f | %s |\n",
@@ -104,8 +105,9 @@ std::string flickerCsv(const std::vector<FlickerRun>& runs) {
     std::ostringstream out;
     out << "settings,flicker_mean,flicker_worst_pair,flicker_p95,kept_fraction,total_ms,indirect_mare\n";
     for (const FlickerRun& r : runs)
-        out << '"' << label(r.settings) << "\"," << r.meanFlicker << "," << r.worstFlicker << "," << r.p95Flicker
-            << "," << r.keptFraction << "," << r.totalMs << "," << (r.mare ? std::to_string(*r.mare) : "") << "\n";
+        out << '"' << label(r.settings) << "\"," << r.meanFlicker << "," << r.worstFlicker << ","
+            << r.p95Flicker << "," << r.keptFraction << "," << r.totalMs << ","
+            << (r.mare ? std::to_string(*r.mare) : "") << "\n";
     return out.str();
 }
 
@@ -132,7 +134,8 @@ int benchFlicker(Args args) {
     if (pos.size() != 1)
         return usageError("bench --flicker expects exactly one project file", "bench");
     if (!width || !height || !frames || !fps)
-        return usageError("--width, --height and --fps must be positive integers, --frames at least 2", "bench");
+        return usageError("--width, --height and --fps must be positive integers, --frames at least 2",
+                          "bench");
     if (pathName.has_value() == sunRotate.has_value())
         return usageError("bench --flicker needs either --path NAME or --sun-rotate DEG", "bench");
     float degrees = 0.0f;
@@ -168,14 +171,17 @@ int benchFlicker(Args args) {
         motion = "camera path '" + *pathName + "', " + std::to_string(*frames) + " frames at " +
                  std::to_string(*fps) + " fps from its start";
     } else {
-        if (std::ranges::none_of(setup->project.scene.lights,
-                                 [](const scene::Light& l) { return l.type == scene::LightType::Directional; })) {
+        if (std::ranges::none_of(setup->project.scene.lights, [](const scene::Light& l) {
+                return l.type == scene::LightType::Directional;
+            })) {
             std::cerr << "lpv: " << request.projectFile << ": --sun-rotate needs a directional light\n";
             return kFailure;
         }
         char buf[160];
-        std::snprintf(buf, sizeof buf, "fixed camera, sun turning %g degrees about the vertical in %d frames (%.3g "
-                      "per frame)", double(degrees), *frames, double(degrees) / double(*frames - 1));
+        std::snprintf(buf, sizeof buf,
+                      "fixed camera, sun turning %g degrees about the vertical in %d frames (%.3g "
+                      "per frame)",
+                      double(degrees), *frames, double(degrees) / double(*frames - 1));
         motion = buf;
     }
     std::optional<reference::ReferenceImage> ref;
@@ -186,8 +192,8 @@ int benchFlicker(Args args) {
             return kFailure;
         }
         if (loaded->image.width != *width || loaded->image.height != *height) {
-            std::cerr << "lpv: " << *referenceFile << " is " << loaded->image.width << "x" << loaded->image.height
-                      << "; give the same --width and --height\n";
+            std::cerr << "lpv: " << *referenceFile << " is " << loaded->image.width << "x"
+                      << loaded->image.height << "; give the same --width and --height\n";
             return kFailure;
         }
         ref = std::move(loaded->image);
@@ -232,8 +238,8 @@ int benchFlicker(Args args) {
             const glm::mat4 viewProjection = setup->camera.projection(aspect) * setup->camera.view();
             position[k] = reference::positionsFromDepth(setup->renderer->readDepth(), *width, *height,
                                                         glm::inverse(viewProjection));
-            frame[k] = {*width, *height, &indirect[k], &position[k], &normal[k], viewProjection,
-                        setup->camera.position};
+            frame[k] = {*width,     *height,        &indirect[k],          &position[k],
+                        &normal[k], viewProjection, setup->camera.position};
             if (i == 0 && ref)
                 run.mare = reference::compareImages({*width, *height, &indirect[0]},
                                                     {ref->width, ref->height, &ref->indirectMulti},
@@ -277,8 +283,9 @@ int benchFlicker(Args args) {
         command += " --set " + s;
     if (referenceFile)
         command += " --reference " + *referenceFile;
-    if (!writeReportFiles({{csv, flickerCsv(runs)},
-                           {md, flickerMarkdown(runs, command, describeMachine(gl.renderer, gl.version), motion)}}))
+    if (!writeReportFiles(
+            {{csv, flickerCsv(runs)},
+             {md, flickerMarkdown(runs, command, describeMachine(gl.renderer, gl.version), motion)}}))
         return kFailure;
     return kOk;
 }

@@ -25,10 +25,12 @@ bool hasGeometry(const FlickerFrame& f, std::size_t i) {
 
 } // namespace
 
-FlickerResult measureFlicker(const FlickerFrame& previous, const FlickerFrame& current, const FlickerOptions& options) {
+FlickerResult measureFlicker(const FlickerFrame& previous, const FlickerFrame& current,
+                             const FlickerOptions& options) {
     assert(previous.indirect && previous.position && previous.normal);
     assert(current.indirect && current.position && current.normal);
-    assert(previous.indirect->size() == pixelCount(previous) && current.indirect->size() == pixelCount(current));
+    assert(previous.indirect->size() == pixelCount(previous) &&
+           current.indirect->size() == pixelCount(current));
     FlickerResult result;
     struct Pair {
         double now, before;
@@ -57,7 +59,8 @@ FlickerResult measureFlicker(const FlickerFrame& previous, const FlickerFrame& c
                 continue; // another surface was in front (disocclusion) or the silhouette moved
             if (glm::dot((*previous.normal)[j], (*current.normal)[i]) < options.normalCosTolerance)
                 continue;
-            pairs.push_back({double(luminance((*current.indirect)[i])), double(luminance((*previous.indirect)[j]))});
+            pairs.push_back(
+                {double(luminance((*current.indirect)[i])), double(luminance((*previous.indirect)[j]))});
         }
     result.pixels = pairs.size();
     if (pairs.empty())

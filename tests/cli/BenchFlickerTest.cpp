@@ -44,14 +44,15 @@ class BenchFlicker : public ::testing::Test {
         fs::create_directories(dir_);
         project_ = dir_ / "box.lpvproj";
         const RunResult imported =
-            runLpv("import '" + (fs::path(kSharedScenesDir) / "gltf-small/Box/glTF/Box.gltf").string() + "' -o '" +
-                   project_.string() + "'");
+            runLpv("import '" + (fs::path(kSharedScenesDir) / "gltf-small/Box/glTF/Box.gltf").string() +
+                   "' -o '" + project_.string() + "'");
         ASSERT_EQ(imported.exitCode, 0) << imported.output;
     }
     void TearDown() override { fs::remove_all(dir_); }
 
     RunResult bench(const std::string& options) {
-        return runLpv("bench '" + project_.string() + "' --flicker --width 64 --height 48 --set lpv.gridSize=16 " +
+        return runLpv("bench '" + project_.string() +
+                      "' --flicker --width 64 --height 48 --set lpv.gridSize=16 " +
                       "--set shadow.mapSize=256 " + options);
     }
 
@@ -62,8 +63,8 @@ class BenchFlicker : public ::testing::Test {
 
 TEST_F(BenchFlicker, StaticSceneHasNoFlickerAndATurningSunHasSome) {
     const fs::path csv = dir_ / "flicker.csv", md = dir_ / "flicker.md";
-    const RunResult still = bench("--sun-rotate 0 --frames 3 --set rsm.tileSize=32,64 --csv '" + csv.string() +
-                                  "' --markdown '" + md.string() + "'");
+    const RunResult still = bench("--sun-rotate 0 --frames 3 --set rsm.tileSize=32,64 --csv '" +
+                                  csv.string() + "' --markdown '" + md.string() + "'");
     ASSERT_EQ(still.exitCode, 0) << still.output;
     const std::vector<double> zero = flickerColumn(readText(csv));
     ASSERT_EQ(zero.size(), 2u) << readText(csv); // one row per swept value

@@ -27,10 +27,12 @@ class CachedFormFactors final : public radiosity::FormFactorSource {
             all[i] = i;
         EXPECT_TRUE(cpu.compute(all, rows_).has_value());
     }
-    scene::Expected<void> compute(std::span<const std::uint32_t> shooters, std::vector<float>& factors) override {
+    scene::Expected<void> compute(std::span<const std::uint32_t> shooters,
+                                  std::vector<float>& factors) override {
         factors.resize(shooters.size() * n_);
         for (std::size_t s = 0; s < shooters.size(); ++s)
-            std::copy_n(rows_.begin() + std::ptrdiff_t(shooters[s] * n_), n_, factors.begin() + std::ptrdiff_t(s * n_));
+            std::copy_n(rows_.begin() + std::ptrdiff_t(shooters[s] * n_), n_,
+                        factors.begin() + std::ptrdiff_t(s * n_));
         return {};
     }
     const char* name() const override { return "cached-cpu-reference"; }
@@ -165,8 +167,8 @@ TEST(HardCaseRadiosity, TinyPatchesMatchTheUnitBoxAndKeepTheBalance) {
     }
     const double balance = balanceError(*tiny);
     std::cout << "[ figures ] tiny patches (" << tinyMesh->size() << " of area <= " << worstArea
-              << "): worst relative difference to the unit box " << worstPatch << ", balance error " << balance
-              << "\n";
+              << "): worst relative difference to the unit box " << worstPatch << ", balance error "
+              << balance << "\n";
     EXPECT_LE(worstArea, 1.0001e-4);
     // Measured 1.4e-4: the form factors agree to float rounding, but both
     // solves stop at 1e-3 unshot and rounding can change which of two equal
@@ -178,6 +180,7 @@ TEST(HardCaseRadiosity, TinyPatchesMatchTheUnitBoxAndKeepTheBalance) {
     // And the solution is the analytic one: mean reflected radiosity
     // rho / (1 - rho) / 6 less the 0.1% unshot; measured as printed.
     const double mean = wallStats(*tiny).mean / (rho / (1.0 - rho) / 6.0);
-    std::cout << "[ figures ] tiny patches: mean reflected radiosity " << mean << " of the analytic equilibrium\n";
+    std::cout << "[ figures ] tiny patches: mean reflected radiosity " << mean
+              << " of the analytic equilibrium\n";
     EXPECT_NEAR(mean, 1.0 - 1e-3, 2e-3);
 }

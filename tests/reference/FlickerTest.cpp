@@ -24,8 +24,7 @@ struct Synthetic {
 // Ray-casts the floor y = 0 and, if `box`, the top face y = 1 of the box
 // |x| < 1, |z| < 1 (its sides are left out: a floating plate is enough to hide
 // floor pixels). Indirect light = light(position).
-template <class Light>
-Synthetic look(const glm::vec3& eye, bool box, Light&& light) {
+template <class Light> Synthetic look(const glm::vec3& eye, bool box, Light&& light) {
     Synthetic s;
     s.eye = eye;
     const glm::mat4 view = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 0, -1));
@@ -35,8 +34,8 @@ Synthetic look(const glm::vec3& eye, bool box, Light&& light) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            const glm::vec4 ndc((float(x) + 0.5f) / kW * 2.0f - 1.0f, 1.0f - (float(y) + 0.5f) / kH * 2.0f, 1.0f,
-                                1.0f);
+            const glm::vec4 ndc((float(x) + 0.5f) / kW * 2.0f - 1.0f, 1.0f - (float(y) + 0.5f) / kH * 2.0f,
+                                1.0f, 1.0f);
             glm::vec4 far = inv * ndc;
             const glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - eye);
             glm::vec3 hit(nan), n(0.0f);

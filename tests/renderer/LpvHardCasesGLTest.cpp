@@ -21,8 +21,8 @@ namespace {
 
 using Volume = std::array<std::vector<glm::vec4>, 3>;
 
-constexpr LpvVariant kVariants[] = {LpvVariant::ComputeGather, LpvVariant::ComputeScatter, LpvVariant::RasterGather,
-                                    LpvVariant::RasterScatter};
+constexpr LpvVariant kVariants[] = {LpvVariant::ComputeGather, LpvVariant::ComputeScatter,
+                                    LpvVariant::RasterGather, LpvVariant::RasterScatter};
 
 bool allFinite(const Volume& volume) {
     for (const auto& channel : volume)
@@ -171,38 +171,40 @@ TEST_F(HardCaseLpvGLTest, DimLightScalesLinearlyAndDenormalsStayFinite) {
     const ref::GridFrame grid{glm::vec3(0.0f), 1.0f, 16};
     auto point = [](float flux) {
         std::vector<Texel> t;
-        for (const glm::vec3 n : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0),
-                                  glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)})
+        for (const glm::vec3 n : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0),
+                                  glm::vec3(0, -1, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)})
             t.push_back({glm::vec3(8.5f), n, glm::vec3(flux)});
         return t;
     };
     const FakeRsm bright(3, {point(1.0f)}), tiny(3, {point(1e-36f)});
     for (const float flux : {1e-6f, 1e-25f})
-    for (LpvVariant variant : kVariants) {
-        const FakeRsm dim(3, {point(flux)});
-        const Volume a = run(grid, 0.01f, bright, variant, 8, false, 0.0f);
-        const Volume b = run(grid, 0.01f, dim, variant, 8, false, 0.0f);
-        ASSERT_TRUE(allFinite(b)) << lpvVariantName(variant);
-        float maxA = 0.0f;
-        for (const glm::vec4& v : a[0])
-            maxA = std::max(maxA, std::abs(v.x));
-        double worst = 0.0;
-        int reached = 0;
-        for (std::size_t i = 0; i < a[0].size(); ++i) {
-            if (std::abs(a[0][i].x) < 1e-4f * maxA)
-                continue; // cells the light hardly reaches: relative error means nothing there
-            ++reached;
-            worst = std::max(worst, std::abs(double(b[0][i].x) / double(flux) - double(a[0][i].x)) / std::abs(a[0][i].x));
+        for (LpvVariant variant : kVariants) {
+            const FakeRsm dim(3, {point(flux)});
+            const Volume a = run(grid, 0.01f, bright, variant, 8, false, 0.0f);
+            const Volume b = run(grid, 0.01f, dim, variant, 8, false, 0.0f);
+            ASSERT_TRUE(allFinite(b)) << lpvVariantName(variant);
+            float maxA = 0.0f;
+            for (const glm::vec4& v : a[0])
+                maxA = std::max(maxA, std::abs(v.x));
+            double worst = 0.0;
+            int reached = 0;
+            for (std::size_t i = 0; i < a[0].size(); ++i) {
+                if (std::abs(a[0][i].x) < 1e-4f * maxA)
+                    continue; // cells the light hardly reaches: relative error means nothing there
+                ++reached;
+                worst = std::max(worst, std::abs(double(b[0][i].x) / double(flux) - double(a[0][i].x)) /
+                                            std::abs(a[0][i].x));
+            }
+            std::cout << "[ figures ] " << flux << " W point, " << lpvVariantName(variant)
+                      << ", 8 steps: " << reached
+                      << " cells reached, worst |dim / flux - bright| / bright = " << worst << "\n";
+            EXPECT_GT(reached, 100);
+            // Measured at most 1.8e-6 (computeScatter at 1e-6 W): the fixed-point
+            // sums scale with the brightest texel, so the relative rounding is
+            // the same at any flux; 2e-5 leaves 10x, while losing the light to
+            // underflow or a fixed step would be an error near 1.
+            EXPECT_LT(worst, 2e-5) << lpvVariantName(variant);
         }
-        std::cout << "[ figures ] " << flux << " W point, " << lpvVariantName(variant) << ", 8 steps: " << reached
-                  << " cells reached, worst |dim / flux - bright| / bright = " << worst << "\n";
-        EXPECT_GT(reached, 100);
-        // Measured at most 1.8e-6 (computeScatter at 1e-6 W): the fixed-point
-        // sums scale with the brightest texel, so the relative rounding is
-        // the same at any flux; 2e-5 leaves 10x, while losing the light to
-        // underflow or a fixed step would be an error near 1.
-        EXPECT_LT(worst, 2e-5) << lpvVariantName(variant);
-    }
     for (LpvVariant variant : kVariants) {
         const Volume c = run(grid, 0.01f, tiny, variant, 8, false, 0.0f);
         EXPECT_TRUE(allFinite(c)) << lpvVariantName(variant);
@@ -225,8 +227,8 @@ TEST_F(HardCaseLpvGLTest, SixtyFourStepsAgreeWithTheReferenceAndStayBounded) {
     const float extent = grid.cellSize * float(grid.n);
     for (int i = 0; i < 500; ++i) {
         const glm::vec3 n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f) + 1e-3f);
-        texels.push_back({grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * extent, n,
-                          glm::vec3(u(rng), u(rng), u(rng))});
+        texels.push_back(
+            {grid.origin + glm::vec3(u(rng), u(rng), u(rng)) * extent, n, glm::vec3(u(rng), u(rng), u(rng))});
     }
     std::vector<ref::Vpl> vpls;
     std::vector<ref::Surfel> surfels;
@@ -251,8 +253,9 @@ TEST_F(HardCaseLpvGLTest, SixtyFourStepsAgreeWithTheReferenceAndStayBounded) {
                 maxValue = std::max(maxValue, std::abs(expected.channel[0][i][j]));
             }
         const double gain = dcSum(volume, grid.n, 0, grid.n) / injected;
-        std::cout << "[ figures ] 64 steps, 16^3, GV on, " << lpvVariantName(variant) << ": max |GPU - CPU| / max = "
-                  << maxAbs / maxValue << ", accumulated / injected DC = " << gain << "\n";
+        std::cout << "[ figures ] 64 steps, 16^3, GV on, " << lpvVariantName(variant)
+                  << ": max |GPU - CPU| / max = " << maxAbs / maxValue
+                  << ", accumulated / injected DC = " << gain << "\n";
         // Measured 4.0e-6..4.2e-6 (the four variants): 64 steps of float sums
         // in another order (and fixed point in the scatters); 4e-5 leaves 10x.
         EXPECT_LT(maxAbs / maxValue, 4e-5f) << lpvVariantName(variant);

@@ -136,8 +136,9 @@ TEST_F(HardCaseRenderGLTest, GrazingSunStaysFiniteAndBelowOneBounce) {
         }
         mean[k] /= std::max(count, 1);
     }
-    std::cout << "[ figures ] indirect irradiance (sun irradiance 1), sun 1 deg / 45 deg above the horizon: peak "
-              << peak[0] << " / " << peak[1] << ", mean " << mean[0] << " / " << mean[1] << "\n";
+    std::cout
+        << "[ figures ] indirect irradiance (sun irradiance 1), sun 1 deg / 45 deg above the horizon: peak "
+        << peak[0] << " / " << peak[1] << ", mean " << mean[0] << " / " << mean[1] << "\n";
     EXPECT_GT(mean[0], 0.0); // the wall still reflects the grazing sun onto the floor
     // One bounce off Lambertian surfaces of albedo 0.8 lit by irradiance <= 1
     // gives irradiance <= 0.8 (radiance <= 0.8 / pi from every direction).
@@ -156,13 +157,14 @@ TEST_F(HardCaseRenderGLTest, GrazingSunStaysFiniteAndBelowOneBounce) {
 // returns and also one that still has the bad vertices (an importer that lets
 // them through) with every pixel finite and the good geometry still lit.
 TEST_F(HardCaseRenderGLTest, NanInfAndZeroAreaTrianglesRenderFinite) {
-    const auto dir = std::filesystem::temp_directory_path() / ("lpv-hardcase-" + std::to_string(scene::processId()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("lpv-hardcase-" + std::to_string(scene::processId()));
     std::filesystem::create_directories(dir);
     const auto file = dir / "degenerate.obj";
     {
         std::ofstream out(file);
-        out << "v -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\n"   // floor, facing +y
-            << "v -4 0 2\nv 4 0 2\nv 4 3 2\nv -4 3 2\n"     // wall at z = 2, facing -z
+        out << "v -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\n"  // floor, facing +y
+            << "v -4 0 2\nv 4 0 2\nv 4 3 2\nv -4 3 2\n"    // wall at z = 2, facing -z
             << "v nan 1 0\nv 0 inf 0\nv 1e38 -1e38 1e38\n" // not finite / near the float limit
             << "v 1 1 1\nv 2 2 2\nv 3 3 3\n"               // collinear
             << "f 1 3 2\nf 1 4 3\nf 5 7 6\nf 5 8 7\n"
@@ -195,10 +197,11 @@ TEST_F(HardCaseRenderGLTest, NanInfAndZeroAreaTrianglesRenderFinite) {
     raw.materials.push_back(scene::Material{});
     scene::Mesh mesh;
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    mesh.positions = {{-4, 0, -4}, {4, 0, -4}, {4, 0, 4},   {-4, 0, 4},       {-4, 0, 2}, {4, 0, 2}, {4, 3, 2},
-                      {-4, 3, 2},  {nan, 1, 0}, {0, inf, 0}, {-inf, 0, nan}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
-    mesh.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1},
-                    {0, 0, -1}, {nan, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    mesh.positions = {{-4, 0, -4},    {4, 0, -4}, {4, 0, 4},  {-4, 0, 4},  {-4, 0, 2},
+                      {4, 0, 2},      {4, 3, 2},  {-4, 3, 2}, {nan, 1, 0}, {0, inf, 0},
+                      {-inf, 0, nan}, {1, 1, 1},  {2, 2, 2},  {3, 3, 3}};
+    mesh.normals = {{0, 1, 0},  {0, 1, 0},   {0, 1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1},
+                    {0, 0, -1}, {nan, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, 0},  {0, 0, 0},  {0, 0, 0}};
     mesh.indices = {0, 2, 1, 0, 3, 2, 4, 6, 5, 4, 7, 6, 8, 9, 10, 8, 0, 1, 9, 1, 2, 11, 12, 13, 11, 11, 12};
     mesh.submeshes = {{0, std::uint32_t(mesh.indices.size()), 0}};
     raw.meshes.push_back(mesh);
@@ -211,7 +214,8 @@ TEST_F(HardCaseRenderGLTest, NanInfAndZeroAreaTrianglesRenderFinite) {
         const scene::Scene& s = scenes[k];
         for (const char* view : {"final", "indirect"}) {
             const Frame f = render(*renderer_, s, smallSettings(view));
-            EXPECT_EQ(nonFinitePixels(f.hdr), 0) << (k + 1 == scenes.size() ? "raw soup" : "imported") << " " << view;
+            EXPECT_EQ(nonFinitePixels(f.hdr), 0)
+                << (k + 1 == scenes.size() ? "raw soup" : "imported") << " " << view;
             double lit = 0.0;
             for (std::size_t i = 0; i < f.hdr.size(); i += 4)
                 lit += std::isfinite(f.hdr[i]) ? f.hdr[i] : 0.0;
@@ -284,7 +288,8 @@ TEST_F(HardCaseRenderGLTest, CascadeBoundaryOnABrightWallLeavesABoundedSeam) {
     ASSERT_GT(elsewhere.size(), 20u);
     std::sort(elsewhere.begin(), elsewhere.end());
     const double typical = elsewhere[elsewhere.size() * 9 / 10];
-    std::cout << "[ figures ] wall across " << cascades.size() << " cascades: largest jump between 10 cm strips at a "
+    std::cout << "[ figures ] wall across " << cascades.size()
+              << " cascades: largest jump between 10 cm strips at a "
               << "boundary " << seam << ", 90th percentile elsewhere " << typical << ", largest elsewhere "
               << elsewhere.back() << "\n";
     // Measured 5.6% at the boundaries (cascades 0|1 at z = -3.6 and 1|2 at
