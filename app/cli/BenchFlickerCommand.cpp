@@ -208,12 +208,14 @@ int benchFlicker(Args args) {
     std::vector<FlickerRun> runs;
     for (const auto& combination : combinations) {
         FlickerRun run;
-        run.settings = combination;
+        // Single values given with --set are part of every row's label too.
+        run.settings = plan.fixed;
+        run.settings.insert(run.settings.end(), combination.begin(), combination.end());
         setup->project.parameters = base;
         for (const auto& [key, value] : combination)
             (void)setup->project.parameters.setFromText(key, value, "--set");
         (void)setup->project.parameters.setFromText("output.view", "indirect", "bench");
-        std::printf("\n== %s\n", label(combination).c_str());
+        std::printf("\n== %s\n", label(run.settings).c_str());
         auto placeFrame = [&](int i) {
             if (spline)
                 setup->camera = spline->cameraAt(spline->startTime() + float(i) / float(*fps), baseCamera);

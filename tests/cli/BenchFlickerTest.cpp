@@ -72,7 +72,8 @@ TEST_F(BenchFlicker, StaticSceneHasNoFlickerAndATurningSunHasSome) {
         EXPECT_EQ(f, 0.0) << "the same scene and camera give the same LPV every frame";
     const std::string table = readText(md);
     EXPECT_NE(table.find("Machine: "), std::string::npos);
-    EXPECT_NE(table.find("| rsm.tileSize=32 |"), std::string::npos) << table;
+    EXPECT_NE(table.find(" rsm.tileSize=32 |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| lpv.gridSize=16 shadow.mapSize=256 rsm.tileSize=64 |"), std::string::npos) << table;
 
     const RunResult turning = bench("--sun-rotate 40 --frames 3 --csv '" + csv.string() + "'");
     ASSERT_EQ(turning.exitCode, 0) << turning.output;
