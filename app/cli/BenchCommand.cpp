@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 void printBenchLpvHelp();
 void printBenchSweepHelp();
 void printBenchAccuracyReportHelp();
+void printBenchFlickerHelp();
 
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
@@ -29,6 +30,7 @@ void printBenchHelp() {
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR ... see below]
        lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
+       lpv bench PROJECT --flicker (--path NAME | --sun-rotate DEG) [--frames N ... see below]
 
 bench render: renders the project headless at the given size (default
 1280x720) for --warmup frames (default 5, not counted) and then --frames
@@ -42,6 +44,7 @@ by the command and the machine: CPU, cores, GL renderer and version).
     printBenchLpvHelp();
     printBenchSweepHelp();
     printBenchAccuracyReportHelp();
+    printBenchFlickerHelp();
     std::cout << R"(
 bench import:
 Times, for each scene file: importing it (parse, mesh clean-up, texture
@@ -150,7 +153,7 @@ int runBench(Args args) {
     if (pos.empty())
         return usageError("which benchmark? (import, render, lpv, or a project with --sweep)", "bench");
     if (fs::path(pos.front()).extension() == ".lpvproj")
-        return benchSweep(std::move(args));
+        return args.flag("--flicker") ? benchFlicker(std::move(args)) : benchSweep(std::move(args));
     if (pos.front() == "render")
         return benchRender(std::move(args));
     if (pos.front() == "lpv")

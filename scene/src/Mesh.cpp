@@ -1,11 +1,17 @@
 #include "lpv/scene/Mesh.h"
 
+#include <cmath>
+
 namespace lpv::scene {
 
 Bounds Mesh::computeBounds() const {
     Bounds b;
+    // A NaN or infinite position (an importer that let one through) would
+    // make the bounds NaN and with them the sun's shadow and RSM frusta, so
+    // that no indirect light is left anywhere (docs/hard-cases.md).
     for (const glm::vec3& p : positions)
-        b.extend(p);
+        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+            b.extend(p);
     return b;
 }
 
