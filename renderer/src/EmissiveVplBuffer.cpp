@@ -33,8 +33,8 @@ void EmissiveVplBuffer::upload(const std::vector<lpvref::Vpl>& vpls) {
 }
 
 LpvLocalInput EmissiveVplBuffer::input() const {
-    return {position_.id(), normal_.id(), flux_.id(), size_, count_ > 0 ? 1 : 0,
-            std::to_string(count_) + " emissive VPLs"};
+    return {position_.id(), normal_.id(),       flux_.id(),
+            size_,          count_ > 0 ? 1 : 0, std::to_string(count_) + " emissive VPLs"};
 }
 
 } // namespace lpv::renderer

@@ -5,7 +5,9 @@
 
 namespace lpv::renderer {
 
-int injectableLocalLights(const scene::Scene& scene) { return int(selectInjectedLocalLights(scene).size()); }
+int injectableLocalLights(const scene::Scene& scene) {
+    return int(selectInjectedLocalLights(scene).size());
+}
 
 EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene::ParameterSet& params) {
     EffectDecision d;
@@ -13,13 +15,15 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
     d.parameter = "lpv.localLights";
     d.setting = params.getEnum(d.parameter);
     const int lights = injectableLocalLights(scene);
-    const std::string found = std::to_string(lights) + (lights == 1 ? " spot or point light" : " spot or point lights") +
-                              " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM faces";
+    const std::string found =
+        std::to_string(lights) + (lights == 1 ? " spot or point light" : " spot or point lights") +
+        " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM faces";
     if (d.setting == "off") {
         d.reason = "forced off by lpv.localLights";
     } else if (lights == 0) {
-        d.reason = d.setting == "on" ? "forced on by lpv.localLights, but the scene has no lit spot or point light"
-                                     : "no spot or point light";
+        d.reason = d.setting == "on"
+                       ? "forced on by lpv.localLights, but the scene has no lit spot or point light"
+                       : "no spot or point light";
     } else if (params.getFloat("lpv.intensity") <= 0.0) {
         d.reason = "lpv.intensity is 0";
     } else {
@@ -59,7 +63,7 @@ EffectDecision decideBounces(const scene::ParameterSet& params, bool lpvRuns) {
     d.reason = bounces <= 1 ? "one bounce (lpv.bounces = 1)"
                : lpvRuns    ? std::to_string(bounces - 1) + " more bounce" + (bounces > 2 ? "s" : "") +
                                " re-injected at the geometry volume's surfels"
-                            : "the LPV does not run";
+                         : "the LPV does not run";
     return d;
 }
 

@@ -1,7 +1,7 @@
 #include "LocalRsmPass.h"
 
-#include "lpv/renderer/DrawList.h"
 #include "ShadowLights.h"
+#include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -91,8 +91,8 @@ scene::Expected<void> LocalRsmPass::ensureTargets(int size, int layers) {
     if (glGetError() == GL_OUT_OF_MEMORY) {
         release();
         return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.localRsmSize",
-                         "the GPU ran out of memory allocating " + std::to_string(layers) + " local RSM faces of " +
-                             std::to_string(size) + "^2");
+                         "the GPU ran out of memory allocating " + std::to_string(layers) +
+                             " local RSM faces of " + std::to_string(size) + "^2");
     }
     size_ = size;
     layers_ = layers;
@@ -159,7 +159,8 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
             glProgramUniformMatrix4fv(p, loc("uTileViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
             glProgramUniform3fv(p, loc("uFaceAxis"), 1, glm::value_ptr(axis));
             const auto items = buildDrawList(geometry.draws(), viewProj, light.position);
-            geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
+            geometry.draw(p, items,
+                          [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
         }
     }
     frame.timer.end("localRsm");

@@ -29,8 +29,8 @@ class LocalRsmPass {
 
     // Renders every face of every selected light ("localRsm"); `size` is
     // lpv.localRsmSize. With no light selected it renders nothing and frees its targets.
-    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials,
-                                 int size);
+    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
+                                 const MaterialGpu& materials, int size);
 
     bool active() const { return layers_ > 0; }
     int size() const { return size_; }

@@ -7,8 +7,12 @@ namespace lpv::renderer {
 
 namespace {
 
-GLuint groups(int count, int size) { return GLuint((count + size - 1) / size); }
-GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+GLuint groups(int count, int size) {
+    return GLuint((count + size - 1) / size);
+}
+GLint loc(GLuint program, const char* name) {
+    return glGetUniformLocation(program, name);
+}
 constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 constexpr GLuint kScalesBinding = 1; // lpv_common.glsl's LpvScales
@@ -21,8 +25,8 @@ void LpvPass::addBounceTotal(bool final) {
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uFinal"), final ? 1 : 0);
     for (int c = 0; c < 3; ++c) {
-        glBindImageTexture(GLuint(c), volumes_.bounceTotal.channel[std::size_t(c)].id(), 0, GL_TRUE, 0, GL_READ_WRITE,
-                           GL_RGBA32F);
+        glBindImageTexture(GLuint(c), volumes_.bounceTotal.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
+                           GL_READ_WRITE, GL_RGBA32F);
         glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
                            GL_READ_WRITE, GL_RGBA32F);
     }
@@ -40,7 +44,8 @@ void LpvPass::propagateBounces(const LpvSettings& settings) {
             glMemoryBarrier(GL_ALL_BARRIER_BITS);
             for (std::size_t c = 0; c < 3; ++c)
                 glCopyImageSubData(volumes_.accumulator.channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, 0,
-                                   volumes_.bounceTotal.channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n, n * k);
+                                   volumes_.bounceTotal.channel[c].id(), GL_TEXTURE_3D, 0, 0, 0, 0, n, n,
+                                   n * k);
         } else {
             addBounceTotal(false);
         }
@@ -56,10 +61,11 @@ void LpvPass::propagateBounces(const LpvSettings& settings) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
         glBindTextureUnit(3, volumes_.geometry.id());
         for (int c = 0; c < 3; ++c) {
-            glBindImageTexture(GLuint(c), volumes_.volume[std::size_t(readIndex_)].channel[std::size_t(c)].id(), 0,
+            glBindImageTexture(GLuint(c),
+                               volumes_.volume[std::size_t(readIndex_)].channel[std::size_t(c)].id(), 0,
                                GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-            glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
-                               GL_READ_WRITE, GL_RGBA32F);
+            glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE,
+                               0, GL_READ_WRITE, GL_RGBA32F);
         }
         glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
         glMemoryBarrier(kComputeResults);

@@ -6,8 +6,12 @@ namespace lpv::renderer {
 
 namespace {
 
-GLuint groups(int count, int size) { return GLuint((count + size - 1) / size); }
-GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+GLuint groups(int count, int size) {
+    return GLuint((count + size - 1) / size);
+}
+GLint loc(GLuint program, const char* name) {
+    return glGetUniformLocation(program, name);
+}
 
 } // namespace
 

@@ -48,8 +48,8 @@ TEST(EmissiveVpls, FluxIsPiRadianceAreaFromTheFrontSide) {
         EXPECT_LE(v.position.z, 0.5f + 1e-5f);
     }
     const double pi = 3.14159265358979;
-    std::cout << "[measured] " << vpls.size() << " VPLs, total flux " << total.r << " W (pi L A = " << pi * 4.0 * 3.0
-              << ")\n";
+    std::cout << "[measured] " << vpls.size() << " VPLs, total flux " << total.r
+              << " W (pi L A = " << pi * 4.0 * 3.0 << ")\n";
     EXPECT_NEAR(total.r, pi * 4.0 * 3.0, 1e-4 * pi * 12.0);
     EXPECT_NEAR(total.g, pi * 2.0 * 3.0, 1e-4 * pi * 6.0);
     EXPECT_NEAR(total.b, pi * 1.0 * 3.0, 1e-4 * pi * 3.0);

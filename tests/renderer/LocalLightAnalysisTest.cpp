@@ -12,7 +12,8 @@ using namespace lpv;
 
 namespace {
 
-const renderer::EffectDecision& find(const std::vector<renderer::EffectDecision>& all, const std::string& key) {
+const renderer::EffectDecision& find(const std::vector<renderer::EffectDecision>& all,
+                                     const std::string& key) {
     auto it = std::find_if(all.begin(), all.end(), [&](const auto& d) { return d.parameter == key; });
     EXPECT_NE(it, all.end()) << key;
     return *it;
@@ -39,16 +40,17 @@ TEST(LocalLightAnalysis, DefaultsLeaveTheSpotLitCornellBoxWithoutAnLpv) {
 
 TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun) {
     const scene::Scene s = scene::makeCornellBoxProject().scene;
-    const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s),
-                                           with({{"lpv.localLights", "auto"}, {"lpv.bounces", "3"}}), nullptr);
+    const auto d =
+        renderer::decideEffects(s, renderer::analyseSceneTraits(s),
+                                with({{"lpv.localLights", "auto"}, {"lpv.bounces", "3"}}), nullptr);
     EXPECT_TRUE(d.front().runs()) << d.front().reason;
     EXPECT_EQ(d.front().reason, "spot or point lights light the scene: their RSMs are injected");
     EXPECT_EQ(find(d, "lpv.localLights").reason, "1 spot or point light injected through 128^2 RSM faces");
     EXPECT_TRUE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "2 more bounces re-injected at the geometry volume's surfels");
 
-    const auto e = renderer::decideEffects(s, renderer::analyseSceneTraits(s), with({{"lpv.emissive", "auto"}}),
-                                           nullptr);
+    const auto e = renderer::decideEffects(s, renderer::analyseSceneTraits(s),
+                                           with({{"lpv.emissive", "auto"}}), nullptr);
     EXPECT_TRUE(e.front().runs());
     EXPECT_TRUE(find(e, "lpv.emissive").runs());
     EXPECT_EQ(find(e, "lpv.emissive").reason, "a visible material emits: its triangles are sampled as VPLs");

@@ -34,13 +34,14 @@ std::vector<Texel> roomTexels(const RoomScene& room) {
 
 // What LpvPass computes from those texels, with `bounces` bounces: the GV
 // surfels get the RSM's area (texel area over max(n . l, 0.2)), as lpv_gv_inject.comp does.
-ref::ShGrid reference(const RoomScene& room, const std::vector<Texel>& texels, int steps, int bounces, float albedo,
-                      std::vector<ref::ShGrid>* perBounce = nullptr) {
+ref::ShGrid reference(const RoomScene& room, const std::vector<Texel>& texels, int steps, int bounces,
+                      float albedo, std::vector<ref::ShGrid>* perBounce = nullptr) {
     std::vector<ref::Vpl> vpls;
     std::vector<ref::Surfel> surfels;
     for (const Texel& t : texels) {
         vpls.push_back({t.position, t.normal, t.flux});
-        surfels.push_back({t.position, t.normal, kTexelArea / std::max(glm::dot(t.normal, kTowardSun), 0.2f)});
+        surfels.push_back(
+            {t.position, t.normal, kTexelArea / std::max(glm::dot(t.normal, kTowardSun), 0.2f)});
     }
     const ref::ShGrid injected = ref::injectVpls(room.grid, vpls, 1.0f);
     const ref::GvGrid gv = ref::mergeByMax(ref::injectSurfels(room.grid, surfels), ref::GvGrid(room.grid.n));
@@ -72,8 +73,8 @@ class LpvBounceTest : public GlTest, public ::testing::WithParamInterface<LpvVar
         pass_.emplace(std::move(*pass));
     }
 
-    std::array<std::vector<glm::vec4>, 3> runGpu(const RoomScene& room, const FakeRsm& rsm, int steps, int bounces,
-                                                 float albedo) {
+    std::array<std::vector<glm::vec4>, 3> runGpu(const RoomScene& room, const FakeRsm& rsm, int steps,
+                                                 int bounces, float albedo) {
         LpvSettings settings;
         settings.gridSize = room.grid.n;
         settings.propagationSteps = steps;
@@ -118,8 +119,9 @@ TEST_P(LpvBounceTest, MatchesReferenceAndFreesItsVolume) {
         EXPECT_GT(pass_->allocatedBytes(), plainBytes) << "the running total of the bounces";
         float largest = 0.0f;
         const double d = relativeDifference(expected, gpu, &largest);
-        std::cout << "[ figures ] " << lpvVariantName(GetParam()) << " 12^3, " << steps << " steps, " << bounces
-                  << " bounces: relative |GPU - CPU| " << d << " of max " << largest << "; flux of the last bounce / first "
+        std::cout << "[ figures ] " << lpvVariantName(GetParam()) << " 12^3, " << steps << " steps, "
+                  << bounces << " bounces: relative |GPU - CPU| " << d << " of max " << largest
+                  << "; flux of the last bounce / first "
                   << ref::totalFlux(perBounce.back(), 0) / ref::totalFlux(perBounce.front(), 0) << "\n";
         EXPECT_LT(d, 2e-5) << bounces << " bounces";
         // The bounces change the volume, by more than the tolerance.

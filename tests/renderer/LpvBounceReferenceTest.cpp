@@ -60,8 +60,8 @@ TEST(LpvReferenceBounce, SecondBounceAddsLightAndTheThirdAddsLess) {
     const double f1 = ref::totalFlux(bounces[0], 0), f2 = ref::totalFlux(bounces[1], 0),
                  f3 = ref::totalFlux(bounces[2], 0);
     std::cout << "[measured] room 12^3, 8 steps, albedo 0.5: wall irradiance bounce 2 / 1 = " << e2 / e1
-              << ", 3 / 2 = " << e3 / e2 << "; accumulated flux 2 / 1 = " << f2 / f1 << ", 3 / 2 = " << f3 / f2
-              << "\n";
+              << ", 3 / 2 = " << e3 / e2 << "; accumulated flux 2 / 1 = " << f2 / f1
+              << ", 3 / 2 = " << f3 / f2 << "\n";
     RecordProperty("wall_ratio_2_1", std::to_string(e2 / e1));
     RecordProperty("wall_ratio_3_2", std::to_string(e3 / e2));
     EXPECT_GT(e2, 0.05 * e1) << "the second bounce adds light at the walls";

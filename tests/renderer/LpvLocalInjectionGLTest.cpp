@@ -20,7 +20,8 @@ namespace ref = lpv::renderer::lpvref;
 namespace {
 
 // Two nested cascades of 8^3 (0.5 m and 1 m cells) around the origin.
-const std::vector<LpvCascade> kCascades = {LpvCascade{glm::vec3(-2.0f), 0.5f, 8}, LpvCascade{glm::vec3(-4.0f), 1.0f, 8}};
+const std::vector<LpvCascade> kCascades = {LpvCascade{glm::vec3(-2.0f), 0.5f, 8},
+                                           LpvCascade{glm::vec3(-4.0f), 1.0f, 8}};
 
 std::vector<ref::Vpl> randomVpls(int count, unsigned seed) {
     std::mt19937 rng(seed);
@@ -81,21 +82,26 @@ TEST_F(LpvLocalInjectionGLTest, EveryCascadeThatHoldsAVplGetsItAsTheReferenceSay
             EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
             EXPECT_NE(pass->note().find("300 emissive VPLs injected"), std::string::npos) << pass->note();
             for (int k = 0; k < 2; ++k) {
-                const ref::GridFrame frame{kCascades[std::size_t(k)].origin, kCascades[std::size_t(k)].cellSize, 8};
+                const ref::GridFrame frame{kCascades[std::size_t(k)].origin,
+                                           kCascades[std::size_t(k)].cellSize, 8};
                 std::vector<ref::Vpl> all = vpls;
                 if (withSun) // tile k feeds cascade k only
                     for (int i = 0; i < (k == 0 ? 2 : 1); ++i) {
                         const int tile = k;
-                        const glm::vec3 p = tile == 0 ? (i == 0 ? glm::vec3(0.3f, -1.2f, 0.7f) : glm::vec3(-1.1f, 0.4f, 0.2f))
-                                                      : glm::vec3(2.6f, 1.5f, -3.1f);
-                        const glm::vec3 n = tile == 0 ? (i == 0 ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)) : glm::vec3(0, 0, 1);
-                        const glm::vec3 f = tile == 0 ? (i == 0 ? glm::vec3(5, 4, 3) : glm::vec3(2, 1, 0.5f)) : glm::vec3(1);
+                        const glm::vec3 p =
+                            tile == 0 ? (i == 0 ? glm::vec3(0.3f, -1.2f, 0.7f) : glm::vec3(-1.1f, 0.4f, 0.2f))
+                                      : glm::vec3(2.6f, 1.5f, -3.1f);
+                        const glm::vec3 n = tile == 0 ? (i == 0 ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0))
+                                                      : glm::vec3(0, 0, 1);
+                        const glm::vec3 f =
+                            tile == 0 ? (i == 0 ? glm::vec3(5, 4, 3) : glm::vec3(2, 1, 0.5f)) : glm::vec3(1);
                         all.push_back({p, n, f});
                     }
-                const ref::ShGrid expected = ref::propagateAndAccumulate(ref::injectVpls(frame, all, 1.0f), nullptr, steps);
+                const ref::ShGrid expected =
+                    ref::propagateAndAccumulate(ref::injectVpls(frame, all, 1.0f), nullptr, steps);
                 const double d = relative(expected, pass->readAccumulator(k));
-                std::cout << "[ figures ] local VPLs" << (withSun ? " + sun tile" : "") << ", cascade " << k << ", "
-                          << steps << " steps: relative |GPU - CPU| " << d << "\n";
+                std::cout << "[ figures ] local VPLs" << (withSun ? " + sun tile" : "") << ", cascade " << k
+                          << ", " << steps << " steps: relative |GPU - CPU| " << d << "\n";
                 EXPECT_LT(d, 2e-5);
             }
         }

@@ -44,8 +44,12 @@ scene::Project spotLitBox(float side) {
 scene::ParameterSet smallLpv(const scene::Project& project) {
     scene::ParameterSet params = project.parameters;
     for (const auto& [key, value] : {std::pair<const char*, const char*>{"lpv.localLights", "auto"},
-                                     {"lpv.gridSize", "32"}, {"lpv.cascades", "2"}, {"lpv.cellSize", "0.25"},
-                                     {"lpv.localRsmSize", "64"}, {"output.view", "indirect"}, {"lpv.reuse", "false"}})
+                                     {"lpv.gridSize", "32"},
+                                     {"lpv.cascades", "2"},
+                                     {"lpv.cellSize", "0.25"},
+                                     {"lpv.localRsmSize", "64"},
+                                     {"output.view", "indirect"},
+                                     {"lpv.reuse", "false"}})
         EXPECT_TRUE(params.setFromText(key, value, "test").has_value()) << key;
     return params;
 }

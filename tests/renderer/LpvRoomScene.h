@@ -36,7 +36,9 @@ inline RoomScene closedRoom(float litMaxX = 1.5f, float fluxPerTexel = 0.01f) {
                 }
             const glm::vec3 floor{a, s.lo, b};
             if (floor.x < litMaxX)
-                s.vpls.push_back({floor, {0.0f, 1.0f, 0.0f}, glm::vec3(fluxPerTexel, 0.8f * fluxPerTexel, 0.6f * fluxPerTexel)});
+                s.vpls.push_back({floor,
+                                  {0.0f, 1.0f, 0.0f},
+                                  glm::vec3(fluxPerTexel, 0.8f * fluxPerTexel, 0.6f * fluxPerTexel)});
         }
     return s;
 }

@@ -7,7 +7,9 @@ namespace lpv::renderer::lpvref {
 
 namespace {
 
-bool emits(const scene::Material& m) { return std::max({m.emissive.r, m.emissive.g, m.emissive.b}) > 0.0f; }
+bool emits(const scene::Material& m) {
+    return std::max({m.emissive.r, m.emissive.g, m.emissive.b}) > 0.0f;
+}
 
 struct EmissiveTriangle {
     glm::vec3 a, b, c, normal, radiance;
@@ -38,7 +40,8 @@ std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
                 glm::vec3 n = cross / length;
                 // The emitting side is the one the shading normals face (the winding may disagree).
                 if (mesh.normals.size() == mesh.positions.size()) {
-                    const glm::vec3 shading = normalMatrix * (mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]);
+                    const glm::vec3 shading =
+                        normalMatrix * (mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]);
                     if (glm::dot(shading, n) < 0.0f)
                         n = -n;
                 }
@@ -49,7 +52,9 @@ std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
     return out;
 }
 
-int subdivisions(float area, float spacing) { return std::max(1, int(std::ceil(std::sqrt(area) / spacing))); }
+int subdivisions(float area, float spacing) {
+    return std::max(1, int(std::ceil(std::sqrt(area) / spacing)));
+}
 
 } // namespace
 
@@ -68,7 +73,8 @@ std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, in
     const std::vector<EmissiveTriangle> triangles = emissiveTriangles(scene);
     if (triangles.empty() || maxVpls <= 0)
         return {};
-    // Coarser until it fits: each triangle keeps at least one VPL, so the cap can still be passed by the triangle count.
+    // Coarser until it fits: each triangle keeps at least one VPL, so the cap can still be passed by the
+    // triangle count.
     for (;;) {
         std::size_t count = 0;
         for (const EmissiveTriangle& t : triangles)
@@ -82,7 +88,8 @@ std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, in
         const int m = subdivisions(t.area, spacing);
         const glm::vec3 flux = sh::kPi * t.radiance * (t.area / float(m * m));
         auto add = [&](float u, float v) {
-            vpls.push_back({t.a + (u / float(m)) * (t.b - t.a) + (v / float(m)) * (t.c - t.a), t.normal, flux});
+            vpls.push_back(
+                {t.a + (u / float(m)) * (t.b - t.a) + (v / float(m)) * (t.c - t.a), t.normal, flux});
         };
         // Centroids of the m^2 sub-triangles: m (m + 1) / 2 upright, m (m - 1) / 2 upside down.
         for (int i = 0; i < m; ++i)

@@ -21,7 +21,8 @@ ShGrid bounceVpls(const ShGrid& accumulated, const GvGrid& gv, float albedo) {
                 const float coverage = std::min(length, 1.0f);
                 const glm::vec4 receive = sh::cosineLobe(-normal), emit = sh::cosineLobe(normal) / sh::kPi;
                 for (int c = 0; c < 3; ++c) {
-                    // E s^2: the lookup's irradiance times the cell face; times the covered fraction, the flux received.
+                    // E s^2: the lookup's irradiance times the cell face; times the covered fraction, the
+                    // flux received.
                     const float received = std::max(0.0f, glm::dot(accumulated.at(c, x, y, z), receive));
                     out.at(c, x, y, z) = (albedo * coverage * received) * emit;
                 }
