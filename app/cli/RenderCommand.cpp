@@ -45,8 +45,10 @@ one row per frame, then median/min/max over the frames rendered.
                         depth), rsm (position, normal and flux of every RSM
                         tile), lpv (per cascade the accumulated light, DC
                         per colour channel, and the geometry volume, z slices
-                        side by side). Each as OUT-<name>.exr (exact) and
-                        .png (scaled)
+                        side by side), localrsm (position, normal and flux
+                        of every spot light's and point-light cube face's RSM
+                        when lpv.localLights injects them). Each as
+                        OUT-<name>.exr (exact) and .png (scaled)
 )";
 }
 
@@ -114,8 +116,8 @@ int runRender(Args args) {
         return usageError("--frames must be a positive integer", "render");
     const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
     for (const std::string& d : dumps)
-        if (d != "rsm" && d != "shadow" && d != "lpv")
-            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow, lpv)", "render");
+        if (d != "rsm" && d != "shadow" && d != "lpv" && d != "localrsm")
+            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow, lpv, localrsm)", "render");
     if (dumpText && dumps.empty())
         return usageError("--dump needs a list such as rsm,shadow", "render");
 

@@ -2,6 +2,8 @@
 
 #include "FrameContext.h"
 #include "GlossyReflections.h"
+#include "EmissiveVplBuffer.h"
+#include "LocalRsmPass.h"
 #include "LpvPass.h"
 #include "LpvSubsurfacePass.h"
 #include "LpvReuseKey.h"
@@ -10,6 +12,8 @@
 #include "RsmPass.h"
 #include "ShadowPass.h"
 #include "SunRaysPass.h"
+#include "lpv/renderer/LocalLightAnalysis.h"
+#include "lpv/renderer/lpv/EmissiveVpls.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -83,6 +87,12 @@ struct ForwardRenderer::Impl {
     // The subsurface LPV: created on the first frame that wants it, dropped when not.
     std::optional<LpvSubsurfacePass> subsurface;
     bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
+    // Spot and point lights' RSMs, created while they are injected and dropped when not.
+    std::optional<LocalRsmPass> localRsm;
+    // Emissive surfaces' VPLs, sampled when the scene or lpv.cellSize changes; empty while not injected.
+    std::optional<EmissiveVplBuffer> emissiveVpls;
+    std::uint64_t emissiveGeneration = 0;
+    double emissiveCellSize = 0.0;
     // What the scene's geometry says (open sky...): rays are cast once per scene change.
     std::optional<SceneTraits> traits;
     // What the LPV in the volumes was computed from; bumped / reset on scene changes.
@@ -202,7 +212,13 @@ struct ForwardRenderer::Impl {
     }
 
     Expected<void> runLpv(const FrameContext& frame) {
-        if (!rsm->active()) {
+        const EffectDecision local = decideLocalLightInjection(frame.scene, frame.params);
+        const EffectDecision emissive = decideEmissiveInjection(frame.scene, frame.params);
+        if (!local.runs())
+            localRsm.reset(); // a pass that does not run holds no GPU memory
+        if (!emissive.runs())
+            emissiveVpls.reset();
+        if (!rsm->active() && !local.runs() && !emissive.runs()) {
             lpvKey.reset();
             subsurface.reset();
             lpv->disable("no directional light: nothing to inject");
@@ -216,18 +232,25 @@ struct ForwardRenderer::Impl {
         }
         // Tile k feeds cascade k: lpv.cascades volumes, as far as there are tiles (rsm.cascades).
         LpvRsmInput input;
-        const std::size_t cascades =
-            std::min(rsm->tiles().size(), std::size_t(frame.params.getInt("lpv.cascades")));
-        for (std::size_t k = 0; k < cascades; ++k) {
-            input.cascades.push_back(rsm->tiles()[k].cascade);
-            input.texelArea.push_back(rsm->tiles()[k].texelArea);
+        if (rsm->active()) {
+            const std::size_t cascades =
+                std::min(rsm->tiles().size(), std::size_t(frame.params.getInt("lpv.cascades")));
+            for (std::size_t k = 0; k < cascades; ++k) {
+                input.cascades.push_back(rsm->tiles()[k].cascade);
+                input.texelArea.push_back(rsm->tiles()[k].texelArea);
+            }
+            input.tileSize = rsm->tileSize();
+            input.position = rsm->positionArray();
+            input.normal = rsm->normalArray();
+            input.flux = rsm->fluxArray();
+            input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
+        } else {
+            input.cascades = localLightCascades(frame);
         }
-        input.tileSize = rsm->tileSize();
-        input.position = rsm->positionArray();
-        input.normal = rsm->normalArray();
-        input.flux = rsm->fluxArray();
-        input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
         const LpvSettings settings = LpvSettings::fromParameters(frame.params);
+        frameEffects.push_back(local);
+        frameEffects.push_back(emissive);
+        frameEffects.push_back(decideBounces(frame.params, true));
 
         if (!traits)
             traits = analyseSceneTraits(frame.scene);
@@ -272,9 +295,39 @@ struct ForwardRenderer::Impl {
         } else {
             skyHeight.reset(); // a pass that does not run holds no GPU memory
         }
+        std::vector<LpvLocalInput> localInput;
+        if (local.runs()) {
+            if (!localRsm) {
+                auto created = LocalRsmPass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                localRsm.emplace(std::move(*created));
+            }
+            if (auto ok = localRsm->render(frame, *sceneGpu, *materialGpu, frame.params.getInt("lpv.localRsmSize"));
+                !ok)
+                return ok;
+            if (localRsm->active())
+                localInput.push_back({localRsm->positionArray(), localRsm->normalArray(), localRsm->fluxArray(),
+                                      localRsm->size(), localRsm->layers(),
+                                      std::to_string(localRsm->layers()) + " local-light RSM face" +
+                                          (localRsm->layers() == 1 ? "" : "s")});
+        }
+        if (emissive.runs()) {
+            const double cellSize = frame.params.getFloat("lpv.cellSize");
+            if (!emissiveVpls || emissiveGeneration != sceneGeneration || emissiveCellSize != cellSize) {
+                // Two VPLs per finest cell along an emitter, at most 256^2.
+                emissiveVpls.emplace();
+                emissiveVpls->upload(lpvref::sampleEmissiveVpls(frame.scene, float(cellSize) * 0.5f, 65536));
+                emissiveGeneration = sceneGeneration;
+                emissiveCellSize = cellSize;
+            }
+            if (!emissiveVpls->empty())
+                localInput.push_back(emissiveVpls->input());
+        }
         auto ran = lpv->run(settings, input, gBufferValid ? &previousCamera : nullptr, frame.timer,
-                            skyInput ? &*skyInput : nullptr);
-        if (ran && lpv->active() && sss.runs()) {
+                            skyInput ? &*skyInput : nullptr, localInput);
+        // The subsurface volume is fed by the sun's RSM (its translucent texels).
+        if (ran && lpv->active() && sss.runs() && rsm->active()) {
             if (auto ok = runSubsurface(frame, input); !ok)
                 return ok;
         } else {
@@ -294,6 +347,15 @@ struct ForwardRenderer::Impl {
         }
         subsurface->run(LpvSubsurfaceSettings::fromParameters(frame.params), *lpv, input, frame.timer);
         return {};
+    }
+
+    // Without a sun there are no RSM tiles to place the cascades: placed around the camera as RsmPass would.
+    static std::vector<LpvCascade> localLightCascades(const FrameContext& frame) {
+        const int count = std::min(frame.params.getInt("rsm.cascades"), frame.params.getInt("lpv.cascades"));
+        const LpvCascadeSettings settings{count, frame.params.getInt("lpv.gridSize"),
+                                          float(frame.params.getFloat("lpv.cellSize")),
+                                          frame.params.getBool("lpv.cellSnapping")};
+        return lpvCascades(frame.camera.position, settings);
     }
 
     void renderTonemap(const FrameContext& frame) {
@@ -397,6 +459,8 @@ std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) co
         return impl_->rsm->debugImages();
     if (what == "lpv")
         return impl_->lpv->debugImages();
+    if (what == "localrsm")
+        return impl_->localRsm ? impl_->localRsm->debugImages() : std::vector<DebugImage>{};
     return {};
 }
 

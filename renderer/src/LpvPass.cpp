@@ -54,6 +54,8 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     // auto: whenever the LPV runs (SceneAnalysis says the same); off by default in the registry.
     s.directed = params.getEnum("lpv.directedPropagation") != "off";
     s.directedDilation = params.getInt("lpv.directedDilation");
+    s.bounces = params.getInt("lpv.bounces");
+    s.bounceAlbedo = float(params.getFloat("lpv.bounceAlbedo"));
     return s;
 }
 
@@ -75,6 +77,10 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.normals_, {"lpv_normals.comp"}, {}},
         {&pass.normalsDilate_, {"lpv_normals.comp"}, {"NORMALS_DILATE 1"}},
         {&pass.skyInject_, {"lpv_sky_inject.comp"}, {}},
+        {&pass.bounceInject_, {"lpv_bounce.comp"}, {"BOUNCE_INJECT 1"}},
+        {&pass.bounceAdd_, {"lpv_bounce.comp"}, {}},
+        {&pass.localFluxMax_, {"lpv_inject_local.comp"}, {"LOCAL_FLUX_MAX 1"}},
+        {&pass.localInject_, {"lpv_inject_local.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
@@ -117,8 +123,13 @@ void LpvPass::setCascadeUniforms(GLuint program) const {
 }
 
 scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
-                                   const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky) {
-    if (rsm.cascades.empty() || rsm.tileSize <= 0) {
+                                   const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky,
+                                   const std::vector<LpvLocalInput>& allLocal) {
+    std::vector<LpvLocalInput> local;
+    for (const LpvLocalInput& l : allLocal)
+        if (l.layers > 0 && l.size > 0 && l.position)
+            local.push_back(l);
+    if (rsm.cascades.empty() || ((rsm.tileSize <= 0 || !rsm.position) && local.empty())) {
         disable("no RSM to inject from");
         return {};
     }
@@ -128,6 +139,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         return ok;
     }
     volumes_.ensureDirected(settings.directed);
+    volumes_.ensureBounces(settings.bounces > 1);
     cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
     tileSize_ = rsm.tileSize;
     injectionOffset_ = settings.injectionOffset;
@@ -138,7 +150,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     active_ = true;
 
     timer.begin("lpvInject");
-    inject(rsm, settings.directed);
+    inject(rsm, settings.directed, local);
     timer.end("lpvInject");
     if (sky && sky->depth && sky->size > 0) {
         timer.begin("skyInject");
@@ -151,7 +163,8 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         buildNormals(settings.directedDilation);
         timer.end("lpvNormals");
     }
-    if (settings.occlusion) {
+    // Bounces reflect at the GV's surfels, so they need it even without occlusion.
+    if (settings.occlusion || settings.bounces > 1) {
         timer.begin("gvInject");
         injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
         timer.end("gvInject");
@@ -161,6 +174,11 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     timer.begin("lpvPropagate");
     propagate(settings);
     timer.end("lpvPropagate");
+    if (settings.bounces > 1) {
+        timer.begin("lpvBounce");
+        propagateBounces(settings);
+        timer.end("lpvBounce");
+    }
     readCapture();
 
     const int n = settings.gridSize;
@@ -170,26 +188,35 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
                                       std::string(settings.gvFromCamera && camera ? " and the camera" : "")
                                 : ", no occlusion") +
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
-            (sky && sky->depth ? ", sky light injected" : "");
+            (sky && sky->depth ? ", sky light injected" : "") +
+            localNote(local) +
+            (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "");
     computedNote_ = note_.substr(5); // without "LPV: "
     return {};
 }
 
-void LpvPass::inject(const LpvRsmInput& rsm, bool directed) {
+void LpvPass::inject(const LpvRsmInput& rsm, bool directed, const std::vector<LpvLocalInput>& local) {
     const int tiles = volumes_.cascades();
+    const bool sun = rsm.position && rsm.tileSize > 0;
+    injectedTexels_ = sun ? rsm.tileSize * rsm.tileSize : 0;
+    for (const LpvLocalInput& l : local)
+        injectedTexels_ += l.size * l.size * l.layers;
     const GLuint zero = 0;
     glClearNamedBufferData(volumes_.scales.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
 
     // 1. The brightest texel per tile sets the fixed-point scale.
+    for (const LpvLocalInput& l : local)
+        localFluxMax(l);
     GLuint p = fluxMax_.id();
     glUseProgram(p);
     glBindTextureUnit(0, rsm.position);
     glBindTextureUnit(1, rsm.flux);
     glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
     glProgramUniform1i(p, loc(p, "uRsmFlux"), 1);
-    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
+    if (sun)
+        glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 2. VPLs into the fixed-point sums.
@@ -200,13 +227,16 @@ void LpvPass::inject(const LpvRsmInput& rsm, bool directed) {
     glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
     glProgramUniform1i(p, loc(p, "uRsmNormal"), 2);
     glProgramUniform1i(p, loc(p, "uRsmFlux"), 1);
-    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), rsm.tileSize * rsm.tileSize);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
     glProgramUniform1i(p, loc(p, "uScaleSlot"), -1);
     glProgramUniform1f(p, loc(p, "uInjectionOffset"), injectionOffset_);
     glProgramUniform1i(p, loc(p, "uDirected"), directed ? 1 : 0);
     if (directed)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNormalSumsBinding, volumes_.normalSums.id());
-    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
+    if (sun)
+        glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
+    for (const LpvLocalInput& l : local)
+        injectLocal(l);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 3. Sums to floats: volume 0 and the accumulator both start as V_0.
@@ -219,7 +249,7 @@ void LpvPass::resolveSums(int destination, bool accumulate, int scaleSlot, int r
     const GLuint p = resolve_.id();
     glUseProgram(p);
     setCascadeUniforms(p);
-    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
     glProgramUniform1i(p, loc(p, "uAccumulate"), accumulate ? 1 : 0);
     glProgramUniform1i(p, loc(p, "uScaleSlot"), scaleSlot);
     glProgramUniform1i(p, loc(p, "uRecordSlot"), recordSlot);
@@ -251,7 +281,8 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     glBindTextureUnit(2, rsm.normal);
     glProgramUniform1i(p, loc(p, "uRsmPosition"), 0);
     glProgramUniform1i(p, loc(p, "uRsmNormal"), 2);
-    glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(volumes_.cascades()));
+    if (rsm.position && rsm.tileSize > 0)
+        glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(volumes_.cascades()));
 
     if (camera && camera->depth && camera->normal) {
         p = gvFromCamera_.id();
@@ -299,7 +330,7 @@ void LpvPass::buildNormals(int dilation) {
     GLuint p = normals_.id();
     glUseProgram(p);
     setCascadeUniforms(p);
-    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNormalSumsBinding, volumes_.normalSums.id());
     glBindImageTexture(0, volumes_.normals[0].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(gx, gx, gz);
@@ -337,7 +368,7 @@ void LpvPass::injectSky(const LpvSkyInput& sky) {
     glProgramUniform1f(p, loc(p, "uSkyTop"), sky.top);
     glProgramUniform1f(p, loc(p, "uSkyBottom"), sky.bottom);
     glProgramUniform3fv(p, loc(p, "uSkyRadiance"), 1, glm::value_ptr(sky.radiance));
-    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), tileSize_ * tileSize_);
+    glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
     glProgramUniform1i(p, loc(p, "uScaleSlot"), 0);
     const int n = volumes_.gridSize();
     glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(volumes_.cascades()));
@@ -496,7 +527,7 @@ std::vector<LpvGridFrame> LpvPass::cascadeFrames() const {
 }
 
 void LpvPass::captureIfRequested(int step, int index) {
-    if (!capture_ || !active_)
+    if (!capture_ || !active_ || bouncing_)
         return;
     const int cascade = capture_->cascade;
     if (cascade < 0 || cascade >= volumes_.cascades())

@@ -40,6 +40,10 @@ struct LpvSettings {
     // dilated this many cells, keeps light from flowing back into its emitter.
     bool directed = false;
     int directedDilation = 1;
+    // Multi-bounce (docs/lpv.md): 1 = the VPLs' light only; each further
+    // bounce re-injects the last one's light at geometry-volume surfels.
+    int bounces = 1;
+    float bounceAlbedo = 0.5f;
 
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };
@@ -71,14 +75,30 @@ struct LpvSkyInput {
     glm::vec3 radiance{0.0f};
 };
 
+// VPLs not tied to a cascade (docs/lpv.md "Local lights, emissive surfaces and
+// bounces"): spot and point lights' RSM faces (LocalRsmPass) and emissive
+// surfaces' samples (EmissiveVplBuffer). Every texel with w = 1 in `position`
+// is injected into every cascade that holds it.
+struct LpvLocalInput {
+    GLuint position = 0, normal = 0, flux = 0; // 2D arrays in RsmPass's formats (or RGBA32F), one layer per face
+    int size = 0, layers = 0;
+    std::string label; // for the note, e.g. "1 local-light RSM face"
+};
+
+// ", 1 local-light RSM face injected, ..." for LpvPass's note.
+std::string localNote(const std::vector<LpvLocalInput>& local);
+
 class LpvPass {
   public:
     static scene::Expected<LpvPass> create();
 
     // Injection, geometry volume and propagation for this frame.
-    // `sky` (may be null): inject sky light as well.
+    // `sky` (may be null): inject sky light as well. `local`: spot and point
+    // lights' and emissive surfaces' VPLs as well; with them, `rsm` may hold
+    // cascades but no tiles (position 0, tileSize 0): a scene without a sun.
     scene::Expected<void> run(const LpvSettings& settings, const LpvRsmInput& rsm, const LpvCameraInput* camera,
-                              GpuTimer& timer, const LpvSkyInput* sky = nullptr);
+                              GpuTimer& timer, const LpvSkyInput* sky = nullptr,
+                              const std::vector<LpvLocalInput>& local = {});
     // Nothing to inject (no sun): frees the volumes, shading reads no LPV.
     void disable(std::string reason);
     // Nothing the LPV is computed from changed: keep the volumes as they are.
@@ -114,12 +134,19 @@ class LpvPass {
 
   private:
     LpvPass() = default;
-    void inject(const LpvRsmInput& rsm, bool directed);
+    void inject(const LpvRsmInput& rsm, bool directed, const std::vector<LpvLocalInput>& local);
+    // Local lights' share of inject() (LpvPassLocal.cpp): their brightest texel
+    // into every cascade's bound, then their VPLs into the fixed-point sums.
+    void localFluxMax(const LpvLocalInput& local);
+    void injectLocal(const LpvLocalInput& local);
     void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
     void propagate(const LpvSettings& settings);
     // Directed propagation: the injected normal sums to averages, then dilated.
     void buildNormals(int dilation);
     void injectSky(const LpvSkyInput& sky);
+    // Bounces 2.. lpv.bounces after the first propagation (LpvBounce.h is the CPU twin).
+    void propagateBounces(const LpvSettings& settings);
+    void addBounceTotal(bool final);
     // Fixed-point sums to floats into volume `destination` and the accumulator,
     // decoded with the scale of `scaleSlot` (-1: injection); the result's
     // largest coefficient goes to `recordSlot` (lpv_common.glsl).
@@ -137,6 +164,8 @@ class LpvPass {
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
     Program normals_, normalsDilate_, skyInject_;
+    Program bounceInject_, bounceAdd_;
+    Program localFluxMax_, localInject_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;
@@ -144,7 +173,8 @@ class LpvPass {
     int readIndex_ = 0; // volume holding the last step's result
     int normalsIndex_ = -1; // normals texture the propagation reads; -1: undirected
     int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)
-    int tileSize_ = 0;  // of this frame's RSM: the fixed-point bound counts its texels
+    int tileSize_ = 0;  // of this frame's RSM
+    int injectedTexels_ = 0; // the sun's tile and every local face: the fixed-point bound counts them
     float injectionOffset_ = 1.0f;
     bool occlusion_ = true;
     int propagationSteps_ = 0;
@@ -153,6 +183,7 @@ class LpvPass {
     std::array<Texture, 6> captureCopy_; // N^3 per channel: V_step (0-2), accumulator (3-5); only while capturing
     int captureGrid_ = 0;
     int capturedStep_ = -1; // -1: nothing copied this frame
+    bool bouncing_ = false; // propagating bounce 2 or later: the visualizers capture the first bounce
     std::string note_ = "LPV: not run yet";
     std::string computedNote_; // what the last computed frame ran
 };

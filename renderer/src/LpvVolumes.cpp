@@ -39,8 +39,9 @@ std::size_t LpvVolumes::allocatedBytes() const {
     if (n == 0)
         return 0;
     const std::size_t directed = normals[0] ? 2 * n * n * n * k * kTexelBytes + 4 * n * n * n * k * 4 : 0;
+    const std::size_t bounces = bounceTotal.channel[0] ? 3 * n * n * n * k * kTexelBytes : 0;
     return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
-           8 * m * m * m * k * 4 + 3 * k * 4 + directed;
+           8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces;
 }
 
 void LpvVolumes::ensureDirected(bool directed) {
@@ -56,6 +57,18 @@ void LpvVolumes::ensureDirected(bool directed) {
         t = makeVolume(gridSize_, gridSize_, gridSize_ * cascades_);
     normalSums = makeZeroBuffer(4 * std::size_t(gridSize_) * std::size_t(gridSize_) * std::size_t(gridSize_) *
                                 std::size_t(cascades_) * 4);
+}
+
+void LpvVolumes::ensureBounces(bool bounces) {
+    if (!bounces || gridSize_ == 0) {
+        for (Texture& t : bounceTotal.channel)
+            t.reset();
+        return;
+    }
+    if (bounceTotal.channel[0])
+        return;
+    for (Texture& t : bounceTotal.channel)
+        t = makeVolume(gridSize_, gridSize_, gridSize_ * cascades_);
 }
 
 void LpvVolumes::release() {
@@ -75,6 +88,8 @@ void LpvVolumes::release() {
     for (Texture& t : normals)
         t.reset();
     normalSums.reset();
+    for (Texture& t : bounceTotal.channel)
+        t.reset();
     gridSize_ = cascades_ = 0;
 }
 

@@ -23,6 +23,8 @@ class LpvVolumes {
     scene::Expected<void> ensure(int gridSize, int cascades);
     // The normals volume of directed propagation, allocated only while it runs.
     void ensureDirected(bool directed);
+    // The running total of earlier bounces, allocated only while lpv.bounces > 1.
+    void ensureBounces(bool bounces);
     void release();
 
     int gridSize() const { return gridSize_; }
@@ -43,6 +45,8 @@ class LpvVolumes {
     // fixed-point sums at injection (4 int per cell).
     std::array<Texture, 2> normals;
     Buffer normalSums;
+    // Multi-bounce only (ensureBounces): the sum of the bounces propagated so far.
+    LpvVolumeSet bounceTotal;
 
   private:
     int gridSize_ = 0;

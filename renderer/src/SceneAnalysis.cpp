@@ -1,5 +1,7 @@
 #include "lpv/renderer/SceneAnalysis.h"
 
+#include "lpv/renderer/LocalLightAnalysis.h"
+
 #include "lpv/scene/Picking.h"
 
 #include <algorithm>
@@ -95,10 +97,15 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     lpv.effect = "Light propagation volumes";
     lpv.parameter = "lpv.intensity";
     lpv.setting = scene::formatValue(params.get("lpv.intensity"));
-    lpv.wanted = t.hasDirectionalLight && params.getFloat("lpv.intensity") > 0.0f;
-    lpv.reason = !t.hasDirectionalLight ? "no directional light: nothing to inject"
-                 : lpv.wanted           ? "a directional light lights the scene: its RSM is injected"
-                                        : "lpv.intensity is 0";
+    // Spot and point lights are injected too (LocalLightAnalysis.h): they alone can run the LPV.
+    const EffectDecision local = decideLocalLightInjection(s, params);
+    const EffectDecision emissive = decideEmissiveInjection(s, params);
+    lpv.wanted = (t.hasDirectionalLight || local.wanted || emissive.wanted) && params.getFloat("lpv.intensity") > 0.0f;
+    lpv.reason = params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
+                 : t.hasDirectionalLight ? "a directional light lights the scene: its RSM is injected"
+                 : local.wanted          ? "spot or point lights light the scene: their RSMs are injected"
+                 : emissive.wanted       ? "emissive surfaces light the scene: their VPLs are injected"
+                                         : "no directional light (and no spot or point light): nothing to inject";
     out.push_back(lpv);
 
     out.push_back(decideDirectedPropagation(params, lpv.wanted, lpv.reason));
@@ -111,6 +118,9 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     out.push_back(decideSubsurface(t, params, lpv.wanted, lpv.reason));
     out.push_back(decideGlossyReflections(t, params, lpv.wanted, lpv.reason));
     out.push_back(decideSunRays(s, params, camera, aspect));
+    out.push_back(local);
+    out.push_back(emissive);
+    out.push_back(decideBounces(params, lpv.wanted));
     return out;
 }
 

@@ -74,6 +74,26 @@ std::vector<ParameterInfo> declareParameters() {
                 P::LpvInjection | P::GeometryVolume | P::LpvPropagation),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
+        integer("lpv.bounces", 1, 1, 4, "bounces", "LPV",
+                "Light bounces in the LPV: 1 = the VPLs' light only; each further bounce re-injects the last "
+                "one's light where the geometry volume has surfaces and propagates it again",
+                P::LpvPropagation | P::Shading),
+        real("lpv.bounceAlbedo", 0.5, 0.0, 1.0, "", "LPV",
+             "Albedo assumed for the geometry volume's surfaces when light bounces again (lpv.bounces > 1)",
+             P::LpvPropagation | P::Shading),
+        choice("lpv.localLights", "off", kAutoOnOff, "LPV",
+               "Inject spot and point lights through reflective shadow maps of their own (auto: when the scene "
+               "has one; off by default: spot-lit scenes such as the Cornell box template then keep their image "
+               "and frame time)",
+               P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
+        integer("lpv.localRsmSize", 128, 16, 1024, "px", "LPV",
+                "Width and height of each spot light's RSM and of each face of a point light's cube RSM",
+                P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
+        choice("lpv.emissive", "off", kAutoOnOff, "LPV",
+               "Inject emissive surfaces as VPLs sampled on their triangles (auto: when a visible material emits; "
+               "off by default: scenes that model a lamp both as a light and as an emissive quad, like the Cornell "
+               "box template, would count it twice)",
+               P::LpvInjection | P::LpvPropagation | P::Shading),
         // --- Effects (thesis extensions) ---
         choice("effects.skyInjection", "auto", kAutoOnOff, "Effects",
                "Inject sky light from above the highest occluder of each column (auto: only for open scenes)",

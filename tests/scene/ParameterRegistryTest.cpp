@@ -16,7 +16,7 @@ TEST(ParameterRegistry, DeclaresEveryParameterTheSeedsName) {
     const char* required[] = {
         "lpv.variant", "lpv.gridSize", "lpv.cascades", "lpv.cellSize", "lpv.propagationSteps",
         "lpv.injectionOffset", "lpv.intensity", "lpv.occlusion", "lpv.gvFromCamera", "lpv.bleedingDamping",
-        "lpv.cascadeBlendLevels", "lpv.directedPropagation", "lpv.cellSnapping", "effects.skyInjection",
+        "lpv.cascadeBlendLevels", "lpv.directedPropagation", "lpv.cellSnapping", "lpv.bounces", "lpv.bounceAlbedo", "lpv.localLights", "lpv.localRsmSize", "lpv.emissive", "effects.skyInjection",
         "effects.subsurface", "effects.subsurfaceAttenuation", "effects.glossyReflections", "effects.glossySteps",
         "effects.sunRays", "effects.sunRaySamples", "effects.sunRayDecay", "effects.sunRayDensity", "rsm.tileSize",
         "rsm.cascades", "shadow.cascades", "shadow.mapSize", "shadow.softness", "shadow.bias", "shadow.stabilize",

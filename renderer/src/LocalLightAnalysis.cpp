@@ -1,0 +1,70 @@
+#include "lpv/renderer/LocalLightAnalysis.h"
+
+#include "LocalRsmPass.h"
+#include "lpv/renderer/lpv/EmissiveVpls.h"
+
+namespace lpv::renderer {
+
+int injectableLocalLights(const scene::Scene& scene) {
+    return int(selectInjectedLocalLights(scene).size());
+}
+
+EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene::ParameterSet& params) {
+    EffectDecision d;
+    d.effect = "Local-light RSM";
+    d.parameter = "lpv.localLights";
+    d.setting = params.getEnum(d.parameter);
+    const int lights = injectableLocalLights(scene);
+    const std::string found =
+        std::to_string(lights) + (lights == 1 ? " spot or point light" : " spot or point lights") +
+        " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM faces";
+    if (d.setting == "off") {
+        d.reason = "forced off by lpv.localLights";
+    } else if (lights == 0) {
+        d.reason = d.setting == "on"
+                       ? "forced on by lpv.localLights, but the scene has no lit spot or point light"
+                       : "no spot or point light";
+    } else if (params.getFloat("lpv.intensity") <= 0.0) {
+        d.reason = "lpv.intensity is 0";
+    } else {
+        d.wanted = true;
+        d.reason = found;
+    }
+    return d;
+}
+
+EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::ParameterSet& params) {
+    EffectDecision d;
+    d.effect = "Emissive VPLs";
+    d.parameter = "lpv.emissive";
+    d.setting = params.getEnum(d.parameter);
+    const bool emissive = lpvref::sceneHasEmissiveSurface(scene);
+    if (d.setting == "off") {
+        d.reason = "forced off by lpv.emissive";
+    } else if (!emissive) {
+        d.reason = d.setting == "on" ? "forced on by lpv.emissive, but no visible material emits"
+                                     : "no visible material emits";
+    } else if (params.getFloat("lpv.intensity") <= 0.0) {
+        d.reason = "lpv.intensity is 0";
+    } else {
+        d.wanted = true;
+        d.reason = "a visible material emits: its triangles are sampled as VPLs";
+    }
+    return d;
+}
+
+EffectDecision decideBounces(const scene::ParameterSet& params, bool lpvRuns) {
+    EffectDecision d;
+    d.effect = "LPV bounces";
+    d.parameter = "lpv.bounces";
+    const int bounces = params.getInt("lpv.bounces");
+    d.setting = std::to_string(bounces);
+    d.wanted = lpvRuns && bounces > 1;
+    d.reason = bounces <= 1 ? "one bounce (lpv.bounces = 1)"
+               : lpvRuns    ? std::to_string(bounces - 1) + " more bounce" + (bounces > 2 ? "s" : "") +
+                               " re-injected at the geometry volume's surfels"
+                         : "the LPV does not run";
+    return d;
+}
+
+} // namespace lpv::renderer

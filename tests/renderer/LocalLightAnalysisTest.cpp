@@ -1,0 +1,71 @@
+// The scene analysis' rows for local lights, emissive surfaces and bounces
+// (LocalLightAnalysis.h): what each decides and the reason it gives, on the
+// Cornell box template (a spot light and an emissive lamp, no sun).
+#include "lpv/renderer/LocalLightAnalysis.h"
+#include "lpv/scene/CornellBox.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace lpv;
+
+namespace {
+
+const renderer::EffectDecision& find(const std::vector<renderer::EffectDecision>& all,
+                                     const std::string& key) {
+    auto it = std::find_if(all.begin(), all.end(), [&](const auto& d) { return d.parameter == key; });
+    EXPECT_NE(it, all.end()) << key;
+    return *it;
+}
+
+scene::ParameterSet with(std::initializer_list<std::pair<const char*, const char*>> values) {
+    scene::ParameterSet params;
+    for (const auto& [key, value] : values)
+        EXPECT_TRUE(params.setFromText(key, value, "test").has_value()) << key;
+    return params;
+}
+
+} // namespace
+
+TEST(LocalLightAnalysis, DefaultsLeaveTheSpotLitCornellBoxWithoutAnLpv) {
+    const scene::Scene s = scene::makeCornellBoxProject().scene;
+    const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), {}, nullptr);
+    EXPECT_FALSE(d.front().runs());
+    EXPECT_NE(d.front().reason.find("no directional light"), std::string::npos) << d.front().reason;
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "forced off by lpv.localLights");
+    EXPECT_EQ(find(d, "lpv.emissive").reason, "forced off by lpv.emissive");
+    EXPECT_FALSE(find(d, "lpv.bounces").runs());
+}
+
+TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun) {
+    const scene::Scene s = scene::makeCornellBoxProject().scene;
+    const auto d =
+        renderer::decideEffects(s, renderer::analyseSceneTraits(s),
+                                with({{"lpv.localLights", "auto"}, {"lpv.bounces", "3"}}), nullptr);
+    EXPECT_TRUE(d.front().runs()) << d.front().reason;
+    EXPECT_EQ(d.front().reason, "spot or point lights light the scene: their RSMs are injected");
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "1 spot or point light injected through 128^2 RSM faces");
+    EXPECT_TRUE(find(d, "lpv.bounces").runs());
+    EXPECT_EQ(find(d, "lpv.bounces").reason, "2 more bounces re-injected at the geometry volume's surfels");
+
+    const auto e = renderer::decideEffects(s, renderer::analyseSceneTraits(s),
+                                           with({{"lpv.emissive", "auto"}}), nullptr);
+    EXPECT_TRUE(e.front().runs());
+    EXPECT_TRUE(find(e, "lpv.emissive").runs());
+    EXPECT_EQ(find(e, "lpv.emissive").reason, "a visible material emits: its triangles are sampled as VPLs");
+}
+
+TEST(LocalLightAnalysis, NoSpotPointOrEmitterSaysSo) {
+    scene::Scene s = scene::makeCornellBoxProject().scene;
+    s.lights.clear();
+    for (scene::Material& m : s.materials)
+        m.emissive = glm::vec3(0.0f);
+    const auto params = with({{"lpv.localLights", "auto"}, {"lpv.emissive", "on"}, {"lpv.bounces", "2"}});
+    const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), params, nullptr);
+    EXPECT_FALSE(d.front().runs());
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "no spot or point light");
+    EXPECT_EQ(find(d, "lpv.emissive").reason, "forced on by lpv.emissive, but no visible material emits");
+    EXPECT_FALSE(find(d, "lpv.bounces").runs());
+    EXPECT_EQ(find(d, "lpv.bounces").reason, "the LPV does not run");
+}
