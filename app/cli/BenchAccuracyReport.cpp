@@ -35,7 +35,8 @@ void printBenchAccuracyReportHelp() {
     std::cout << R"(
 bench report [--out DIR] [--scenes DIR] [--scene NAME ...] [--quick] [options]:
 the README's accuracy-against-time report from one command. For each scene
-(cornell-box: the built-in template plus a sun through its open front;
+(cornell-box: the built-in template plus a sun through its open front,
+its ceiling spot injected too with lpv.localLights=on;
 sibenik and sponza: imported from --scenes, default ../shared/scenes, with
 the sun `lpv import` adds) it creates the project in DIR/NAME/,
 traces the reference once (DIR/NAME/reference.exr, kept for later runs of
@@ -166,6 +167,9 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
         sun.direction = glm::normalize(glm::vec3(0.2f, -0.6f, 1.0f));
         sun.intensity = 3.0f;
         p->scene.lights.push_back(sun);
+        // The reference bounces the ceiling spot's light too: the LPV injects it
+        // as well (lpv.localLights is off by default), so both see the same lights.
+        (void)p->parameters.setFromText("lpv.localLights", "on", "bench report");
         if (auto ok = scene::saveProject(*p, project); !ok) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";
             return false;
