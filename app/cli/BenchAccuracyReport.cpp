@@ -50,6 +50,9 @@ varied alone around the project's settings:
   occlusion  lpv.occlusion=false,true
   directed   lpv.directedPropagation=off,on
   sky        effects.skyInjection=off,on
+  subsurface effects.subsurface=off,on
+  glossy     effects.glossyReflections=off,on
+  bounces    lpv.bounces=1,2,3
 Scenes with emissive surfaces (the Cornell box's ceiling light) also get a
 radiosity solve measured against a reference of the emissive light alone
 (the project's lights removed), at doubling solve times. Writes DIR/report.md
@@ -89,6 +92,9 @@ const std::vector<Question> kQuestions = {
     {"occlusion", "lpv.occlusion=false,true", "lpv.occlusion=false,true"},
     {"directed", "lpv.directedPropagation=off,on", ""},
     {"sky", "effects.skyInjection=off,on", ""},
+    {"subsurface", "effects.subsurface=off,on", ""},
+    {"glossy", "effects.glossyReflections=off,on", ""},
+    {"bounces", "lpv.bounces=1,2,3", ""},
 };
 
 struct SceneSpec {

@@ -24,6 +24,8 @@ Commands:
   bench PROJECT --sweep KEY=V1,V2 ...
                               Sweep parameters: per-pass GPU time and error against a reference,
                               CSV/JSON/Markdown report and PNG plots (--reference REF.exr)
+  bench PROJECT --flicker --path NAME | --sun-rotate DEG
+                              Temporal stability: frame-to-frame change of the indirect light
   bench report [--out DIR]    The accuracy-against-time report: references and sweeps on the
                               Cornell box, Sibenik and Sponza, radiosity error against solve time
   info PROJECT                Validate a project and print what it contains
