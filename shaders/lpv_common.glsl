@@ -220,20 +220,17 @@ void lpvRecordMax(int k, int slot, float value) {
 
 #ifdef LPV_WITH_FACE_BLOCKING
 // The blocking potential on the +x, +y and +z face of every cell, written once
-// per frame by lpv_face_blocking.comp (zero: no occlusion).
-layout(binding = 4) uniform sampler3D uFaceBlockX;
-layout(binding = 5) uniform sampler3D uFaceBlockY;
-layout(binding = 6) uniform sampler3D uFaceBlockZ;
+// per frame by lpv_face_blocking.comp (zero: no occlusion). The three faces of
+// cell (x, y, z) sit side by side at texels (3x + axis, y, z): one cache line
+// holds a cell's faces, where three textures made the propagation wait on
+// three memory streams (docs/lpv.md, "Performance notes").
+layout(binding = 4) uniform sampler3D uFaceBlocking;
 uniform bool uOcclusion;
 
 vec4 lpvFaceBlocking(int axis, ivec3 texel) {
     if (!uOcclusion)
         return vec4(0.0);
-    if (axis == 0)
-        return texelFetch(uFaceBlockX, texel, 0);
-    if (axis == 1)
-        return texelFetch(uFaceBlockY, texel, 0);
-    return texelFetch(uFaceBlockZ, texel, 0);
+    return texelFetch(uFaceBlocking, ivec3(3 * texel.x + axis, texel.yz), 0);
 }
 
 // The blocking on the face between q and q + sigma e_a: q's +a face for
@@ -256,9 +253,27 @@ vec3 lpvDirectedNormal(int k, ivec3 p) {
 }
 #endif
 #ifdef LPV_WITH_SOURCES
+#ifdef LPV_INTERLEAVED_SOURCES
+// The compute gather's ping-pong volumes: 3N x N x NK, a cell's R, G, B side by side.
+layout(binding = 0) uniform sampler3D uSource;
+
+void lpvFetchSource(ivec3 source, out vec4 r, out vec4 g, out vec4 b) {
+    ivec3 first = ivec3(3 * source.x, source.yz);
+    r = texelFetch(uSource, first, 0);
+    g = texelFetch(uSource, first + ivec3(1, 0, 0), 0);
+    b = texelFetch(uSource, first + ivec3(2, 0, 0), 0);
+}
+#else
 layout(binding = 0) uniform sampler3D uSourceR;
 layout(binding = 1) uniform sampler3D uSourceG;
 layout(binding = 2) uniform sampler3D uSourceB;
+
+void lpvFetchSource(ivec3 source, out vec4 r, out vec4 g, out vec4 b) {
+    r = texelFetch(uSourceR, source, 0);
+    g = texelFetch(uSourceG, source, 0);
+    b = texelFetch(uSourceB, source, 0);
+}
+#endif
 
 // Gather: light from the neighbour q = p - sigma e_a, if it is inside and not dark.
 void lpvGatherFrom(int a, float sigma, int k, ivec3 p, vec3 directed, inout vec3 accDc, inout vec3 nR,
@@ -268,7 +283,8 @@ void lpvGatherFrom(int a, float sigma, int k, ivec3 p, vec3 directed, inout vec3
     if (!lpvInsideCascade(q))
         return;
     ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
-    vec4 r = texelFetch(uSourceR, source, 0), g = texelFetch(uSourceG, source, 0), b = texelFetch(uSourceB, source, 0);
+    vec4 r, g, b;
+    lpvFetchSource(source, r, g, b);
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return; // dark neighbours send nothing: skip the face math and the GV
     lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), directed, accDc, nR, nG, nB);

@@ -8,9 +8,8 @@
 #include "lpv_common.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(rgba32f, binding = 0) uniform writeonly image3D uFaceBlockX;
-layout(rgba32f, binding = 1) uniform writeonly image3D uFaceBlockY;
-layout(rgba32f, binding = 2) uniform writeonly image3D uFaceBlockZ;
+// 3N x N x NK: the +x, +y, +z faces of cell (x, y, z) at texels 3x, 3x + 1, 3x + 2.
+layout(rgba32f, binding = 0) uniform writeonly image3D uFaceBlocking;
 
 void main() {
     ivec3 texel = ivec3(gl_GlobalInvocationID);
@@ -19,7 +18,8 @@ void main() {
     int k = texel.z / uGridSize;
     ivec3 q = ivec3(texel.xy, texel.z % uGridSize);
     // Direction 2a travels along +a: the face between q and q + e_a.
-    imageStore(uFaceBlockX, texel, lpvBlockingOnFace(k, q, 0));
-    imageStore(uFaceBlockY, texel, lpvBlockingOnFace(k, q, 2));
-    imageStore(uFaceBlockZ, texel, lpvBlockingOnFace(k, q, 4));
+    const ivec3 first = ivec3(3 * texel.x, texel.yz);
+    imageStore(uFaceBlocking, first, lpvBlockingOnFace(k, q, 0));
+    imageStore(uFaceBlocking, first + ivec3(1, 0, 0), lpvBlockingOnFace(k, q, 2));
+    imageStore(uFaceBlocking, first + ivec3(2, 0, 0), lpvBlockingOnFace(k, q, 4));
 }

@@ -11,13 +11,14 @@
 #define LPV_WITH_FACE_BLOCKING
 #define LPV_WITH_DIRECTED
 #define LPV_WITH_SOURCES
+#define LPV_INTERLEAVED_SOURCES
 #include "sh.glsl"
 #include "lpv_common.glsl"
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = 32, local_size_y = 8, local_size_z = 1) in;
 
-layout(rgba32f, binding = 0) uniform writeonly image3D uDestR;
-layout(rgba32f, binding = 1) uniform writeonly image3D uDestG;
-layout(rgba32f, binding = 2) uniform writeonly image3D uDestB;
+// Sources and destination interleave a cell's R, G, B (3N x N x NK,
+// lpv_interleave.comp); the accumulator is per channel, for the lookup's filter.
+layout(rgba32f, binding = 0) uniform writeonly image3D uDest;
 layout(rgba32f, binding = 3) uniform image3D uAccumR;
 layout(rgba32f, binding = 4) uniform image3D uAccumG;
 layout(rgba32f, binding = 5) uniform image3D uAccumB;
@@ -32,9 +33,10 @@ void main() {
     // nothing (all its neighbours dark, common in the first steps) writes nothing.
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return;
-    imageStore(uDestR, texel, r);
-    imageStore(uDestG, texel, g);
-    imageStore(uDestB, texel, b);
+    ivec3 first = ivec3(3 * texel.x, texel.yz);
+    imageStore(uDest, first, r);
+    imageStore(uDest, first + ivec3(1, 0, 0), g);
+    imageStore(uDest, first + ivec3(2, 0, 0), b);
     imageStore(uAccumR, texel, imageLoad(uAccumR, texel) + r);
     imageStore(uAccumG, texel, imageLoad(uAccumG, texel) + g);
     imageStore(uAccumB, texel, imageLoad(uAccumB, texel) + b);

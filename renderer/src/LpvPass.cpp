@@ -82,6 +82,8 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.localFluxMax_, {"lpv_inject_local.comp"}, {"LOCAL_FLUX_MAX 1"}},
         {&pass.localInject_, {"lpv_inject_local.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
+        {&pass.interleave_, {"lpv_interleave.comp"}, {}},
+        {&pass.deinterleave_, {"lpv_interleave.comp"}, {"UNPACK 1"}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
         {&pass.rasterScatter_,
@@ -140,6 +142,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     }
     volumes_.ensureDirected(settings.directed);
     volumes_.ensureBounces(settings.bounces > 1);
+    volumes_.ensureInterleaved(settings.variant == LpvVariant::ComputeGather);
     cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
     tileSize_ = rsm.tileSize;
     injectionOffset_ = settings.injectionOffset;
@@ -316,9 +319,7 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uOcclusion"), 1);
     glBindTextureUnit(3, volumes_.geometry.id());
-    for (int a = 0; a < 3; ++a)
-        glBindImageTexture(GLuint(a), volumes_.faceBlocking[std::size_t(a)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                           GL_RGBA32F);
+    glBindImageTexture(0, volumes_.faceBlocking.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const int n = volumes_.gridSize();
     glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
@@ -376,16 +377,36 @@ void LpvPass::injectSky(const LpvSkyInput& sky) {
 }
 
 void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const {
-    // Layout bindings: sources 0..2, the GV 3, the face blocking 4..6.
+    // Layout bindings: sources 0..2, the GV 3, the face blocking 4.
     for (int c = 0; c < 3; ++c)
         glBindTextureUnit(GLuint(c), volumes_.volume[std::size_t(source)].channel[std::size_t(c)].id());
-    for (int a = 0; a < 3; ++a)
-        glBindTextureUnit(GLuint(4 + a), volumes_.faceBlocking[std::size_t(a)].id());
+    glBindTextureUnit(4, volumes_.faceBlocking.id());
     glBindTextureUnit(3, volumes_.geometry.id()); // uGv, layout binding 3
     glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
     const bool directed = normalsIndex_ >= 0;
     glBindTextureUnit(kNormalsUnit, directed ? volumes_.normals[std::size_t(normalsIndex_)].id() : 0);
     glProgramUniform1i(program, loc(program, "uDirected"), directed ? 1 : 0);
+}
+
+void LpvPass::interleave(int index, bool pack) {
+    const GLuint p = pack ? interleave_.id() : deinterleave_.id();
+    const int n = volumes_.gridSize(), k = volumes_.cascades();
+    glUseProgram(p);
+    glProgramUniform3i(p, loc(p, "uSize"), n, n, n * k);
+    const LpvVolumeSet& channels = volumes_.volume[std::size_t(index)];
+    const GLuint interleaved = volumes_.interleaved[std::size_t(index)].id();
+    if (pack) {
+        for (int c = 0; c < 3; ++c)
+            glBindTextureUnit(GLuint(c), channels.channel[std::size_t(c)].id());
+        glBindImageTexture(0, interleaved, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    } else {
+        glBindTextureUnit(0, interleaved);
+        for (int c = 0; c < 3; ++c)
+            glBindImageTexture(GLuint(c), channels.channel[std::size_t(c)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                               GL_RGBA32F);
+    }
+    glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(n * k));
+    glMemoryBarrier(kComputeResults);
 }
 
 void LpvPass::propagate(const LpvSettings& settings) {
@@ -409,19 +430,28 @@ void LpvPass::propagate(const LpvSettings& settings) {
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
     }
+    const bool gather = settings.variant == LpvVariant::ComputeGather;
+    if (gather && settings.propagationSteps > 0)
+        interleave(readIndex_, true);
     for (int step = 0; step < settings.propagationSteps; ++step) {
         const int read = readIndex_, write = 1 - readIndex_;
         switch (settings.variant) {
         case LpvVariant::ComputeGather:
             // Cleared so that the gather need not store the cells that receive nothing.
-            for (const Texture& t : volumes_.volume[std::size_t(write)].channel)
-                glClearTexImage(t.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            glClearTexImage(volumes_.interleaved[std::size_t(write)].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
             glUseProgram(gatherProgram);
             setCascadeUniforms(gatherProgram);
             bindStepSources(gatherProgram, read, settings.occlusion);
+            glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
             bindStepImages(write);
-            glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(n * k));
+            glBindImageTexture(0, volumes_.interleaved[std::size_t(write)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                               GL_RGBA32F);
+            // 32 x 8 cells per work group: llvmpipe runs a group per task, and
+            // 4x fewer tasks than 8 x 8 measured faster (docs/lpv.md).
+            glDispatchCompute(groups(n, 32), groups(n, 8), GLuint(n * k));
             glMemoryBarrier(kComputeResults);
+            if (capture_ && step + 1 == std::clamp(capture_->step, 0, settings.propagationSteps))
+                interleave(write, false); // the viewer reads the per-channel volume
             break;
         case LpvVariant::ComputeScatter:
             glUseProgram(scatterProgram);

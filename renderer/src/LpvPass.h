@@ -154,6 +154,8 @@ class LpvPass {
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
+    // volume[index] to and from the compute gather's interleaved[index] (lpv_interleave.comp).
+    void interleave(int index, bool pack);
     // At the requested step: copies volume `index` (V_step) and the
     // accumulator of the requested cascade on the GPU (no stall inside the
     // timed passes); readCapture() brings the copies and the GV to the CPU
@@ -166,6 +168,7 @@ class LpvPass {
     Program normals_, normalsDilate_, skyInject_;
     Program bounceInject_, bounceAdd_;
     Program localFluxMax_, localInject_;
+    Program interleave_, deinterleave_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;

@@ -1,5 +1,6 @@
 #include "LpvVolumes.h"
 
+#include <algorithm>
 #include <string>
 
 namespace lpv::renderer {
@@ -40,8 +41,9 @@ std::size_t LpvVolumes::allocatedBytes() const {
         return 0;
     const std::size_t directed = normals[0] ? 2 * n * n * n * k * kTexelBytes + 4 * n * n * n * k * 4 : 0;
     const std::size_t bounces = bounceTotal.channel[0] ? 3 * n * n * n * k * kTexelBytes : 0;
+    const std::size_t interleavedBytes = interleaved[0] ? 6 * n * n * n * k * kTexelBytes : 0;
     return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
-           8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces;
+           8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces + interleavedBytes;
 }
 
 void LpvVolumes::ensureDirected(bool directed) {
@@ -71,6 +73,18 @@ void LpvVolumes::ensureBounces(bool bounces) {
         t = makeVolume(gridSize_, gridSize_, gridSize_ * cascades_);
 }
 
+void LpvVolumes::ensureInterleaved(bool wanted) {
+    if (!wanted || gridSize_ == 0) {
+        for (Texture& t : interleaved)
+            t.reset();
+        return;
+    }
+    if (interleaved[0])
+        return;
+    for (Texture& t : interleaved)
+        t = makeVolume(3 * gridSize_, gridSize_, gridSize_ * cascades_);
+}
+
 void LpvVolumes::release() {
     for (auto& set : volume)
         for (Texture& t : set.channel)
@@ -78,8 +92,7 @@ void LpvVolumes::release() {
     for (Texture& t : accumulator.channel)
         t.reset();
     geometry.reset();
-    for (Texture& t : faceBlocking)
-        t.reset();
+    faceBlocking.reset();
     lpvSums.reset();
     gvSums.reset();
     scales.reset();
@@ -89,6 +102,8 @@ void LpvVolumes::release() {
         t.reset();
     normalSums.reset();
     for (Texture& t : bounceTotal.channel)
+        t.reset();
+    for (Texture& t : interleaved)
         t.reset();
     gridSize_ = cascades_ = 0;
 }
@@ -102,9 +117,11 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     const std::string layout = std::to_string(cascades) + " cascades of " + std::to_string(gridSize) + "^3";
-    if (std::size_t(max3d) < m * k)
+    // The tallest texture is the stacked GV, the widest the face blocking (3N).
+    const std::size_t largestSide = std::max(m * k, 3 * n);
+    if (std::size_t(max3d) < largestSide)
         return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
-                         layout + " stack to " + std::to_string(m * k) + " texels, over GL_MAX_3D_TEXTURE_SIZE " +
+                         layout + " need " + std::to_string(largestSide) + " texels on a side, over GL_MAX_3D_TEXTURE_SIZE " +
                              std::to_string(max3d) + "; lower lpv.gridSize or lpv.cascades");
     const std::size_t sumBytes = 12 * n * n * n * k * 4, gvBytes = 8 * m * m * m * k * 4;
     if (sumBytes > std::size_t(GLuint(maxBlock)) || gvBytes > std::size_t(GLuint(maxBlock)))
@@ -120,8 +137,7 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     for (Texture& t : accumulator.channel)
         t = makeVolume(gridSize, gridSize, gridSize * cascades);
     geometry = makeVolume(int(m), int(m), int(m * k));
-    for (Texture& t : faceBlocking)
-        t = makeVolume(gridSize, gridSize, gridSize * cascades);
+    faceBlocking = makeVolume(3 * gridSize, gridSize, gridSize * cascades);
     lpvSums = makeZeroBuffer(sumBytes);
     gvSums = makeZeroBuffer(gvBytes);
     scales = makeZeroBuffer(k * 3 * 4);

@@ -25,6 +25,8 @@ class LpvVolumes {
     void ensureDirected(bool directed);
     // The running total of earlier bounces, allocated only while lpv.bounces > 1.
     void ensureBounces(bool bounces);
+    // The compute gather's interleaved ping-pong volumes, allocated only while it runs.
+    void ensureInterleaved(bool interleaved);
     void release();
 
     int gridSize() const { return gridSize_; }
@@ -34,7 +36,8 @@ class LpvVolumes {
     std::array<LpvVolumeSet, 2> volume; // ping-pong
     LpvVolumeSet accumulator;
     Texture geometry;                    // (N+1) x (N+1) x ((N+1) K), RGBA32F
-    std::array<Texture, 3> faceBlocking; // per cell, the GV on its +x, +y, +z face (all but raster scatter)
+    Texture faceBlocking;                // 3N x N x NK: per cell, the GV on its +x, +y, +z face side by side
+                                         // (all but raster scatter)
     Buffer lpvSums;                      // 12 int per cell: fixed-point sums of injection / scatter
     Buffer gvSums;                       // 2 sources x 4 int per GV cell
     Buffer scales;                       // 3K uint (float bits): brightest texel per tile, then the largest
@@ -47,6 +50,10 @@ class LpvVolumes {
     Buffer normalSums;
     // Multi-bounce only (ensureBounces): the sum of the bounces propagated so far.
     LpvVolumeSet bounceTotal;
+    // Compute gather only (ensureInterleaved): the ping-pong volumes with a
+    // cell's R, G, B side by side, 3N x N x NK (lpv_interleave.comp). The
+    // gather's steps live here; volume[] holds V_0 and what a capture unpacks.
+    std::array<Texture, 2> interleaved;
 
   private:
     int gridSize_ = 0;
