@@ -275,18 +275,23 @@ void lpvFetchSource(ivec3 source, out vec4 r, out vec4 g, out vec4 b) {
 }
 #endif
 
-// Gather: light from the neighbour q = p - sigma e_a, if it is inside and not dark.
+// Gather: light from the neighbour q = p - sigma e_a, if it is inside. No
+// branches: a neighbour outside the cascade is read at the clamped cell and
+// weighted by 0. On llvmpipe, 8 cells run in one SIMD vector, and the early
+// returns (outside, or a dark neighbour) cost more in masks than they saved
+// (docs/lpv.md, "Performance notes").
 void lpvGatherFrom(int a, float sigma, int k, ivec3 p, vec3 directed, inout vec3 accDc, inout vec3 nR,
                    inout vec3 nG, inout vec3 nB) {
     ivec3 q = p;
     q[a] -= int(sigma);
-    if (!lpvInsideCascade(q))
-        return;
+    float inside = (q[a] >= 0 && q[a] < uGridSize) ? 1.0 : 0.0; // p is inside: only axis a can leave
+    q[a] = clamp(q[a], 0, uGridSize - 1);
     ivec3 source = ivec3(q.xy, k * uGridSize + q.z);
     vec4 r, g, b;
     lpvFetchSource(source, r, g, b);
-    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
-        return; // dark neighbours send nothing: skip the face math and the GV
+    r *= inside;
+    g *= inside;
+    b *= inside;
     lpvSend(a, sigma, r, g, b, lpvBlockingBetween(k, q, a, sigma), directed, accDc, nR, nG, nB);
 }
 
