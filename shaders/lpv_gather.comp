@@ -29,14 +29,12 @@ void main() {
         return;
     vec4 r, g, b;
     lpvGather(texel.z / uGridSize, ivec3(texel.xy, texel.z % uGridSize), r, g, b);
-    // The destination was cleared before the step: a cell that received
-    // nothing (all its neighbours dark, common in the first steps) writes nothing.
-    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
-        return;
     ivec3 first = ivec3(3 * texel.x, texel.yz);
     imageStore(uDest, first, r);
     imageStore(uDest, first + ivec3(1, 0, 0), g);
     imageStore(uDest, first + ivec3(2, 0, 0), b);
+    if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
+        return;
     imageStore(uAccumR, texel, imageLoad(uAccumR, texel) + r);
     imageStore(uAccumG, texel, imageLoad(uAccumG, texel) + g);
     imageStore(uAccumB, texel, imageLoad(uAccumB, texel) + b);

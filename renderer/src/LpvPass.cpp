@@ -438,7 +438,6 @@ void LpvPass::propagate(const LpvSettings& settings) {
         switch (settings.variant) {
         case LpvVariant::ComputeGather:
             // Cleared so that the gather need not store the cells that receive nothing.
-            glClearTexImage(volumes_.interleaved[std::size_t(write)].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
             glUseProgram(gatherProgram);
             setCascadeUniforms(gatherProgram);
             bindStepSources(gatherProgram, read, settings.occlusion);
