@@ -408,3 +408,46 @@ TEST_P(LpvDirectedTest, MatchesReferenceAndFreesItsVolume) {
 
 INSTANTIATE_TEST_SUITE_P(AllVariants, LpvDirectedTest, ::testing::ValuesIn(kVariants),
                          [](const auto& p) { return std::string(lpvVariantName(p.param)); });
+
+// The compute gather's interleaved ping-pong volumes (docs/lpv.md, "Memory
+// layout"): allocated only while it runs, and a step the LPV viewer captures
+// is unpacked into the per-channel volumes exactly as the raster gather,
+// which has no interleaved copy, leaves that step.
+TEST_F(LpvGLTest, InterleavedVolumesOnlyWhileTheComputeGatherRunsAndCapturesUnpack) {
+    const int n = 8;
+    LpvCase s{{glm::vec3(1.0f, -3.0f, 0.5f), 0.25f, n}, 0.002f};
+    const auto texels = wallScene(s.grid, 60, 2.0f, 8u);
+    FakeRsm rsm(int(std::ceil(std::sqrt(double(texels.size())))), {texels});
+
+    pass_->setCapture(LpvCaptureRequest{0, 3});
+    runGpu(s, rsm, LpvVariant::RasterGather, 6, true);
+    ASSERT_TRUE(pass_->snapshot().has_value());
+    const LpvSnapshot raster = *pass_->snapshot();
+    const std::size_t withoutInterleaved = pass_->allocatedBytes();
+
+    runGpu(s, rsm, LpvVariant::ComputeGather, 6, true);
+    ASSERT_TRUE(pass_->snapshot().has_value());
+    const LpvSnapshot gather = *pass_->snapshot();
+    EXPECT_EQ(pass_->allocatedBytes() - withoutInterleaved, std::size_t(2 * 3 * n * n * n * 16))
+        << "two 3N x N x N RGBA32F volumes for one cascade";
+    EXPECT_EQ(gather.step, 3);
+    float maxValue = 0.0f, maxDifference = 0.0f;
+    for (std::size_t c = 0; c < 3; ++c) {
+        ASSERT_EQ(gather.stepVolume[c].size(), raster.stepVolume[c].size());
+        for (std::size_t i = 0; i < gather.stepVolume[c].size(); ++i)
+            for (int j = 0; j < 4; ++j) {
+                maxValue = std::max(maxValue, std::abs(raster.stepVolume[c][i][j]));
+                maxDifference = std::max(maxDifference, std::abs(gather.stepVolume[c][i][j] - raster.stepVolume[c][i][j]));
+                maxDifference = std::max(maxDifference, std::abs(gather.accumulatedToStep[c][i][j] -
+                                                                 raster.accumulatedToStep[c][i][j]));
+            }
+    }
+    std::cout << "[ figures ] step 3 of 6 captured, compute gather against raster gather: max difference "
+              << maxDifference << " of max " << maxValue << "\n";
+    EXPECT_GT(maxValue, 1e-3f) << "light has reached step 3";
+    EXPECT_LT(maxDifference, 2e-5f * maxValue);
+
+    pass_->setCapture(std::nullopt);
+    runGpu(s, rsm, LpvVariant::ComputeScatter, 6, true);
+    EXPECT_EQ(pass_->allocatedBytes(), withoutInterleaved) << "freed when another variant runs";
+}
