@@ -201,7 +201,10 @@ TEST_P(LpvVariantTest, MatchesReference) {
 
 INSTANTIATE_TEST_SUITE_P(AllVariants, LpvVariantTest,
                          ::testing::Combine(::testing::ValuesIn(kVariants),
+                                            // 9 and 10: grids the compute gather's
+                                            // columns of 4 cells do not divide
                                             ::testing::Values(GridCase{8, 60, 1}, GridCase{8, 60, 6},
+                                                              GridCase{9, 60, 6}, GridCase{10, 80, 6},
                                                               GridCase{32, 2000, 8})),
                          [](const auto& p) {
                              const GridCase g = std::get<1>(p.param);
