@@ -9,6 +9,8 @@
 #include <epoxy/gl.h>
 
 #include <cstdlib>
+#include <map>
+#include <mutex>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +25,34 @@ struct HeadlessContext::State {
 };
 
 namespace {
+
+// EGL hands every caller the same display for a platform, and eglTerminate
+// ends it for all of them: the contexts on each display are counted, and the
+// last one to close terminates it.
+std::mutex displayMutex;
+std::map<EGLDisplay, int> contextsOnDisplay;
+
+void retainDisplay(EGLDisplay display) {
+    const std::lock_guard lock(displayMutex);
+    ++contextsOnDisplay[display];
+}
+
+void releaseDisplay(EGLDisplay display) {
+    const std::lock_guard lock(displayMutex);
+    auto it = contextsOnDisplay.find(display);
+    if (it != contextsOnDisplay.end() && --it->second > 0)
+        return;
+    if (it != contextsOnDisplay.end())
+        contextsOnDisplay.erase(it);
+    eglTerminate(display);
+}
+
+// A display that could not make a context is terminated unless another context uses it.
+void terminateIfUnused(EGLDisplay display) {
+    const std::lock_guard lock(displayMutex);
+    if (!contextsOnDisplay.contains(display))
+        eglTerminate(display);
+}
 
 bool hasExtension(const char* list, std::string_view ext) {
     if (!list)
@@ -89,7 +119,7 @@ HeadlessContext::~HeadlessContext() {
     if (state_ && state_->context != EGL_NO_CONTEXT) {
         eglMakeCurrent(state_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(state_->display, state_->context);
-        eglTerminate(state_->display);
+        releaseDisplay(state_->display);
     }
 }
 
@@ -123,9 +153,10 @@ Expected<HeadlessContext> HeadlessContext::create() {
             continue;
         EGLContext ctx = createCoreContext(c.display);
         if (ctx == EGL_NO_CONTEXT) {
-            eglTerminate(c.display);
+            terminateIfUnused(c.display);
             continue;
         }
+        retainDisplay(c.display);
         HeadlessContext out;
         out.state_->display = c.display;
         out.state_->context = ctx;
