@@ -1,6 +1,7 @@
 // `lpv radiosity`: progressive radiosity with GPU hemicubes, saved into the
 // project (docs/radiosity.md). A second run resumes where the first stopped.
 #include "Cli.h"
+#include "RenderSetup.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/importers/SceneTextures.h"
@@ -164,18 +165,10 @@ int runRadiosity(Args args) {
         return usageError("--refine needs a positive number", "radiosity");
 
     const std::filesystem::path projectFile = pos.front();
-    auto project = scene::loadProject(projectFile);
-    if (!project) {
-        std::cerr << "lpv: " << project.error().describe() << "\n";
-        return kFailure;
-    }
-    for (const std::string& kv : sets) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos)
-            return usageError("--set expects KEY=VALUE, got '" + kv + "'", "radiosity");
-        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok)
-            return usageError(ok.error().describe(), "radiosity");
-    }
+    int exitCode = kFailure;
+    auto project = loadProjectWithSets(projectFile.string(), sets, "radiosity", exitCode);
+    if (!project)
+        return exitCode;
     const scene::ParameterSet& params = project->parameters;
     double residualTarget = params.getFloat("radiosity.convergenceThreshold");
     if (residualText) {

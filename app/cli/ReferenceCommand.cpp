@@ -125,18 +125,10 @@ int runReference(Args args) {
     if (bounces)
         sets.push_back("reference.bounces=" + *bounces);
 
-    auto project = scene::loadProject(pos.front());
-    if (!project) {
-        std::cerr << "lpv: " << project.error().describe() << "\n";
-        return kFailure;
-    }
-    for (const std::string& kv : sets) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos)
-            return usageError("--set expects KEY=VALUE, got '" + kv + "'", "reference");
-        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok)
-            return usageError(ok.error().describe(), "reference");
-    }
+    int exitCode = kFailure;
+    auto project = loadProjectWithSets(pos.front(), sets, "reference", exitCode);
+    if (!project)
+        return exitCode;
     const auto camera = pickCamera(project->scene, cameraName, pos.front());
     if (!camera)
         return kFailure;

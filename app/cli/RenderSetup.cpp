@@ -28,14 +28,15 @@ std::optional<scene::Camera> pickCamera(const scene::Scene& s, const std::option
     return std::nullopt;
 }
 
-std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
+std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile, const std::vector<std::string>& sets,
+                                                  const std::string& command, int& exitCode) {
     exitCode = kFailure;
-    auto project = scene::loadProject(request.projectFile);
+    auto project = scene::loadProject(projectFile);
     if (!project) {
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return std::nullopt;
     }
-    for (const std::string& kv : request.sets) {
+    for (const std::string& kv : sets) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos) {
             exitCode = usageError("--set expects KEY=VALUE, got '" + kv + "'", command);
@@ -46,6 +47,15 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
             return std::nullopt;
         }
     }
+    exitCode = kOk;
+    return std::move(*project);
+}
+
+std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
+    auto project = loadProjectWithSets(request.projectFile, request.sets, command, exitCode);
+    if (!project)
+        return std::nullopt;
+    exitCode = kFailure;
 
     RenderSetup setup;
     auto camera = pickCamera(project->scene, request.cameraName, request.projectFile);

@@ -30,6 +30,12 @@ struct RenderRequest {
 std::optional<scene::Camera> pickCamera(const scene::Scene& scene, const std::optional<std::string>& name,
                                         const std::string& projectFile);
 
+// The project with the --set overrides (KEY=VALUE) applied. On failure prints
+// the message (naming the file or the option) and returns the exit code in
+// `exitCode`: a failure for a bad project, a usage error for a bad --set.
+std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile, const std::vector<std::string>& sets,
+                                                  const std::string& command, int& exitCode);
+
 // On failure prints the message (naming the file or the option) and returns
 // the exit code in `exitCode`.
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode);
