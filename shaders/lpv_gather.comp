@@ -11,13 +11,17 @@
 #define LPV_WITH_FACE_BLOCKING
 #define LPV_WITH_DIRECTED
 #define LPV_WITH_SOURCES
+// The first step (LPV_FIRST_STEP) reads the injected volume, one texture per
+// channel; it writes the interleaved volume the later steps read.
+#ifndef LPV_FIRST_STEP
 #define LPV_INTERLEAVED_SOURCES
+#endif
 #include "sh.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 32, local_size_y = 8, local_size_z = 1) in;
 
-// Sources and destination interleave a cell's R, G, B (3N x N x NK,
-// lpv_interleave.comp); the accumulator is per channel, for the lookup's filter.
+// Sources (after the first step) and destination interleave a cell's R, G, B
+// (3N x N x NK); the accumulator is per channel, for the lookup's filter.
 layout(rgba32f, binding = 0) uniform writeonly image3D uDest;
 layout(rgba32f, binding = 3) uniform image3D uAccumR;
 layout(rgba32f, binding = 4) uniform image3D uAccumG;

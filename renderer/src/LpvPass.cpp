@@ -82,8 +82,8 @@ scene::Expected<LpvPass> LpvPass::create() {
         {&pass.localFluxMax_, {"lpv_inject_local.comp"}, {"LOCAL_FLUX_MAX 1"}},
         {&pass.localInject_, {"lpv_inject_local.comp"}, {}},
         {&pass.computeGather_, {"lpv_gather.comp"}, {}},
-        {&pass.interleave_, {"lpv_interleave.comp"}, {}},
-        {&pass.deinterleave_, {"lpv_interleave.comp"}, {"UNPACK 1"}},
+        {&pass.computeGatherFirst_, {"lpv_gather.comp"}, {"LPV_FIRST_STEP 1"}},
+        {&pass.deinterleave_, {"lpv_deinterleave.comp"}, {}},
         {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
         {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
         {&pass.rasterScatter_,
@@ -388,23 +388,15 @@ void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const 
     glProgramUniform1i(program, loc(program, "uDirected"), directed ? 1 : 0);
 }
 
-void LpvPass::interleave(int index, bool pack) {
-    const GLuint p = pack ? interleave_.id() : deinterleave_.id();
+void LpvPass::deinterleave(int index) {
+    const GLuint p = deinterleave_.id();
     const int n = volumes_.gridSize(), k = volumes_.cascades();
     glUseProgram(p);
     glProgramUniform3i(p, loc(p, "uSize"), n, n, n * k);
-    const LpvVolumeSet& channels = volumes_.volume[std::size_t(index)];
-    const GLuint interleaved = volumes_.interleaved[std::size_t(index)].id();
-    if (pack) {
-        for (int c = 0; c < 3; ++c)
-            glBindTextureUnit(GLuint(c), channels.channel[std::size_t(c)].id());
-        glBindImageTexture(0, interleaved, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    } else {
-        glBindTextureUnit(0, interleaved);
-        for (int c = 0; c < 3; ++c)
-            glBindImageTexture(GLuint(c), channels.channel[std::size_t(c)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                               GL_RGBA32F);
-    }
+    glBindTextureUnit(0, volumes_.interleaved[std::size_t(index)].id());
+    for (int c = 0; c < 3; ++c)
+        glBindImageTexture(GLuint(c), volumes_.volume[std::size_t(index)].channel[std::size_t(c)].id(), 0, GL_TRUE,
+                           0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(groups(n, 8), groups(n, 8), GLuint(n * k));
     glMemoryBarrier(kComputeResults);
 }
@@ -430,18 +422,18 @@ void LpvPass::propagate(const LpvSettings& settings) {
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
     }
-    const bool gather = settings.variant == LpvVariant::ComputeGather;
-    if (gather && settings.propagationSteps > 0)
-        interleave(readIndex_, true);
     for (int step = 0; step < settings.propagationSteps; ++step) {
         const int read = readIndex_, write = 1 - readIndex_;
         switch (settings.variant) {
-        case LpvVariant::ComputeGather:
-            // Cleared so that the gather need not store the cells that receive nothing.
-            glUseProgram(gatherProgram);
-            setCascadeUniforms(gatherProgram);
-            bindStepSources(gatherProgram, read, settings.occlusion);
-            glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
+        case LpvVariant::ComputeGather: {
+            // The first step reads the injected per-channel volume and writes
+            // the interleaved one the later steps read: no separate packing pass.
+            const GLuint program = step == 0 ? computeGatherFirst_.id() : gatherProgram;
+            glUseProgram(program);
+            setCascadeUniforms(program);
+            bindStepSources(program, read, settings.occlusion);
+            if (step > 0)
+                glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
             bindStepImages(write);
             glBindImageTexture(0, volumes_.interleaved[std::size_t(write)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                                GL_RGBA32F);
@@ -450,8 +442,9 @@ void LpvPass::propagate(const LpvSettings& settings) {
             glDispatchCompute(groups(n, 32), groups(n, 8), GLuint(n * k));
             glMemoryBarrier(kComputeResults);
             if (capture_ && step + 1 == std::clamp(capture_->step, 0, settings.propagationSteps))
-                interleave(write, false); // the viewer reads the per-channel volume
+                deinterleave(write); // the viewer reads the per-channel volume
             break;
+        }
         case LpvVariant::ComputeScatter:
             glUseProgram(scatterProgram);
             setCascadeUniforms(scatterProgram);

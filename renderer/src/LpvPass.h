@@ -154,8 +154,8 @@ class LpvPass {
     void setCascadeUniforms(GLuint program) const;
     void bindStepImages(int destination) const;
     void bindStepSources(GLuint program, int source, bool occlusion) const;
-    // volume[index] to and from the compute gather's interleaved[index] (lpv_interleave.comp).
-    void interleave(int index, bool pack);
+    // The compute gather's interleaved[index] into volume[index] (lpv_deinterleave.comp).
+    void deinterleave(int index);
     // At the requested step: copies volume `index` (V_step) and the
     // accumulator of the requested cascade on the GPU (no stall inside the
     // timed passes); readCapture() brings the copies and the GV to the CPU
@@ -165,10 +165,11 @@ class LpvPass {
 
     Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
     Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
+    Program computeGatherFirst_; // the compute gather's first step: per-channel sources (LPV_FIRST_STEP)
     Program normals_, normalsDilate_, skyInject_;
     Program bounceInject_, bounceAdd_;
     Program localFluxMax_, localInject_;
-    Program interleave_, deinterleave_;
+    Program deinterleave_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;

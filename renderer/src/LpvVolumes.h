@@ -51,8 +51,9 @@ class LpvVolumes {
     // Multi-bounce only (ensureBounces): the sum of the bounces propagated so far.
     LpvVolumeSet bounceTotal;
     // Compute gather only (ensureInterleaved): the ping-pong volumes with a
-    // cell's R, G, B side by side, 3N x N x NK (lpv_interleave.comp). The
-    // gather's steps live here; volume[] holds V_0 and what a capture unpacks.
+    // cell's R, G, B side by side, 3N x N x NK. The gather's first step reads
+    // volume[] (V_0) and writes here; the later steps live here, and
+    // lpv_deinterleave.comp unpacks a step the LPV viewer captures.
     std::array<Texture, 2> interleaved;
 
   private:
