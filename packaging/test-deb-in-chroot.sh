@@ -15,49 +15,11 @@ set -euo pipefail
 DEB=$(realpath "$1")
 ROOT=${2:-/var/tmp/lpv-deb12}
 
-# The mirror this machine already uses, so the script names none itself.
-mirrorFor() { # $1: archive path, "debian" or "debian-security"
-  { grep -rhoE "^(URIs:|deb) +https?://[^ ]+/$1/?( |\$)" /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null ||
-    true; } | awk '{print $2}' | head -n 1
-}
-MIRROR=${DEBIAN_MIRROR:-$(mirrorFor debian)}
-SECURITY=${DEBIAN_SECURITY_MIRROR:-$(mirrorFor debian-security)}
-[ -n "$MIRROR" ] || { echo "no Debian mirror found: set DEBIAN_MIRROR" >&2; exit 2; }
-
-if [ ! -x "$ROOT/usr/bin/apt-get" ]; then
-  echo "== debootstrap --variant=minbase bookworm $ROOT"
-  debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
-fi
-# An installed Debian 12 follows the point-release updates and security fixes.
-{
-  echo "deb $MIRROR bookworm main"
-  echo "deb $MIRROR bookworm-updates main"
-  [ -z "$SECURITY" ] || echo "deb $SECURITY bookworm-security main"
-} >"$ROOT/etc/apt/sources.list"
-
-mounted=()
-cleanup() {
-  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" || true; done
-}
-trap cleanup EXIT
-for m in proc sys dev dev/pts; do
-  mountpoint -q "$ROOT/$m" && continue
-  case $m in
-    proc) mount -t proc proc "$ROOT/proc" ;;
-    sys) mount -t sysfs sys "$ROOT/sys" ;;
-    *) mount --bind "/$m" "$ROOT/$m" ;;
-  esac
-  mounted+=("$ROOT/$m")
-done
+source "$(dirname "$0")/chroot-common.sh"
+chroot_bootstrap
+chroot_mount
 
 cp "$DEB" "$ROOT/tmp/"
-# A clean environment: nothing of this machine's (DISPLAY, LD_LIBRARY_PATH...) leaks in.
-in_chroot() {
-  echo "+ $*"
-  chroot "$ROOT" env -i PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin HOME=/root LANG=C.UTF-8 \
-    DEBIAN_FRONTEND=noninteractive "$@"
-}
-
 in_chroot apt-get update -qq
 in_chroot apt-get purge -y -qq lpvstudio >/dev/null 2>&1 || true
 # Without Recommends: the package's Depends alone must be enough to run both programs.

@@ -1,0 +1,72 @@
+# Sourced by the chroot tests (test-deb-in-chroot.sh, test-fresh-debian.sh):
+# makes or reuses a minbase Debian 12 chroot, mounts what programs need in it,
+# and runs commands there in a clean environment. Needs root and debootstrap.
+#
+#   ROOT=...; source packaging/chroot-common.sh
+#   chroot_bootstrap            debootstrap --variant=minbase bookworm "$ROOT" when missing
+#   chroot_mount                proc, sys, dev, dev/pts, dev/shm (unmounted on exit)
+#   chroot_bind SRC DEST [ro]   bind-mount a host folder into the chroot (unmounted on exit)
+#   in_chroot CMD...            run CMD in the chroot, printing it first
+
+# The mirror this machine already uses, so the scripts name none themselves.
+mirrorFor() { # $1: archive path, "debian" or "debian-security"
+  { grep -rhoE "^(URIs:|deb) +https?://[^ ]+/$1/?( |\$)" /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null ||
+    true; } | awk '{print $2}' | head -n 1
+}
+MIRROR=${DEBIAN_MIRROR:-$(mirrorFor debian)}
+SECURITY=${DEBIAN_SECURITY_MIRROR:-$(mirrorFor debian-security)}
+[ -n "$MIRROR" ] || { echo "no Debian mirror found: set DEBIAN_MIRROR" >&2; exit 2; }
+command -v debootstrap >/dev/null || { echo "debootstrap is not installed (apt-get install debootstrap)" >&2; exit 2; }
+
+chroot_bootstrap() {
+  if [ ! -x "$ROOT/usr/bin/apt-get" ]; then
+    echo "== debootstrap --variant=minbase bookworm $ROOT"
+    debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
+  fi
+  # An installed Debian 12 follows the point-release updates and security fixes.
+  {
+    echo "deb $MIRROR bookworm main"
+    echo "deb $MIRROR bookworm-updates main"
+    [ -z "$SECURITY" ] || echo "deb $SECURITY bookworm-security main"
+  } >"$ROOT/etc/apt/sources.list"
+  # The chroot reaches the archive the way this machine does: its resolver and
+  # its apt Acquire:: settings (a proxy, a snapshot's validity dates), nothing else.
+  cp -L /etc/resolv.conf "$ROOT/etc/resolv.conf" 2>/dev/null || true
+  grep -lr '^ *Acquire::' /etc/apt/apt.conf.d/ 2>/dev/null | while read -r f; do
+    grep '^ *Acquire::' "$f" >"$ROOT/etc/apt/apt.conf.d/$(basename "$f")"
+  done
+}
+
+chroot_mounted=()
+chroot_cleanup() {
+  for ((i = ${#chroot_mounted[@]} - 1; i >= 0; i--)); do umount -l "${chroot_mounted[i]}" || true; done
+}
+trap chroot_cleanup EXIT
+
+chroot_mount() {
+  for m in proc sys dev dev/pts dev/shm; do
+    mountpoint -q "$ROOT/$m" && continue
+    case $m in
+      proc) mount -t proc proc "$ROOT/proc" ;;
+      sys) mount -t sysfs sys "$ROOT/sys" ;;
+      dev/shm) mkdir -p "$ROOT/dev/shm" && mount -t tmpfs shm "$ROOT/dev/shm" ;;
+      *) mount --bind "/$m" "$ROOT/$m" ;;
+    esac
+    chroot_mounted+=("$ROOT/$m")
+  done
+}
+
+chroot_bind() { # SRC DEST-in-chroot [ro]
+  mkdir -p "$ROOT$2"
+  mountpoint -q "$ROOT$2" && return 0
+  mount --bind "$1" "$ROOT$2"
+  [ "${3:-}" != ro ] || mount -o remount,bind,ro "$ROOT$2"
+  chroot_mounted+=("$ROOT$2")
+}
+
+# A clean environment: nothing of this machine's (DISPLAY, LD_LIBRARY_PATH...) leaks in.
+in_chroot() {
+  echo "+ $*"
+  chroot "$ROOT" env -i PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin HOME=/root LANG=C.UTF-8 \
+    DEBIAN_FRONTEND=noninteractive "$@"
+}

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Runs the README's two commands on a fresh Debian 12, as a new user would:
+# a new `debootstrap --variant=minbase bookworm` chroot, a clean clone of this
+# repository's HEAD (committed work only) with ../shared beside it (read-only),
+# then ./scripts/start.sh and ./scripts/test.sh, each timed. Nothing of this
+# machine's packages or build reaches the chroot, so a package missing from
+# scripts/setup.sh fails here. Run it whenever a dependency changes.
+#
+#   sudo packaging/test-fresh-debian.sh [--reuse] [CHROOT]
+#
+# CHROOT (default /var/tmp/lpv-fresh-deb12) is deleted and made anew unless
+# --reuse is given (then its packages and build stay: a second-run check).
+# Logs: CHROOT.logs/{start,test}.log; the rendered PNG: CHROOT.logs/cornell-box.png.
+# Exits non-zero when either command fails; prints both times either way.
+set -euo pipefail
+
+reuse=0
+if [ "${1:-}" = "--reuse" ]; then reuse=1; shift; fi
+ROOT=${1:-/var/tmp/lpv-fresh-deb12}
+REPO=$(git -C "$(dirname "$0")/.." rev-parse --show-toplevel)
+SHARED=$(realpath "$REPO/../shared")
+LOGS="$ROOT.logs"
+[ -d "$SHARED/scenes" ] || { echo "no ../shared/scenes beside $REPO" >&2; exit 2; }
+
+source "$(dirname "$0")/chroot-common.sh"
+if [ "$reuse" -eq 0 ] && [ -e "$ROOT" ]; then
+  echo "== removing the old chroot $ROOT"
+  for m in $(awk -v r="$ROOT/" 'index($2, r) == 1 {print $2}' /proc/mounts | sort -r); do umount -l "$m"; done
+  rm -rf --one-file-system "$ROOT"
+fi
+start=$SECONDS
+chroot_bootstrap
+echo "== chroot ready in $((SECONDS - start)) s: $(chroot "$ROOT" dpkg-query -W | wc -l) packages"
+chroot_mount
+chroot_bind "$SHARED" /work/shared ro
+
+if [ ! -d "$ROOT/work/lpvstudio/.git" ]; then
+  git clone -q --no-local "$REPO" "$ROOT/work/lpvstudio"
+else
+  git -C "$ROOT/work/lpvstudio" fetch -q "$REPO" HEAD && git -C "$ROOT/work/lpvstudio" reset -q --hard FETCH_HEAD
+fi
+echo "== clean clone of $(git -C "$ROOT/work/lpvstudio" log -1 --format='%h %s')"
+
+mkdir -p "$LOGS"
+# Runs one README command in the clone; its output goes to the log and, from
+# the scripts' own "== " lines and the last lines, to the terminal.
+declare -A seconds status
+readme_command() { # NAME
+  local t0=$SECONDS rc=0
+  echo "== ./scripts/$1.sh (log: $LOGS/$1.log)"
+  in_chroot bash -c "cd /work/lpvstudio && ./scripts/$1.sh" >"$LOGS/$1.log" 2>&1 || rc=$?
+  seconds[$1]=$((SECONDS - t0))
+  status[$1]=$rc
+  grep -E '^== ' "$LOGS/$1.log" || true
+  tail -n 5 "$LOGS/$1.log"
+  echo "== ./scripts/$1.sh: exit $rc after ${seconds[$1]} s"
+}
+readme_command start
+cp "$ROOT/work/lpvstudio/out/cornell-box.png" "$LOGS/" 2>/dev/null || true
+readme_command test
+
+echo "== summary (fresh Debian 12 chroot, $(nproc) cores)"
+for c in start test; do echo "./scripts/$c.sh: exit ${status[$c]}, ${seconds[$c]} s"; done
+[ "${status[start]}" -eq 0 ] && [ "${status[test]}" -eq 0 ]
