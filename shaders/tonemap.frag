@@ -4,8 +4,10 @@ in vec2 vUv;
 out vec4 outColor;
 
 uniform sampler2D uHdr;
-uniform float uExposure; // linear scale, 2^EV
+uniform float uExposure; // linear scale, 2^EV (with auto exposure: the compensation)
 uniform int uOperator;   // 0 aces, 1 reinhard, 2 uncharted2, 3 linear
+uniform int uAutoExposure; // 1: also scale by the metered exposure (exposure_adapt.comp)
+layout(std430, binding = 1) readonly buffer Exposure { float logExposure; float meteredExposure; float valid; float lit; };
 
 vec3 acesFitted(vec3 x) {
     // Narkowicz's fit of the ACES reference rendering transform.
@@ -24,7 +26,10 @@ vec3 linearToSrgb(vec3 c) {
 }
 
 void main() {
-    vec3 hdr = texture(uHdr, vUv).rgb * uExposure;
+    float scale = uExposure;
+    if (uAutoExposure != 0 && valid > 0.5)
+        scale *= meteredExposure;
+    vec3 hdr = texture(uHdr, vUv).rgb * scale;
     vec3 mapped;
     if (uOperator == 0)
         mapped = acesFitted(hdr);

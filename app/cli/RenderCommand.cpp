@@ -23,7 +23,9 @@ Renders the project headless (EGL: the GPU where present, Mesa llvmpipe
 otherwise), writes the image and prints per-pass GPU times (timer queries):
 one row per frame, then median/min/max over the frames rendered.
 
-  -o, --output FILE     Image to write (.png, .jpg, .exr, ...), required; .exr
+  -o, --output FILE     Image to write (.png, .jpg, .exr, ...), required; .png
+                        and .jpg are exposed (output.exposureMode: auto
+                        meters each frame's lit pixels) and tonemapped; .exr
                         holds the linear HDR image before exposure and
                         tonemapping (with --set output.view=indirect: the LPV's
                         indirect irradiance, for `lpv compare`)
@@ -177,6 +179,12 @@ int runRender(Args args) {
         std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
                     setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
         std::printf("%s\n", setup->renderer->lpvNote().c_str());
+        {
+            const auto& p = setup->project.parameters;
+            const double scale = setup->renderer->displayExposure(p);
+            std::printf("exposure: %s, x%.4g (%+.2f EV)%s\n", p.getEnum("output.exposureMode").c_str(), scale,
+                        std::log2(scale), p.getEnum("output.exposureMode") == "auto" ? ", metered on the last frame" : "");
+        }
         for (const renderer::EffectDecision& e : setup->renderer->frameEffects())
             std::printf("%s: %s (%s)\n", e.effect.c_str(), e.runs() ? "on" : "off", e.reason.c_str());
         std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());

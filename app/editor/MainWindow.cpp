@@ -265,6 +265,21 @@ void MainWindow::createActions() {
     splitAction_->setCheckable(true);
     splitAction_->setToolTip(tr("Render two presets side by side: A on the left half, B on the right"));
     toolbar->addAction(splitAction_);
+    // GI on/off is one control: gi.method off skips every indirect pass (undoable like any parameter edit).
+    giAction_ = viewMenu_->addAction(tr("&Global illumination"));
+    giAction_->setCheckable(true);
+    giAction_->setToolTip(tr("Indirect light on (gi.method = lpv) or off (direct light only, no indirect pass runs)"));
+    giAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
+    connect(giAction_, &QAction::triggered, this, [this](bool on) {
+        document_->setParameter("gi.method", scene::ParameterValue(std::string(on ? "lpv" : "off")));
+    });
+    connect(document_, &Document::changed, giAction_, [this](Changes c) {
+        if (c.testFlag(Change::Parameters))
+            giAction_->setChecked(document_->parameters().getEnum("gi.method") != "off");
+    });
+    giAction_->setChecked(document_->parameters().getEnum("gi.method") != "off");
+    toolbar->addSeparator();
+    toolbar->addAction(giAction_);
     // Viewport resolution: an editor preference (QSettings), not a project parameter.
     QMenu* resolution = viewMenu_->addMenu(tr("Viewport &resolution"));
     auto* resolutions = new QActionGroup(this);

@@ -102,6 +102,7 @@ private:
     ParameterInspector* inspector_ = nullptr;
     PresetBar* presetBar_ = nullptr;
     QAction* splitAction_ = nullptr;
+    QAction* giAction_ = nullptr; // gi.method on (lpv) / off, in the toolbar and the View menu
     std::pair<int, int> splitChoice_{-2, -2}; // preset indices; -1 = current parameters, -2 = off
     ProfilerPanel* profiler_ = nullptr;
     CameraPathPanel* cameraPaths_ = nullptr;

@@ -203,6 +203,13 @@ void Viewport::paintGL() {
     const scene::Scene& s = document_->scene();
     const int w = renderWidth(), h = renderHeight();
     const int fullW = std::max(1, int(width() * devicePixelRatio())), fullH = std::max(1, int(height() * devicePixelRatio()));
+    // Auto exposure adapts over the real time between frames (after an idle
+    // spell it is at its target at once); the split view's halves are two
+    // presets through one renderer, so each is metered on its own.
+    const qint64 sinceLastFrameNs = frameClock_.isValid() ? frameClock_.nsecsElapsed() : -1;
+    frameClock_.start();
+    renderer_->setExposureTimeStep(split_ || sinceLastFrameNs < 0 ? std::nullopt
+                                                                  : std::optional<double>(double(sinceLastFrameNs) * 1e-9));
     auto renderWith = [&](const scene::ParameterSet& params) -> bool {
         auto ok = renderer_->render(s, params, controller_.camera(), w, h);
         if (!ok) {

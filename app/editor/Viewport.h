@@ -151,6 +151,7 @@ private:
     QSet<int> heldKeys_;
     QTimer flyTimer_;
     QElapsedTimer flyClock_;
+    QElapsedTimer frameClock_; // time between frames, for auto exposure's adaptation
 
     VisualizerRequest vizRequest_;
     std::shared_ptr<const VisualizerFrame> vizFrame_; // the last read-back, for the probe overlay

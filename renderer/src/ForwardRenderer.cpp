@@ -1,5 +1,6 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
+#include "AutoExposurePass.h"
 #include "FrameContext.h"
 #include "GlossyReflections.h"
 #include "EmissiveVplBuffer.h"
@@ -12,6 +13,7 @@
 #include "RsmPass.h"
 #include "ShadowPass.h"
 #include "SunRaysPass.h"
+#include "lpv/renderer/AutoExposure.h"
 #include "lpv/renderer/LocalLightAnalysis.h"
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 #include "lpv/renderer/ShaderLibrary.h"
@@ -81,6 +83,11 @@ struct ForwardRenderer::Impl {
     std::optional<LpvPass> lpv;
     // Created on the first frame that wants sun rays: a pass that never runs allocates nothing.
     std::optional<SunRaysPass> sunRays;
+    // Auto exposure's meter (output.exposureMode = auto); its result stays on the GPU.
+    std::optional<AutoExposurePass> exposure;
+    // Seconds between this frame and the last, for the exposure's adaptation
+    // (nullopt: each frame is metered on its own, as `lpv render` does).
+    std::optional<double> exposureTimeStep;
     // Sky light injection's top-down depth map, likewise created on first use
     // and dropped again when the sky is not injected.
     std::optional<SkyHeightPass> skyHeight;
@@ -211,7 +218,22 @@ struct ForwardRenderer::Impl {
         frame.timer.end("forward");
     }
 
+    // gi.method = off: no indirect pass runs, and none holds GPU memory.
+    void releaseIndirectPasses(const std::string& reason) {
+        rsm->release();
+        localRsm.reset();
+        emissiveVpls.reset();
+        skyHeight.reset();
+        subsurface.reset();
+        lpvKey.reset();
+        lpv->disable(reason);
+    }
+
     Expected<void> runLpv(const FrameContext& frame) {
+        if (!giMethodRuns(frame.params)) {
+            releaseIndirectPasses("gi.method is off: direct light only");
+            return {};
+        }
         const EffectDecision local = decideLocalLightInjection(frame.scene, frame.params);
         const EffectDecision emissive = decideEmissiveInjection(frame.scene, frame.params);
         if (!local.runs())
@@ -221,7 +243,8 @@ struct ForwardRenderer::Impl {
         if (!rsm->active() && !local.runs() && !emissive.runs()) {
             lpvKey.reset();
             subsurface.reset();
-            lpv->disable("no directional light: nothing to inject");
+            lpv->disable("nothing to inject: no directional light; local lights: " + local.reason +
+                         "; emissive surfaces: " + emissive.reason);
             return {};
         }
         if (frame.params.getFloat("lpv.intensity") <= 0.0) {
@@ -365,6 +388,19 @@ struct ForwardRenderer::Impl {
         glViewport(0, 0, frame.width, frame.height);
         glDisable(GL_DEPTH_TEST);
         glUseProgram(tp);
+        const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
+        if (autoExposure) {
+            const double blend = exposureTimeStep
+                                     ? adaptationBlend(*exposureTimeStep, frame.params.getFloat("output.exposureAdaptation"))
+                                     : 1.0;
+            exposure->meter(hdrColor.id(), frame.width, frame.height, float(frame.params.getFloat("output.exposureKey")),
+                            float(blend));
+        } else {
+            exposure->reset(); // back on auto, the exposure starts from its target
+        }
+        glUseProgram(tp);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure->exposureBuffer());
+        glProgramUniform1i(tp, loc(tp, "uAutoExposure"), autoExposure ? 1 : 0);
         glProgramUniform1f(tp, loc(tp, "uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
         glProgramUniform1i(tp, loc(tp, "uOperator"), tonemapperIndex(frame.params.getEnum("output.tonemapper")));
         glProgramUniform1i(tp, loc(tp, "uHdr"), 0);
@@ -396,6 +432,9 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     if (!tonemap) return std::unexpected(tonemap.error());
     auto rsm = RsmPass::create();
     if (!rsm) return std::unexpected(rsm.error());
+    auto exposure = AutoExposurePass::create();
+    if (!exposure) return std::unexpected(exposure.error());
+    r.impl_->exposure.emplace(std::move(*exposure));
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
@@ -409,6 +448,7 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
 
 void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
     impl_->traits.reset();
+    impl_->exposure->reset();
     ++impl_->sceneGeneration;
     impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
@@ -429,6 +469,14 @@ void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::Te
         return setScene(scene, textures);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
     impl_->sceneGpu->updateDraws(scene); // buckets follow the materials' alpha modes
+}
+
+void ForwardRenderer::setExposureTimeStep(std::optional<double> seconds) { impl_->exposureTimeStep = seconds; }
+void ForwardRenderer::resetExposure() { impl_->exposure->reset(); }
+double ForwardRenderer::displayExposure(const scene::ParameterSet& params) const {
+    const double compensation = std::exp2(params.getFloat("output.exposure"));
+    return params.getEnum("output.exposureMode") == "auto" ? compensation * impl_->exposure->readExposure()
+                                                           : compensation;
 }
 
 GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
@@ -479,8 +527,10 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     if (auto ok = d.shadows->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
         return ok;
-    if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
-        return ok;
+    if (giMethodRuns(params)) {
+        if (auto ok = d.rsm->render(frame, *d.sceneGpu, *d.materialGpu); !ok)
+            return ok;
+    }
     d.frameEffects.clear();
     if (auto ok = d.runLpv(frame); !ok)
         return ok;

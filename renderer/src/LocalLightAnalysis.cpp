@@ -1,6 +1,7 @@
 #include "lpv/renderer/LocalLightAnalysis.h"
 
 #include "LocalRsmPass.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 
 namespace lpv::renderer {
@@ -14,16 +15,25 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
     d.effect = "Local-light RSM";
     d.parameter = "lpv.localLights";
     d.setting = params.getEnum(d.parameter);
-    const int lights = injectableLocalLights(scene);
+    const std::vector<int> injected = selectInjectedLocalLights(scene);
+    const int lights = int(injected.size());
+    // Names the lights, so a user sees which lamp feeds the LPV (at most 4 are injected).
+    std::string names;
+    for (int i : injected) {
+        const scene::Light& l = scene.lights[std::size_t(i)];
+        names += (names.empty() ? "" : ", ") + l.name + (l.type == scene::LightType::Point ? " (point)" : " (spot)");
+    }
     const std::string found =
-        std::to_string(lights) + (lights == 1 ? " spot or point light" : " spot or point lights") +
-        " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM faces";
-    if (d.setting == "off") {
+        names + " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM face" +
+        (lights == 1 && scene.lights[std::size_t(injected[0])].type == scene::LightType::Spot ? "" : "s");
+    if (!giMethodRuns(params)) {
+        d.reason = "gi.method is off";
+    } else if (d.setting == "off") {
         d.reason = "forced off by lpv.localLights";
     } else if (lights == 0) {
         d.reason = d.setting == "on"
                        ? "forced on by lpv.localLights, but the scene has no lit spot or point light"
-                       : "no spot or point light";
+                       : "no spot or point light with a positive intensity";
     } else if (params.getFloat("lpv.intensity") <= 0.0) {
         d.reason = "lpv.intensity is 0";
     } else {
@@ -39,7 +49,9 @@ EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::P
     d.parameter = "lpv.emissive";
     d.setting = params.getEnum(d.parameter);
     const bool emissive = lpvref::sceneHasEmissiveSurface(scene);
-    if (d.setting == "off") {
+    if (!giMethodRuns(params)) {
+        d.reason = "gi.method is off";
+    } else if (d.setting == "off") {
         d.reason = "forced off by lpv.emissive";
     } else if (!emissive) {
         d.reason = d.setting == "on" ? "forced on by lpv.emissive, but no visible material emits"

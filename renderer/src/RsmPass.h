@@ -54,6 +54,13 @@ class RsmPass {
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
                                  const MaterialGpu& materials);
 
+    // Frees the targets and renders nothing until the next render() (gi.method = off).
+    void release() {
+        sunIndex_ = -1;
+        tiles_.clear();
+        releaseTargets();
+    }
+
     // Position, normal and flux of every tile of the last frame:
     // "rsm-K-position", "rsm-K-normal", "rsm-K-flux" (4 floats per texel).
     std::vector<DebugImage> debugImages() const;

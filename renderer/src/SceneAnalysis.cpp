@@ -89,6 +89,8 @@ SceneTraits analyseSceneTraits(const scene::Scene& s) {
     return t;
 }
 
+bool giMethodRuns(const scene::ParameterSet& params) { return params.getEnum("gi.method") != "off"; }
+
 std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTraits& t, const scene::ParameterSet& params,
                                           const scene::Camera* camera, float aspect) {
     std::vector<EffectDecision> out;
@@ -100,8 +102,10 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     // Spot and point lights are injected too (LocalLightAnalysis.h): they alone can run the LPV.
     const EffectDecision local = decideLocalLightInjection(s, params);
     const EffectDecision emissive = decideEmissiveInjection(s, params);
-    lpv.wanted = (t.hasDirectionalLight || local.wanted || emissive.wanted) && params.getFloat("lpv.intensity") > 0.0f;
-    lpv.reason = params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
+    lpv.wanted = giMethodRuns(params) && (t.hasDirectionalLight || local.wanted || emissive.wanted) &&
+                 params.getFloat("lpv.intensity") > 0.0f;
+    lpv.reason = !giMethodRuns(params)                  ? "gi.method is off: direct light only"
+                 : params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
                  : t.hasDirectionalLight ? "a directional light lights the scene: its RSM is injected"
                  : local.wanted          ? "spot or point lights light the scene: their RSMs are injected"
                  : emissive.wanted       ? "emissive surfaces light the scene: their VPLs are injected"

@@ -149,7 +149,7 @@ Project makeCornellBoxProject() {
     scene.sky.intensity = 0.0f; // closed box: no sky light
 
     project.parameters.set("lpv.cellSize", 0.2).value();
-    project.parameters.set("output.exposure", 1.0).value();
+    // No exposure of its own: auto exposure (the default) meters the box.
     return project;
 }
 

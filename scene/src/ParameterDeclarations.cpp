@@ -39,6 +39,11 @@ constexpr Pass kLpvAll = P::LpvInjection | P::GeometryVolume | P::LpvPropagation
 
 std::vector<ParameterInfo> declareParameters() {
     return {
+        // --- Global illumination ---
+        choice("gi.method", "lpv", {"off", "lpv"}, "GI",
+               "How indirect light is made: off = direct light only (no RSM, LPV, sky, subsurface or glossy "
+               "pass runs or holds GPU memory); lpv = cascaded light propagation volumes",
+               P::Rsm | kLpvAll | P::SkyInjection | P::Subsurface | P::GlossyReflections),
         // --- LPV ---
         choice("lpv.variant", "computeGather", {"computeGather", "computeScatter", "rasterGather", "rasterScatter"},
                "LPV", "Propagation implementation; all give the same image within tolerance, they differ in time",
@@ -81,10 +86,9 @@ std::vector<ParameterInfo> declareParameters() {
         real("lpv.bounceAlbedo", 0.5, 0.0, 1.0, "", "LPV",
              "Albedo assumed for the geometry volume's surfaces when light bounces again (lpv.bounces > 1)",
              P::LpvPropagation | P::Shading),
-        choice("lpv.localLights", "off", kAutoOnOff, "LPV",
-               "Inject spot and point lights through reflective shadow maps of their own (auto: when the scene "
-               "has one; off by default: spot-lit scenes such as the Cornell box template then keep their image "
-               "and frame time)",
+        choice("lpv.localLights", "auto", kAutoOnOff, "LPV",
+               "Inject spot and point lights through reflective shadow maps of their own (auto: whenever such a "
+               "light lights something, i.e. has a positive intensity)",
                P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
         integer("lpv.localRsmSize", 128, 16, 1024, "px", "LPV",
                 "Width and height of each spot light's RSM and of each face of a point light's cube RSM",
@@ -145,8 +149,21 @@ std::vector<ParameterInfo> declareParameters() {
                 "Snap each cascade to its texel grid in light space so shadow edges do not shimmer",
                 P::ShadowMaps | P::Shading),
         // --- Output ---
-        real("output.exposure", 0.0, -16.0, 16.0, "EV", "Output", "Exposure compensation before tonemapping",
+        choice("output.exposureMode", "auto", {"auto", "manual"}, "Output",
+               "auto: expose the frame's log-average luminance of its lit pixels to output.exposureKey, adapting "
+               "over output.exposureAdaptation in the editor and videos (metered on the GPU, no read-back); "
+               "manual: 2^output.exposure alone. Only the display image is exposed: metrics and EXR stay linear",
+               P::Tonemap),
+        real("output.exposure", 0.0, -16.0, 16.0, "EV", "Output",
+             "Exposure before tonemapping: the whole exposure (2^EV) when manual, a compensation on the "
+             "metered exposure when auto",
              P::Tonemap),
+        real("output.exposureKey", 0.18, 0.001, 10.0, "", "Output",
+             "Auto exposure: the display luminance the log-average luminance maps to (Reinhard et al.'s key value; "
+             "0.18 = middle grey)",
+             P::Tonemap),
+        real("output.exposureAdaptation", 0.5, 0.0, 60.0, "s", "Output",
+             "Auto exposure: time constant of the adaptation in the editor and videos (0 = at once)", P::Tonemap),
         choice("output.tonemapper", "aces", {"aces", "reinhard", "uncharted2", "linear"}, "Output",
                "Operator that maps HDR radiance to display values", P::Tonemap),
         choice("output.view", "final", {"final", "indirect", "direct"}, "Output",

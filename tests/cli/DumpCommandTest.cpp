@@ -105,9 +105,19 @@ TEST_F(DumpCommand, OutOfRangeRequestsAreUsageErrors) {
     r = dump("--what lpv --coefficient 4", "never.png");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_FALSE(fs::exists(dir_ / "never.png"));
-    // Without a sun there is no LPV to show: a failure that says why.
+    // With GI off there is no LPV to show: a failure that says why.
     r = runLpv("dump " + cornellProject() + " --what lpv -o " + (dir_ / "never.png").string() +
-               " --width 32 --height 32");
+               " --width 32 --height 32 --set gi.method=off");
     EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find("no directional light"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("nothing to show: LPV: off (gi.method is off"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "never.png"));
+}
+
+// The default Cornell box's lamp is injected on auto: its LPV dumps out of the box (issue #22).
+TEST_F(DumpCommand, TheDefaultCornellBoxHasAnLpvToShow) {
+    const fs::path out = dir_ / "cornell-lpv.png";
+    const RunResult r = runLpv("dump " + cornellProject() + " --what lpv -o " + out.string() + " --width 32 --height 32");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out)) << r.output;
+    EXPECT_NE(r.output.find("local-light RSM face"), std::string::npos) << r.output;
 }

@@ -28,14 +28,24 @@ scene::ParameterSet with(std::initializer_list<std::pair<const char*, const char
 
 } // namespace
 
-TEST(LocalLightAnalysis, DefaultsLeaveTheSpotLitCornellBoxWithoutAnLpv) {
+TEST(LocalLightAnalysis, DefaultsInjectTheCornellBoxLampAndRunTheLpv) {
     const scene::Scene s = scene::makeCornellBoxProject().scene;
     const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), {}, nullptr);
-    EXPECT_FALSE(d.front().runs());
-    EXPECT_NE(d.front().reason.find("no directional light"), std::string::npos) << d.front().reason;
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "forced off by lpv.localLights");
+    EXPECT_TRUE(d.front().runs()) << d.front().reason;
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (spot) injected through 128^2 RSM face");
+    // The template's lamp is a spot and an emissive quad: injecting both would count it twice.
     EXPECT_EQ(find(d, "lpv.emissive").reason, "forced off by lpv.emissive");
     EXPECT_FALSE(find(d, "lpv.bounces").runs());
+}
+
+TEST(LocalLightAnalysis, GiOffTurnsTheLpvAndEveryInjectionOff) {
+    const scene::Scene s = scene::makeCornellBoxProject().scene;
+    const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), with({{"gi.method", "off"}}), nullptr);
+    EXPECT_FALSE(d.front().runs());
+    EXPECT_EQ(d.front().reason, "gi.method is off: direct light only");
+    EXPECT_FALSE(find(d, "lpv.localLights").runs());
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "gi.method is off");
+    EXPECT_EQ(find(d, "lpv.emissive").reason, "gi.method is off");
 }
 
 TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun) {
@@ -45,7 +55,7 @@ TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun
                                 with({{"lpv.localLights", "auto"}, {"lpv.bounces", "3"}}), nullptr);
     EXPECT_TRUE(d.front().runs()) << d.front().reason;
     EXPECT_EQ(d.front().reason, "spot or point lights light the scene: their RSMs are injected");
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "1 spot or point light injected through 128^2 RSM faces");
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (spot) injected through 128^2 RSM face");
     EXPECT_TRUE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "2 more bounces re-injected at the geometry volume's surfels");
 
@@ -64,7 +74,7 @@ TEST(LocalLightAnalysis, NoSpotPointOrEmitterSaysSo) {
     const auto params = with({{"lpv.localLights", "auto"}, {"lpv.emissive", "on"}, {"lpv.bounces", "2"}});
     const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), params, nullptr);
     EXPECT_FALSE(d.front().runs());
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "no spot or point light");
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "no spot or point light with a positive intensity");
     EXPECT_EQ(find(d, "lpv.emissive").reason, "forced on by lpv.emissive, but no visible material emits");
     EXPECT_FALSE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "the LPV does not run");

@@ -61,6 +61,8 @@ struct TestScene {
         cam.farPlane = 20.0f;
         scene.cameras = {cam};
         EXPECT_TRUE(params.set("output.tonemapper", std::string("linear")).has_value());
+        // A fixed exposure of 0 EV: the display shows the linear values themselves.
+        EXPECT_TRUE(params.set("output.exposureMode", std::string("manual")).has_value());
         // Direct light only: these tests compare with analytic shading (the LPV has its own tests).
         EXPECT_TRUE(params.set("lpv.intensity", 0.0).has_value());
     }

@@ -334,8 +334,11 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
     if (options.warning)
         for (const std::string& w : textures.warnings)
             options.warning(w);
-    for (renderer::ForwardRenderer& r : renderers)
+    for (renderer::ForwardRenderer& r : renderers) {
         r.setScene(project.scene, textures.images);
+        // Auto exposure adapts by one frame's time per frame: the same path gives the same video.
+        r.setExposureTimeStep(1.0 / double(options.fps));
+    }
 
     auto pending = PendingOutput::create(output, where);
     if (!pending)

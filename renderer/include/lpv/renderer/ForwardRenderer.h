@@ -13,6 +13,7 @@
 #include "lpv/scene/Scene.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -91,7 +92,7 @@ public:
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
-    // or "LPV: off (no directional light: nothing to inject)".
+    // or "LPV: off (gi.method is off: direct light only)".
     std::string lpvNote() const;
     // GPU memory of the subsurface LPV's volumes (0 while it does not run).
     std::size_t subsurfaceAllocatedBytes() const;
@@ -100,6 +101,17 @@ public:
     const std::vector<EffectDecision>& frameEffects() const;
     int width() const;
     int height() const;
+
+    // Auto exposure (output.exposureMode = auto, AutoExposure.h). The time
+    // since the last frame lets the exposure adapt like an eye (the editor
+    // passes its frame interval, `lpv video` 1/fps: the same frames give the
+    // same exposures); nullopt (the default) meters every frame on its own.
+    void setExposureTimeStep(std::optional<double> seconds);
+    // The next frame takes its metered exposure at once (a cut, a new camera).
+    void resetExposure();
+    // The scale the last frame's display image was exposed with (2^output.exposure
+    // times the metered exposure on auto). Reads the GPU back: call after a frame.
+    double displayExposure(const scene::ParameterSet& params) const;
 
     GpuTimer& timer();
 

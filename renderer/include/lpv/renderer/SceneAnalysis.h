@@ -41,6 +41,9 @@ inline constexpr float kOpenSkyThreshold = 0.05f;
 
 SceneTraits analyseSceneTraits(const scene::Scene& scene);
 
+// gi.method selects an indirect-light method (not "off"): the indirect passes may run.
+bool giMethodRuns(const scene::ParameterSet& params);
+
 // The first directional light (the sun, as the RSM picks it), or null.
 const scene::Light* sunOf(const scene::Scene& scene);
 

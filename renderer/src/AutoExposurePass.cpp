@@ -1,0 +1,64 @@
+#include "AutoExposurePass.h"
+
+#include "lpv/renderer/ShaderLibrary.h"
+
+#include <array>
+
+namespace lpv::renderer {
+namespace {
+constexpr int kTilePixels = 64; // exposure_reduce.comp: 16x16 invocations of 4x4 pixels
+}
+
+scene::Expected<AutoExposurePass> AutoExposurePass::create() {
+    AutoExposurePass p;
+    auto reduce = buildEmbeddedProgram({"exposure_reduce.comp"});
+    if (!reduce)
+        return std::unexpected(reduce.error());
+    auto adapt = buildEmbeddedProgram({"exposure_adapt.comp"});
+    if (!adapt)
+        return std::unexpected(adapt.error());
+    p.reduce_ = std::move(*reduce);
+    p.adapt_ = std::move(*adapt);
+    p.exposure_ = createBuffer();
+    glNamedBufferStorage(p.exposure_.id(), 4 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    p.reset();
+    return p;
+}
+
+void AutoExposurePass::reset() {
+    const std::array<float, 4> initial{0.0f, 1.0f, 0.0f, 0.0f};
+    glNamedBufferSubData(exposure_.id(), 0, sizeof(initial), initial.data());
+}
+
+void AutoExposurePass::meter(GLuint hdr, int width, int height, float key, float blend) {
+    const int tilesX = (width + kTilePixels - 1) / kTilePixels;
+    const int tilesY = (height + kTilePixels - 1) / kTilePixels;
+    const int tiles = tilesX * tilesY;
+    if (tiles > tileCapacity_) {
+        tiles_ = createBuffer();
+        glNamedBufferStorage(tiles_.id(), GLsizeiptr(tiles) * 2 * GLsizeiptr(sizeof(float)), nullptr, 0);
+        tileCapacity_ = tiles;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, tiles_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure_.id());
+    glUseProgram(reduce_.id());
+    glBindTextureUnit(0, hdr);
+    glProgramUniform1i(reduce_.id(), glGetUniformLocation(reduce_.id(), "uHdr"), 0);
+    glDispatchCompute(GLuint(tilesX), GLuint(tilesY), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const GLuint a = adapt_.id();
+    glUseProgram(a);
+    glProgramUniform1i(a, glGetUniformLocation(a, "uTileCount"), tiles);
+    glProgramUniform1f(a, glGetUniformLocation(a, "uKey"), key);
+    glProgramUniform1f(a, glGetUniformLocation(a, "uBlend"), blend);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+double AutoExposurePass::readExposure() const {
+    std::array<float, 4> values{};
+    glGetNamedBufferSubData(exposure_.id(), 0, sizeof(values), values.data());
+    return double(values[1]);
+}
+
+} // namespace lpv::renderer
