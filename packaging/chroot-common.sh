@@ -30,11 +30,11 @@ chroot_bootstrap() {
     [ -z "$SECURITY" ] || echo "deb $SECURITY bookworm-security main"
   } >"$ROOT/etc/apt/sources.list"
   # The chroot reaches the archive the way this machine does: its resolver and
-  # its apt Acquire:: settings (a proxy, a snapshot's validity dates), nothing else.
+  # its apt proxy and validity-date settings (a snapshot mirror), in a file of
+  # our own name, so that no package's conffile is pre-empted (apt would ask).
   cp -L /etc/resolv.conf "$ROOT/etc/resolv.conf" 2>/dev/null || true
-  grep -lr '^ *Acquire::' /etc/apt/apt.conf.d/ 2>/dev/null | while read -r f; do
-    grep '^ *Acquire::' "$f" >"$ROOT/etc/apt/apt.conf.d/$(basename "$f")"
-  done
+  grep -hE '^ *Acquire::((https?|ftp)::Proxy|Check-Valid-Until|Check-Date)' -r /etc/apt/apt.conf /etc/apt/apt.conf.d/ \
+    2>/dev/null >"$ROOT/etc/apt/apt.conf.d/99lpv-host-acquire" || true
 }
 
 chroot_mounted=()
