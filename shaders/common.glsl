@@ -4,3 +4,4 @@ const int MAX_LIGHTS = 8;
 const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_POINT = 1;
 const int LIGHT_SPOT = 2;
+const int LIGHT_AREA = 3;

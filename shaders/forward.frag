@@ -19,6 +19,7 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "brdf.glsl"
 #include "material.glsl"
 #include "shadow_sampling.glsl"
+#include "area_light.glsl"
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
@@ -26,11 +27,15 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
-uniform vec3 uLightRadiantColor[MAX_LIGHTS]; // colour * intensity
-uniform vec3 uLightPosition[MAX_LIGHTS];
-uniform vec3 uLightDirection[MAX_LIGHTS];    // direction the light travels
+uniform vec3 uLightRadiantColor[MAX_LIGHTS]; // colour * intensity; an area light's radiance
+uniform vec3 uLightPosition[MAX_LIGHTS];     // an area light's centre
+uniform vec3 uLightDirection[MAX_LIGHTS];    // direction the light travels; an area light's front normal
 uniform float uLightRange[MAX_LIGHTS];
 uniform vec2 uLightCosCone[MAX_LIGHTS];      // cos(outer), cos(inner)
+uniform vec3 uLightHalfU[MAX_LIGHTS];        // area lights: half the width along the tangent (a disc: radius)
+uniform vec3 uLightHalfV[MAX_LIGHTS];        // area lights: half the height
+uniform int uLightAreaShape[MAX_LIGHTS];     // area lights: 0 rectangle, 1 disc
+uniform int uLightTwoSided[MAX_LIGHTS];      // area lights: 1 = emits from both sides
 
 uniform vec3 uCameraPos;
 // output.view: 0 final image; 1 the LPV's indirect irradiance (W/m^2, no
@@ -51,6 +56,18 @@ void main() {
         vec3 l;
         vec3 irradianceColor;
         float dist = 1.0;
+        if (uLightType[i] == LIGHT_AREA) {
+            // Exact diffuse irradiance of the polygon (area_light.glsl); the BRDF toward the
+            // visible part's centroid stands for the specular lobe over the light.
+            float factor = areaLightFactor(uLightPosition[i], normalize(uLightDirection[i]), uLightHalfU[i],
+                                           uLightHalfV[i], uLightAreaShape[i], uLightTwoSided[i] != 0, vWorldPos, n, l);
+            if (factor <= 0.0)
+                continue;
+            dist = distance(uLightPosition[i], vWorldPos);
+            float visibility = shadowVisibility(i, vWorldPos, n, normalize(uLightPosition[i] - vWorldPos), dist);
+            radiance += surfaceBrdf(s, l, v) * uLightRadiantColor[i] * factor * visibility;
+            continue;
+        }
         if (uLightType[i] == LIGHT_DIRECTIONAL) {
             l = -normalize(uLightDirection[i]);
             irradianceColor = uLightRadiantColor[i];

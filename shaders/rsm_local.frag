@@ -14,6 +14,9 @@
 // cancel against the area d^2 dOmega / n.l the texel covers), and a diffuse
 // surface reflects the fraction albedo of it:
 //     Phi = albedo * I(w) * a * cos^3(theta).
+// An area light is rendered as a point at its centre (six cube faces) whose
+// intensity is that of a Lambertian emitter seen from afar: I(w) = L A
+// max(w . normal, 0) (|w . normal| when two-sided), uRadiantIntensity = L A.
 #include "coverage.glsl"
 
 in vec3 vWorldPos;
@@ -27,7 +30,9 @@ uniform vec3 uSpotDirection; // unit; unused for a point light
 uniform bool uSpot;
 uniform vec2 uCosCone;       // cos(outer), cos(inner)
 uniform float uRange;        // 0 = unlimited
-uniform vec3 uRadiantIntensity; // colour * intensity, W/sr
+uniform vec3 uRadiantIntensity; // colour * intensity, W/sr (an area light: radiance * area)
+uniform bool uArea;             // an area light: uSpotDirection is its front normal
+uniform bool uTwoSided;
 
 layout(location = 0) out vec4 outPosition;
 layout(location = 1) out vec4 outNormal;
@@ -48,6 +53,8 @@ void main() {
     }
     if (uSpot)
         falloff *= smoothstep(uCosCone.x, uCosCone.y, dot(w, uSpotDirection));
+    if (uArea)
+        falloff *= uTwoSided ? abs(dot(w, uSpotDirection)) : max(dot(w, uSpotDirection), 0.0);
     float intercepted = uAlphaMode == 2 ? materialCoverage(vUv) : 1.0;
     float solidAngle = vTexelArea * cosTheta * cosTheta * cosTheta;
     outPosition = vec4(vWorldPos, 1.0);

@@ -34,6 +34,7 @@ uniform vec3 uSpotPosition[MAX_LOCAL_SHADOWS];
 uniform float uSpotFar[MAX_LOCAL_SHADOWS];
 uniform vec3 uPointPosition[MAX_LOCAL_SHADOWS];
 uniform float uPointFar[MAX_LOCAL_SHADOWS];
+uniform float uPointRadius[MAX_LOCAL_SHADOWS]; // PCSS light radius: uLocalLightRadius, or an area light's size
 uniform float uLocalLightRadius;                // 0 = hard shadows
 uniform sampler2DArrayShadow uSpotCompare;      // stores distance / far
 uniform sampler2DArray uSpotDepth;
@@ -172,6 +173,7 @@ float spotVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
 
 float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     float size = float(textureSize(uPointCompare, 0).x);
+    float radius = uPointRadius[layer];
     float far = uPointFar[layer];
     float slope = shadowSlope(n, toLight);
     float dist = distance(worldPos, uPointPosition[layer]);
@@ -181,13 +183,13 @@ float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     float receiver = length(d);
     vec3 dir = d / max(receiver, 1e-6);
     float reference = (receiver - uShadowBias * texel * (1.0 + min(slope, 4.0))) / far;
-    if (uLocalLightRadius <= 0.0)
+    if (radius <= 0.0)
         return texture(uPointCompare, vec4(dir, float(layer)), reference);
     // Offsets on the plane perpendicular to the direction, in radians ~ world / distance.
     vec3 t = normalize(cross(abs(dir.y) < 0.99 ? vec3(0, 1, 0) : vec3(1, 0, 0), dir));
     vec3 b = cross(dir, t);
     float texelAngle = texel / receiver;
-    float searchTexels = clamp(uLocalLightRadius / texel, 1.0, MAX_FILTER_TEXELS);
+    float searchTexels = clamp(radius / texel, 1.0, MAX_FILTER_TEXELS);
     float blockerSum = 0.0;
     float blockers = 0.0;
     for (int i = 0; i < 16; ++i) {
@@ -201,7 +203,7 @@ float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     if (blockers == 0.0)
         return 1.0;
     float blocker = max(blockerSum / blockers * far, 1e-4);
-    float penumbra = uLocalLightRadius * (receiver - blocker) / blocker;
+    float penumbra = radius * (receiver - blocker) / blocker;
     float filterTexels = clamp(penumbra / texel, 1.0, MAX_FILTER_TEXELS);
     reference -= filterTexels * texel * min(slope, 2.0) / far;
     float lit = 0.0;

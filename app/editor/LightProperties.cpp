@@ -30,6 +30,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     type_->addItem(tr("Directional (sun)"), int(scene::LightType::Directional));
     type_->addItem(tr("Point"), int(scene::LightType::Point));
     type_->addItem(tr("Spot"), int(scene::LightType::Spot));
+    type_->addItem(tr("Area"), int(scene::LightType::Area));
     color_ = new ColorButton(group);
     color_->setObjectName("lightColor");
     intensity_ = makeSpinBox(0.0, 1.0e6, 3, 0.1, {}, group);
@@ -63,6 +64,22 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     outerCone_->setToolTip(tr("No light outside this angle from the axis"));
     castShadows_ = new QCheckBox(tr("Cast shadows"), group);
     castShadows_->setObjectName("lightCastShadows");
+    areaShape_ = new QComboBox(group);
+    areaShape_->setObjectName("lightAreaShape");
+    areaShape_->addItem(tr("Rectangle"), int(scene::AreaShape::Rectangle));
+    areaShape_->addItem(tr("Disc"), int(scene::AreaShape::Disc));
+    areaWidth_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaWidth_->setObjectName("lightAreaWidth");
+    areaHeight_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaHeight_->setObjectName("lightAreaHeight");
+    areaRadius_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaRadius_->setObjectName("lightAreaRadius");
+    areaUnit_ = new QComboBox(group);
+    areaUnit_->setObjectName("lightAreaUnit");
+    areaUnit_->addItem(tr("Radiance (W/m²/sr)"), int(scene::AreaUnit::Radiance));
+    areaUnit_->addItem(tr("Power (W)"), int(scene::AreaUnit::Power));
+    areaTwoSided_ = new QCheckBox(tr("Emits from both sides"), group);
+    areaTwoSided_->setObjectName("lightAreaTwoSided");
 
     form_->addRow(tr("Name"), name_);
     form_->addRow(tr("Type"), type_);
@@ -73,6 +90,12 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     form_->addRow(tr("Range"), range_);
     form_->addRow(tr("Inner cone"), innerCone_);
     form_->addRow(tr("Outer cone"), outerCone_);
+    form_->addRow(tr("Shape"), areaShape_);
+    form_->addRow(tr("Width"), areaWidth_);
+    form_->addRow(tr("Height"), areaHeight_);
+    form_->addRow(tr("Radius"), areaRadius_);
+    form_->addRow(tr("Intensity is"), areaUnit_);
+    form_->addRow(QString(), areaTwoSided_);
     form_->addRow(QString(), castShadows_);
 
     connect(name_, &QLineEdit::editingFinished, this, [this] {
@@ -102,6 +125,26 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     connect(outerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit(tr("Edit spot outer cone"),
              [&](scene::Light& l) { l.outerConeAngle = std::max(float(glm::radians(v)), l.innerConeAngle); });
+    });
+    connect(areaShape_, &QComboBox::currentIndexChanged, this, [this] {
+        const auto shape = scene::AreaShape(areaShape_->currentData().toInt());
+        edit(tr("Change area light shape"), [&](scene::Light& l) { l.shape = shape; });
+    });
+    connect(areaWidth_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit area light width"), [&](scene::Light& l) { l.size.x = float(v); });
+    });
+    connect(areaHeight_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit area light height"), [&](scene::Light& l) { l.size.y = float(v); });
+    });
+    connect(areaRadius_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit(tr("Edit area light radius"), [&](scene::Light& l) { l.radius = float(v); });
+    });
+    connect(areaUnit_, &QComboBox::currentIndexChanged, this, [this] {
+        const auto unit = scene::AreaUnit(areaUnit_->currentData().toInt());
+        edit(tr("Change area light unit"), [&](scene::Light& l) { l.unit = unit; });
+    });
+    connect(areaTwoSided_, &QCheckBox::toggled, this, [this](bool on) {
+        edit(tr("Toggle two-sided area light"), [&](scene::Light& l) { l.twoSided = on; });
     });
     connect(castShadows_, &QCheckBox::toggled, this, [this](bool on) {
         edit(tr("Toggle light shadows"), [&](scene::Light& l) { l.castShadows = on; });
@@ -155,18 +198,38 @@ void LightProperties::refresh() {
     }
     const bool directional = l.type == scene::LightType::Directional;
     const bool spot = l.type == scene::LightType::Spot;
-    form_->setRowVisible(direction_, directional || spot);
+    const bool area = l.type == scene::LightType::Area;
+    const bool disc = area && l.shape == scene::AreaShape::Disc;
+    form_->setRowVisible(direction_, directional || spot || area);
     form_->setRowVisible(position_, !directional);
-    form_->setRowVisible(range_, !directional);
+    form_->setRowVisible(range_, !directional && !area);
     form_->setRowVisible(innerCone_, spot);
     form_->setRowVisible(outerCone_, spot);
+    form_->setRowVisible(areaShape_, area);
+    form_->setRowVisible(areaWidth_, area && !disc);
+    form_->setRowVisible(areaHeight_, area && !disc);
+    form_->setRowVisible(areaRadius_, disc);
+    form_->setRowVisible(areaUnit_, area);
+    form_->setRowVisible(areaTwoSided_, area);
 
     color_->showColor(toQColor(l.color));
-    // Light.h: irradiance for a sun, radiant intensity for point and spot lights.
-    intensity_->setSuffix(directional ? tr(" W/m²") : tr(" W/sr"));
+    // Light.h: irradiance for a sun, radiant intensity for point and spot lights, radiance or power for area lights.
+    const bool power = area && l.unit == scene::AreaUnit::Power;
+    intensity_->setSuffix(directional ? tr(" W/m²") : !area ? tr(" W/sr") : power ? tr(" W") : tr(" W/m²/sr"));
     intensity_->setToolTip(directional ? tr("Irradiance on a surface facing the sun")
-                                       : tr("Radiant intensity (power per solid angle)"));
+                           : !area     ? tr("Radiant intensity (power per solid angle)")
+                           : power     ? tr("The power the light emits in all")
+                                       : tr("The radiance leaving its emitting side"));
     showValue(intensity_, l.intensity);
+    if (area) {
+        const QSignalBlocker blockShape(areaShape_), blockUnit(areaUnit_), blockSides(areaTwoSided_);
+        areaShape_->setCurrentIndex(areaShape_->findData(int(l.shape)));
+        areaUnit_->setCurrentIndex(areaUnit_->findData(int(l.unit)));
+        areaTwoSided_->setChecked(l.twoSided);
+        showValue(areaWidth_, l.size.x);
+        showValue(areaHeight_, l.size.y);
+        showValue(areaRadius_, l.radius);
+    }
 
     if (anglesLight_ != index_ || anglesDirection_ != l.direction) {
         angles_ = azimuthElevationOf(l.direction);

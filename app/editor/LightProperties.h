@@ -54,6 +54,13 @@ class LightProperties : public QWidget {
     QDoubleSpinBox* innerCone_ = nullptr;
     QDoubleSpinBox* outerCone_ = nullptr;
     QCheckBox* castShadows_ = nullptr;
+    // Area lights only.
+    QComboBox* areaShape_ = nullptr;
+    QDoubleSpinBox* areaWidth_ = nullptr;
+    QDoubleSpinBox* areaHeight_ = nullptr;
+    QDoubleSpinBox* areaRadius_ = nullptr;
+    QComboBox* areaUnit_ = nullptr;
+    QCheckBox* areaTwoSided_ = nullptr;
     // The angles the user set, kept while the direction is the one they
     // produced: at elevation ±90° the azimuth cannot be read back.
     AzimuthElevation angles_;

@@ -226,6 +226,7 @@ void MainWindow::createActions() {
     create->addAction(tr("&Sun (directional light)"), this, [this] { createLight(scene::LightType::Directional); });
     create->addAction(tr("&Point light"), this, [this] { createLight(scene::LightType::Point); });
     create->addAction(tr("S&pot light"), this, [this] { createLight(scene::LightType::Spot); });
+    create->addAction(tr("&Area light"), this, [this] { createLight(scene::LightType::Area); });
     create->addSeparator();
     create->addAction(tr("&Camera from view"), this, &MainWindow::createCameraFromView);
     create->addSeparator();

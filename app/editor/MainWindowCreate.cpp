@@ -41,6 +41,17 @@ void MainWindow::createLight(scene::LightType type) {
         light.innerConeAngle = glm::radians(20.0f);
         light.outerConeAngle = glm::radians(30.0f);
         break;
+    case scene::LightType::Area: {
+        // A panel above the point looked at, facing down, sized to the view.
+        light.name = "area light";
+        const float size = sizeInView(view);
+        light.position = pointInView(view) + glm::vec3(0.0f, size, 0.0f);
+        light.direction = {0.0f, -1.0f, 0.0f};
+        light.size = {size, size};
+        light.radius = 0.5f * size;
+        light.intensity = 5.0f; // W/(m^2 sr)
+        break;
+    }
     }
     int created = -1;
     document_->editScene(tr("Create %1").arg(QString::fromStdString(light.name)), Change::Lights,

@@ -270,6 +270,7 @@ EmitterSample EmbreeScene::sampleEmitter(float pick, float u1, float u2) const {
     const std::size_t m = std::size_t(d.triangleMaterial[e.prim]);
     const glm::vec2 uv = b0 * d.uvs[3 * e.prim] + b1 * d.uvs[3 * e.prim + 1] + b2 * d.uvs[3 * e.prim + 2];
     out.radiance = materialSurface(d.materials[m], d.textures[m], uv).emissive;
+    out.twoSided = d.materials[m].twoSided;
     out.pdfArea = (weight / total) / e.area;
     return out;
 }

@@ -1,8 +1,10 @@
 #include "lpv/reference/PathTracer.h"
 
 #include "Sampling.h"
+#include "lpv/scene/AreaLight.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -63,8 +65,41 @@ glm::vec3 PathTracer::escapedRadiance() const {
     return settings_.skyLight ? background_ : glm::vec3(0.0f);
 }
 
+glm::vec3 PathTracer::areaLightIrradiance(const scene::Light& light, const glm::vec3& p,
+                                          const glm::vec3& offsetNormal, const glm::vec3& n, glm::vec3& l,
+                                          Rng& rng) const {
+    const scene::AreaLightFrame f = scene::areaLightFrame(light);
+    const float u = rng.next(), w = rng.next();
+    glm::vec3 q;
+    if (light.shape == scene::AreaShape::Disc) {
+        // Uniform on the disc: radius sqrt(u) (the renderer's polygon has the same area).
+        const float r = std::sqrt(u), a = 2.0f * kPi * w;
+        q = f.center + r * (std::cos(a) * f.halfU + std::sin(a) * f.halfV);
+    } else {
+        q = f.center + (2.0f * u - 1.0f) * f.halfU + (2.0f * w - 1.0f) * f.halfV;
+    }
+    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    const glm::vec3 d = q - origin;
+    const float dist2 = glm::dot(d, d);
+    if (!(dist2 > 1e-20f))
+        return glm::vec3(0.0f);
+    const float dist = std::sqrt(dist2);
+    l = d / dist;
+    const float facing = -glm::dot(f.normal, l);
+    const float cosEmitter = light.twoSided ? std::abs(facing) : facing; // one-sided unless flagged
+    const float cosReceiver = glm::dot(n, l);
+    if (cosEmitter <= 0.0f || cosReceiver <= 0.0f || glm::dot(offsetNormal, l) <= 0.0f)
+        return glm::vec3(0.0f);
+    if (light.castShadows && embree_.occluded(origin, l, 0.0f, dist * (1.0f - 1e-4f)))
+        return glm::vec3(0.0f);
+    return scene::areaLightRadiance(light) * (scene::areaLightArea(light) * cosEmitter * cosReceiver / dist2);
+}
+
 glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3& p,
-                                      const glm::vec3& offsetNormal, const glm::vec3& n, glm::vec3& l) const {
+                                      const glm::vec3& offsetNormal, const glm::vec3& n, glm::vec3& l,
+                                      Rng& rng) const {
+    if (light.type == scene::LightType::Area)
+        return areaLightIrradiance(light, p, offsetNormal, n, l, rng);
     glm::vec3 irradiance = light.color * light.intensity;
     const glm::vec3 origin = offsetOrigin(p, offsetNormal);
     float maxT = std::numeric_limits<float>::infinity();
@@ -111,7 +146,10 @@ glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& off
     const float dist = std::sqrt(dist2);
     const glm::vec3 l = d / dist;
     const float cosReceiver = glm::dot(n, l);
-    const float cosEmitter = std::abs(glm::dot(e.normal, l));
+    // One-sided unless the material is two-sided (as pbrt, Cycles and glTF): the
+    // back of a lamp quad lights nothing (the gap above the Cornell lamp).
+    const float facing = -glm::dot(e.normal, l);
+    const float cosEmitter = e.twoSided ? std::abs(facing) : facing;
     if (cosReceiver <= 0.0f || glm::dot(offsetNormal, l) <= 0.0f || cosEmitter <= 0.0f)
         return glm::vec3(0.0f);
     // Stop short of the emitter's own triangle.
@@ -120,12 +158,15 @@ glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& off
     return e.radiance * (cosReceiver * cosEmitter / (dist2 * e.pdfArea));
 }
 
-glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal,
-                                       const glm::vec3& n) const {
+glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
+                                       Rng* rng) const {
+    Rng seeded(std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
+               std::bit_cast<std::uint32_t>(p.z));
+    Rng& r = rng ? *rng : seeded;
     glm::vec3 e(0.0f);
     glm::vec3 l;
     for (const scene::Light& light : scene_.lights)
-        e += lightIrradiance(light, p, offsetNormal, n, l);
+        e += lightIrradiance(light, p, offsetNormal, n, l, r);
     return e;
 }
 
@@ -154,7 +195,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     glm::vec3 radiance = s.emissive;
     for (const scene::Light& light : scene_.lights) {
         glm::vec3 l;
-        const glm::vec3 e = lightIrradiance(light, h.position, h.geometricNormal, h.shadingNormal, l);
+        const glm::vec3 e = lightIrradiance(light, h.position, h.geometricNormal, h.shadingNormal, l, rng);
         if (e != glm::vec3(0.0f))
             radiance += surfaceBrdf(s, h.shadingNormal, l, v) * e;
     }
@@ -190,7 +231,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
         }
         const SurfaceSample hs = embree_.surface(*hit);
         const glm::vec3 lit =
-            hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal);
+            hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, &rng);
         glm::vec3 reflected = lit;
         // An emitter's light reflected here reaches the primary hit in depth + 1
         // segments: in the multi-bounce layer only, and not after the last bounce.

@@ -17,6 +17,7 @@
 #include "lpv/renderer/LocalLightAnalysis.h"
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 #include "lpv/renderer/ShaderLibrary.h"
+#include "lpv/scene/AreaLight.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -64,6 +65,18 @@ void setLightUniforms(GLuint fp, const scene::Scene& scene) {
         const scene::Light& l = scene.lights[std::size_t(i)];
         const std::string idx = "[" + std::to_string(i) + "]";
         glProgramUniform1i(fp, loc(fp, "uLightType" + idx), int(l.type));
+        if (l.type == scene::LightType::Area) {
+            const scene::AreaLightFrame f = scene::areaLightFrame(l);
+            const glm::vec3 radiance = scene::areaLightRadiance(l);
+            glProgramUniform3fv(fp, loc(fp, "uLightRadiantColor" + idx), 1, glm::value_ptr(radiance));
+            glProgramUniform3fv(fp, loc(fp, "uLightPosition" + idx), 1, glm::value_ptr(f.center));
+            glProgramUniform3fv(fp, loc(fp, "uLightDirection" + idx), 1, glm::value_ptr(f.normal));
+            glProgramUniform3fv(fp, loc(fp, "uLightHalfU" + idx), 1, glm::value_ptr(f.halfU));
+            glProgramUniform3fv(fp, loc(fp, "uLightHalfV" + idx), 1, glm::value_ptr(f.halfV));
+            glProgramUniform1i(fp, loc(fp, "uLightAreaShape" + idx), l.shape == scene::AreaShape::Disc ? 1 : 0);
+            glProgramUniform1i(fp, loc(fp, "uLightTwoSided" + idx), l.twoSided ? 1 : 0);
+            continue;
+        }
         const glm::vec3 radiant = l.color * l.intensity;
         glProgramUniform3fv(fp, loc(fp, "uLightRadiantColor" + idx), 1, glm::value_ptr(radiant));
         glProgramUniform3fv(fp, loc(fp, "uLightPosition" + idx), 1, glm::value_ptr(l.position));
@@ -281,6 +294,10 @@ struct ForwardRenderer::Impl {
         frameEffects.push_back(decideDirectedPropagation(frame.params, true, ""));
         frameEffects.push_back(sky);
         EffectDecision sss = decideSubsurface(*traits, frame.params, true, "");
+        if (sss.wanted && !rsm->active()) {
+            sss.wanted = false;
+            sss.reason += "; but it is injected from the sun's RSM and no directional light lights the scene";
+        }
         if (sss.wanted && !subsurfaceSampler) {
             sss.wanted = false;
             sss.reason += "; but this GL has fewer than 17 fragment texture units for its volume";

@@ -21,7 +21,8 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
     std::string names;
     for (int i : injected) {
         const scene::Light& l = scene.lights[std::size_t(i)];
-        names += (names.empty() ? "" : ", ") + l.name + (l.type == scene::LightType::Point ? " (point)" : " (spot)");
+        names += (names.empty() ? "" : ", ") + l.name +
+                 (l.type == scene::LightType::Point ? " (point)" : l.type == scene::LightType::Area ? " (area)" : " (spot)");
     }
     const std::string found =
         names + " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM face" +
@@ -32,8 +33,8 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
         d.reason = "forced off by lpv.localLights";
     } else if (lights == 0) {
         d.reason = d.setting == "on"
-                       ? "forced on by lpv.localLights, but the scene has no lit spot or point light"
-                       : "no spot or point light with a positive intensity";
+                       ? "forced on by lpv.localLights, but the scene has no lit spot, point or area light"
+                       : "no spot, point or area light with a positive intensity";
     } else if (params.getFloat("lpv.intensity") <= 0.0) {
         d.reason = "lpv.intensity is 0";
     } else {

@@ -1,5 +1,7 @@
 #include "LocalRsmPass.h"
 
+#include "lpv/scene/AreaLight.h"
+
 #include "ShadowLights.h"
 #include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/ShaderLibrary.h"
@@ -104,7 +106,7 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
     const std::vector<int> lights = selectInjectedLocalLights(frame.scene);
     int layers = 0;
     for (int i : lights)
-        layers += frame.scene.lights[std::size_t(i)].type == scene::LightType::Point ? 6 : 1;
+        layers += frame.scene.lights[std::size_t(i)].type == scene::LightType::Spot ? 1 : 6;
     if (layers == 0) {
         release();
         return {};
@@ -135,7 +137,12 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
         const float texel = 2.0f * view.tanHalfFov / float(size);
         const float texelArea = texel * texel;
         const glm::vec3 spotDirection = glm::normalize(light.direction);
-        const glm::vec3 radiant = light.color * light.intensity;
+        // An area light is seen from its centre as a point of intensity L A cos(theta) (rsm_local.frag).
+        const bool area = light.type == scene::LightType::Area;
+        const glm::vec3 radiant =
+            area ? scene::areaLightRadiance(light) * scene::areaLightArea(light) : light.color * light.intensity;
+        glProgramUniform1i(p, loc("uArea"), area ? 1 : 0);
+        glProgramUniform1i(p, loc("uTwoSided"), light.twoSided ? 1 : 0);
         glProgramUniform1fv(p, loc("uTexelArea"), 1, &texelArea);
         glProgramUniform3fv(p, loc("uLightPosition"), 1, glm::value_ptr(light.position));
         glProgramUniform3fv(p, loc("uSpotDirection"), 1, glm::value_ptr(spotDirection));

@@ -107,9 +107,9 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     lpv.reason = !giMethodRuns(params)                  ? "gi.method is off: direct light only"
                  : params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
                  : t.hasDirectionalLight ? "a directional light lights the scene: its RSM is injected"
-                 : local.wanted          ? "spot or point lights light the scene: their RSMs are injected"
+                 : local.wanted          ? "spot, point or area lights light the scene: their RSMs are injected"
                  : emissive.wanted       ? "emissive surfaces light the scene: their VPLs are injected"
-                                         : "no directional light (and no spot or point light): nothing to inject";
+                                         : "no directional light (and no spot, point or area light): nothing to inject";
     out.push_back(lpv);
 
     out.push_back(decideDirectedPropagation(params, lpv.wanted, lpv.reason));
@@ -119,7 +119,12 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
         sky.reason += "; but the LPV does not run (" + lpv.reason + ")";
     }
     out.push_back(sky);
-    out.push_back(decideSubsurface(t, params, lpv.wanted, lpv.reason));
+    EffectDecision sss = decideSubsurface(t, params, lpv.wanted, lpv.reason);
+    if (sss.wanted && !t.hasDirectionalLight) {
+        sss.wanted = false; // its volume is injected from the sun's RSM (the renderer skips it too)
+        sss.reason += "; but it is injected from the sun's RSM and no directional light lights the scene";
+    }
+    out.push_back(sss);
     out.push_back(decideGlossyReflections(t, params, lpv.wanted, lpv.reason));
     out.push_back(decideSunRays(s, params, camera, aspect));
     out.push_back(local);

@@ -1,5 +1,7 @@
 #include "ShadowLights.h"
 
+#include "lpv/scene/AreaLight.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -18,6 +20,7 @@ ShadowLightSelection selectShadowLights(const scene::Scene& scene) {
             if (s.sun < 0)
                 s.sun = i;
         } else if (local < kMaxShadowedLocalLights) {
+            // An area light casts its shadows from a cube map at its centre, softened by its size.
             (l.type == scene::LightType::Spot ? s.spots : s.points).push_back(i);
             ++local;
         }
@@ -46,6 +49,11 @@ glm::vec3 stableUp(const glm::vec3& dir) {
 }
 
 } // namespace
+
+float areaShadowRadius(const scene::Light& light) {
+    const scene::AreaLightFrame f = scene::areaLightFrame(light);
+    return glm::length(f.halfU + f.halfV);
+}
 
 LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& bounds) {
     LocalShadowView v;

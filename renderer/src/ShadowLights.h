@@ -34,6 +34,9 @@ struct LocalShadowView {
     float tanHalfFov = 1.0f; // of one face
 };
 
+// The light radius an area light's soft shadows use: half its diagonal (a disc: its radius times sqrt 2).
+float areaShadowRadius(const scene::Light& light);
+
 LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);
 LocalShadowView pointShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);
 

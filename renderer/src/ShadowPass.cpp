@@ -162,9 +162,14 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         spotViews_.push_back(spotShadowView(s.lights[std::size_t(i)], bounds));
         spotPositions_.push_back(s.lights[std::size_t(i)].position);
     }
+    pointRadii_.clear();
     for (int i : lights_.points) {
-        pointViews_.push_back(pointShadowView(s.lights[std::size_t(i)], bounds));
-        pointPositions_.push_back(s.lights[std::size_t(i)].position);
+        const scene::Light& light = s.lights[std::size_t(i)];
+        pointViews_.push_back(pointShadowView(light, bounds));
+        pointPositions_.push_back(light.position);
+        // An area light's penumbra follows its own size (PCSS with its half diagonal as the
+        // radius), not shadow.softness, which stands in for the size of lights that have none.
+        pointRadii_.push_back(light.type == scene::LightType::Area ? areaShadowRadius(light) : localLightRadius_);
     }
     if (cascades_.empty() && spotViews_.empty() && pointViews_.empty())
         return {};
@@ -275,6 +280,7 @@ int ShadowPass::bindForShading(GLuint program, const FrameContext& frame, int fi
         const std::string idx = "[" + std::to_string(i) + "]";
         glProgramUniform3fv(p, loc(p, "uPointPosition" + idx), 1, glm::value_ptr(pointPositions_[i]));
         glProgramUniform1f(p, loc(p, "uPointFar" + idx), pointViews_[i].farPlane);
+        glProgramUniform1f(p, loc(p, "uPointRadius" + idx), pointRadii_[i]);
     }
 
     // Every sampler gets its own unit even when its map does not exist:

@@ -71,6 +71,7 @@ private:
     std::vector<LocalShadowView> spotViews_, pointViews_;
     std::vector<glm::vec3> spotPositions_, pointPositions_;
     float localLightRadius_ = 0.0f;
+    std::vector<float> pointRadii_; // PCSS light radius per point layer (area lights: their size)
     LayeredTarget cascadeMap_, spotMap_, pointMap_;
 };
 

@@ -121,18 +121,21 @@ Project makeCornellBoxProject() {
     for (int i = 0; i < int(scene.meshes.size()); ++i)
         scene.objects.push_back(Object{scene.meshes[std::size_t(i)].name, i, -1, Transform{}, true, {}});
 
-    // The area light (130 x 105 mm, radiance (17, 12, 4)) as a downward spot:
-    // a Lambertian emitter of area A and radiance L has intensity L*A*cos(theta).
+    // The lamp as published: a 130 x 105 mm rectangle in the plane of the
+    // visible light quad, facing down, emitting radiance (17, 12, 4) W/(m^2 sr)
+    // from its lower side only. The quad above stays its visible surface; it is
+    // not injected as well (lpv.emissive is off by default), so the lamp counts once.
     Light light;
     light.name = "ceilingLight";
-    light.type = LightType::Spot;
-    light.position = glm::vec3(278.0f, 547.0f, 279.5f) * kScale;
+    light.type = LightType::Area;
+    light.shape = AreaShape::Rectangle;
+    light.position = glm::vec3(278.0f, 548.7f, 279.5f) * kScale;
     light.direction = {0.0f, -1.0f, 0.0f};
-    const float area = 1.30f * 1.05f;
+    light.tangent = {1.0f, 0.0f, 0.0f};
+    light.size = glm::vec2(130.0f, 105.0f) * kScale;
     light.color = glm::vec3(17.0f, 12.0f, 4.0f) / 17.0f;
-    light.intensity = 17.0f * area;
-    light.innerConeAngle = 0.0f;
-    light.outerConeAngle = 80.0f * std::numbers::pi_v<float> / 180.0f;
+    light.intensity = 17.0f;
+    light.unit = AreaUnit::Radiance;
     scene.lights.push_back(light);
 
     // The published camera: 35 mm focal length on a 25 mm film.

@@ -142,7 +142,7 @@ std::vector<ParameterInfo> declareParameters() {
                 P::ShadowMaps | P::Shading),
         real("shadow.softness", 1.0, 0.0, 8.0, "", "Shadows",
              "Light size for soft shadows: the sun's angular diameter in degrees, the diameter of spot and point "
-             "lights in scene units; the penumbra grows with blocker distance (0 = hard)", P::Shading),
+             "lights in scene units (area lights soften by their own size); the penumbra grows with blocker distance (0 = hard)", P::Shading),
         real("shadow.bias", 1.0, 0.0, 10.0, "texels", "Shadows",
              "Receiver offset along the normal, in shadow-map texels, against shadow acne", P::Shading),
         boolean("shadow.stabilize", true, "Shadows",

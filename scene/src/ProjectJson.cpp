@@ -394,10 +394,40 @@ Object readObject(Fields& f, std::size_t meshCount, std::size_t objectCount) {
     return o;
 }
 
+// The fields only area lights have (format version 2): every one required.
+void readAreaFields(Fields& f, Light& l) {
+    f.enumeration("shape", l.shape, parseAreaShape, "rectangle, disc");
+    f.enumeration("unit", l.unit, parseAreaUnit, "radiance, power");
+    f.flag("twoSided", l.twoSided);
+    if (!f.ok())
+        return;
+    // The other shape's extent is optional (written, so a shape switch in the editor keeps it).
+    const bool rectangle = l.shape == AreaShape::Rectangle;
+    if (!rectangle && f.has("size"))
+        f.vector("size", l.size, kPositive);
+    if (!rectangle && f.has("tangent"))
+        f.vector("tangent", l.tangent, kAnyValue);
+    if (rectangle && f.has("radius"))
+        f.number("radius", l.radius, kPositive);
+    if (rectangle) {
+        f.vector("size", l.size, kPositive);
+        f.vector("tangent", l.tangent, kAnyValue);
+        if (!f.ok())
+            return;
+        const glm::vec3 d = l.direction == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.direction);
+        const glm::vec3 t = l.tangent == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.tangent);
+        if (l.tangent == glm::vec3(0.0f) || std::abs(glm::dot(d, t)) > 0.9999f)
+            f.reader().fail(ErrorCode::InvalidValue, f.pathOf("tangent"),
+                            "a rectangular area light needs a tangent that is not zero and not along its direction");
+    } else {
+        f.number("radius", l.radius, kPositive);
+    }
+}
+
 Light readLight(Fields& f) {
     Light l;
     f.text("name", l.name);
-    f.enumeration("type", l.type, parseLightType, "directional, point, spot");
+    f.enumeration("type", l.type, parseLightType, "directional, point, spot, area");
     f.vector("color", l.color, kNonNegative);
     f.number("intensity", l.intensity, kNonNegative);
     f.vector("position", l.position, kAnyValue);
@@ -406,6 +436,8 @@ Light readLight(Fields& f) {
     f.number("innerConeAngle", l.innerConeAngle, kInnerCone);
     f.number("outerConeAngle", l.outerConeAngle, kOuterCone);
     f.flag("castShadows", l.castShadows);
+    if (l.type == LightType::Area && f.ok())
+        readAreaFields(f, l);
     if (!f.ok())
         return l;
     if (l.innerConeAngle > l.outerConeAngle)
@@ -625,14 +657,19 @@ void checkParentChains(Reader& r, const std::vector<Object>& objects) {
 // --- versions -----------------------------------------------------------------
 
 // Format migrations: kMigrations[v - 1] turns a version-v document into a
-// version v+1 one. Version 1 is the first format, so the table is empty.
+// version v+1 one. Version 1 is the first format.
 // When the format changes: bump kProjectFormatVersion, append one step that
 // rewrites the JSON (rename fields, add new ones with the value that keeps the
 // old behaviour), and never edit or drop an older step, so that every file
 // ever written still loads. The result is then validated like any document of
 // the current version.
 using Migration = Json (*)(Json);
-constexpr std::array<Migration, static_cast<std::size_t>(kProjectFormatVersion - 1)> kMigrations{};
+
+// 1 -> 2 (issue #22): area lights ("type": "area" and the fields only they
+// have). A version-1 file has none, and every field it has keeps its meaning.
+Json fromVersion1(Json document) { return document; }
+
+constexpr std::array<Migration, static_cast<std::size_t>(kProjectFormatVersion - 1)> kMigrations{fromVersion1};
 
 // The format name and version of a document (`what` is "project" or "camera
 // path"); the version read, at most `newest`.
@@ -779,6 +816,14 @@ Json toJson(const Light& l) {
     j["innerConeAngle"] = number(l.innerConeAngle);
     j["outerConeAngle"] = number(l.outerConeAngle);
     j["castShadows"] = l.castShadows;
+    if (l.type == LightType::Area) {
+        j["shape"] = toString(l.shape);
+        j["size"] = numbers(l.size);
+        j["tangent"] = numbers(l.tangent);
+        j["radius"] = number(l.radius);
+        j["twoSided"] = l.twoSided;
+        j["unit"] = toString(l.unit);
+    }
     return j;
 }
 

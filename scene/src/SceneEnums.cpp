@@ -19,8 +19,25 @@ const char* toString(LightType t) {
     case LightType::Directional: return "directional";
     case LightType::Point: return "point";
     case LightType::Spot: return "spot";
+    case LightType::Area: return "area";
     }
     return "directional";
+}
+
+const char* toString(AreaShape s) { return s == AreaShape::Disc ? "disc" : "rectangle"; }
+
+std::optional<AreaShape> parseAreaShape(std::string_view s) {
+    if (s == "rectangle") return AreaShape::Rectangle;
+    if (s == "disc") return AreaShape::Disc;
+    return std::nullopt;
+}
+
+const char* toString(AreaUnit u) { return u == AreaUnit::Power ? "power" : "radiance"; }
+
+std::optional<AreaUnit> parseAreaUnit(std::string_view s) {
+    if (s == "radiance") return AreaUnit::Radiance;
+    if (s == "power") return AreaUnit::Power;
+    return std::nullopt;
 }
 
 std::optional<ShadingModel> parseShadingModel(std::string_view s) {
@@ -40,6 +57,7 @@ std::optional<LightType> parseLightType(std::string_view s) {
     if (s == "directional") return LightType::Directional;
     if (s == "point") return LightType::Point;
     if (s == "spot") return LightType::Spot;
+    if (s == "area") return LightType::Area;
     return std::nullopt;
 }
 

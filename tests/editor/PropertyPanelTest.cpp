@@ -10,6 +10,7 @@
 
 #include "lpv/scene/CornellBox.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
@@ -63,7 +64,7 @@ TEST_F(PropertyPanelTest, LightIntensityEditIsOneUndoStepAndUndoRestoresExactly)
     const scene::Light before = doc.scene().lights[0];
     QDoubleSpinBox* intensity = box("lightIntensity");
     ASSERT_TRUE(intensity->isVisibleTo(panel.get()));
-    EXPECT_TRUE(intensity->suffix().contains("W/sr")) << "the Cornell light is a spot";
+    EXPECT_TRUE(intensity->suffix().contains("W/m²/sr")) << "the Cornell lamp is an area light given by its radiance";
     EXPECT_NEAR(intensity->value(), before.intensity, 1e-3);
 
     intensity->setValue(42.5);
@@ -117,7 +118,13 @@ TEST_F(PropertyPanelTest, LightDirectionFromAzimuthElevation) {
 }
 
 TEST_F(PropertyPanelTest, SpotInnerConeIsBoundedByOuter) {
+    scene::Light spot = doc.scene().lights[0];
+    spot.type = scene::LightType::Spot;
+    spot.innerConeAngle = 0.0f;
+    spot.outerConeAngle = glm::radians(80.0f);
+    doc.setLight(0, spot, "make spot");
     doc.select({Selection::Kind::Light, 0});
+    EXPECT_TRUE(box("lightIntensity")->suffix().contains("W/sr"));
     QDoubleSpinBox* inner = box("lightInnerCone");
     QDoubleSpinBox* outer = box("lightOuterCone");
     EXPECT_NEAR(outer->value(), 80.0, 1e-3);
@@ -315,4 +322,31 @@ TEST_F(PropertyPanelTest, SelectionDroppedByUndoEmptiesThePanel) {
     doc.undoStack()->undo(); // the light is gone; the document drops the selection
     EXPECT_EQ(panel->lightProperties()->lightIndex(), -1);
     EXPECT_TRUE(box("skyIntensity")->isVisibleTo(panel.get()));
+}
+
+TEST_F(PropertyPanelTest, AreaLightShowsItsShapeSizeAndUnit) {
+    doc.select({Selection::Kind::Light, 0});
+    const scene::Light before = doc.scene().lights[0];
+    ASSERT_EQ(before.type, scene::LightType::Area);
+    EXPECT_TRUE(box("lightAreaWidth")->isVisibleTo(panel.get()));
+    EXPECT_FALSE(box("lightAreaRadius")->isVisibleTo(panel.get()));
+    EXPECT_FALSE(box("lightOuterCone")->isVisibleTo(panel.get()));
+    EXPECT_NEAR(box("lightAreaWidth")->value(), 1.3, 1e-4);
+    box("lightAreaWidth")->setValue(2.0);
+    EXPECT_FLOAT_EQ(doc.scene().lights[0].size.x, 2.0f);
+    EXPECT_EQ(doc.undoStack()->undoText(), "Edit area light width");
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene().lights[0], before);
+
+    auto* shape = panel->findChild<QComboBox*>("lightAreaShape");
+    ASSERT_NE(shape, nullptr);
+    shape->setCurrentIndex(shape->findData(int(scene::AreaShape::Disc)));
+    EXPECT_EQ(doc.scene().lights[0].shape, scene::AreaShape::Disc);
+    EXPECT_TRUE(box("lightAreaRadius")->isVisibleTo(panel.get()));
+    EXPECT_FALSE(box("lightAreaWidth")->isVisibleTo(panel.get()));
+    auto* unit = panel->findChild<QComboBox*>("lightAreaUnit");
+    ASSERT_NE(unit, nullptr);
+    unit->setCurrentIndex(unit->findData(int(scene::AreaUnit::Power)));
+    EXPECT_EQ(doc.scene().lights[0].unit, scene::AreaUnit::Power);
+    EXPECT_TRUE(box("lightIntensity")->suffix().endsWith(" W"));
 }

@@ -139,6 +139,9 @@ TEST(ReferenceHardCases, NearOneReflectanceStaysFiniteAndBounded) {
     scene::Material m;
     m.diffuseColor = glm::vec3(0.99f);
     m.emissive = glm::vec3(1.0f);
+    // The box's faces point out and the camera is inside: emission must leave the
+    // back too, which a material says explicitly (emitters are one-sided otherwise).
+    m.twoSided = true;
     s.materials.push_back(m);
     scene::Object o;
     o.mesh = 0;

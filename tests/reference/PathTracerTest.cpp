@@ -104,6 +104,9 @@ TEST(PathTracer, FurnaceBoxConvergesToAnalyticRadiance) {
     const float a = 0.5f, le = 1.0f;
     m.diffuseColor = glm::vec3(a);
     m.emissive = glm::vec3(le);
+    // The box's faces point out and the camera is inside: emission must leave the
+    // back too, which a material says explicitly (emitters are one-sided otherwise).
+    m.twoSided = true;
     s.materials.push_back(m);
     scene::Object o;
     o.mesh = 0;

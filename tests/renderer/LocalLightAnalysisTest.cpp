@@ -32,8 +32,8 @@ TEST(LocalLightAnalysis, DefaultsInjectTheCornellBoxLampAndRunTheLpv) {
     const scene::Scene s = scene::makeCornellBoxProject().scene;
     const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), {}, nullptr);
     EXPECT_TRUE(d.front().runs()) << d.front().reason;
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (spot) injected through 128^2 RSM face");
-    // The template's lamp is a spot and an emissive quad: injecting both would count it twice.
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (area) injected through 128^2 RSM faces");
+    // The template's lamp is an area light and an emissive quad: injecting both would count it twice.
     EXPECT_EQ(find(d, "lpv.emissive").reason, "forced off by lpv.emissive");
     EXPECT_FALSE(find(d, "lpv.bounces").runs());
 }
@@ -54,8 +54,8 @@ TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun
         renderer::decideEffects(s, renderer::analyseSceneTraits(s),
                                 with({{"lpv.localLights", "auto"}, {"lpv.bounces", "3"}}), nullptr);
     EXPECT_TRUE(d.front().runs()) << d.front().reason;
-    EXPECT_EQ(d.front().reason, "spot or point lights light the scene: their RSMs are injected");
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (spot) injected through 128^2 RSM face");
+    EXPECT_EQ(d.front().reason, "spot, point or area lights light the scene: their RSMs are injected");
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (area) injected through 128^2 RSM faces");
     EXPECT_TRUE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "2 more bounces re-injected at the geometry volume's surfels");
 
@@ -74,7 +74,7 @@ TEST(LocalLightAnalysis, NoSpotPointOrEmitterSaysSo) {
     const auto params = with({{"lpv.localLights", "auto"}, {"lpv.emissive", "on"}, {"lpv.bounces", "2"}});
     const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), params, nullptr);
     EXPECT_FALSE(d.front().runs());
-    EXPECT_EQ(find(d, "lpv.localLights").reason, "no spot or point light with a positive intensity");
+    EXPECT_EQ(find(d, "lpv.localLights").reason, "no spot, point or area light with a positive intensity");
     EXPECT_EQ(find(d, "lpv.emissive").reason, "forced on by lpv.emissive, but no visible material emits");
     EXPECT_FALSE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "the LPV does not run");

@@ -134,7 +134,7 @@ TEST_F(LpvLocalLightGLTest, LocalRsmExistsOnlyWithSpotOrPointLights) {
     const auto* d = decision(*r, "lpv.localLights");
     ASSERT_NE(d, nullptr);
     EXPECT_FALSE(d->runs());
-    EXPECT_EQ(d->reason, "no spot or point light with a positive intensity");
+    EXPECT_EQ(d->reason, "no spot, point or area light with a positive intensity");
     EXPECT_TRUE(r->debugImages("localrsm").empty());
     EXPECT_FALSE(timed(*r, "localRsm"));
     EXPECT_EQ(r->lpvNote().find("local-light"), std::string::npos) << r->lpvNote();

@@ -16,7 +16,19 @@ TEST(CornellBox, HasPublishedLayout) {
     EXPECT_NEAR(b.max.y, 5.488f, 1e-4f);
     EXPECT_NEAR(b.max.z, 5.592f, 1e-4f);
     ASSERT_EQ(s.lights.size(), 1u);
-    EXPECT_EQ(s.lights[0].type, LightType::Spot);
+    // The published lamp: a 130 x 105 mm one-sided rectangle of radiance (17, 12, 4) in the
+    // light quad's plane, facing down.
+    const Light& lamp = s.lights[0];
+    EXPECT_EQ(lamp.type, LightType::Area);
+    EXPECT_EQ(lamp.shape, AreaShape::Rectangle);
+    EXPECT_FALSE(lamp.twoSided);
+    EXPECT_NEAR(lamp.size.x, 1.30f, 1e-6f);
+    EXPECT_NEAR(lamp.size.y, 1.05f, 1e-6f);
+    EXPECT_NEAR(lamp.position.y, 5.487f, 1e-5f);
+    EXPECT_EQ(lamp.direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_NEAR(lamp.color.r * lamp.intensity, 17.0f, 1e-4f);
+    EXPECT_NEAR(lamp.color.g * lamp.intensity, 12.0f, 1e-4f);
+    EXPECT_NEAR(lamp.color.b * lamp.intensity, 4.0f, 1e-4f);
     ASSERT_NE(s.findCamera("default"), nullptr);
 }
 

@@ -242,17 +242,17 @@ TEST_F(ProjectBadInput, BracketsInStringsAreNotNesting) {
 }
 
 TEST_F(ProjectBadInput, NewerVersionSaysWhichVersionsThisBuildReads) {
-    editBad("\"version\": 1,", "\"version\": 2,");
+    editBad("\"version\": 2,", "\"version\": 3,");
     const Error e = loadFails(bad_);
     EXPECT_EQ(e.code, ErrorCode::NewerVersion);
     EXPECT_EQ(e.file, bad_.string());
     EXPECT_EQ(e.location, "version");
-    EXPECT_TRUE(contains(e.message, "version 2")) << e.message;
-    EXPECT_TRUE(contains(e.message, "up to version 1")) << e.message;
+    EXPECT_TRUE(contains(e.message, "version 3")) << e.message;
+    EXPECT_TRUE(contains(e.message, "up to version 2")) << e.message;
 }
 
 TEST_F(ProjectBadInput, VersionZeroIsOutOfRange) {
-    editBad("\"version\": 1,", "\"version\": 0,");
+    editBad("\"version\": 2,", "\"version\": 0,");
     const Error e = loadFails(bad_);
     EXPECT_EQ(e.code, ErrorCode::OutOfRange);
     EXPECT_EQ(e.location, "version");

@@ -201,7 +201,7 @@ TEST_F(ProjectRoundTrip, SaveThenLoadGivesAnEqualProject) {
 TEST_F(ProjectRoundTrip, TheFileLooksAsDocumented) {
     ASSERT_TRUE(saveProject(richProject(), dir_ / "doc.lpvproj"));
     const std::string text = readFile(dir_ / "doc.lpvproj");
-    EXPECT_EQ(text.rfind("{\n  \"format\": \"lpvstudio-project\",\n  \"version\": 1,\n  \"name\": ", 0), 0u) << text;
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"lpvstudio-project\",\n  \"version\": 2,\n  \"name\": ", 0), 0u) << text;
     EXPECT_NE(text.find("\"asset\": \"doc.assets/meshes/0-"), std::string::npos);
     // Floats are written as the shortest decimal that reads back exactly.
     EXPECT_NE(text.find("\"opacity\": 0.3,"), std::string::npos);

@@ -29,7 +29,8 @@ struct Hit {
 // A point on an emissive triangle, for next-event estimation.
 struct EmitterSample {
     glm::vec3 position{0.0f};
-    glm::vec3 normal{0.0f};   // unit, the triangle's face normal (emission leaves both sides)
+    glm::vec3 normal{0.0f};   // unit, the triangle's face normal (counter-clockwise front)
+    bool twoSided = false;    // the material is two-sided: emission leaves both sides, else the front only
     glm::vec3 radiance{0.0f}; // emitted radiance there (material emissive x map)
     float pdfArea = 0.0f;     // probability density per unit area of picking this point
 };

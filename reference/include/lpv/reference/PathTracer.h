@@ -59,7 +59,10 @@ class PathTracer {
     // Sample `sampleIndex` of pixel (x, y) (rows from the top); deterministic.
     PixelSample samplePixel(int x, int y, int sampleIndex) const;
     // Irradiance the scene's lights deliver at p with normal n (shadow rays included).
-    glm::vec3 directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n) const;
+    // Area lights are sampled at one point drawn from `rng` (an unbiased estimate);
+    // without one, from a generator seeded by p, so the call stays deterministic.
+    glm::vec3 directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
+                               Rng* rng = nullptr) const;
 
   private:
     const EmbreeScene& embree_;
@@ -77,7 +80,10 @@ class PathTracer {
                                 Rng& rng) const;
     // Irradiance one light delivers at p toward n (0 when shadowed); `l` = unit direction to the light.
     glm::vec3 lightIrradiance(const scene::Light& light, const glm::vec3& p, const glm::vec3& offsetNormal,
-                              const glm::vec3& n, glm::vec3& l) const;
+                              const glm::vec3& n, glm::vec3& l, Rng& rng) const;
+    // An area light: one point drawn uniformly on it, L A cos cos / d^2 with its shadow ray.
+    glm::vec3 areaLightIrradiance(const scene::Light& light, const glm::vec3& p, const glm::vec3& offsetNormal,
+                                  const glm::vec3& n, glm::vec3& l, Rng& rng) const;
 };
 
 } // namespace lpv::reference

@@ -12,7 +12,7 @@
 namespace lpv::scene {
 
 inline constexpr const char* kProjectFormatName = "lpvstudio-project";
-inline constexpr int kProjectFormatVersion = 1;
+inline constexpr int kProjectFormatVersion = 2; // 2: area lights (1 is migrated on load)
 
 // A named set of parameter values kept in the project, so settings can be
 // compared (the editor's preset bar and A/B view) without losing the current
