@@ -59,6 +59,8 @@ void printSummary(const fs::path& file, const importers::ImportResult& r, bool v
               << " triangles, " << s.materials << " materials, textures " << s.texturesFound << " found / "
               << s.texturesMissing << " missing, " << s.degenerateTrianglesDropped
               << " degenerate triangles dropped, " << seconds(s.seconds) << "\n";
+    for (const std::string& note : r.notes)
+        std::cout << "  " << note << "\n";
     const std::size_t shown = verbose ? r.warnings.size() : std::min<std::size_t>(r.warnings.size(), 20);
     for (std::size_t i = 0; i < shown; ++i)
         std::cerr << "  warning: " << r.warnings[i] << "\n";

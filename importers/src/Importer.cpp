@@ -5,6 +5,8 @@
 #include "lpv/importers/GltfImporter.h"
 #include "lpv/importers/MeshCleanup.h"
 
+#include "EmissiveLamps.h"
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -113,6 +115,7 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
     if (repairedNormals > 0)
         result.warnings.push_back(file.string() + ": " + std::to_string(repairedNormals) +
                                   " invalid normal(s) (zero length or non-finite) recomputed");
+    addAreaLightsForEmissivePanels(result.scene, result.notes);
     result.stats.objects = result.scene.objects.size();
     result.stats.triangles = result.scene.triangleCount();
     result.stats.materials = result.scene.materials.size();

@@ -1,5 +1,7 @@
 #include "lpv/reference/EmbreeScene.h"
 
+#include "lpv/scene/AreaLight.h"
+
 #include "lpv/reference/SurfaceLookup.h"
 
 #include <embree3/rtcore.h>
@@ -115,7 +117,9 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                     const float luminance =
                         0.2126f * mat.emissive.r + 0.7152f * mat.emissive.g + 0.0722f * mat.emissive.b;
                     const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-                    if (luminance > 0.0f && std::isfinite(luminance) && std::isfinite(area)) {
+                    // An area light's visible surface is sampled as that light, not again as an emitter.
+                    if (luminance > 0.0f && std::isfinite(luminance) && std::isfinite(area) &&
+                        !scene::liesOnAnAreaLight(s.lights, p[0], p[1], p[2])) {
                         d.emitters.push_back({p[0], p[1], p[2], unsigned(d.triangleMaterial.size() - 1), area});
                         d.emitterCdf.push_back((d.emitterCdf.empty() ? 0.0f : d.emitterCdf.back()) +
                                                area * luminance);

@@ -2,6 +2,9 @@
 
 #include "LocalRsmPass.h"
 #include "lpv/renderer/SceneAnalysis.h"
+#include "lpv/scene/AreaLight.h"
+
+#include <algorithm>
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 
 namespace lpv::renderer {
@@ -55,8 +58,14 @@ EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::P
     } else if (d.setting == "off") {
         d.reason = "forced off by lpv.emissive";
     } else if (!emissive) {
-        d.reason = d.setting == "on" ? "forced on by lpv.emissive, but no visible material emits"
-                                     : "no visible material emits";
+        // Emitting triangles that are an area light's visible surface are that light (no double counting).
+        bool lampSurfaces = false;
+        for (const scene::Material& m : scene.materials)
+            lampSurfaces |= std::max({m.emissive.r, m.emissive.g, m.emissive.b}) > 0.0f;
+        const std::string why = lampSurfaces && scene::hasAreaLight(scene.lights)
+                                    ? "every emissive surface is an area light's visible surface (injected as that light)"
+                                    : "no visible material emits";
+        d.reason = d.setting == "on" ? "forced on by lpv.emissive, but " + why : why;
     } else if (params.getFloat("lpv.intensity") <= 0.0) {
         d.reason = "lpv.intensity is 0";
     } else {

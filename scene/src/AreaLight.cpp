@@ -128,4 +128,37 @@ float areaLightIrradianceFactor(const Light& light, const glm::vec3& p, const gl
     return clipped.size() < 3 ? 0.0f : lambertSum<glm::vec3, float>(p, n, clipped);
 }
 
+bool hasAreaLight(std::span<const Light> lights) {
+    return std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.type == LightType::Area; });
+}
+
+bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    for (const Light& light : lights) {
+        if (light.type != LightType::Area)
+            continue;
+        const AreaLightFrame f = areaLightFrame(light);
+        const float u = glm::length(f.halfU), v = glm::length(f.halfV);
+        if (!(u > 0.0f) || !(v > 0.0f))
+            continue;
+        // A millimetre, or a thousandth of the light, off its plane and outline still counts.
+        const float slack = std::max(1e-3f, 1e-3f * (u + v));
+        bool inside = true;
+        for (const glm::vec3& p : {a, b, c}) {
+            const glm::vec3 d = p - f.center;
+            const float along = glm::dot(d, f.normal);
+            const float x = glm::dot(d, f.halfU) / u, y = glm::dot(d, f.halfV) / v;
+            const bool withinOutline = light.shape == AreaShape::Disc
+                                           ? std::sqrt(x * x + y * y) <= u * discPolygonRadius(1.0f) + slack
+                                           : std::abs(x) <= u + slack && std::abs(y) <= v + slack;
+            if (!(std::abs(along) <= slack) || !withinOutline) {
+                inside = false;
+                break;
+            }
+        }
+        if (inside)
+            return true;
+    }
+    return false;
+}
+
 } // namespace lpv::scene

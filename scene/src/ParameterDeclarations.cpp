@@ -93,10 +93,10 @@ std::vector<ParameterInfo> declareParameters() {
         integer("lpv.localRsmSize", 128, 16, 1024, "px", "LPV",
                 "Width and height of each spot light's RSM and of each face of a point light's cube RSM",
                 P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
-        choice("lpv.emissive", "off", kAutoOnOff, "LPV",
-               "Inject emissive surfaces as VPLs sampled on their triangles (auto: when a visible material emits; "
-               "off by default: scenes that model a lamp both as a light and as an emissive quad, like the Cornell "
-               "box template, would count it twice)",
+        choice("lpv.emissive", "auto", kAutoOnOff, "LPV",
+               "Inject emissive surfaces as VPLs sampled on their triangles (auto: when a visible material emits); "
+               "an area light's visible surface (an emissive quad in its outline, like the Cornell box lamp) is "
+               "left out: it is injected as that light, once",
                P::LpvInjection | P::LpvPropagation | P::Shading),
         // --- Effects (thesis extensions) ---
         choice("effects.skyInjection", "auto", kAutoOnOff, "Effects",

@@ -232,3 +232,47 @@ TEST(AssimpImporter, GarbageWithAnObjExtensionIsAnErrorNotACrash) {
     else
         EXPECT_NE(r.error().describe().find("bad.obj"), std::string::npos);
 }
+
+// The Cornell OBJ's lamp is an emissive quad (Ke 17 12 4): it becomes one area light of its
+// size and radiance, facing down, and the quad stays as its visible surface (issue #22).
+TEST(AssimpImporter, TheCornellLampQuadBecomesAnAreaLight) {
+    const auto r = importOk(scenes() / "cornell/CornellBox-Original.obj");
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    const scene::Light& lamp = r.scene.lights[0];
+    EXPECT_EQ(lamp.type, scene::LightType::Area);
+    EXPECT_EQ(lamp.shape, scene::AreaShape::Rectangle);
+    EXPECT_EQ(lamp.unit, scene::AreaUnit::Radiance);
+    EXPECT_FALSE(lamp.twoSided);
+    // The quad spans x -0.24..0.23 and z -0.22..0.16 at y 1.98.
+    const float w = std::max(lamp.size.x, lamp.size.y), h = std::min(lamp.size.x, lamp.size.y);
+    EXPECT_NEAR(w, 0.47f, 1e-4f);
+    EXPECT_NEAR(h, 0.38f, 1e-4f);
+    EXPECT_NEAR(lamp.position.x, -0.005f, 1e-4f);
+    EXPECT_NEAR(lamp.position.y, 1.98f, 1e-4f);
+    EXPECT_NEAR(lamp.position.z, -0.03f, 1e-4f);
+    EXPECT_NEAR(lamp.direction.y, -1.0f, 1e-5f) << "it lights the room below";
+    EXPECT_NEAR(lamp.color.r * lamp.intensity, 17.0f, 1e-4f);
+    EXPECT_NEAR(lamp.color.g * lamp.intensity, 12.0f, 1e-4f);
+    EXPECT_NEAR(lamp.color.b * lamp.intensity, 4.0f, 1e-4f);
+    ASSERT_EQ(r.notes.size(), 1u);
+    EXPECT_NE(r.notes[0].find("became the area light"), std::string::npos) << r.notes[0];
+    // The quad is still there, emissive: what a camera sees of the lamp.
+    const scene::Material* light = findMaterial(r.scene, "light");
+    ASSERT_NE(light, nullptr);
+    EXPECT_EQ(light->emissive, glm::vec3(17.0f, 12.0f, 4.0f));
+}
+
+// Emitters that are not flat rectangles or discs stay emissive surfaces: a glowing cube.
+TEST(AssimpImporter, AnEmissiveCubeStaysAnEmissiveSurface) {
+    const fs::path dir = fs::temp_directory_path() / ("lpv-glow-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "glow.mtl") << "newmtl glow\nKd 0.5 0.5 0.5\nKe 5 5 5\n";
+    std::ofstream(dir / "glow.obj") << "mtllib glow.mtl\n"
+                                       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                       "usemtl glow\n"
+                                       "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    const auto r = importOk(dir / "glow.obj");
+    EXPECT_TRUE(r.scene.lights.empty()) << "a cube is no panel";
+    EXPECT_TRUE(r.notes.empty());
+    fs::remove_all(dir);
+}

@@ -96,3 +96,22 @@ TEST_F(DefaultGi, GiOffRunsAndHoldsNoIndirectPass) {
     EXPECT_EQ(off.localRsmImages, 0u);
     EXPECT_NE(off.note.find("gi.method is off"), std::string::npos) << off.note;
 }
+
+// No double counting (issue #22): the lamp is an area light and an emissive quad in its
+// outline; on the defaults (lpv.emissive = auto) its indirect light equals the area light's alone.
+TEST_F(DefaultGi, TheLampCountsOnceThoughItIsAnAreaLightAndAnEmissiveQuad) {
+    ASSERT_TRUE(project.parameters.setFromText("output.view", "indirect", "test").has_value());
+    const Frame both = render("lpv");
+    for (scene::Material& m : project.scene.materials)
+        m.emissive = glm::vec3(0.0f); // the quad no longer emits: the area light alone
+    const Frame alone = render("lpv");
+    ASSERT_EQ(both.hdr.size(), alone.hdr.size());
+    double sumBoth = 0.0, sumAlone = 0.0;
+    for (std::size_t i = 0; i < both.hdr.size(); i += 4) {
+        sumBoth += both.hdr[i] + both.hdr[i + 1] + both.hdr[i + 2];
+        sumAlone += alone.hdr[i] + alone.hdr[i + 1] + alone.hdr[i + 2];
+    }
+    EXPECT_GT(sumAlone, 0.0);
+    EXPECT_NEAR(sumBoth / sumAlone, 1.0, 1e-6) << "the quad's light would otherwise be added again";
+    EXPECT_EQ(both.note.find("emissive VPLs"), std::string::npos) << both.note;
+}

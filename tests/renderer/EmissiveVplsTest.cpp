@@ -75,3 +75,25 @@ TEST(EmissiveVpls, HiddenOrDarkSurfacesGiveNone) {
     EXPECT_FALSE(ref::sceneHasEmissiveSurface(hidden));
     EXPECT_TRUE(ref::sampleEmissiveVpls(hidden, 0.25f, 1000).empty());
 }
+
+// A lamp modelled as an area light with its emissive quad counts once (issue #22):
+// the quad lies in the light's plane and outline, so it gives no VPLs of its own,
+// and a quad elsewhere still does.
+TEST(EmissiveVpls, AnAreaLightsVisibleSurfaceIsNotInjectedAgain) {
+    scene::Scene s = ceilingLamp();
+    scene::Light lamp;
+    lamp.type = scene::LightType::Area;
+    lamp.position = {2.0f, 3.0f, -0.25f}; // the quad's centre (moved by its object)
+    lamp.direction = {0.0f, -1.0f, 0.0f};
+    lamp.tangent = {1.0f, 0.0f, 0.0f};
+    lamp.size = {2.0f, 1.5f};
+    s.lights = {lamp};
+    EXPECT_FALSE(ref::sceneHasEmissiveSurface(s));
+    EXPECT_TRUE(ref::sampleEmissiveVpls(s, 0.25f, 100000).empty());
+    s.lights[0].position.y = 2.5f; // the light half a metre below: the quad is an emitter of its own
+    EXPECT_TRUE(ref::sceneHasEmissiveSurface(s));
+    EXPECT_FALSE(ref::sampleEmissiveVpls(s, 0.25f, 100000).empty());
+    s.lights[0].position.y = 3.0f;
+    s.lights[0].size = {1.0f, 1.5f}; // half the quad sticks out of the light
+    EXPECT_TRUE(ref::sceneHasEmissiveSurface(s));
+}

@@ -33,8 +33,11 @@ TEST(LocalLightAnalysis, DefaultsInjectTheCornellBoxLampAndRunTheLpv) {
     const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), {}, nullptr);
     EXPECT_TRUE(d.front().runs()) << d.front().reason;
     EXPECT_EQ(find(d, "lpv.localLights").reason, "ceilingLight (area) injected through 128^2 RSM faces");
-    // The template's lamp is an area light and an emissive quad: injecting both would count it twice.
-    EXPECT_EQ(find(d, "lpv.emissive").reason, "forced off by lpv.emissive");
+    // The template's lamp is an area light and an emissive quad in its outline: the quad is
+    // that light's visible surface, so emissive injection (auto) leaves it out.
+    EXPECT_FALSE(find(d, "lpv.emissive").runs());
+    EXPECT_EQ(find(d, "lpv.emissive").reason,
+              "every emissive surface is an area light's visible surface (injected as that light)");
     EXPECT_FALSE(find(d, "lpv.bounces").runs());
 }
 
@@ -59,8 +62,10 @@ TEST(LocalLightAnalysis, AutoInjectsSpotAndEmissiveLightAndRunsTheLpvWithoutASun
     EXPECT_TRUE(find(d, "lpv.bounces").runs());
     EXPECT_EQ(find(d, "lpv.bounces").reason, "2 more bounces re-injected at the geometry volume's surfels");
 
-    const auto e = renderer::decideEffects(s, renderer::analyseSceneTraits(s),
-                                           with({{"lpv.emissive", "auto"}}), nullptr);
+    // Without the area light, the lamp quad is an emitter of its own and is injected on auto.
+    scene::Scene quadOnly = s;
+    quadOnly.lights.clear();
+    const auto e = renderer::decideEffects(quadOnly, renderer::analyseSceneTraits(quadOnly), {}, nullptr);
     EXPECT_TRUE(e.front().runs());
     EXPECT_TRUE(find(e, "lpv.emissive").runs());
     EXPECT_EQ(find(e, "lpv.emissive").reason, "a visible material emits: its triangles are sampled as VPLs");

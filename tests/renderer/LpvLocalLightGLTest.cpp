@@ -154,6 +154,8 @@ TEST_F(LpvLocalLightGLTest, LocalRsmExistsOnlyWithSpotOrPointLights) {
     // Forced off: the pass and its targets go away again; with no sun the LPV is off.
     scene::ParameterSet off = params;
     ASSERT_TRUE(off.setFromText("lpv.localLights", "off", "test").has_value());
+    // The box's lamp quad is an emitter of its own here (no area light covers it): off too.
+    ASSERT_TRUE(off.setFromText("lpv.emissive", "off", "test").has_value());
     render(*r, point, off);
     EXPECT_TRUE(r->debugImages("localrsm").empty());
     EXPECT_NE(r->lpvNote().find("off"), std::string::npos) << r->lpvNote();

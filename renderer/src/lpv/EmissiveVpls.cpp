@@ -1,5 +1,7 @@
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 
+#include "lpv/scene/AreaLight.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,6 +39,8 @@ std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
                 const float length = glm::length(cross);
                 if (!(length > 0.0f))
                     continue; // degenerate: no area, no light
+                if (scene::liesOnAnAreaLight(scene.lights, a, b, c))
+                    continue; // an area light's visible surface: injected as that light
                 glm::vec3 n = cross / length;
                 // The emitting side is the one the shading normals face (the winding may disagree).
                 if (mesh.normals.size() == mesh.positions.size()) {
@@ -58,16 +62,7 @@ int subdivisions(float area, float spacing) {
 
 } // namespace
 
-bool sceneHasEmissiveSurface(const scene::Scene& scene) {
-    for (const scene::Object& object : scene.objects) {
-        if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= scene.meshes.size())
-            continue;
-        for (const scene::Submesh& sub : scene.meshes[std::size_t(object.mesh)].submeshes)
-            if (sub.materialIndex < scene.materials.size() && emits(scene.materials[sub.materialIndex]))
-                return true;
-    }
-    return false;
-}
+bool sceneHasEmissiveSurface(const scene::Scene& scene) { return !emissiveTriangles(scene).empty(); }
 
 std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls) {
     const std::vector<EmissiveTriangle> triangles = emissiveTriangles(scene);

@@ -31,6 +31,9 @@ struct ImportResult {
     scene::Scene scene;
     // Non-fatal problems, each naming the file and what was skipped or replaced.
     std::vector<std::string> warnings;
+    // What the import made of the file beyond its meshes, e.g. an emissive
+    // panel that became an area light (one line each, for the user).
+    std::vector<std::string> notes;
     ImportStats stats;
 };
 

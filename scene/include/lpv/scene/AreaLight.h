@@ -51,4 +51,13 @@ double polygonCosineSolidAngle(const glm::dvec3& p, const glm::dvec3& n, std::sp
 // their digits. E = areaLightRadiance(light) * F.
 float areaLightIrradianceFactor(const Light& light, const glm::vec3& p, const glm::vec3& n);
 
+// Whether any of `lights` is an area light.
+bool hasAreaLight(std::span<const Light> lights);
+
+// Whether the triangle (world positions) lies in the plane and within the
+// outline of one of `lights`' area lights: the lamp's visible surface (the
+// Cornell light quad), which the LPV's emissive VPLs and the reference's
+// emitter sampling leave out, so a lamp modelled both ways counts once.
+bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
 } // namespace lpv::scene
