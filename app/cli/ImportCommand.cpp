@@ -1,5 +1,8 @@
 #include "Cli.h"
 
+#include "lpv/reference/SunPlacement.h"
+#include "lpv/scene/FramingCamera.h"
+
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
@@ -69,15 +72,32 @@ void printSummary(const fs::path& file, const importers::ImportResult& r, bool v
 }
 
 // An imported scene without lights would render black; scenes such as
-// Sponza ship none. The sun comes from above, slightly from the side.
-void addDefaultSun(scene::Scene& s) {
+// Sponza ship none. The sun comes from where it lights the most of what the
+// scene's camera (or the framing camera) sees (reference::chooseSunDirection),
+// the old fixed direction when nothing beats it. Returns what to print.
+std::string addDefaultSun(scene::Scene& s) {
     scene::Light sun;
     sun.name = "sun (added by lpv import)";
     sun.type = scene::LightType::Directional;
     sun.direction = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
     sun.color = glm::vec3(1.0f, 0.95f, 0.85f);
     sun.intensity = 3.0f;
+    std::string how = "the default direction (the scene could not be ray traced to choose one)";
+    if (auto embree = reference::EmbreeScene::build(s, {})) {
+        const scene::Camera camera = s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front();
+        const reference::SunChoice fallback = reference::sunlitShare(*embree, camera, sun.direction);
+        const reference::SunChoice best = reference::chooseSunDirection(*embree, camera, sun.direction);
+        sun.direction = best.direction;
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "from azimuth %.0f, elevation %.0f degrees: it lights %.0f%% of what the %s camera sees "
+                      "(the default direction: %.0f%%)",
+                      best.azimuthDegrees, best.elevationDegrees, 100.0 * best.litFraction,
+                      s.cameras.empty() ? "framing" : "scene's", 100.0 * fallback.litFraction);
+        how = text;
+    }
     s.lights.push_back(sun);
+    return how;
 }
 
 } // namespace
@@ -130,8 +150,8 @@ int runImport(Args args) {
         scene::appendScene(project.scene, std::move(imported->scene));
     }
     if (project.scene.lights.empty() && !noSun) {
-        addDefaultSun(project.scene);
-        std::cout << "no lights in the scene: added a sun (--no-sun to leave it dark)\n";
+        const std::string how = addDefaultSun(project.scene);
+        std::cout << "no lights in the scene: added a sun " << how << " (--no-sun to leave it dark)\n";
     }
 
     auto textures = scene::copyTexturesIntoProject(project.scene, projectFile);

@@ -2,14 +2,16 @@
 // Sibenik, then `lpv render --set lpv.intensity=0,1 --set
 // lpv.propagationSteps=0,2,8`, and compare the images. The sunlit floor must
 // light what the sun does not reach (arcade undersides, shadowed walls), more
-// so with more propagation steps. Exposure +2 EV, as a user looking at the
-// indirect light of these dim interiors would set it.
+// so with more propagation steps. A fixed exposure of +2 EV (auto exposure
+// would expose each image differently), as a user comparing them would set it.
+// And at the defaults (auto exposure) the interior is visible, not black.
 #include "RunLpv.h"
 
 #include "lpv/importers/ImageIO.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -65,7 +67,8 @@ TEST_P(LpvScenes, IndirectLightReachesWhatTheSunDoesNot) {
     const fs::path out = dir / "view.png";
     const RunResult r = runLpv("render " + quoted(project) + " -o " + quoted(out) +
                                " --width 320 --height 180 --frames 2 --set lpv.intensity=0,1"
-                               " --set lpv.propagationSteps=0,2,8 --set output.exposure=2");
+                               " --set lpv.propagationSteps=0,2,8 --set output.exposureMode=manual"
+                               " --set output.exposure=2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     // Computed, or reused by a later frame (the note then quotes what was computed).
     EXPECT_NE(r.output.find("4 cascades of 32^3, 8 steps, computeGather"), std::string::npos) << r.output;
@@ -96,6 +99,32 @@ TEST_P(LpvScenes, IndirectLightReachesWhatTheSunDoesNot) {
             EXPECT_GT(b.brightenedFraction, 0.1);
         }
     }
+    fs::remove_all(dir);
+}
+
+// Issue #22: imported Sibenik rendered black at the defaults (99th percentile of the 8-bit
+// image 0). With auto exposure and the import's sun, the interior shows.
+TEST_P(LpvScenes, TheDefaultsShowAVisibleInterior) {
+    const fs::path source = fs::path(kSharedScenesDir) / GetParam();
+    const fs::path dir = fs::temp_directory_path() / ("lpv-visible-" + source.stem().string() + "-" +
+                                                      std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path project = dir / "scene.lpvproj";
+    ASSERT_EQ(runLpv("import " + quoted(source) + " -o " + quoted(project)).exitCode, 0);
+    const fs::path out = dir / "view.png";
+    const RunResult r = runLpv("render " + quoted(project) + " -o " + quoted(out) + " --width 320 --height 180 --frames 2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto img = lpv::importers::readImage8(out);
+    ASSERT_TRUE(img.has_value());
+    std::vector<double> lumas;
+    for (std::size_t i = 0; i < std::size_t(img->width) * std::size_t(img->height); ++i)
+        lumas.push_back(255.0 * luma(*img, i));
+    std::sort(lumas.begin(), lumas.end());
+    const double p50 = lumas[lumas.size() / 2], p99 = lumas[lumas.size() * 99 / 100];
+    std::cout << "[ figures ] " << GetParam() << " at the defaults: 8-bit luma median " << p50 << ", 99th percentile "
+              << p99 << "\n";
+    EXPECT_GT(p99, 50.0) << r.output;
     fs::remove_all(dir);
 }
 
