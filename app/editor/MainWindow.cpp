@@ -268,6 +268,7 @@ void MainWindow::createActions() {
     toolbar->addAction(splitAction_);
     // GI on/off is one control: gi.method off skips every indirect pass (undoable like any parameter edit).
     giAction_ = viewMenu_->addAction(tr("&Global illumination"));
+    giAction_->setObjectName("giToggle");
     giAction_->setCheckable(true);
     giAction_->setToolTip(tr("Indirect light on (gi.method = lpv) or off (direct light only, no indirect pass runs)"));
     giAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));

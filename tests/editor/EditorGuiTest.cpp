@@ -14,6 +14,7 @@
 
 #include "lpv/scene/Picking.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -420,4 +421,18 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName("LPV Studio tests");
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
+}
+
+// "GI on/off" is one control (issue #22): the toolbar toggle sets gi.method, one undo step.
+TEST(EditorGui, GiToggleIsOneUndoableParameterEdit) {
+    OpenWindow w;
+    auto* gi = w.window.findChild<QAction*>("giToggle");
+    ASSERT_NE(gi, nullptr);
+    EXPECT_TRUE(gi->isChecked()) << "GI is on by default";
+    gi->trigger();
+    EXPECT_EQ(w.doc().parameters().getEnum("gi.method"), "off");
+    EXPECT_FALSE(gi->isChecked());
+    w.doc().undoStack()->undo();
+    EXPECT_EQ(w.doc().parameters().getEnum("gi.method"), "lpv");
+    EXPECT_TRUE(gi->isChecked()) << "the toggle follows undo";
 }
