@@ -173,8 +173,8 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
         sun.direction = glm::normalize(glm::vec3(0.2f, -0.6f, 1.0f));
         sun.intensity = 3.0f;
         p->scene.lights.push_back(sun);
-        // The reference bounces the ceiling spot's light too: the LPV injects it
-        // as well (lpv.localLights is off by default), so both see the same lights.
+        // The reference bounces the ceiling lamp's light too: the LPV injects it
+        // as well (on auto already; forced here so the report does not depend on the default).
         (void)p->parameters.setFromText("lpv.localLights", "on", "bench report");
         if (auto ok = scene::saveProject(*p, project); !ok) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";

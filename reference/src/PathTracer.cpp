@@ -208,14 +208,12 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     glm::vec3 throughput(1.0f); // product of the diffuse albedos after the primary hit
     glm::vec3 multi(0.0f);      // incoming radiance at the primary hit, all bounces
     glm::vec3 one(0.0f);
-    // Emitters' light reaches each vertex by next-event estimation (the
-    // radiance equivalent of irradiance E is E / pi); the last vertex gets
-    // none, so `bounces` counts the same segments as when rays hit emitters.
-    {
-        const glm::vec3 e = emitterIrradiance(h.position, h.geometricNormal, h.shadingNormal, rng) / kPi;
-        multi += e;
-        one += e;
-    }
+    // Emitters' light reaches each vertex by next-event estimation. At the
+    // primary hit it is direct light (in the image, never in the indirect
+    // layers); at vertex d it has been reflected d times on its way, like the
+    // lights' (issue #22: `bounces` = N reflections for every light kind, and
+    // indirect1 holds exactly the light reflected once).
+    radiance += s.diffuse / kPi * emitterIrradiance(h.position, h.geometricNormal, h.shadingNormal, rng);
     for (int depth = 1; depth <= settings_.bounces; ++depth) {
         const glm::vec3 w = cosineSample(n, rng.next(), rng.next());
         if (glm::dot(w, ng) <= 0.0f)
@@ -230,15 +228,12 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
             break;
         }
         const SurfaceSample hs = embree_.surface(*hit);
+        // Every light's direct light at this vertex, reflected here: `depth` reflections in all.
         const glm::vec3 lit =
-            hs.diffuse / kPi * directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, &rng);
-        glm::vec3 reflected = lit;
-        // An emitter's light reflected here reaches the primary hit in depth + 1
-        // segments: in the multi-bounce layer only, and not after the last bounce.
-        if (depth < settings_.bounces)
-            reflected +=
-                hs.diffuse / kPi * emitterIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, rng);
-        multi += throughput * reflected;
+            hs.diffuse / kPi *
+            (directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, &rng) +
+             emitterIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, rng));
+        multi += throughput * lit;
         if (depth == 1)
             one += lit;
         throughput *= hs.diffuse;

@@ -7,6 +7,7 @@
 
 #include "Sampling.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,4 +151,100 @@ TEST(AreaLightReference, AOneSidedEmissiveSurfaceLightsNothingBelowItsBack) {
     EXPECT_EQ(radianceUnderThePanel(s), 0.0) << "one-sided: the back of the lamp lights nothing";
     s.materials[1].twoSided = true;
     EXPECT_GT(radianceUnderThePanel(s), 0.01) << "flagged two-sided, the panel lights what is under it";
+}
+
+namespace {
+
+// A floor, a white wall at x = -1 facing +x, and a 1 x 1 panel at height 1.5 facing down
+// (black: it reflects nothing). `emissive`: the panel glows with radiance 4; otherwise an
+// area light of the same radiance lies on it.
+scene::Scene panelRoom(bool emissive) {
+    scene::Scene s;
+    s.sky.intensity = 0.0f;
+    s.meshes.push_back(scene::makePlane());
+    scene::Mesh panelMesh = scene::makePlane();
+    for (scene::Submesh& sub : panelMesh.submeshes)
+        sub.materialIndex = 1;
+    s.meshes.push_back(panelMesh);
+    scene::Material white;
+    white.diffuseColor = glm::vec3(0.8f);
+    scene::Material panelMaterial;
+    panelMaterial.diffuseColor = glm::vec3(0.0f);
+    panelMaterial.emissive = emissive ? glm::vec3(4.0f) : glm::vec3(0.0f);
+    s.materials = {white, panelMaterial};
+    scene::Object floor;
+    floor.mesh = 0;
+    floor.transform.scale = glm::vec3(20.0f, 1.0f, 20.0f);
+    scene::Object wall;
+    wall.mesh = 0;
+    wall.transform.translation = {-1.0f, 0.0f, 0.0f};
+    wall.transform.rotation = glm::angleAxis(glm::radians(-90.0f), glm::vec3(0, 0, 1)); // +y to +x
+    wall.transform.scale = glm::vec3(20.0f, 1.0f, 20.0f);
+    scene::Object panel;
+    panel.mesh = 1;
+    panel.transform.translation = {0.0f, 1.5f, 0.0f};
+    panel.transform.rotation = glm::angleAxis(glm::radians(180.0f), glm::vec3(1, 0, 0)); // facing down
+    s.objects = {floor, wall, panel};
+    if (!emissive) {
+        scene::Light l;
+        l.type = scene::LightType::Area;
+        l.position = {0.0f, 1.5f, 0.0f};
+        l.direction = {0.0f, -1.0f, 0.0f};
+        l.size = {1.0f, 1.0f};
+        l.intensity = 4.0f;
+        s.lights = {l};
+    }
+    return s;
+}
+
+struct Layers {
+    double image = 0.0, one = 0.0, multi = 0.0, oneVariance = 0.0;
+};
+
+Layers meanLayers(const scene::Scene& s, int bounces) {
+    auto embree = reference::EmbreeScene::build(s, {});
+    EXPECT_TRUE(embree);
+    scene::Camera side;
+    side.position = {3.0f, 1.0f, 0.0f};
+    side.target = {0.0f, 0.3f, 0.0f};
+    reference::PathTracerSettings settings;
+    settings.emissiveLight = true;
+    settings.width = settings.height = 8;
+    settings.samplesPerPixel = 256;
+    settings.bounces = bounces;
+    settings.threads = 2;
+    const reference::ReferenceImage image = reference::PathTracer(*embree, s, side, settings).render();
+    Layers m;
+    const double n = double(image.pixelCount());
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        m.image += image.image[i].r / n;
+        m.one += image.indirectOne[i].r / n;
+        m.multi += image.indirectMulti[i].r / n;
+        m.oneVariance += image.indirectOneVariance[i].r / (n * n);
+    }
+    return m;
+}
+
+} // namespace
+
+// The emitter's direct light is direct (issue #22): with no other surface to reflect it
+// (the wall taken away, the panel black), nothing lands in the indirect layers.
+TEST(AreaLightReference, EmittedLightReachingThePrimaryHitDirectlyIsNotIndirect) {
+    scene::Scene s = panelRoom(true);
+    s.objects.erase(s.objects.begin() + 1); // no wall
+    const Layers m = meanLayers(s, 4);
+    EXPECT_GT(m.image, 0.01) << "the floor is lit directly";
+    EXPECT_EQ(m.one, 0.0);
+    EXPECT_EQ(m.multi, 0.0);
+}
+
+// `bounces N` means N reflections for every light kind: a glowing panel and an area light
+// of the same radiance on it give the same one-bounce layer and the same image.
+TEST(AreaLightReference, AnEmissivePanelAndAnAreaLightBounceAlike) {
+    const Layers panel = meanLayers(panelRoom(true), 1), light = meanLayers(panelRoom(false), 1);
+    ASSERT_GT(light.one, 0.0) << "the wall reflects the lamp's light onto the floor";
+    const double tolerance = 4.0 * std::sqrt(panel.oneVariance + light.oneVariance);
+    EXPECT_NEAR(panel.one, light.one, tolerance) << "one-bounce layers";
+    EXPECT_NEAR(panel.image, light.image, 0.05 * light.image) << "images";
+    EXPECT_EQ(light.one, light.multi) << "with one bounce the layers agree";
 }

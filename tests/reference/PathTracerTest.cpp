@@ -135,14 +135,16 @@ TEST(PathTracer, FurnaceBoxConvergesToAnalyticRadiance) {
         sumVarOne += image.indirectOneVariance[i].r;
     }
     const double n = double(image.pixelCount());
-    // One bounce: the walls around deliver E = pi Le; the emitters are
-    // sampled by area, so the estimate has its own noise (4 standard errors).
-    EXPECT_NEAR(sumOne / n, kPi * le, 4.0 * std::sqrt(sumVarOne / n / n) + 1e-4);
+    // Light reflected once: the walls' emission (E = pi Le at a wall) reflected by a wall,
+    // pi a Le; the wall's direct light itself is not indirect. The emitters are sampled by
+    // area, so the estimate has its own noise (4 standard errors).
+    EXPECT_NEAR(sumOne / n, kPi * a * le, 4.0 * std::sqrt(sumVarOne / n / n) + 1e-4);
     // The mean over pixels has standard error sqrt(mean variance / n); allow 4 of them plus the a^40 tail.
     const double tolerance = 4.0 * std::sqrt(sumVar / n / n) + 1e-6;
     const double expected = le / (1.0 - a);
     EXPECT_NEAR(sumImage / n, expected, tolerance);
-    EXPECT_NEAR(sumMulti / n, kPi * le / (1.0 - a), kPi * tolerance / a);
+    // Every reflected order: pi Le (a + a^2 + ...) = pi Le a / (1 - a).
+    EXPECT_NEAR(sumMulti / n, kPi * le * a / (1.0 - a), kPi * tolerance / a);
     EXPECT_GT(sumVar, 0.0)
         << "Russian roulette makes the multi-bounce estimate noisy; its variance must show it";
 }
