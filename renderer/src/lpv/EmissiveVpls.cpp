@@ -18,8 +18,10 @@ struct EmissiveTriangle {
     float area;
 };
 
-std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
-    std::vector<EmissiveTriangle> out;
+// Calls `visit` with each emissive triangle (world space) that is not an area
+// light's visible surface, until it returns false.
+template <class Visit>
+void forEachEmissiveTriangle(const scene::Scene& scene, Visit&& visit) {
     for (int o = 0; o < int(scene.objects.size()); ++o) {
         const scene::Object& object = scene.objects[std::size_t(o)];
         if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= scene.meshes.size())
@@ -49,10 +51,19 @@ std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
                     if (glm::dot(shading, n) < 0.0f)
                         n = -n;
                 }
-                out.push_back({a, b, c, n, scene.materials[sub.materialIndex].emissive, 0.5f * length});
+                if (!visit(EmissiveTriangle{a, b, c, n, scene.materials[sub.materialIndex].emissive, 0.5f * length}))
+                    return;
             }
         }
     }
+}
+
+std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
+    std::vector<EmissiveTriangle> out;
+    forEachEmissiveTriangle(scene, [&](const EmissiveTriangle& t) {
+        out.push_back(t);
+        return true;
+    });
     return out;
 }
 
@@ -62,7 +73,15 @@ int subdivisions(float area, float spacing) {
 
 } // namespace
 
-bool sceneHasEmissiveSurface(const scene::Scene& scene) { return !emissiveTriangles(scene).empty(); }
+// Asked every frame by the scene analysis: stops at the first emitter, allocates nothing.
+bool sceneHasEmissiveSurface(const scene::Scene& scene) {
+    bool found = false;
+    forEachEmissiveTriangle(scene, [&](const EmissiveTriangle&) {
+        found = true;
+        return false;
+    });
+    return found;
+}
 
 std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls) {
     const std::vector<EmissiveTriangle> triangles = emissiveTriangles(scene);
