@@ -35,11 +35,11 @@ void printBenchAccuracyReportHelp() {
     std::cout << R"(
 bench report [--out DIR] [--scenes DIR] [--scene NAME ...] [--quick] [options]:
 the README's accuracy-against-time report from one command. For each scene
-(cornell-box: the built-in template plus a sun through its open front,
-its ceiling spot injected too with lpv.localLights=on;
-sibenik and sponza: imported from --scenes, default ../shared/scenes, with
-the sun `lpv import` adds) it creates the project in DIR/NAME/,
-traces the reference once (DIR/NAME/reference.exr, kept for later runs of
+(cornell-box: the built-in template as `lpv new` makes it, lit by its
+ceiling lamp, an area light; sibenik and sponza: imported from --scenes,
+default ../shared/scenes, with the sun `lpv import` adds) it creates the
+project in DIR/NAME/, traces the reference once (DIR/NAME/reference.exr,
+with as many bounces as the project's lpv.bounces, kept for later runs of
 the same size), then runs `lpv bench --sweep` once per question, each key
 varied alone around the project's settings:
   steps      lpv.propagationSteps=0,1,2,4,8,16,32,64
@@ -52,7 +52,12 @@ varied alone around the project's settings:
   sky        effects.skyInjection=off,on
   subsurface effects.subsurface=off,on
   glossy     effects.glossyReflections=off,on
-  bounces    lpv.bounces=1,2,3
+  bounces    lpv.bounces=1,2,3 (one sweep and one reference per value)
+Like for like: each LPV is measured against the reference's light reflected
+as many times as its lpv.bounces, and the reference traces the sky and
+emissive surfaces where the LPV injects them (reference.skyLight and
+reference.emissiveLight on auto). The tables give the indirect MARE and the
+ratio of the LPV's mean indirect irradiance to the reference's.
 Scenes with emissive surfaces (the Cornell box's ceiling light) also get a
 radiosity solve measured against a reference of the emissive light alone
 (the project's lights removed), at doubling solve times. Writes DIR/report.md
@@ -112,6 +117,7 @@ struct ReportRun {
     bool projectSettings = false;
     double totalMs = 0.0;
     double indirectMare = 0.0;
+    double meanRatio = 0.0; // the LPV's mean indirect irradiance over the reference's
     double noiseMare = 0.0;
     double imageMare = 0.0;
 };
@@ -153,6 +159,16 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
+// "lpv.bounces=1,2,3" -> {"1", "2", "3"}.
+std::vector<std::string> splitValues(const std::string& sweep) {
+    std::vector<std::string> out;
+    std::string values = sweep.substr(sweep.find('=') + 1);
+    std::stringstream in(values);
+    for (std::string v; std::getline(in, v, ',');)
+        out.push_back(v);
+    return out;
+}
+
 // A fresh project for the scene; false (and a message) when it cannot be made.
 bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::path& project) {
     std::error_code ec;
@@ -161,25 +177,8 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     if (spec.source.empty()) {
         if (call("new", runNew, {project.string(), "--template", "cornell-box"}) != kOk)
             return false;
-        // The template is lit by its ceiling spot alone; a sun through the
-        // open front, down onto the floor, gives the LPV light to inject.
-        auto p = scene::loadProject(project);
-        if (!p) {
-            std::cerr << "lpv: " << p.error().describe() << "\n";
-            return false;
-        }
-        scene::Light sun;
-        sun.name = "sun (added by bench report)";
-        sun.direction = glm::normalize(glm::vec3(0.2f, -0.6f, 1.0f));
-        sun.intensity = 3.0f;
-        p->scene.lights.push_back(sun);
-        // The reference bounces the ceiling lamp's light too: the LPV injects it
-        // as well (on auto already; forced here so the report does not depend on the default).
-        (void)p->parameters.setFromText("lpv.localLights", "on", "bench report");
-        if (auto ok = scene::saveProject(*p, project); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return false;
-        }
+        // The default project as a user first sees it: lit by its ceiling
+        // lamp (an area light), which the LPV injects on auto.
         return true;
     }
     const fs::path source = scenesDir / spec.source;
@@ -190,11 +189,15 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
 }
 
-bool referenceMatches(const fs::path& file, int width, int height) {
+// A reference traced earlier with the same size and bounce count is reused.
+bool referenceMatches(const fs::path& file, int width, int height, int bounces = 0) {
     if (!fs::exists(file))
         return false;
     auto ref = readReferenceExr(file);
-    return ref && ref->image.width == width && ref->image.height == height;
+    if (!ref || ref->image.width != width || ref->image.height != height)
+        return false;
+    const auto it = ref->attributes.find("lpv:bounces");
+    return bounces == 0 || (it != ref->attributes.end() && it->second == std::to_string(bounces));
 }
 
 std::string describeReference(const fs::path& file) {
@@ -232,6 +235,8 @@ std::vector<ReportRun> readSweep(const fs::path& file, const std::string& questi
         }
         run.totalMs = r.value("totalMs", 0.0);
         run.indirectMare = r["indirect"].value("mare", 0.0);
+        const double meanReference = r["indirect"].value("meanReference", 0.0);
+        run.meanRatio = meanReference > 0.0 ? r["indirect"].value("meanTest", 0.0) / meanReference : 0.0;
         run.noiseMare = r["indirect"].value("noiseMare", 0.0);
         run.imageMare = r["image"].value("mare", 0.0);
         out.push_back(run);
@@ -333,7 +338,8 @@ const ReportRun* cheapestBelow(const std::vector<ReportRun>& runs, double target
 std::string runCell(const ReportRun* r) {
     if (!r)
         return "none of the sweeps";
-    return "`" + r->setting + "`: " + fixed(r->totalMs, 1) + " ms, " + percent(r->indirectMare);
+    return "`" + r->setting + "`: " + fixed(r->totalMs, 1) + " ms, " + percent(r->indirectMare) + ", mean " +
+           fixed(r->meanRatio, 2) + "x";
 }
 
 std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::string& command,
@@ -341,9 +347,11 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
     std::ostringstream out;
     out << "# LPV Studio: what accuracy costs in time\n\n`" << command << "`\n\nMachine: " << machine
         << "\n\nTime: the sum of the per-pass GPU medians of a frame (timer queries). Error: mean absolute "
-           "relative error (MARE) of the LPV's indirect irradiance against the path-traced multi-bounce "
-           "indirect irradiance at the same pixels, background masked. Each question varies one key around "
-           "the project's settings.\n\n";
+           "relative error (MARE) of the LPV's indirect irradiance against the path-traced indirect "
+           "irradiance at the same pixels, background masked, like for like: the reference's light reflected as "
+           "many times as the LPV's `lpv.bounces`, from the same lights (the sky and emissive surfaces where the "
+           "LPV injects them). Mean: the LPV's mean indirect irradiance over the reference's. Each question "
+           "varies one key around the project's settings.\n\n";
     out << "| scene | project settings | cheapest at <= 10% | cheapest at <= 5% | lowest error found |\n"
            "|---|---|---|---|---|\n";
     for (const SceneReport& s : scenes) {
@@ -356,7 +364,10 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
                 lowest = &r;
         }
         out << "| " << s.name << " | "
-            << (base ? fixed(base->totalMs, 1) + " ms, " + percent(base->indirectMare) : "-") << " | "
+            << (base ? fixed(base->totalMs, 1) + " ms, " + percent(base->indirectMare) + ", mean " +
+                           fixed(base->meanRatio, 2) + "x"
+                     : "-")
+            << " | "
             << runCell(cheapestBelow(s.runs, 0.10)) << " | " << runCell(cheapestBelow(s.runs, 0.05)) << " | "
             << runCell(lowest) << " |\n";
     }
@@ -364,19 +375,26 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
         out << "\n## " << s.name << "\n\nReference: " << s.referenceNote;
         if (!s.runs.empty())
             out << "; its own noise on the indirect light: MARE " << percent(s.runs.front().noiseMare);
-        out << ".\n\n| question | setting | GPU ms | indirect MARE | image MARE "
-               "|\n|---|---|---:|---:|---:|\n";
+        out << ".\n\n| question | setting | GPU ms | indirect MARE | indirect mean (LPV / reference) | image "
+               "MARE |\n|---|---|---:|---:|---:|---:|\n";
         for (const ReportRun& r : s.runs)
             out << "| " << r.question << " | `" << r.setting << "`" << (r.projectSettings ? " (project)" : "")
                 << " | " << fixed(r.totalMs, 2) << " | " << percent(r.indirectMare) << " | "
-                << percent(r.imageMare) << " |\n";
+                << fixed(r.meanRatio, 2) << "x | " << percent(r.imageMare) << " |\n";
         std::vector<std::string> questions;
         for (const ReportRun& r : s.runs)
             if (std::ranges::find(questions, r.question) == questions.end())
                 questions.push_back(r.question);
         out << "\nPlots:";
         for (const std::string& q : questions)
-            out << " [" << q << "](" << s.name << "/" << q << "/sweep.md)";
+            if (q == "bounces") { // one sweep per value, in bounces/K/
+                for (const ReportRun& r : s.runs)
+                    if (r.question == q && r.setting.starts_with("lpv.bounces="))
+                        out << " [" << r.setting << "](" << s.name << "/" << q << "/"
+                            << r.setting.substr(r.setting.find('=') + 1) << "/sweep.md)";
+            } else {
+                out << " [" << q << "](" << s.name << "/" << q << "/sweep.md)";
+            }
         out << "\n\n### Radiosity against solve time\n\n" << s.radiosityNote << "\n\n";
         if (!s.radiosity.empty()) {
             out << "| solve wall time | image MARE | image relMSE | image SSIM |\n|---:|---:|---:|---:|\n";
@@ -406,6 +424,7 @@ std::string reportJson(const std::vector<SceneReport>& scenes, const std::string
                                      {"projectSettings", r.projectSettings},
                                      {"totalMs", r.totalMs},
                                      {"indirectMare", r.indirectMare},
+                                     {"meanRatio", r.meanRatio},
                                      {"noiseMare", r.noiseMare},
                                      {"imageMare", r.imageMare}});
         for (const RadiosityPoint& p : s.radiosity)
@@ -475,41 +494,68 @@ int benchAccuracyReport(Args args) {
             status = kFailure;
             continue;
         }
-        const fs::path ref = sceneDir / "reference.exr";
-        if (referenceMatches(ref, *width, *height))
-            std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
-        else if (call("reference", runReference,
-                      {project.string(), "-o", ref.string(), "--width", std::to_string(*width), "--height",
-                       std::to_string(*height), "--spp", std::to_string(*spp)}) != kOk) {
+        const auto loaded = scene::loadProject(project);
+        const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
+        // One reference per bounce count a sweep needs (like for like); the
+        // project's own lpv.bounces first.
+        auto referenceFor = [&](int bounces) -> std::optional<fs::path> {
+            const fs::path ref = sceneDir / ("reference-" + std::to_string(bounces) + "-bounce.exr");
+            if (referenceMatches(ref, *width, *height, bounces)) {
+                std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
+                return ref;
+            }
+            if (call("reference", runReference,
+                     {project.string(), "-o", ref.string(), "--width", std::to_string(*width), "--height",
+                      std::to_string(*height), "--spp", std::to_string(*spp), "--bounces",
+                      std::to_string(bounces)}) != kOk)
+                return std::nullopt;
+            return ref;
+        };
+        const int projectBounces = current.getInt("lpv.bounces");
+        const auto ref = referenceFor(projectBounces);
+        if (!ref) {
             report.failures.push_back("tracing the reference");
             reports.push_back(report);
             status = kFailure;
             continue;
         }
-        report.referenceNote = describeReference(ref);
-        const auto loaded = scene::loadProject(project);
-        const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
+        report.referenceNote = describeReference(*ref) + ", " + std::to_string(projectBounces) + " bounce" +
+                               (projectBounces == 1 ? "" : "s");
         for (const Question& q : kQuestions) {
             const std::string& sweep = quick ? q.quickSweep : q.sweep;
             if (sweep.empty() ||
                 (!onlyQuestions.empty() && std::ranges::find(onlyQuestions, q.name) == onlyQuestions.end()))
                 continue;
-            const fs::path dir = sceneDir / q.name;
-            if (call("bench", benchSweep,
-                     {project.string(), "--sweep", sweep, "--reference", ref.string(), "--out", dir.string(),
-                      "--width", std::to_string(*width), "--height", std::to_string(*height), "--frames",
-                      std::to_string(*frames), "--warmup", std::to_string(*warmup)}) != kOk) {
-                report.failures.push_back("sweep " + q.name + " (" + sweep + ")");
-                status = kFailure;
-                continue;
+            // Each sweep against its like-for-like reference: the bounces
+            // question runs one sweep per value, each with its own reference.
+            std::vector<std::pair<std::string, int>> parts; // (sweep, reference bounces)
+            if (q.name == "bounces") {
+                for (const std::string& k : splitValues(sweep))
+                    parts.emplace_back("lpv.bounces=" + k, std::atoi(k.c_str()));
+            } else {
+                parts.emplace_back(sweep, projectBounces);
             }
-            auto runs = readSweep(dir / "sweep.json", q.name, current);
-            report.runs.insert(report.runs.end(), runs.begin(), runs.end());
-            if (machine.empty()) {
-                std::ifstream in(dir / "sweep.json");
-                const Json j = Json::parse(in, nullptr, false);
-                if (!j.is_discarded())
-                    machine = j.value("machine", "");
+            for (const auto& [part, bounces] : parts) {
+                const auto partRef = bounces == projectBounces ? ref : referenceFor(bounces);
+                const fs::path dir = parts.size() == 1 ? sceneDir / q.name
+                                                       : sceneDir / q.name / std::to_string(bounces);
+                if (!partRef ||
+                    call("bench", benchSweep,
+                         {project.string(), "--sweep", part, "--reference", partRef->string(), "--out",
+                          dir.string(), "--width", std::to_string(*width), "--height", std::to_string(*height),
+                          "--frames", std::to_string(*frames), "--warmup", std::to_string(*warmup)}) != kOk) {
+                    report.failures.push_back("sweep " + q.name + " (" + part + ")");
+                    status = kFailure;
+                    continue;
+                }
+                auto runs = readSweep(dir / "sweep.json", q.name, current);
+                report.runs.insert(report.runs.end(), runs.begin(), runs.end());
+                if (machine.empty()) {
+                    std::ifstream in(dir / "sweep.json");
+                    const Json j = Json::parse(in, nullptr, false);
+                    if (!j.is_discarded())
+                        machine = j.value("machine", "");
+                }
             }
         }
         measureRadiosity(report, sceneDir, *width, *height, *spp, double(*radiosityCount));

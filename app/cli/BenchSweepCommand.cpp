@@ -35,7 +35,12 @@ lpv.propagationSteps=0,4,8,16 --sweep lpv.gridSize=16,32), and for each
 measures per-pass GPU time (median/min/max over --frames after --warmup) and
 the error of the LPV's indirect irradiance (output.view=indirect) and of the
 final image against the path-traced reference (`lpv reference`): relMSE,
-MARE and SSIM, background masked, beside the reference's own noise. Writes
+MARE, SSIM and the mean's ratio, background masked, beside the reference's
+own noise. Like for like: a run with lpv.bounces = k is measured against the
+reference's k-bounce light (its indirect1 layer for k = 1, its multi-bounce
+layer when traced with --bounces k), and the reference traces the sky and
+emissive surfaces where the LPV injects them (reference.skyLight and
+reference.emissiveLight on auto). Writes
 into --out: sweep.csv, sweep.json, sweep.md (the cheapest settings reaching
 10% and 5% indirect MARE), time-<KEY>.png (time per pass against each swept
 key), error-time.png (indirect MARE against total time, Pareto front
@@ -57,7 +62,8 @@ struct SweepRun {
     std::vector<Setting> settings;
     std::vector<renderer::PassTiming> passes;
     double totalMs = 0.0;
-    reference::ErrorMetrics indirect;    // against the multi-bounce indirect irradiance
+    int bounces = 1;                     // lpv.bounces of this run
+    reference::ErrorMetrics indirect;    // like for like: against the reference layer with lpv.bounces bounces
     reference::ErrorMetrics indirectOne; // against the one-bounce indirect irradiance
     reference::ErrorMetrics image;       // final image against the reference image
     std::vector<glm::vec3> indirectPixels;
@@ -108,8 +114,9 @@ std::string metricsJson(const reference::ErrorMetrics& m) {
     char buf[256];
     std::snprintf(
         buf, sizeof buf,
-        "{\"relMse\": %.6g, \"noiseRelMse\": %.6g, \"mare\": %.6g, \"noiseMare\": %.6g, \"ssim\": %.6g}",
-        m.relMse, m.noiseRelMse, m.mare, m.noiseMare, m.ssim);
+        "{\"relMse\": %.6g, \"noiseRelMse\": %.6g, \"mare\": %.6g, \"noiseMare\": %.6g, \"ssim\": %.6g, "
+        "\"meanTest\": %.6g, \"meanReference\": %.6g}",
+        m.relMse, m.noiseRelMse, m.mare, m.noiseMare, m.ssim, m.meanTest, m.meanReference);
     return buf;
 }
 
@@ -121,8 +128,8 @@ std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::s
     out << "total_ms";
     for (const auto& p : passes)
         out << "," << p << "_median_ms," << p << "_min_ms," << p << "_max_ms";
-    out << ",indirect_relmse,indirect_mare,indirect_ssim,indirect1_mare,image_relmse,image_mare,image_ssim,"
-           "noise_indirect_relmse,noise_indirect_mare\n";
+    out << ",lpv_bounces,indirect_relmse,indirect_mare,indirect_ssim,indirect_mean,reference_indirect_mean,"
+           "indirect1_mare,image_relmse,image_mare,image_ssim,noise_indirect_relmse,noise_indirect_mare\n";
     for (const SweepRun& r : runs) {
         for (const auto& k : keys) {
             auto it = std::ranges::find(r.settings, k, &Setting::first);
@@ -136,8 +143,8 @@ std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::s
             else
                 out << "," << it->medianMs << "," << it->minMs << "," << it->maxMs;
         }
-        out << "," << r.indirect.relMse << "," << r.indirect.mare << "," << r.indirect.ssim << ","
-            << r.indirectOne.mare << "," << r.image.relMse << "," << r.image.mare << "," << r.image.ssim
+        out << "," << r.bounces << "," << r.indirect.relMse << "," << r.indirect.mare << "," << r.indirect.ssim
+            << "," << r.indirect.meanTest << "," << r.indirect.meanReference << "," << r.indirectOne.mare << "," << r.image.relMse << "," << r.image.mare << "," << r.image.ssim
             << "," << r.indirect.noiseRelMse << "," << r.indirect.noiseMare << "\n";
     }
     return out.str();
@@ -155,7 +162,7 @@ std::string sweepJson(const std::vector<SweepRun>& runs, const std::string& comm
         for (std::size_t k = 0; k < r.settings.size(); ++k)
             out << (k ? ", " : "") << jsonString(r.settings[k].first) << ": "
                 << jsonString(r.settings[k].second);
-        out << "}, \"totalMs\": " << r.totalMs << ", \"passes\": [";
+        out << "}, \"bounces\": " << r.bounces << ", \"totalMs\": " << r.totalMs << ", \"passes\": [";
         for (std::size_t p = 0; p < r.passes.size(); ++p)
             out << (p ? ", " : "") << "{\"pass\": " << jsonString(r.passes[p].pass)
                 << ", \"medianMs\": " << r.passes[p].medianMs << ", \"minMs\": " << r.passes[p].minMs
@@ -187,14 +194,16 @@ std::string sweepMarkdown(const std::vector<SweepRun>& runs, const std::vector<b
         ref.width, ref.height, ref.samplesPerPixel, ref.seconds,
         runs.empty() ? "-" : percent(runs.front().indirect.noiseMare).c_str());
     out << buf;
+    out << "Indirect: the LPV's indirect irradiance against the reference's layer with as many bounces as "
+           "`lpv.bounces` (like for like); mean = the LPV's mean over the reference's.\n\n";
     out << "| settings | total GPU ms (sum of pass medians) | indirect MARE | indirect relMSE | indirect "
-           "SSIM | "
-           "image MARE | image SSIM | Pareto |\n|---|---:|---:|---:|---:|---:|---:|:-:|\n";
+           "SSIM | indirect mean | image MARE | image SSIM | Pareto |\n|---|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const SweepRun& r = runs[i];
-        std::snprintf(buf, sizeof buf, "| %s | %.3f | %s%s | %.4g | %.3f | %s | %.3f | %s |\n",
+        std::snprintf(buf, sizeof buf, "| %s | %.3f | %s%s | %.4g | %.3f | %.2fx | %s | %.3f | %s |\n",
                       label(r.settings).c_str(), r.totalMs, percent(r.indirect.mare).c_str(),
                       r.indirect.mareBelowNoise() ? " (below noise)" : "", r.indirect.relMse, r.indirect.ssim,
+                      r.indirect.meanReference > 0.0 ? r.indirect.meanTest / r.indirect.meanReference : 0.0,
                       percent(r.image.mare).c_str(), r.image.ssim, front[i] ? "yes" : "");
         out << buf;
     }
@@ -269,6 +278,22 @@ int benchSweep(Args args) {
     if (auto error = checkCombinations(plan, setup->project.parameters, "--sweep"))
         return usageError(*error, "bench");
 
+    // Like for like (issue #22): a run with lpv.bounces = k is measured against
+    // the reference's k-bounce layer: indirect1 for k = 1, the multi-bounce
+    // layer when the reference was traced with --bounces k.
+    const std::vector<std::vector<Setting>> combinations =
+        plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
+    const scene::ParameterSet base = setup->project.parameters;
+    auto bouncesOf = [&](const std::vector<Setting>& combination) {
+        scene::ParameterSet p = base;
+        for (const auto& [key, value] : combination)
+            (void)p.setFromText(key, value, "--sweep");
+        return p.getInt("lpv.bounces");
+    };
+    int maxBounces = 1;
+    for (const auto& c : combinations)
+        maxBounces = std::max(maxBounces, bouncesOf(c));
+    int refBounces = 0; // 0: unknown (a reference file without lpv:bounces)
     reference::ReferenceImage ref;
     if (referenceFile) {
         auto loaded = readReferenceExr(*referenceFile);
@@ -279,17 +304,36 @@ int benchSweep(Args args) {
         ref = std::move(loaded->image);
         if (auto it = loaded->attributes.find("lpv:seconds"); it != loaded->attributes.end())
             ref.seconds = std::atof(it->second.c_str());
+        if (auto it = loaded->attributes.find("lpv:bounces"); it != loaded->attributes.end())
+            refBounces = std::atoi(it->second.c_str());
         if (ref.width != *width || ref.height != *height) {
             std::cerr << "lpv: " << *referenceFile << " is " << ref.width << "x" << ref.height
                       << "; give the same --width and --height\n";
             return kFailure;
         }
+        for (const auto& c : combinations)
+            if (const int k = bouncesOf(c); k > 1 && k != refBounces)
+                return usageError("lpv.bounces=" + std::to_string(k) + " is measured against a reference with " +
+                                      std::to_string(k) + " bounces, and " + *referenceFile + " has " +
+                                      (refBounces > 0 ? std::to_string(refBounces) : "an unrecorded number of") +
+                                      " (trace one with `lpv reference --bounces " + std::to_string(k) +
+                                      "`, one reference per lpv.bounces value, as `lpv bench report` does)",
+                                  "bench");
     } else {
+        // Traced here with as many bounces as the most any run has.
+        scene::Project traceProject = setup->project;
+        (void)traceProject.parameters.setFromText("reference.bounces", std::to_string(maxBounces), "bench");
         auto traced =
-            traceReference(setup->project, request.projectFile, setup->camera, {*width, *height, 0, true});
+            traceReference(traceProject, request.projectFile, setup->camera, {*width, *height, 0, true});
         if (!traced)
             return kFailure;
-        ref = std::move(*traced);
+        ref = std::move(traced->image);
+        refBounces = traced->bounces;
+        for (const auto& c : combinations)
+            if (const int k = bouncesOf(c); k > 1 && k != refBounces)
+                return usageError("sweeping lpv.bounces over more than one value above 1 needs one reference per "
+                                  "value: trace each with `lpv reference --bounces K` and sweep with --reference",
+                                  "bench");
     }
     std::error_code ec;
     fs::create_directories(outDir, ec);
@@ -298,9 +342,6 @@ int benchSweep(Args args) {
         return kFailure;
     }
 
-    const std::vector<std::vector<Setting>> combinations =
-        plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
-    const scene::ParameterSet base = setup->project.parameters;
     std::vector<SweepRun> runs;
     for (const auto& combination : combinations) {
         SweepRun run;
@@ -330,7 +371,9 @@ int benchSweep(Args args) {
             return reference::compareImages({*width, *height, &test}, {ref.width, ref.height, &r}, &var,
                                             &ref.coverage);
         };
-        run.indirect = measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
+        run.bounces = setup->project.parameters.getInt("lpv.bounces");
+        run.indirect = run.bounces == 1 ? measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance)
+                                        : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
         run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
         run.image = measure(image, ref.image, ref.imageVariance);
         std::printf("%s", renderer::formatTimingTable(run.passes).c_str());
@@ -402,10 +445,14 @@ int benchSweep(Args args) {
     if (!writePng("error-time.png", scatterPlot("Indirect light error against GPU time",
                                                 "total GPU ms per frame", "indirect MARE %", points)))
         return kFailure;
-    const float key = meanLuminance(ref.indirectMulti, ref.coverage);
+    // The crops show the layer the runs are measured against (the first run's bounce count).
+    const std::vector<glm::vec3>& shownLayer =
+        runs.empty() || runs.front().bounces == 1 ? ref.indirectOne : ref.indirectMulti;
+    const float key = meanLuminance(shownLayer, ref.coverage);
     std::vector<std::pair<std::string, scene::Image8>> crops{
-        {"reference (" + std::to_string(ref.samplesPerPixel) + " spp)",
-         crop(ref.indirectMulti, ref.width, ref.height, key)}};
+        {"reference (" + std::to_string(ref.samplesPerPixel) + " spp, " +
+             std::to_string(runs.empty() ? 1 : runs.front().bounces) + " bounce)",
+         crop(shownLayer, ref.width, ref.height, key)}};
     for (const SweepRun& r : runs)
         crops.emplace_back(label(r.settings), crop(r.indirectPixels, *width, *height, key));
     if (!writePng("crops.png", contactSheet(crops, 4)))

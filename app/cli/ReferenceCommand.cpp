@@ -36,15 +36,21 @@ Compare a renderer image with it using `lpv compare`.
   --camera NAME         Named camera of the project (default: the first)
   --spp N               Samples per pixel (reference.samplesPerPixel, default 64)
   --max-seconds S       Stop after the pass that reaches S seconds (reference.maxSeconds)
-  --bounces N           Diffuse bounces in the multi-bounce layer (reference.bounces, default 4)
+  --bounces N           Diffuse bounces in the multi-bounce layer (reference.bounces, default 4);
+                        compare an LPV with lpv.bounces = k against a reference with --bounces k
+                        (or its indirect1 layer for k = 1)
   --threads N           Worker threads (default: every hardware thread)
-  --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=true
+  --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=on
+Which lights it traces: every light of the project; the sky and emissive
+surfaces as reference.skyLight and reference.emissiveLight say, whose `auto`
+(the default) follows what the LPV injects, so the two compare like for like.
+Both choices and their reasons are printed.
   --preview             Also write REF-image.png and REF-indirect.png to look at
                         (x / (x + mean), gamma 2.2)
 )";
 }
 
-std::optional<reference::ReferenceImage> traceReference(const scene::Project& project,
+std::optional<TracedReference> traceReference(const scene::Project& project,
                                                         const std::filesystem::path& projectFile,
                                                         const scene::Camera& camera,
                                                         const ReferenceRequest& request) {
@@ -64,14 +70,20 @@ std::optional<reference::ReferenceImage> traceReference(const scene::Project& pr
     settings.samplesPerPixel = project.parameters.getInt("reference.samplesPerPixel");
     settings.bounces = project.parameters.getInt("reference.bounces");
     settings.maxSeconds = project.parameters.getFloat("reference.maxSeconds");
-    settings.skyLight = project.parameters.getBool("reference.skyLight");
-    settings.emissiveLight = project.parameters.getBool("reference.emissiveLight");
-    if (request.printProgress)
+    const renderer::ReferenceLights lights = renderer::decideReferenceLights(
+        project.scene, renderer::analyseSceneTraits(project.scene), project.parameters);
+    settings.skyLight = lights.sky;
+    settings.emissiveLight = lights.emissive;
+    if (request.printProgress) {
         std::printf("reference: %zu triangles, %dx%d, up to %d spp, %d bounces%s\n", embree->triangleCount(),
                     settings.width, settings.height, settings.samplesPerPixel, settings.bounces,
                     settings.maxSeconds > 0.0
                         ? (", at most " + std::to_string(settings.maxSeconds) + " s").c_str()
                         : "");
+        std::printf("reference: sky light %s (%s)\nreference: emissive surfaces %s (%s)\n",
+                    lights.sky ? "on" : "off", lights.skyReason.c_str(), lights.emissive ? "on" : "off",
+                    lights.emissiveReason.c_str());
+    }
     const reference::PathTracer tracer(*embree, project.scene, camera, settings);
     double lastPrinted = -1.0;
     auto image = tracer.render([&](const reference::TraceProgress& p) {
@@ -83,7 +95,7 @@ std::optional<reference::ReferenceImage> traceReference(const scene::Project& pr
         }
         return true;
     });
-    return image;
+    return TracedReference{std::move(image), lights, settings.bounces};
 }
 
 int runReference(Args args) {
@@ -132,17 +144,18 @@ int runReference(Args args) {
     const auto camera = pickCamera(project->scene, cameraName, pos.front());
     if (!camera)
         return kFailure;
-    const auto image = traceReference(*project, pos.front(), *camera, {*width, *height, *threads, true});
-    if (!image)
+    const auto traced = traceReference(*project, pos.front(), *camera, {*width, *height, *threads, true});
+    if (!traced)
         return kFailure;
+    const reference::ReferenceImage* image = &traced->image;
     const std::map<std::string, std::string> attributes{
         {"lpv:project", pos.front()},
         {"lpv:camera", camera->name},
         {"lpv:spp", std::to_string(image->samplesPerPixel)},
         {"lpv:seconds", std::to_string(image->seconds)},
         {"lpv:bounces", std::to_string(project->parameters.getInt("reference.bounces"))},
-        {"lpv:skyLight", project->parameters.getBool("reference.skyLight") ? "true" : "false"},
-        {"lpv:emissiveLight", project->parameters.getBool("reference.emissiveLight") ? "true" : "false"},
+        {"lpv:skyLight", traced->lights.sky ? "true" : "false"},
+        {"lpv:emissiveLight", traced->lights.emissive ? "true" : "false"},
     };
     if (auto ok = writeReferenceExr(*output, *image, attributes); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";

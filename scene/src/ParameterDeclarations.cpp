@@ -193,14 +193,15 @@ std::vector<ParameterInfo> declareParameters() {
         real("reference.maxSeconds", 0.0, 0.0, 1e6, "s", "Reference",
              "Path-traced reference: stop after the progressive pass that reaches this wall time (0 = no limit)",
              P::Reference),
-        boolean("reference.skyLight", false, "Reference",
-                "Path-traced reference: rays that escape the scene see the sky's radiance (off matches the renderer, "
-                "whose sky only colours the background)",
-                P::Reference),
-        boolean("reference.emissiveLight", false, "Reference",
-                "Path-traced reference: emissive surfaces light other surfaces (off matches the renderer, where "
-                "emission is only seen and a light such as the Cornell box's spot stands for the emitter)",
-                P::Reference),
+        choice("reference.skyLight", "auto", kAutoOnOff, "Reference",
+               "Path-traced reference: rays that escape the scene see the sky's radiance. auto: when the LPV "
+               "injects sky light (effects.skyInjection decides), so the reference traces the lights the renderer "
+               "injects; off: the sky only colours the background. true/false read as on/off",
+               P::Reference),
+        choice("reference.emissiveLight", "auto", kAutoOnOff, "Reference",
+               "Path-traced reference: emissive surfaces light other surfaces. auto: when the LPV injects emissive "
+               "VPLs (lpv.emissive decides; an area light's own surface never counts twice). true/false read as on/off",
+               P::Reference),
     };
 }
 

@@ -60,6 +60,13 @@ const ParameterRegistry& ParameterRegistry::instance() {
     return registry;
 }
 
+namespace {
+bool isOnOffChoice(const ParameterInfo& info) {
+    auto has = [&](const char* v) { return std::find(info.enumValues.begin(), info.enumValues.end(), v) != info.enumValues.end(); };
+    return has("on") && has("off");
+}
+} // namespace
+
 const ParameterInfo* ParameterRegistry::find(std::string_view key) const {
     auto it = std::lower_bound(params_.begin(), params_.end(), key,
                                [](const ParameterInfo& p, std::string_view k) { return p.key < k; });
@@ -83,6 +90,10 @@ Expected<ParameterValue> ParameterRegistry::validate(std::string_view key, const
             return mismatch("another type");
         return value;
     case ParameterType::Enum: {
+        // A true/false where the choices include on/off (a parameter that was a
+        // boolean before it gained `auto`, as reference.skyLight did in issue #22).
+        if (std::holds_alternative<bool>(value) && isOnOffChoice(*info))
+            return ParameterValue(std::string(std::get<bool>(value) ? "on" : "off"));
         if (!std::holds_alternative<std::string>(value))
             return mismatch("a non-string");
         const auto& s = std::get<std::string>(value);
@@ -134,6 +145,8 @@ Expected<ParameterValue> ParameterRegistry::parse(std::string_view key, std::str
             return ParameterValue(false);
         return makeError(ErrorCode::TypeMismatch, where, loc, "'" + std::string(text) + "' is not true/false");
     case ParameterType::Enum:
+        if (isOnOffChoice(*info) && (text == "true" || text == "false"))
+            return ParameterValue(std::string(text == "true" ? "on" : "off"));
         return validate(key, ParameterValue(std::string(text)), where);
     case ParameterType::Int:
     case ParameterType::Float: {

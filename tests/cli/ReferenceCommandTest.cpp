@@ -139,4 +139,54 @@ TEST_F(ReferenceCommand, SweepWritesTablesPlotsAndTheCheapestSettings) {
     EXPECT_EQ(plot->width, 800);
 }
 
+TEST_F(ReferenceCommand, SweepMeasuresEachBounceCountLikeForLike) {
+    // The reference was traced with --bounces 3: an LPV with lpv.bounces=1 is measured
+    // against its indirect1 layer, one with lpv.bounces=3 against its 3-bounce layer.
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const fs::path out = dir_ / "sweep-bounces";
+    const RunResult r = runLpv("bench '" + project_ + "' --sweep lpv.bounces=1,3 --reference '" +
+                               (dir_ / "ref.exr").string() + "' --out '" + out.string() +
+                               "' --width 40 --height 30 --frames 1 --warmup 0");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string json = readText(out / "sweep.json");
+    const auto one = json.find("\"lpv.bounces\": \"1\"");
+    const auto three = json.find("\"lpv.bounces\": \"3\"");
+    ASSERT_NE(one, std::string::npos) << json;
+    ASSERT_NE(three, std::string::npos) << json;
+    auto metric = [&](std::size_t from, const std::string& layer, const std::string& key) {
+        const auto at = json.find("\"" + layer + "\": {", from);
+        return jsonNumber(json.substr(at, json.find('}', at) - at + 1), key);
+    };
+    const double oneRef = metric(one, "indirect", "meanReference");
+    const double oneBounceLayer = metric(one, "indirectOneBounce", "meanReference");
+    const double threeRef = metric(three, "indirect", "meanReference");
+    ASSERT_GT(oneBounceLayer, 0.0) << json;
+    EXPECT_DOUBLE_EQ(oneRef, oneBounceLayer) << "lpv.bounces=1 against indirect1";
+    EXPECT_GT(threeRef, 1.05 * oneBounceLayer) << "lpv.bounces=3 against the 3-bounce layer, which holds more light";
+    EXPECT_NE(readText(out / "sweep.csv").find("lpv_bounces"), std::string::npos);
+    EXPECT_NE(readText(out / "sweep.md").find("| indirect mean |"), std::string::npos);
+}
+
+TEST_F(ReferenceCommand, SweepRefusesABounceCountTheReferenceWasNotTracedWith) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const RunResult r = runLpv("bench '" + project_ + "' --sweep lpv.bounces=2 --reference '" +
+                               (dir_ / "ref.exr").string() + "' --out '" + (dir_ / "sweep-2").string() +
+                               "' --width 40 --height 30 --frames 1 --warmup 0");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("lpv.bounces=2 is measured against a reference with 2 bounces, and " +
+                            (dir_ / "ref.exr").string() + " has 3"),
+              std::string::npos)
+        << r.output;
+}
+
+TEST_F(ReferenceCommand, PrintsWhichLightsTheReferenceTraces) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    // The Cornell box is closed (no sky in the LPV) and its lamp is an area light.
+    EXPECT_NE(traced_.output.find("reference: sky light off (auto: the LPV does not inject it"), std::string::npos)
+        << traced_.output;
+    EXPECT_NE(traced_.output.find("reference: emissive surfaces off (auto: the LPV does not inject it"),
+              std::string::npos)
+        << traced_.output;
+}
+
 } // namespace

@@ -880,3 +880,40 @@ TEST(FourDsReader, NegativeColourIsClampedByTheImportWithAWarning) {
     EXPECT_EQ(r->scene.materials[0].emissive, glm::vec3(0.0f));
     EXPECT_EQ(countWarnings(*r, "negative colour"), 1u);
 }
+
+// 4ds materials with an emission colour take the importers' common path
+// (EmissiveLamps.h, issue #22): a flat emissive quad becomes one area light
+// whose visible surface is the quad, facing the way its normals do. Glow
+// visuals are lens-flare sprites without geometry or power: not lights.
+TEST(FourDsReader, AnEmissiveQuadBecomesOneAreaLightAGlowDoesNot) {
+    Writer w;
+    header(w);
+    w.u16(1);
+    w.u32(0).vec3(0.1f, 0.1f, 0.1f).vec3(1.0f, 1.0f, 1.0f).vec3(4.0f, 3.0f, 2.0f).f32(1.0f);
+    w.str("");
+    w.u16(2);
+    frame(w, 1, 0, 0, "lamp", {0.0f, 3.0f, 0.0f});
+    // A 1 x 0.5 m quad in y = 0 (frame space), its normals facing down.
+    w.u16(0).u8(1).f32(0.0f).u16(4);
+    for (const glm::vec2 xz : {glm::vec2(-0.5f, -0.25f), glm::vec2(0.5f, -0.25f), glm::vec2(0.5f, 0.25f),
+                               glm::vec2(-0.5f, 0.25f)})
+        w.vec3(xz.x, 0.0f, xz.y).vec3(0, -1, 0).f32(0.0f).f32(0.0f);
+    w.u8(1).u16(2).u16(0).u16(1).u16(2).u16(0).u16(2).u16(3).u16(1);
+    frame(w, 1, 6, 0, "flare", {0.0f, 2.0f, 0.0f});
+    w.u8(1).f32(0.5f).u16(1); // one flare: position, material
+    w.u8(0);
+    TempDir dir;
+    const fs::path file = dir.path / "lamp.4ds";
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(w.b.data()), std::streamsize(w.b.size()));
+    const auto r = lpv::importers::importScene(file);
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    ASSERT_EQ(r->scene.lights.size(), 1u) << "the quad alone is a lamp";
+    const lpv::scene::Light& lamp = r->scene.lights[0];
+    EXPECT_EQ(lamp.type, lpv::scene::LightType::Area);
+    EXPECT_NEAR(lamp.position.y, 3.0f, 1e-4f);
+    EXPECT_NEAR(lamp.direction.y, -1.0f, 1e-4f) << "it shines the way its normals face";
+    EXPECT_NEAR(lamp.size.x * lamp.size.y, 0.5f, 1e-4f);
+    EXPECT_NEAR(lamp.intensity * lamp.color.r, 4.0f, 1e-3f);
+    EXPECT_NEAR(lamp.intensity * lamp.color.b, 2.0f, 1e-3f);
+    EXPECT_EQ(countWarnings(*r, "visual type 6 (glow)"), 1u);
+}
