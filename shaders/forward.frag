@@ -57,15 +57,18 @@ void main() {
         vec3 irradianceColor;
         float dist = 1.0;
         if (uLightType[i] == LIGHT_AREA) {
-            // Exact diffuse irradiance of the polygon (area_light.glsl); the BRDF toward the
-            // visible part's centroid stands for the specular lobe over the light.
-            float factor = areaLightFactor(uLightPosition[i], normalize(uLightDirection[i]), uLightHalfU[i],
-                                           uLightHalfV[i], uLightAreaShape[i], uLightTwoSided[i] != 0, vWorldPos, n, l);
+            // Exact diffuse irradiance of the polygon and the specular lobe by LTC (area_light.glsl).
+            vec3 lightNormal = normalize(uLightDirection[i]);
+            bool twoSided = uLightTwoSided[i] != 0;
+            float factor = areaLightFactor(uLightPosition[i], lightNormal, uLightHalfU[i], uLightHalfV[i],
+                                           uLightAreaShape[i], twoSided, vWorldPos, n, l);
             if (factor <= 0.0)
                 continue;
             dist = distance(uLightPosition[i], vWorldPos);
             float visibility = shadowVisibility(i, vWorldPos, n, normalize(uLightPosition[i] - vWorldPos), dist);
-            radiance += surfaceBrdf(s, l, v) * uLightRadiantColor[i] * factor * visibility;
+            radiance += areaLightReflectance(s, l, v, factor, uLightPosition[i], lightNormal, uLightHalfU[i],
+                                             uLightHalfV[i], uLightAreaShape[i], twoSided, vWorldPos) *
+                        uLightRadiantColor[i] * visibility;
             continue;
         }
         if (uLightType[i] == LIGHT_DIRECTIONAL) {

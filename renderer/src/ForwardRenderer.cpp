@@ -18,6 +18,7 @@
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/scene/AreaLight.h"
+#include "lpv/scene/LtcSpecular.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -41,6 +42,9 @@ constexpr GLuint kLpvFirstUnit = 16;
 // where GL_MAX_TEXTURE_IMAGE_UNITS allows it (lpv_subsurface_lookup.glsl).
 constexpr GLuint kLpvSubsurfaceUnit = kLpvFirstUnit + 3;
 constexpr GLint kSamplersWithSubsurface = 17;
+// The area lights' LTC table (area_light.glsl's LtcGgxTable): a storage
+// buffer, as the fragment stage has no sampler left for it.
+constexpr GLuint kLtcTableBinding = 3;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
@@ -98,6 +102,8 @@ struct ForwardRenderer::Impl {
     std::optional<SunRaysPass> sunRays;
     // Auto exposure's meter (output.exposureMode = auto); its result stays on the GPU.
     std::optional<AutoExposurePass> exposure;
+    // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
+    Buffer ltcTable;
     // Seconds between this frame and the last, for the exposure's adaptation
     // (nullopt: each frame is metered on its own, as `lpv render` does).
     std::optional<double> exposureTimeStep;
@@ -198,6 +204,7 @@ struct ForwardRenderer::Impl {
         glProgramUniform3fv(fp, loc(fp, "uCameraPos"), 1, glm::value_ptr(frame.camera.position));
         glProgramUniform1i(fp, loc(fp, "uOutputView"), view);
         setLightUniforms(fp, frame.scene);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLtcTableBinding, ltcTable.id());
         shadows->bindForShading(fp, frame, 0);
         lpv->bindForShading(fp, frame.params, kLpvFirstUnit);
         if (subsurface && lpv->active())
@@ -452,6 +459,9 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     auto exposure = AutoExposurePass::create();
     if (!exposure) return std::unexpected(exposure.error());
     r.impl_->exposure.emplace(std::move(*exposure));
+    r.impl_->ltcTable = createBuffer();
+    const std::span<const float> ltc = scene::ltcGgxTable();
+    glNamedBufferStorage(r.impl_->ltcTable.id(), GLsizeiptr(ltc.size_bytes()), ltc.data(), 0);
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));

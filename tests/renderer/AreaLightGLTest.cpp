@@ -2,11 +2,13 @@
 // rectangle and a disc is albedo / pi * L * F, F from the shader's CPU twin
 // (scene::areaLightIrradianceFactor, itself tested against Lambert's formula);
 // nothing lands behind a one-sided light; a blocker casts a shadow whose
-// penumbra widens with the light.
+// penumbra widens with the light; a glossy metal floor reflects the light's
+// specular lobe as the LTC CPU twin (scene::areaLightSpecularFactor) says.
 #include "GlFixture.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/scene/AreaLight.h"
+#include "lpv/scene/LtcSpecular.h"
 #include "lpv/scene/Primitives.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -152,4 +154,54 @@ TEST_F(AreaLightGL, ABlockerCastsAShadowWhosePenumbraGrowsWithTheLight) {
     EXPECT_LT(underSmall, 0.05f) << "the small light leaves an umbra under the blocker";
     EXPECT_GT(large, small) << "the penumbra widens with the light (PCSS radius = half its diagonal)";
     EXPECT_GT(small, 0) << "even the small light has a penumbra";
+}
+
+// The specular lobe by LTC: a metal floor (no diffuse term) reflects
+// L * (F0 x + (1 - F0) y), (x, y) from the CPU twin at each pixel's point and
+// view direction. The twin is tested against brute-force integrals of the GGX
+// lobe (LtcSpecularTest); this checks the shader computes what it computes.
+TEST_F(AreaLightGL, AGlossyMetalFloorReflectsTheLtcLobeOfTheCpuTwin) {
+    constexpr float kRoughness = 0.35f;
+    const glm::vec3 f0(0.9f, 0.6f, 0.3f);
+    scene.materials[0].shading = scene::ShadingModel::MetallicRoughness;
+    scene.materials[0].diffuseColor = f0; // the base colour: a metal's F0
+    scene.materials[0].metallic = 1.0f;
+    scene.materials[0].roughness = kRoughness;
+    const std::vector<float> hdr = render();
+    int compared = 0;
+    float worst = 0.0f, brightest = 0.0f;
+    for (int y = 0; y < kSize; y += 2)
+        for (int x = 0; x < kSize; x += 2) {
+            const glm::vec3 p = floorPoint(x, y);
+            const glm::vec3 v = glm::normalize(camera.position - p);
+            const glm::vec2 xy = scene::areaLightSpecularFactor(light, p, {0, 1, 0}, v, kRoughness);
+            const glm::vec3 expected =
+                scene::areaLightRadiance(light) * (f0 * xy.x + (glm::vec3(1.0f) - f0) * xy.y);
+            brightest = std::max(brightest, expected.r);
+            if (expected.b < 2e-3f)
+                continue; // outside the highlight: the 16-bit target's absolute steps dominate
+            const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(hdr[i + std::size_t(c)] - expected[c]) / expected[c]);
+            ++compared;
+        }
+    EXPECT_GT(compared, 100);
+    EXPECT_GT(brightest, 0.1f) << "the camera sees the highlight";
+    EXPECT_LT(worst, 0.02f) << "over " << compared << " pixels";
+}
+
+TEST_F(AreaLightGL, ADiffuseFloorHasNoSpecularLobe) {
+    // Blinn-Phong with a zero specular colour: exactly the diffuse term (as the first test),
+    // however shiny; with a specular colour the highlight adds light where the mirror
+    // direction meets the light.
+    scene.materials[0].shininess = 200.0f;
+    const std::vector<float> matte = render();
+    scene.materials[0].specularColor = glm::vec3(0.5f);
+    const std::vector<float> shiny = render();
+    float added = 0.0f;
+    for (std::size_t i = 0; i < matte.size(); i += 4) {
+        ASSERT_GE(shiny[i] + 1e-3f, matte[i]) << "a specular lobe only adds light";
+        added = std::max(added, shiny[i] - matte[i]);
+    }
+    EXPECT_GT(added, 0.05f) << "the highlight of a shiny floor";
 }
