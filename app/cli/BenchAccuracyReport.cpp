@@ -49,7 +49,7 @@ varied alone around the project's settings:
   variant    lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter
   occlusion  lpv.occlusion=false,true
   directed   lpv.directedPropagation=off,on
-  sky        effects.skyInjection=off,on
+  sky        effects.skyInjection=off,on (one sweep and one reference per value)
   subsurface effects.subsurface=off,on
   glossy     effects.glossyReflections=off,on
   bounces    lpv.bounces=1,2,3 (one sweep and one reference per value)
@@ -396,9 +396,9 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
                 questions.push_back(r.question);
         out << "\nPlots:";
         for (const std::string& q : questions)
-            if (q == "bounces") { // one sweep per value, in bounces/K/
+            if (q == "bounces" || q == "sky") { // one sweep per value, in QUESTION/VALUE/
                 for (const ReportRun& r : s.runs)
-                    if (r.question == q && r.setting.starts_with("lpv.bounces="))
+                    if (r.question == q && r.setting.find('=') != std::string::npos)
                         out << " [" << r.setting << "](" << s.name << "/" << q << "/"
                             << r.setting.substr(r.setting.find('=') + 1) << "/sweep.md)";
             } else {
@@ -507,16 +507,21 @@ int benchAccuracyReport(Args args) {
         const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
         // One reference per bounce count a sweep needs (like for like); the
         // project's own lpv.bounces first.
-        auto referenceFor = [&](int bounces) -> std::optional<fs::path> {
-            const fs::path ref = sceneDir / ("reference-" + std::to_string(bounces) + "-bounce.exr");
+        // `sky`: the value of effects.skyInjection the sweep renders with (empty:
+        // the project's), so that reference.skyLight=auto follows it.
+        auto referenceFor = [&](int bounces, const std::string& sky = "") -> std::optional<fs::path> {
+            const fs::path ref = sceneDir / ("reference-" + std::to_string(bounces) + "-bounce" +
+                                             (sky.empty() ? "" : "-sky-" + sky) + ".exr");
             if (referenceMatches(ref, *width, *height, bounces)) {
                 std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
                 return ref;
             }
-            if (call("reference", runReference,
-                     {project.string(), "-o", ref.string(), "--width", std::to_string(*width), "--height",
-                      std::to_string(*height), "--spp", std::to_string(*spp), "--bounces",
-                      std::to_string(bounces)}) != kOk)
+            std::vector<std::string> traceArgs{project.string(), "-o", ref.string(), "--width",
+                                               std::to_string(*width), "--height", std::to_string(*height),
+                                               "--spp", std::to_string(*spp), "--bounces", std::to_string(bounces)};
+            if (!sky.empty())
+                traceArgs.insert(traceArgs.end(), {"--set", "effects.skyInjection=" + sky});
+            if (call("reference", runReference, traceArgs) != kOk)
                 return std::nullopt;
             return ref;
         };
@@ -536,18 +541,28 @@ int benchAccuracyReport(Args args) {
                 (!onlyQuestions.empty() && std::ranges::find(onlyQuestions, q.name) == onlyQuestions.end()))
                 continue;
             // Each sweep against its like-for-like reference: the bounces
-            // question runs one sweep per value, each with its own reference.
-            std::vector<std::pair<std::string, int>> parts; // (sweep, reference bounces)
+            // question runs one sweep per value, each against a reference with
+            // as many bounces; the sky question one per value, each against a
+            // reference that traces sky light exactly when that LPV injects it.
+            struct Part {
+                std::string sweep, folder, sky;
+                int bounces = 1;
+            };
+            std::vector<Part> parts;
             if (q.name == "bounces") {
                 for (const std::string& k : splitValues(sweep))
-                    parts.emplace_back("lpv.bounces=" + k, std::atoi(k.c_str()));
+                    parts.push_back({"lpv.bounces=" + k, k, "", std::atoi(k.c_str())});
+            } else if (q.name == "sky") {
+                for (const std::string& v : splitValues(sweep))
+                    parts.push_back({"effects.skyInjection=" + v, v, v, projectBounces});
             } else {
-                parts.emplace_back(sweep, projectBounces);
+                parts.push_back({sweep, "", "", projectBounces});
             }
-            for (const auto& [part, bounces] : parts) {
-                const auto partRef = bounces == projectBounces ? ref : referenceFor(bounces);
-                const fs::path dir = parts.size() == 1 ? sceneDir / q.name
-                                                       : sceneDir / q.name / std::to_string(bounces);
+            for (const Part& p : parts) {
+                const std::string& part = p.sweep;
+                const auto partRef =
+                    p.bounces == projectBounces && p.sky.empty() ? ref : referenceFor(p.bounces, p.sky);
+                const fs::path dir = p.folder.empty() ? sceneDir / q.name : sceneDir / q.name / p.folder;
                 if (!partRef ||
                     call("bench", benchSweep,
                          {project.string(), "--sweep", part, "--reference", partRef->string(), "--out",

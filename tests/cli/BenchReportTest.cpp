@@ -1,7 +1,7 @@
-// `lpv bench report --quick` as a user runs it, on the Cornell box alone at a
-// tiny size: every question's sweep ran against the reference, the summary
-// names the project's own settings and the radiosity measurement, and the
-// JSON holds finite errors.
+// `lpv bench report` as a user runs it, on the Cornell box alone at a tiny
+// size: every question's sweep ran against its like-for-like reference, the
+// summary names the project's own settings and the radiosity measurement,
+// and the JSON holds finite errors and mean ratios.
 #include "RunLpv.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +11,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <unistd.h>
+#include <vector>
 
 using namespace lpv::test;
 namespace fs = std::filesystem;
@@ -33,30 +35,67 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     // --quick: steps 0,4,16; grid 16,32; occlusion false,true.
     ASSERT_EQ(scene["runs"].size(), 7u);
     int projectRuns = 0;
-    double mareAt0Steps = -1.0, mareAt16Steps = -1.0;
+    double ratioAt0Steps = -1.0, ratioAt16Steps = -1.0;
     for (const auto& run : scene["runs"]) {
         EXPECT_TRUE(std::isfinite(run["indirectMare"].get<double>())) << run.dump();
         EXPECT_GT(run["totalMs"].get<double>(), 0.0) << run.dump();
         projectRuns += run["projectSettings"].get<bool>() ? 1 : 0;
+        EXPECT_TRUE(std::isfinite(run["meanRatio"].get<double>())) << run.dump();
         if (run["setting"] == "lpv.propagationSteps=0")
-            mareAt0Steps = run["indirectMare"];
+            ratioAt0Steps = run["meanRatio"];
         if (run["setting"] == "lpv.propagationSteps=16")
-            mareAt16Steps = run["indirectMare"];
+            ratioAt16Steps = run["meanRatio"];
     }
     // The grid and occlusion questions each contain the project's value (32, true).
     EXPECT_EQ(projectRuns, 2);
-    // Propagation is what carries the sun's bounce across the box: without it
-    // the indirect light is far off the reference.
-    ASSERT_GE(mareAt0Steps, 0.0);
-    ASSERT_GE(mareAt16Steps, 0.0);
-    EXPECT_LT(mareAt16Steps, mareAt0Steps);
+    // Propagation is what carries the lamp's bounce across the box: without it
+    // the LPV holds a fraction of the reference's one-bounce light.
+    ASSERT_GE(ratioAt0Steps, 0.0);
+    ASSERT_GE(ratioAt16Steps, 0.0);
+    EXPECT_LT(ratioAt0Steps, 0.5);
+    EXPECT_GT(ratioAt16Steps, 2.0 * ratioAt0Steps);
     ASSERT_EQ(scene["radiosity"].size(), 1u);
     EXPECT_TRUE(std::isfinite(scene["radiosity"][0]["imageMare"].get<double>()));
     std::ifstream md(dir / "report.md");
     std::stringstream text;
     text << md.rdbuf();
     EXPECT_NE(text.str().find("| cornell-box |"), std::string::npos);
+    EXPECT_NE(text.str().find("like for like"), std::string::npos);
     EXPECT_NE(text.str().find("Radiosity against solve time"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir / "cornell-box" / "steps" / "error-time.png"));
+    fs::remove_all(dir);
+}
+
+// Like for like (issue #22): the bounces question runs one sweep per value,
+// each against a reference traced with as many bounces; the sky question one
+// per value, each against a reference whose sky light follows that value.
+TEST(BenchReport, BouncesAndSkyAreMeasuredAgainstTheirOwnReferences) {
+    const fs::path dir = fs::temp_directory_path() / ("lpv-bench-report-bounces-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const RunResult r = runLpv("bench report --scene cornell-box --question bounces --question sky --out '" +
+                               dir.string() +
+                               "' --width 48 --height 32 --spp 32 --frames 1 --warmup 0 --radiosity-seconds 5");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* ref : {"reference-1-bounce.exr", "reference-2-bounce.exr", "reference-3-bounce.exr",
+                            "reference-1-bounce-sky-off.exr", "reference-1-bounce-sky-on.exr"})
+        EXPECT_TRUE(fs::exists(dir / "cornell-box" / ref)) << ref;
+    EXPECT_NE(r.output.find("--sweep lpv.bounces=2 --reference " + (dir / "cornell-box" / "reference-2-bounce.exr").string()),
+              std::string::npos)
+        << r.output;
+    std::ifstream in(dir / "report.json");
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_FALSE(j.is_discarded());
+    const auto& runs = j["scenes"][0]["runs"];
+    ASSERT_EQ(runs.size(), 5u) << runs.dump();
+    std::vector<std::string> settings;
+    for (const auto& run : runs) {
+        settings.push_back(run["setting"]);
+        EXPECT_GT(run["meanRatio"].get<double>(), 0.0) << run.dump();
+    }
+    EXPECT_EQ(settings, (std::vector<std::string>{"effects.skyInjection=off", "effects.skyInjection=on",
+                                                  "lpv.bounces=1", "lpv.bounces=2", "lpv.bounces=3"}));
+    EXPECT_TRUE(runs[2]["projectSettings"].get<bool>()) << "lpv.bounces=1 is the project's";
+    EXPECT_FALSE(runs[3]["projectSettings"].get<bool>());
+    EXPECT_TRUE(fs::exists(dir / "cornell-box" / "bounces" / "3" / "sweep.md"));
     fs::remove_all(dir);
 }
