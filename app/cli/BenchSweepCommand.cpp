@@ -450,8 +450,7 @@ int benchSweep(Args args) {
         runs.empty() || runs.front().bounces == 1 ? ref.indirectOne : ref.indirectMulti;
     const float key = meanLuminance(shownLayer, ref.coverage);
     std::vector<std::pair<std::string, scene::Image8>> crops{
-        {"reference (" + std::to_string(ref.samplesPerPixel) + " spp, " +
-             std::to_string(runs.empty() ? 1 : runs.front().bounces) + " bounce)",
+        {"reference, " + std::to_string(runs.empty() ? 1 : runs.front().bounces) + " bounce",
          crop(shownLayer, ref.width, ref.height, key)}};
     for (const SweepRun& r : runs)
         crops.emplace_back(label(r.settings), crop(r.indirectPixels, *width, *height, key));
