@@ -41,12 +41,13 @@ Compare a renderer image with it using `lpv compare`.
                         (or its indirect1 layer for k = 1)
   --threads N           Worker threads (default: every hardware thread)
   --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=on
+  --preview             Also write REF-image.png and REF-indirect.png to look at
+                        (x / (x + mean), gamma 2.2)
+
 Which lights it traces: every light of the project; the sky and emissive
 surfaces as reference.skyLight and reference.emissiveLight say, whose `auto`
 (the default) follows what the LPV injects, so the two compare like for like.
 Both choices and their reasons are printed.
-  --preview             Also write REF-image.png and REF-indirect.png to look at
-                        (x / (x + mean), gamma 2.2)
 )";
 }
 
