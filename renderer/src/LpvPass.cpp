@@ -56,6 +56,8 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.directedDilation = params.getInt("lpv.directedDilation");
     s.bounces = params.getInt("lpv.bounces");
     s.bounceAlbedo = float(params.getFloat("lpv.bounceAlbedo"));
+    s.requestedCascades = params.getInt("lpv.cascades");
+    s.rsmCascades = params.getInt("rsm.cascades");
     return s;
 }
 
@@ -138,6 +140,10 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     const int cascades = std::min<int>(int(rsm.cascades.size()), 6);
     if (auto ok = volumes_.ensure(settings.gridSize, cascades); !ok) {
         disable("volumes do not fit");
+        if (cascades != settings.requestedCascades)
+            ok.error().message += " (lpv.cascades is " + std::to_string(settings.requestedCascades) +
+                                  "; the LPV has one volume per RSM tile, and rsm.cascades = " +
+                                  std::to_string(settings.rsmCascades) + " makes " + std::to_string(cascades) + ")";
         return ok;
     }
     volumes_.ensureDirected(settings.directed);

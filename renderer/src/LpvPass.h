@@ -44,6 +44,10 @@ struct LpvSettings {
     // bounce re-injects the last one's light at geometry-volume surfels.
     int bounces = 1;
     float bounceAlbedo = 0.5f;
+    // lpv.cascades and rsm.cascades as set: the volumes are as many as there
+    // are RSM tiles, and an error about them names both (issue #29).
+    int requestedCascades = 4;
+    int rsmCascades = 4;
 
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };

@@ -34,7 +34,7 @@ Expected<CameraPath> cameraPathFromJson(std::string_view text, const std::string
 }
 
 Expected<CameraPath> loadCameraPathFile(const std::filesystem::path& file) {
-    const auto text = detail::readFileBytes(file);
+    const auto text = detail::readFileBytes(file, detail::kCameraPathFileLimit);
     if (!text)
         return std::unexpected(text.error());
     return cameraPathFromJson(*text, file.string());

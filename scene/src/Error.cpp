@@ -25,6 +25,21 @@ const char* toString(ErrorCode code) {
     return "error";
 }
 
+std::string capErrorText(std::string text) {
+    if (text.size() <= kMaxErrorText)
+        return text;
+    // Cut on UTF-8 character boundaries (never inside a multi-byte sequence).
+    auto boundary = [&](std::size_t at) {
+        while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0u) == 0x80u)
+            --at;
+        return at;
+    };
+    const std::size_t headEnd = boundary(kMaxErrorText * 6 / 10);
+    const std::size_t tailStart = boundary(text.size() - kMaxErrorText * 3 / 10);
+    return text.substr(0, headEnd) + " [... " + std::to_string(tailStart - headEnd) + " bytes left out ...] " +
+           text.substr(tailStart);
+}
+
 std::string Error::describe() const {
     std::string out = file.empty() ? std::string("<input>") : file;
     if (!location.empty())

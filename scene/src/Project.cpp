@@ -6,6 +6,7 @@
 #include "ProjectJson.h"
 #include "lpv/scene/MeshAsset.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -28,7 +29,16 @@ Expected<Mesh> loadMesh(const fs::path& projectFile, const detail::MeshReference
     const std::string where = projectFile.string();
     // checkAssetPath has already confined ref.asset to the project's folder.
     const fs::path assetFile = projectFile.parent_path() / fromUtf8(ref.asset);
-    const auto bytes = readFileBytes(assetFile);
+    // The counts the project file records bound the asset's size (all four
+    // vertex streams, indices, at most one submesh per triangle, its name):
+    // a larger file is refused before it is read.
+    constexpr std::uint64_t kCountLimit = std::uint64_t{1} << 40; // no overflow below
+    const std::uint64_t bound =
+        std::min(ref.vertices, kCountLimit) * 48 + std::min(ref.triangles, kCountLimit) * 24 +
+        kMeshAssetHeaderSize + (std::uint64_t{1} << 20);
+    const auto bytes = readFileBytes(
+        assetFile, detail::ReadLimit{bound, "mesh asset of " + std::to_string(ref.vertices) + " vertices and " +
+                                                std::to_string(ref.triangles) + " triangles"});
     if (!bytes && bytes.error().code == ErrorCode::FileNotFound)
         return makeError(ErrorCode::MissingAsset, where, meshLocation(i) + ".asset",
                          "mesh asset \"" + ref.asset + "\" does not exist (looked for " + assetFile.string() + ")");
@@ -124,7 +134,7 @@ bool Project::operator==(const Project& other) const {
 
 Expected<Project> loadProject(const fs::path& file) {
     const std::string where = file.string();
-    const auto text = readFileBytes(file);
+    const auto text = readFileBytes(file, detail::kProjectFileLimit);
     if (!text)
         return std::unexpected(text.error());
     const auto json = detail::parseProjectText(*text, where);

@@ -106,8 +106,14 @@ private:
 };
 
 std::string typeOf(const Json& v) {
-    if (v.is_number_float())
-        return "the number " + formatNumber(v.get<double>());
+    if (v.is_number_float()) {
+        const double d = v.get<double>();
+        // 1.0 is a whole number written as a fraction: say so, instead of "got the number 1".
+        if (std::isfinite(d) && std::trunc(d) == d && std::abs(d) < 1e15)
+            return concat("the fraction ", formatNumber(d), ".0 (written with a decimal point or exponent; write ",
+                          formatNumber(d), ")");
+        return "the number " + formatNumber(d);
+    }
     return std::string("a ") + v.type_name();
 }
 
@@ -1050,8 +1056,8 @@ public:
 // in upgradeToCurrentVersion (docs/fuzzing.md).
 constexpr std::size_t kMaxJsonDepth = 64;
 
-// The byte offset of the first '[' or '{' of valid JSON text that opens level
-// kMaxJsonDepth + 1, if there is one.
+// The byte offset of the first '[' or '{' outside a string that opens level
+// kMaxJsonDepth + 1, if there is one; the text need not be valid JSON.
 std::optional<std::size_t> findTooDeep(const std::string& text) {
     std::size_t depth = 0;
     bool inString = false;
@@ -1067,7 +1073,7 @@ std::optional<std::size_t> findTooDeep(const std::string& text) {
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonDepth)
                 return i;
-        } else if (c == ']' || c == '}') {
+        } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }
     }
@@ -1081,18 +1087,45 @@ std::string withoutExceptionPrefix(const std::string& what) {
     return at == std::string::npos ? what : what.substr(at + marker.size());
 }
 
+
+// The encoding of text that is not UTF-8 but UTF-16 or UTF-32 (a byte-order
+// mark, or the NUL bytes every ASCII character of those encodings carries).
+std::optional<std::string> wideEncoding(const std::string& text) {
+    auto starts = [&](std::string_view bom) { return text.compare(0, bom.size(), bom) == 0; };
+    using namespace std::string_view_literals;
+    if (starts("\xFF\xFE\x00\x00"sv))
+        return "UTF-32 (little-endian)";
+    if (starts("\x00\x00\xFE\xFF"sv))
+        return "UTF-32 (big-endian)";
+    if (starts("\xFF\xFE"sv))
+        return "UTF-16 (little-endian)";
+    if (starts("\xFE\xFF"sv))
+        return "UTF-16 (big-endian)";
+    if (text.size() >= 4 && text[0] != '\0' && text[1] == '\0' && text[2] != '\0' && text[3] == '\0')
+        return "UTF-16 (little-endian, no byte-order mark)";
+    if (text.size() >= 4 && text[0] == '\0' && text[1] != '\0' && text[2] == '\0' && text[3] != '\0')
+        return "UTF-16 (big-endian, no byte-order mark)";
+    return std::nullopt;
+}
+
 } // namespace
 
 Expected<Json> parseProjectText(const std::string& text, const std::string& file) {
     if (text.empty())
         return makeError(ErrorCode::Truncated, file, atByte(0), "the file is empty");
+    if (const auto encoding = wideEncoding(text))
+        return makeError(ErrorCode::NotJson, file, atByte(0),
+                         "the file is " + *encoding + " text; LPV Studio reads UTF-8 JSON (convert it, e.g. "
+                         "`iconv -f UTF-16 -t UTF-8`)");
+    // Before parsing: the depth is checked on the text, so no parser or
+    // document operation ever sees more than kMaxJsonDepth levels (a worker
+    // thread's smaller stack included).
+    if (const auto at = findTooDeep(text))
+        return makeError(ErrorCode::InvalidValue, file, atByte(*at),
+                         concat("the JSON nests more than ", kMaxJsonDepth,
+                                " arrays and objects inside each other; no project file does"));
     try {
-        Json document = Json::parse(text);
-        if (const auto at = findTooDeep(text))
-            return makeError(ErrorCode::InvalidValue, file, atByte(*at),
-                             concat("the JSON nests more than ", kMaxJsonDepth,
-                                    " arrays and objects inside each other; no project file does"));
-        return document;
+        return Json::parse(text);
     } catch (const Json::parse_error& e) {
         // nlohmann counts bytes from 1; an error past the last byte means the text stopped early.
         const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;

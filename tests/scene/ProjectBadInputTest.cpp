@@ -11,12 +11,14 @@
 
 #include <bit>
 #include <limits>
+#include <chrono>
 #include <map>
 #include <set>
 #include <stdexcept>
 
 #ifndef _WIN32
 #include <sys/stat.h>
+#include <unistd.h>
 #endif
 
 using namespace lpv::scene;
@@ -673,3 +675,129 @@ TEST_F(ProjectBadInput, SavingIntoAReadOnlyFolderFailsAndChangesNothing) {
     EXPECT_EQ(*loaded, goodProject());
 #endif
 }
+
+// Issue #29: the depth is checked on the text before parsing, so deep
+// nesting that is also invalid JSON (unterminated) is refused for its depth
+// without any parser seeing it; 64 levels are not refused for depth.
+TEST_F(ProjectBadInput, UnterminatedDeepNestingIsRefusedBeforeParsing) {
+    const std::string head = "{\"format\": \"lpvstudio-project\", \"version\": 2, \"x\": ";
+    writeFile(bad_, head + std::string(50000, '['));
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::InvalidValue);
+    EXPECT_EQ(e.file, bad_.string());
+    EXPECT_EQ(e.location, "byte offset " + std::to_string(head.size() + 63)) << "the 65th level";
+    EXPECT_EQ(e.message, "the JSON nests more than 64 arrays and objects inside each other; no project file does");
+    writeFile(bad_, head + std::string(63, '[') + std::string(63, ']') + "}");
+    const Error shallow = loadFails(bad_);
+    EXPECT_FALSE(contains(shallow.message, "nests more than")) << shallow.message;
+}
+
+TEST_F(ProjectBadInput, AFractionalVersionSaysItIsAFraction) {
+    editBad("\"version\": 2,", "\"version\": 1.0,");
+    const Error e = loadFails(bad_);
+    EXPECT_EQ(e.code, ErrorCode::TypeMismatch);
+    EXPECT_EQ(e.location, "version");
+    EXPECT_EQ(e.message, "expected an integer, got the fraction 1.0 (written with a decimal point or exponent; write 1)");
+}
+
+TEST_F(ProjectBadInput, Utf16TextIsNamedAsSuch) {
+    // The good project re-encoded as UTF-16 (little-endian, with and without a byte-order mark).
+    const std::string text = readFile(bad_);
+    for (const bool bom : {true, false}) {
+        std::string wide = bom ? std::string("\xFF\xFE", 2) : std::string();
+        for (char c : text)
+            wide += std::string{c, '\0'};
+        writeFile(bad_, wide);
+        const Error e = loadFails(bad_);
+        EXPECT_EQ(e.code, ErrorCode::NotJson);
+        EXPECT_EQ(e.location, "byte offset 0");
+        EXPECT_EQ(e.message, std::string("the file is UTF-16 (little-endian") + (bom ? "" : ", no byte-order mark") +
+                                 ") text; LPV Studio reads UTF-8 JSON (convert it, e.g. `iconv -f UTF-16 -t UTF-8`)");
+    }
+}
+
+TEST_F(ProjectBadInput, AHugeQuotedValueMakesABoundedMessage) {
+    // A 5 MB asset path (the issue's was 200 MB): the error quotes it, capped.
+    std::string text = readFile(bad_);
+    const std::size_t at = text.find(".assets/meshes/");
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at, std::string(5'000'000, 'x'));
+    writeFile(bad_, text);
+    const Error e = loadFails(bad_);
+    EXPECT_LE(e.describe().size(), bad_.string().size() + 3 * (kMaxErrorText + 64)) << e.describe().substr(0, 300);
+    EXPECT_TRUE(contains(e.describe(), " bytes left out ...] ")) << e.describe().substr(0, 300);
+}
+
+TEST(ErrorText, LongTextKeepsItsEndsAndWholeCharacters) {
+    const std::string small = "short";
+    EXPECT_EQ(capErrorText(small), small);
+    std::string longText;
+    while (longText.size() < 10 * kMaxErrorText)
+        longText += "\xC3\xA9"; // é: two bytes each, never cut in half
+    const std::string capped = capErrorText(longText);
+    EXPECT_LT(capped.size(), kMaxErrorText + 64);
+    const std::size_t cut = capped.find(" [... ");
+    ASSERT_NE(cut, std::string::npos);
+    EXPECT_EQ(cut % 2, 0u) << "the head ends on a character boundary";
+    const std::size_t tail = capped.find(" ...] ") + 6;
+    EXPECT_EQ((capped.size() - tail) % 2, 0u) << "the tail starts on a character boundary";
+    const std::size_t leftOut = std::stoul(capped.substr(cut + 6));
+    EXPECT_EQ(leftOut, longText.size() - cut - (capped.size() - tail));
+}
+
+#ifndef _WIN32
+// Issue #29: only regular files are read (a FIFO would block the loader until
+// a writer came), and a file's size is checked against what it can hold
+// before anything is read (a sparse 30 GiB project or 100 GiB mesh asset was
+// read whole). In a folder of its own: the other cases' snapshot reads files.
+TEST(ProjectSpecialFiles, FifosAndSparseGiantsAreRefusedBeforeReading) {
+    const fs::path dir = fs::temp_directory_path() / ("lpv-special-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path project = dir / "p.lpvproj";
+    ASSERT_TRUE(saveProject(goodProject(), project));
+    const auto timed = [&](const fs::path& file) {
+        const auto start = std::chrono::steady_clock::now();
+        auto loaded = loadProject(file);
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+        return loaded;
+    };
+
+    const fs::path fifo = dir / "fifo.lpvproj";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    auto loaded = timed(fifo);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().code, ErrorCode::IoError);
+    EXPECT_EQ(loaded.error().message, "is a FIFO (named pipe), not a regular file: only regular files are read");
+
+    const fs::path giant = dir / "giant.lpvproj";
+    writeFile(giant, "{");
+    fs::resize_file(giant, std::uintmax_t{30} << 30); // sparse: no disk space used
+    loaded = timed(giant);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().message,
+              "the file is 30.0 GiB, more than a project file can be (64.0 MiB); refused before reading");
+
+    // The mesh asset: a FIFO, then a sparse 100 GiB file, in the asset's place.
+    fs::path asset;
+    for (const auto& entry : fs::directory_iterator(dir / "p.assets" / "meshes"))
+        asset = entry.path();
+    ASSERT_FALSE(asset.empty());
+    fs::remove(asset);
+    ASSERT_EQ(::mkfifo(asset.c_str(), 0600), 0);
+    loaded = timed(project);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().file, asset.string());
+    EXPECT_TRUE(contains(loaded.error().message, "is a FIFO")) << loaded.error().message;
+    fs::remove(asset);
+    writeFile(asset, "x");
+    fs::resize_file(asset, std::uintmax_t{100} << 30);
+    loaded = timed(project);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().file, asset.string());
+    EXPECT_TRUE(contains(loaded.error().message, "the file is 100.0 GiB, more than a mesh asset of 4 vertices and "
+                                                 "2 triangles can be"))
+        << loaded.error().message;
+    fs::remove_all(dir);
+}
+#endif

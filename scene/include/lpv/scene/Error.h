@@ -1,5 +1,6 @@
 #pragma once
 // Errors as values: every load/parse/import returns std::expected<T, Error>.
+#include <cstddef>
 #include <expected>
 #include <string>
 
@@ -41,9 +42,16 @@ struct Error {
 template <class T>
 using Expected = std::expected<T, Error>;
 
+// An error's text quotes what it read (a path, a name, a value); quoting a
+// 200 MB path must not make a 200 MB message (issue #29). Text longer than
+// this keeps its start and end, and says how much of the middle was left out.
+inline constexpr std::size_t kMaxErrorText = 1000;
+std::string capErrorText(std::string text);
+
 inline std::unexpected<Error> makeError(ErrorCode code, std::string file, std::string location,
                                         std::string message) {
-    return std::unexpected(Error{code, std::move(file), std::move(location), std::move(message)});
+    return std::unexpected(Error{code, capErrorText(std::move(file)), capErrorText(std::move(location)),
+                                 capErrorText(std::move(message))});
 }
 
 } // namespace lpv::scene
