@@ -1,6 +1,7 @@
 #include "lpv/importers/GltfImporter.h"
 
 #include "EmbeddedImages.h"
+#include "lpv/importers/ImageIO.h"
 
 #include <tiny_gltf.h>
 
@@ -155,8 +156,10 @@ std::string texturePath(const Context& ctx, int textureIndex) {
         return embeddedImagePath(ctx, source, image);
     const std::string decoded = percentDecode(image.uri);
     const std::filesystem::path p = ctx.file.parent_path() / decoded;
-    if (!std::filesystem::exists(p)) {
-        ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + decoded + "' not found (placeholder used)");
+    if (const auto why = notARegularFile(p)) {
+        ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + scene::capErrorText(decoded) + "' " +
+                                      (*why == "no such file" ? std::string("not found") : *why) +
+                                      " (placeholder used)");
         ++ctx.result.stats.texturesMissing;
         return decoded;
     }
@@ -355,12 +358,44 @@ void addNode(const Context& ctx, int index, int parent, const glm::mat4& parentW
         addNode(ctx, child, self, world, depth + 1);
 }
 
+// tinygltf's own file reader sizes a folder as a huge file (std::bad_alloc on
+// an image uri of "."), and would block on a FIFO: ours reads regular files
+// only, up to 2 GiB, and its "exists" says no to anything else, so such a
+// uri takes the missing-file path (issue #29).
+constexpr std::uintmax_t kMaxGltfFileBytes = std::uintmax_t{2} << 30;
+
+bool gltfFileExists(const std::string& path, void*) { return !notARegularFile(std::filesystem::u8path(path)); }
+
+bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    const std::filesystem::path file = std::filesystem::u8path(path);
+    auto fail = [&](const std::string& why) {
+        if (err)
+            *err += scene::capErrorText(path) + ": " + why + "\n";
+        return false;
+    };
+    if (const auto why = notARegularFile(file))
+        return fail(*why);
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    if (ec)
+        return fail("cannot read its size: " + ec.message());
+    if (size > kMaxGltfFileBytes)
+        return fail("larger than 2 GiB");
+    std::ifstream in(file, std::ios::binary);
+    out->resize(std::size_t(size));
+    if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
+        return fail("could not be read completely");
+    return true;
+}
+
 } // namespace
 
 scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, const ImportOptions&) {
     tinygltf::TinyGLTF loader;
     EmbeddedBytes embedded;
     loader.SetImageLoader(keepUriOrEmbeddedBytes, &embedded);
+    loader.SetFsCallbacks({&gltfFileExists, &tinygltf::ExpandFilePath, &gltfReadWholeFile, &tinygltf::WriteWholeFile,
+                           nullptr});
     tinygltf::Model model;
     std::string err, warn;
     // Binary by content ("glTF" magic), whatever the extension says.

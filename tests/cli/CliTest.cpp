@@ -2,10 +2,12 @@
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Project.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <unistd.h>
 
 using namespace lpv::test;
 namespace fs = std::filesystem;
@@ -110,4 +112,31 @@ TEST(Cli, AGridTooBigNamesTheCascadeCountTheUserSet) {
     EXPECT_NE(r.output.find("(lpv.cascades is 6; the LPV has one volume per RSM tile, and rsm.cascades = 4 makes 4)"),
               std::string::npos)
         << r.output;
+}
+
+// Issue #29: a texture name over 255 bytes (the importers wrote such names
+// from OBJ map_Kd and 4ds files) made `lpv info` and `lpv render` abort on an
+// uncaught std::filesystem error. Now it is a missing texture, said so.
+TEST(Cli, ATextureNameTooLongToLookUpIsAMissingTexture) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("lpv-long-name-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    auto project = lpv::scene::loadProject(cornellProject());
+    ASSERT_TRUE(project) << project.error().describe();
+    const std::string name = std::string(300, 't') + ".png";
+    project->scene.materials[0].diffuseTexture = name;
+    const std::string file = (dir / "long.lpvproj").string();
+    ASSERT_TRUE(lpv::scene::saveProject(*project, file));
+
+    const RunResult info = runLpv("info " + file);
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("textures    1 (1 missing)"), std::string::npos) << info.output;
+    const RunResult render =
+        runLpv("render " + file + " -o " + (dir / "long.png").string() + " --width 32 --height 32 --frames 1");
+    EXPECT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_NE(render.output.find(name + ": cannot look it up: File name too long; drawn as a magenta checkerboard"),
+              std::string::npos)
+        << render.output;
+    std::filesystem::remove_all(dir);
 }

@@ -208,3 +208,28 @@ TEST(GltfImporter, GlbWithItsImageInTheBinaryChunk) {
     EXPECT_EQ(importOk(dir / "misnamed.gltf").scene.triangleCount(), 12u);
     fs::remove_all(dir);
 }
+
+// Issue #29: an image uri naming a folder ("." or the scene's own folder) or a
+// name too long to look up is a missing texture with a warning that says why,
+// not a std::bad_alloc or an uncaught filesystem_error.
+TEST(GltfImporter, ImageUrisThatAreNoFileBecomePlaceholders) {
+    const fs::path source = scenes() / "gltf-small/BoxTextured/glTF";
+    const fs::path dir = scratch("folderuri");
+    nlohmann::json j = nlohmann::json::parse(readBytes(source / "BoxTextured.gltf"));
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(readBytes(source / "BoxTextured0.bin"));
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {".", "is a folder, not a file (placeholder used)"},
+        {std::string(300, 'n') + ".png", "cannot look it up: File name too long (placeholder used)"}};
+    for (const auto& [uri, why] : cases) {
+        j["images"][0] = {{"uri", uri}};
+        std::ofstream(dir / "odd.gltf") << j.dump();
+        const auto r = importOk(dir / "odd.gltf");
+        EXPECT_EQ(r.stats.texturesMissing, 1u) << uri.substr(0, 20);
+        EXPECT_EQ(r.stats.texturesFound, 0u);
+        bool warned = false;
+        for (const std::string& w : r.warnings)
+            warned |= w.find(why) != std::string::npos;
+        EXPECT_TRUE(warned) << uri.substr(0, 20) << ": no warning ending in '" << why << "'";
+    }
+    fs::remove_all(dir);
+}
