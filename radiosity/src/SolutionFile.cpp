@@ -3,6 +3,7 @@
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -134,6 +135,8 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     h.get(reserved);
     h.get(payloadSize);
     h.get(checksum);
+    if (version == 0)
+        return makeError(ErrorCode::OutOfRange, fileName, at(8), "version 0 does not exist (versions start at 1)");
     if (version > kSolutionVersion)
         return makeError(ErrorCode::NewerVersion, fileName, at(8),
                          "version " + std::to_string(version) + " is newer than this program's " +
@@ -146,6 +149,16 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     if (scene::contentHash64(payload) != checksum)
         return makeError(ErrorCode::ChecksumMismatch, fileName, at(kHeaderSize),
                          "the payload's checksum does not match the header");
+    // Every patch takes its record and its radiosity and unshot light: a count
+    // the payload cannot hold is refused before anything is allocated for it
+    // (a valid checksum over 465 KB once announced 0x9C09C09 patches).
+    constexpr std::uint64_t kBytesPerPatch = sizeof(Patch::cornerCount) + 4 * (3 + 2) * sizeof(float) +
+                                             sizeof(Patch::material) + sizeof(Patch::object) + 2 * 3 * sizeof(float);
+    if (std::uint64_t{patchCount} * kBytesPerPatch > payload.size())
+        return makeError(ErrorCode::Truncated, fileName, at(12),
+                         "the header announces " + std::to_string(patchCount) + " patches; the " +
+                             std::to_string(payload.size()) + "-byte payload holds at most " +
+                             std::to_string(payload.size() / kBytesPerPatch));
     Reader r(payload, kHeaderSize);
     s.mesh.patches.resize(patchCount);
     for (std::uint32_t i = 0; i < patchCount; ++i) {
@@ -183,11 +196,21 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
         if (!finite(s.state.radiosity[i]) || !finite(s.state.unshot[i]))
             return makeError(ErrorCode::NonFinite, fileName, at(start),
                              "radiosity of patch " + std::to_string(i) + " is not finite");
+        const glm::vec3 least = glm::min(s.state.radiosity[i], s.state.unshot[i]);
+        if (std::min({least.x, least.y, least.z}) < 0.0f)
+            return makeError(ErrorCode::OutOfRange, fileName, at(start),
+                             "radiosity of patch " + std::to_string(i) + " is negative: light is never below 0");
     }
     auto& b = s.state.balance;
     if (!r.get(s.state.shots) || !r.get(s.state.batches) || !r.get(s.state.seconds) ||
         !r.getDVec3(b.emitted) || !r.getDVec3(b.absorbed) || !r.getDVec3(b.escaped))
         return makeError(ErrorCode::Truncated, fileName, at(r.offset()), "the solver counters are cut off");
+    const std::size_t countersAt = r.offset() - 3 * sizeof(glm::dvec3);
+    for (const glm::dvec3& total : {b.emitted, b.absorbed, b.escaped})
+        if (!std::isfinite(total.x) || !std::isfinite(total.y) || !std::isfinite(total.z) ||
+            std::min({total.x, total.y, total.z}) < 0.0)
+            return makeError(ErrorCode::NonFinite, fileName, at(countersAt),
+                             "the energy totals (emitted, absorbed, escaped) must be finite and at least 0");
     if (!r.atEnd())
         return makeError(ErrorCode::InvalidValue, fileName, at(r.offset()),
                          "unexpected bytes after the solution");
@@ -209,8 +232,21 @@ scene::Expected<void> saveSolution(const StoredSolution& solution, const std::fi
 
 scene::Expected<StoredSolution> loadSolution(const std::filesystem::path& file, std::size_t materialCount,
                                              std::size_t objectCount) {
+    // Regular files only (a FIFO would block), and the size checked before
+    // reading: 1 GiB holds about 9 million patches (Sponza meshes 1.4 million).
+    constexpr std::uintmax_t kMaxSolutionBytes = std::uintmax_t{1} << 30;
     std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (status.type() == std::filesystem::file_type::not_found)
+        return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "", "cannot open the file");
+    if (ec || !std::filesystem::is_regular_file(status))
+        return scene::makeError(scene::ErrorCode::IoError, file.string(), "",
+                                ec ? "cannot look it up: " + ec.message() : "is not a regular file");
     const auto size = std::filesystem::file_size(file, ec);
+    if (!ec && size > kMaxSolutionBytes)
+        return scene::makeError(scene::ErrorCode::IoError, file.string(), "",
+                                "the file is " + std::to_string(size) +
+                                    " bytes, more than a radiosity solution can be (1 GiB); refused before reading");
     std::ifstream in(file, std::ios::binary);
     if (ec || !in)
         return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "", "cannot open the file");

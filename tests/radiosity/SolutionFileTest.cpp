@@ -1,12 +1,20 @@
 #include "RadiosityTestScenes.h"
 
 #include "lpv/radiosity/SolutionFile.h"
+#include "lpv/scene/MeshAsset.h"
 
 #include "TestPaths.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+
+#ifndef _WIN32
+#include <sys/stat.h>
+#endif
 
 using namespace lpv;
 
@@ -83,3 +91,75 @@ TEST(SolutionFile, SavedNextToTheProjectAndLoadedBack) {
     EXPECT_EQ(back->state, s.state);
     EXPECT_FALSE(radiosity::loadSolution(dir / "missing.lpvrad", 2, 6).has_value());
 }
+
+namespace {
+
+// Writes `v` at `at` and seals the payload's checksum again (header bytes 40-47),
+// so only the edit is wrong.
+template <class T>
+std::string edited(std::string bytes, std::size_t at, T v) {
+    std::memcpy(bytes.data() + at, &v, sizeof v);
+    const std::uint64_t sum = scene::contentHash64(std::string_view(bytes).substr(48));
+    std::memcpy(bytes.data() + 40, &sum, sizeof sum);
+    return bytes;
+}
+
+scene::Error decodeFails(const std::string& bytes) {
+    const auto back = radiosity::decodeSolution(bytes, "box.lpvrad", 2, 6);
+    EXPECT_FALSE(back.has_value());
+    return back ? scene::Error{} : back.error();
+}
+
+} // namespace
+
+// Issue #29: counts and values a solution file cannot mean, each with a valid
+// checksum, are refused before anything is allocated for them.
+TEST(SolutionFile, ImpossibleCountsVersionsAndValuesAreRefused) {
+    const std::string bytes = radiosity::encodeSolution(solvedBox());
+    const std::size_t payload = bytes.size() - 48;
+
+    for (std::uint32_t count : {0x80000000u, 0x9C09C09u}) {
+        const scene::Error e = decodeFails(edited(bytes, 12, count));
+        EXPECT_EQ(e.code, scene::ErrorCode::Truncated);
+        EXPECT_EQ(e.describe(), "box.lpvrad: byte offset 12: the header announces " + std::to_string(count) +
+                                    " patches; the " + std::to_string(payload) + "-byte payload holds at most " +
+                                    std::to_string(payload / 113));
+    }
+    EXPECT_EQ(decodeFails(edited(bytes, 8, std::uint32_t{0})).describe(),
+              "box.lpvrad: byte offset 8: version 0 does not exist (versions start at 1)");
+
+    // The last 72 bytes are the emitted, absorbed and escaped totals (three dvec3).
+    const scene::Error nan = decodeFails(edited(bytes, bytes.size() - 72, std::nan("")));
+    EXPECT_EQ(nan.code, scene::ErrorCode::NonFinite);
+    EXPECT_EQ(nan.location, "byte offset " + std::to_string(bytes.size() - 72));
+    EXPECT_EQ(nan.message, "the energy totals (emitted, absorbed, escaped) must be finite and at least 0");
+
+    // Patch 0's radiosity follows every patch record (113 bytes less its 24 of light).
+    const auto box = solvedBox();
+    const std::size_t light = 48 + box.mesh.size() * (113 - 24);
+    const scene::Error negative = decodeFails(edited(bytes, light, -1.0f));
+    EXPECT_EQ(negative.code, scene::ErrorCode::OutOfRange);
+    EXPECT_EQ(negative.describe(), "box.lpvrad: byte offset " + std::to_string(light) +
+                                       ": radiosity of patch 0 is negative: light is never below 0");
+}
+
+#ifndef _WIN32
+TEST(SolutionFile, AFifoOrASparseGiantIsRefusedBeforeReading) {
+    const auto dir = std::filesystem::path(test::kBinaryDir) / "tests" / "radiosity-solution-special";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto fifo = dir / "fifo.lpvrad";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto a = radiosity::loadSolution(fifo, 2, 6);
+    ASSERT_FALSE(a.has_value());
+    EXPECT_EQ(a.error().message, "is not a regular file");
+    const auto giant = dir / "giant.lpvrad";
+    std::ofstream(giant) << "x";
+    std::filesystem::resize_file(giant, std::uintmax_t{100} << 30);
+    const auto b = radiosity::loadSolution(giant, 2, 6);
+    ASSERT_FALSE(b.has_value());
+    EXPECT_EQ(b.error().message, "the file is 107374182400 bytes, more than a radiosity solution can be (1 GiB); "
+                                 "refused before reading");
+    std::filesystem::remove_all(dir);
+}
+#endif
