@@ -1,7 +1,7 @@
 #include "Cli.h"
 
-#include "lpv/importers/ImageIO.h"
 #include "lpv/scene/CameraSpline.h"
+#include "lpv/scene/FileRead.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
 
@@ -43,7 +43,7 @@ int runInfo(Args args) {
     const std::filesystem::path folder = std::filesystem::path(pos.front()).parent_path();
     for (const scene::Material& m : s.materials)
         for (const std::string* slot : scene::textureSlots(m))
-            if (!slot->empty() && textures.insert(*slot).second && importers::notARegularFile(folder / *slot))
+            if (!slot->empty() && textures.insert(*slot).second && scene::notARegularFile(folder / *slot))
                 missing.insert(*slot);
     std::printf("textures    %zu (%zu missing)\n", textures.size(), missing.size());
     for (const std::string& name : missing)

@@ -1,7 +1,7 @@
 #include "lpv/importers/GltfImporter.h"
 
 #include "EmbeddedImages.h"
-#include "lpv/importers/ImageIO.h"
+#include "lpv/scene/FileRead.h"
 
 #include <tiny_gltf.h>
 
@@ -156,7 +156,7 @@ std::string texturePath(const Context& ctx, int textureIndex) {
         return embeddedImagePath(ctx, source, image);
     const std::string decoded = percentDecode(image.uri);
     const std::filesystem::path p = ctx.file.parent_path() / decoded;
-    if (const auto why = notARegularFile(p)) {
+    if (const auto why = scene::notARegularFile(p)) {
         ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + scene::capErrorText(decoded) + "' " +
                                       (*why == "no such file" ? std::string("not found") : *why) +
                                       " (placeholder used)");
@@ -364,7 +364,7 @@ void addNode(const Context& ctx, int index, int parent, const glm::mat4& parentW
 // uri takes the missing-file path (issue #29).
 constexpr std::uintmax_t kMaxGltfFileBytes = std::uintmax_t{2} << 30;
 
-bool gltfFileExists(const std::string& path, void*) { return !notARegularFile(std::filesystem::u8path(path)); }
+bool gltfFileExists(const std::string& path, void*) { return !scene::notARegularFile(std::filesystem::u8path(path)); }
 
 bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
     const std::filesystem::path file = std::filesystem::u8path(path);
@@ -373,7 +373,7 @@ bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const 
             *err += scene::capErrorText(path) + ": " + why + "\n";
         return false;
     };
-    if (const auto why = notARegularFile(file))
+    if (const auto why = scene::notARegularFile(file))
         return fail(*why);
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(file, ec);

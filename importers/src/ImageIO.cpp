@@ -1,5 +1,7 @@
 #include "lpv/importers/ImageIO.h"
 
+#include "lpv/scene/FileRead.h"
+
 #include "lpv/scene/ProcessId.h"
 
 #include <OpenImageIO/imageio.h>
@@ -82,30 +84,16 @@ scene::Expected<void> writeImageChannels(const std::filesystem::path& file, cons
                            image.pixels.data(), image.names, attributes);
 }
 
-std::optional<std::string> notARegularFile(const std::filesystem::path& file) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(file, ec);
-    if (status.type() == fs::file_type::not_found)
-        return "no such file";
-    if (ec)
-        return "cannot look it up: " + ec.message();
-    if (fs::is_directory(status))
-        return "is a folder, not a file";
-    if (!fs::is_regular_file(status))
-        return fs::is_fifo(status) ? "is a FIFO (named pipe), not a regular file" : "is not a regular file";
-    return std::nullopt;
-}
-
 namespace {
-// readImage8's and readImageChannels' refusal of what is not a regular file.
+// readImage8's and readImageChannels' refusal of what is not a regular file
+// (scene::notARegularFile says why).
 std::unexpected<scene::Error> notReadable(const std::filesystem::path& file, const std::string& why) {
     return makeError(why == "no such file" ? ErrorCode::FileNotFound : ErrorCode::IoError, file.string(), "", why);
 }
 } // namespace
 
 scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& file) {
-    if (const auto why = notARegularFile(file))
+    if (const auto why = scene::notARegularFile(file))
         return notReadable(file, *why);
     auto in = OIIO::ImageInput::open(file.string());
     if (!in)
@@ -131,7 +119,7 @@ scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& fi
 }
 
 scene::Expected<Image8> readImage8(const std::filesystem::path& file) {
-    if (const auto why = notARegularFile(file))
+    if (const auto why = scene::notARegularFile(file))
         return notReadable(file, *why);
     // Textures are used with straight alpha: keep the file's values as they are.
     OIIO::ImageSpec config;

@@ -1,12 +1,12 @@
 #include "lpv/radiosity/SolutionFile.h"
 
+#include "lpv/scene/FileRead.h"
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 
 namespace lpv::radiosity {
 namespace {
@@ -232,28 +232,12 @@ scene::Expected<void> saveSolution(const StoredSolution& solution, const std::fi
 
 scene::Expected<StoredSolution> loadSolution(const std::filesystem::path& file, std::size_t materialCount,
                                              std::size_t objectCount) {
-    // Regular files only (a FIFO would block), and the size checked before
-    // reading: 1 GiB holds about 9 million patches (Sponza meshes 1.4 million).
-    constexpr std::uintmax_t kMaxSolutionBytes = std::uintmax_t{1} << 30;
-    std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (status.type() == std::filesystem::file_type::not_found)
-        return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "", "cannot open the file");
-    if (ec || !std::filesystem::is_regular_file(status))
-        return scene::makeError(scene::ErrorCode::IoError, file.string(), "",
-                                ec ? "cannot look it up: " + ec.message() : "is not a regular file");
-    const auto size = std::filesystem::file_size(file, ec);
-    if (!ec && size > kMaxSolutionBytes)
-        return scene::makeError(scene::ErrorCode::IoError, file.string(), "",
-                                "the file is " + std::to_string(size) +
-                                    " bytes, more than a radiosity solution can be (1 GiB); refused before reading");
-    std::ifstream in(file, std::ios::binary);
-    if (ec || !in)
-        return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "", "cannot open the file");
-    std::string bytes(size, '\0');
-    if (!in.read(bytes.data(), std::streamsize(size)))
-        return scene::makeError(scene::ErrorCode::IoError, file.string(), "", "cannot read the file");
-    return decodeSolution(bytes, file.string(), materialCount, objectCount);
+    // Regular files only, the size checked before reading: 1 GiB holds about
+    // 9 million patches (Sponza meshes 1.4 million).
+    const auto bytes = scene::readFileBytes(file, {std::uint64_t{1} << 30, "radiosity solution"});
+    if (!bytes)
+        return std::unexpected(bytes.error());
+    return decodeSolution(*bytes, file.string(), materialCount, objectCount);
 }
 
 } // namespace lpv::radiosity

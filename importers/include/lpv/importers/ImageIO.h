@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,13 +35,6 @@ struct FloatChannels {
 };
 scene::Expected<void> writeImageChannels(const std::filesystem::path& file, const FloatChannels& image,
                                          const std::vector<std::pair<std::string, std::string>>& attributes = {});
-// Why `file` cannot be read as an image file, or nothing when it is a regular
-// file: "no such file", "is a folder, not a file", "is a FIFO ...", or the
-// system's word for a name it cannot look up ("File name too long" for a
-// name over 255 bytes). Never throws (issue #29: std::filesystem's throwing
-// calls aborted `lpv info`, `render` and the editor on such names).
-std::optional<std::string> notARegularFile(const std::filesystem::path& file);
-
 scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& file);
 
 scene::Expected<Image8> readImage8(const std::filesystem::path& file);
