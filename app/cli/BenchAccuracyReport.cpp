@@ -215,10 +215,8 @@ std::string describeReference(const fs::path& file) {
 
 // The runs of one sweep.json; `current` holds the project's own parameters to
 // recognise the run that changes nothing.
-// `part` names the run when the sweep had one value (a fixed setting, which
-// sweep.json does not list among the run's settings).
 std::vector<ReportRun> readSweep(const fs::path& file, const std::string& question,
-                                 const scene::ParameterSet& current, const std::string& part) {
+                                 const scene::ParameterSet& current) {
     std::vector<ReportRun> out;
     std::ifstream in(file);
     const Json j = Json::parse(in, nullptr, false);
@@ -234,13 +232,6 @@ std::vector<ReportRun> readSweep(const fs::path& file, const std::string& questi
             if (!changed.setFromText(key, value.get<std::string>()) ||
                 !(changed.get(key) == current.get(key)))
                 run.projectSettings = false;
-        }
-        if (r["settings"].empty() && part.find(',') == std::string::npos && part.find('=') != std::string::npos) {
-            const std::string key = part.substr(0, part.find('='));
-            run.setting = part;
-            scene::ParameterSet changed = current;
-            run.projectSettings =
-                changed.setFromText(key, part.substr(part.find('=') + 1)) && changed.get(key) == current.get(key);
         }
         run.totalMs = r.value("totalMs", 0.0);
         run.indirectMare = r["indirect"].value("mare", 0.0);
@@ -572,7 +563,7 @@ int benchAccuracyReport(Args args) {
                     status = kFailure;
                     continue;
                 }
-                auto runs = readSweep(dir / "sweep.json", q.name, current, part);
+                auto runs = readSweep(dir / "sweep.json", q.name, current);
                 report.runs.insert(report.runs.end(), runs.begin(), runs.end());
                 if (machine.empty()) {
                     std::ifstream in(dir / "sweep.json");

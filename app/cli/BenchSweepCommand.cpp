@@ -262,9 +262,23 @@ int benchSweep(Args args) {
     if (seconds)
         all.push_back("reference.maxSeconds=" + *seconds);
     std::string planError;
-    const SetPlan plan = planSettings(all, planError);
+    SetPlan plan = planSettings(all, planError);
     if (!planError.empty())
         return usageError(planError, "bench");
+    // A --sweep of one value is still a swept key: it names the run (sweep.json,
+    // sweep.md) instead of folding into the fixed settings like a --set.
+    for (const std::string& s : sweeps) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || s.find(',', eq) != std::string::npos)
+            continue;
+        const Setting swept{s.substr(0, eq), s.substr(eq + 1)};
+        if (std::erase(plan.fixed, swept) == 0)
+            continue;
+        if (plan.combinations.empty())
+            plan.combinations = {{}};
+        for (auto& combination : plan.combinations)
+            combination.push_back(swept);
+    }
     // Timed frames must compute the LPV every frame, not reuse the first
     // frame's volumes (a later --set lpv.reuse=true wins).
     request.sets.push_back("lpv.reuse=false");
