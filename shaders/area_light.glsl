@@ -64,10 +64,13 @@ float clippedLambert(vec3 polygon[AREA_DISC_SIDES], int count, vec3 p, vec3 n, o
 
 // `lightDir`: the direction toward the centroid of the visible part of the
 // light (a representative direction for the diffuse Fresnel weight and the
-// shadow bias).
+// shadow bias). `polygon` and `count` return the light's outline for
+// areaLightSpecularFactor, so a fragment builds it once (count 0: the light
+// is behind, or small enough to be a point).
 float areaLightFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, int shape, bool twoSided, vec3 p, vec3 n,
-                      out vec3 lightDir) {
+                      out vec3 lightDir, out vec3 polygon[AREA_DISC_SIDES], out int count) {
     lightDir = normalize(center - p);
+    count = 0;
     vec3 toPoint = p - center;
     float height = dot(toPoint, normal);
     if (!(height > 0.0) && !(twoSided && height < 0.0))
@@ -79,8 +82,7 @@ float areaLightFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, int shap
         float area = shape == 1 ? PI * dot(halfU, halfU) : 4.0 * length(halfU) * length(halfV);
         return area * abs(height) / dist * max(dot(n, lightDir), 0.0) / (dist * dist);
     }
-    vec3 polygon[AREA_DISC_SIDES];
-    int count = areaLightPolygon(center, halfU, halfV, shape, polygon);
+    count = areaLightPolygon(center, halfU, halfV, shape, polygon);
     vec3 visibleSum;
     int m;
     float factor = clippedLambert(polygon, count, p, n, visibleSum, m);
@@ -127,12 +129,12 @@ void ltcLookup(float roughness, float nv, out vec4 m, out vec2 scale) {
 
 // (x, y) such that the specular radiance is L * (F0 * x + (1 - F0) * y), for the
 // GGX lobe of brdf.glsl at `roughness`; v = unit direction toward the viewer.
-vec2 areaLightSpecularFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, int shape, bool twoSided, vec3 p,
-                             vec3 n, vec3 v, float roughness) {
+// Only for a point in front of the light (areaLightFactor > 0), with the
+// outline areaLightFactor returned (count 0: the light is a point from p).
+vec2 areaLightSpecularFactor(vec3 polygon[AREA_DISC_SIDES], int count, vec3 center, vec3 normal, vec3 halfU,
+                             vec3 halfV, int shape, vec3 p, vec3 n, vec3 v, float roughness) {
     vec3 toPoint = p - center;
     float height = dot(toPoint, normal);
-    if (!(height > 0.0) && !(twoSided && height < 0.0))
-        return vec2(0.0);
     float nv = dot(n, v);
     vec4 m;
     vec2 scale;
@@ -146,9 +148,8 @@ vec2 areaLightSpecularFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, i
     vec3 t2 = cross(n, t1);
     mat3 toLobe = mat3(vec3(m.x, 0.0, m.z), vec3(0.0, 1.0, 0.0), vec3(m.y, 0.0, m.w)) * transpose(mat3(t1, t2, n));
     float dist = length(toPoint);
-    float extent = length(halfU) + length(halfV);
     float integral;
-    if (extent < 1e-3 * dist) {
+    if (count == 0) {
         // A point of the light's area: the LTC's density toward it times its solid angle.
         float area = shape == 1 ? PI * dot(halfU, halfU) : 4.0 * length(halfU) * length(halfV);
         vec3 o = toLobe * (-toPoint / dist);
@@ -156,13 +157,12 @@ vec2 areaLightSpecularFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, i
         float density = len > 0.0 ? max(o.z / len, 0.0) / PI * abs(determinant(toLobe)) / (len * len * len) : 0.0;
         integral = density * area * abs(height) / dist / (dist * dist);
     } else {
-        vec3 polygon[AREA_DISC_SIDES];
-        int count = areaLightPolygon(center, halfU, halfV, shape, polygon);
-        for (int i = 0; i < count; ++i)
-            polygon[i] = toLobe * (polygon[i] - p);
+        vec3 lobe[AREA_DISC_SIDES];
+        for (int i = 0; i < AREA_DISC_SIDES; ++i)
+            lobe[i] = toLobe * (polygon[i] - p);
         vec3 visibleSum;
         int visible;
-        integral = clippedLambert(polygon, count, vec3(0.0), vec3(0.0, 0.0, 1.0), visibleSum, visible) / PI;
+        integral = clippedLambert(lobe, count, vec3(0.0), vec3(0.0, 0.0, 1.0), visibleSum, visible) / PI;
     }
     return scale * integral;
 }
@@ -175,14 +175,14 @@ vec2 areaLightSpecularFactor(vec3 center, vec3 normal, vec3 halfU, vec3 halfV, i
 // evaluated there. Blinn-Phong's lobe is taken as the GGX lobe of the same
 // width (alpha^2 = 2 / (shininess + 2), Walter et al. 2007) without Fresnel,
 // its specular colour as the scale; metallic-roughness uses Schlick's F0.
-vec3 areaLightReflectance(Surface s, vec3 l, vec3 v, float diffuseFactor, vec3 center, vec3 normal, vec3 halfU,
-                          vec3 halfV, int shape, bool twoSided, vec3 p) {
+vec3 areaLightReflectance(Surface s, vec3 l, vec3 v, float diffuseFactor, vec3 polygon[AREA_DISC_SIDES], int count,
+                          vec3 center, vec3 normal, vec3 halfU, vec3 halfV, int shape, vec3 p) {
     if (uShadingModel == 1) {
         vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
         float vh = max(dot(v, normalize(l + v)), 0.0);
         vec3 F = f0 + (1.0 - f0) * pow(1.0 - vh, 5.0);
         vec3 diffuse = (1.0 - F) * (1.0 - s.metallic) * s.albedo / PI * diffuseFactor;
-        vec2 spec = areaLightSpecularFactor(center, normal, halfU, halfV, shape, twoSided, p, s.normal, v,
+        vec2 spec = areaLightSpecularFactor(polygon, count, center, normal, halfU, halfV, shape, p, s.normal, v,
                                             s.roughness);
         return diffuse + f0 * spec.x + (1.0 - f0) * spec.y;
     }
@@ -190,6 +190,7 @@ vec3 areaLightReflectance(Surface s, vec3 l, vec3 v, float diffuseFactor, vec3 c
     if (max(s.specular.r, max(s.specular.g, s.specular.b)) <= 0.0)
         return diffuse;
     float roughness = sqrt(sqrt(2.0 / (max(s.shininess, 0.0) + 2.0)));
-    vec2 spec = areaLightSpecularFactor(center, normal, halfU, halfV, shape, twoSided, p, s.normal, v, roughness);
+    vec2 spec = areaLightSpecularFactor(polygon, count, center, normal, halfU, halfV, shape, p, s.normal, v,
+                                        roughness);
     return diffuse + s.specular * spec.x;
 }

@@ -60,14 +60,16 @@ void main() {
             // Exact diffuse irradiance of the polygon and the specular lobe by LTC (area_light.glsl).
             vec3 lightNormal = normalize(uLightDirection[i]);
             bool twoSided = uLightTwoSided[i] != 0;
+            vec3 polygon[AREA_DISC_SIDES];
+            int count;
             float factor = areaLightFactor(uLightPosition[i], lightNormal, uLightHalfU[i], uLightHalfV[i],
-                                           uLightAreaShape[i], twoSided, vWorldPos, n, l);
+                                           uLightAreaShape[i], twoSided, vWorldPos, n, l, polygon, count);
             if (factor <= 0.0)
                 continue;
             dist = distance(uLightPosition[i], vWorldPos);
             float visibility = shadowVisibility(i, vWorldPos, n, normalize(uLightPosition[i] - vWorldPos), dist);
-            radiance += areaLightReflectance(s, l, v, factor, uLightPosition[i], lightNormal, uLightHalfU[i],
-                                             uLightHalfV[i], uLightAreaShape[i], twoSided, vWorldPos) *
+            radiance += areaLightReflectance(s, l, v, factor, polygon, count, uLightPosition[i], lightNormal,
+                                             uLightHalfU[i], uLightHalfV[i], uLightAreaShape[i], vWorldPos) *
                         uLightRadiantColor[i] * visibility;
             continue;
         }
