@@ -66,9 +66,9 @@ void printBenchLpvHelp() {
 
 The thesis' LPV measurements, on its axes and by default at its settings
 (1024x600, 4 cascades of 32^3, RSM tiles of 128^2, 8 propagation steps):
-  1. RSM rendering ("rsm") and injection ("lpvInject", "gvInject") against the
+  1. RSM rendering ("rsm") and injection ("lpvInjection", "geometryVolume") against the
      RSM tile size, --tiles (default 32,64,128,256,512,1024);
-  2. propagation ("lpvPropagate") against the step count, --steps (default
+  2. propagation ("lpvPropagation") against the step count, --steps (default
      1,2,4,8,16,32,64), for each of the four lpv.variant values, with
      lpv.occlusion off and on; also per step and volume;
   3. the fastest variant for each step count and occlusion setting.
@@ -130,9 +130,9 @@ int benchLpv(Args args) {
         if (!renderFrames(*setup, *width, *height, *frames))
             return std::nullopt;
         Measured m{settings, setup->renderer->timer().table()};
-        std::printf("%-70s rsm %-24s lpvInject %-24s lpvPropagate %s\n", label.c_str(),
-                    cell(findPass(m.passes, "rsm")).c_str(), cell(findPass(m.passes, "lpvInject")).c_str(),
-                    cell(findPass(m.passes, "lpvPropagate")).c_str());
+        std::printf("%-70s rsm %-24s lpvInjection %-24s lpvPropagation %s\n", label.c_str(),
+                    cell(findPass(m.passes, "rsm")).c_str(), cell(findPass(m.passes, "lpvInjection")).c_str(),
+                    cell(findPass(m.passes, "lpvPropagation")).c_str());
         std::fflush(stdout);
         return m;
     };
@@ -169,7 +169,7 @@ int benchLpv(Args args) {
     md << "Command: `" << command << "`\n\nMachine: " << describeMachine(gl.renderer, gl.version) << "\n\n"
        << "GPU ms, median (min-max) over " << *frames << " frames after " << *warmup << " warm-up frames; "
        << cascades << " cascades of " << base.getInt("lpv.gridSize") << "^3.\n\n";
-    md << "### RSM and injection against the RSM tile size\n\n| tile | rsm | lpvInject | gvInject |\n|---|---|---|---|\n";
+    md << "### RSM and injection against the RSM tile size\n\n| tile | rsm | lpvInjection | geometryVolume |\n|---|---|---|---|\n";
     csv << "table,rsm.tileSize,lpv.variant,lpv.occlusion,lpv.propagationSteps,pass,median_ms,min_ms,max_ms,frames\n";
     auto csvRow = [&](const char* table, const Measured& m, const std::string& tile) {
         auto get = [&](const char* key, const std::string& fallback) {
@@ -186,16 +186,16 @@ int benchLpv(Args args) {
     for (const Measured& m : tileRuns) {
         const std::string tile = m.settings.at("rsm.tileSize");
         md << "| " << tile << "^2 | " << cell(findPass(m.passes, "rsm")) << " | "
-           << cell(findPass(m.passes, "lpvInject")) << " | " << cell(findPass(m.passes, "gvInject")) << " |\n";
+           << cell(findPass(m.passes, "lpvInjection")) << " | " << cell(findPass(m.passes, "geometryVolume")) << " |\n";
         csvRow("tiles", m, tile);
     }
     md << "\n### Propagation against the step count\n\nPer step and volume: the median divided by steps x "
-       << cascades << " cascades.\n\n| occlusion | variant | steps | lpvPropagate | per step and volume |\n"
+       << cascades << " cascades.\n\n| occlusion | variant | steps | lpvPropagation | per step and volume |\n"
        << "|---|---|---|---|---|\n";
     // fastest[(occlusion, steps)] = (median, variant)
     std::map<std::pair<std::string, int>, std::pair<double, std::string>> fastest;
     for (const Measured& m : stepRuns) {
-        const renderer::PassTiming* t = findPass(m.passes, "lpvPropagate");
+        const renderer::PassTiming* t = findPass(m.passes, "lpvPropagation");
         const int s = std::stoi(m.settings.at("lpv.propagationSteps"));
         const std::string& occlusion = m.settings.at("lpv.occlusion");
         const std::string& variant = m.settings.at("lpv.variant");

@@ -246,7 +246,7 @@ int runDump(Args args) {
     std::printf("%s\n", setup->renderer->lpvNote().c_str());
 
     if (view == "shadow") {
-        const auto images = setup->renderer->debugImages("shadow");
+        const auto images = setup->renderer->debugImages("shadowMaps");
         if (images.empty()) {
             std::cerr << "lpv: " << pos.front()
                       << ": no shadow maps (the scene has no light that casts shadows)\n";

@@ -9,6 +9,7 @@
 
 #include "lpv/renderer/SceneAnalysis.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -42,15 +43,17 @@ one row per frame, then median/min/max over the frames rendered.
                         effect whether its passes run and why, e.g. that sky
                         light injection is skipped in a closed scene, from
                         the scene and the --set values
-  --dump LIST           Also write the renderer's internal images beside OUT,
-                        comma-separated: shadow (every shadow map / cascade
-                        depth), rsm (position, normal and flux of every RSM
-                        tile), lpv (per cascade the accumulated light, DC
-                        per colour channel, and the geometry volume, z slices
-                        side by side), localrsm (position, normal and flux
-                        of every spot light's and point-light cube face's RSM
-                        when lpv.localLights injects them). Each as
+  --dump LIST           Also write the frame's internal images beside OUT,
+                        comma-separated frame-graph names (--graph lists
+                        them): an output such as rsm.flux, camera.depth,
+                        lpv.accumulator (per cascade the accumulated light,
+                        DC per colour channel, z slices side by side),
+                        lpv.geometry, shadowMaps, skyHeight; or a pass such
+                        as rsm or localRsm (everything it wrote). Each as
                         OUT-<name>.exr (exact) and .png (scaled)
+  --graph               After the frames, print the last frame's graph: its
+                        passes in order, what each read and wrote, and
+                        whether it ran, was reused (and why) or was culled
 )";
 }
 
@@ -97,6 +100,7 @@ int runRender(Args args) {
     const auto framesText = args.option("--frames");
     const auto dumpText = args.option("--dump");
     const bool explain = args.flag("--explain");
+    const bool printGraph = args.flag("--graph");
     RenderRequest request;
     request.cameraName = args.option("--camera");
     request.sets = args.options("--set");
@@ -117,11 +121,16 @@ int runRender(Args args) {
     if (!frames)
         return usageError("--frames must be a positive integer", "render");
     const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
+    const std::vector<std::string>& known = renderer::frameGraphNames();
     for (const std::string& d : dumps)
-        if (d != "rsm" && d != "shadow" && d != "lpv" && d != "localrsm")
-            return usageError("--dump: unknown image set '" + d + "' (rsm, shadow, lpv, localrsm)", "render");
+        if (std::find(known.begin(), known.end(), d) == known.end()) {
+            std::string list;
+            for (const std::string& k : known)
+                list += (list.empty() ? "" : ", ") + k;
+            return usageError("--dump: '" + d + "' is no pass or output of the frame graph (" + list + ")", "render");
+        }
     if (dumpText && dumps.empty())
-        return usageError("--dump needs a list such as rsm,shadow", "render");
+        return usageError("--dump needs a list such as rsm,shadowMaps", "render");
 
     std::string planError;
     const SetPlan plan = planSettings(request.sets, planError);
@@ -195,11 +204,22 @@ int runRender(Args args) {
             total += row.medianMs;
         totals.emplace_back(out.filename().string(), total);
         std::printf("wrote %s\n", out.string().c_str());
+        const renderer::FrameGraphReport& graph = setup->renderer->graphReport();
+        if (printGraph)
+            std::printf("frame graph of the last frame:\n%s", renderer::formatGraph(graph).c_str());
         for (const std::string& what : dumps) {
             const auto images = setup->renderer->debugImages(what);
-            if (images.empty())
-                std::printf("--dump %s: nothing to write (the scene has no light this pass renders for)\n",
-                            what.c_str());
+            if (images.empty()) {
+                std::string why = "the scene has no light this pass renders for";
+                for (const auto& pass : graph.passes) {
+                    const bool wrote = std::any_of(pass.writes.begin(), pass.writes.end(), [&](const auto& w) {
+                        return w.name.substr(0, w.name.find(' ')) == what;
+                    });
+                    if ((pass.name == what || wrote) && pass.status == renderer::PassStatus::Culled)
+                        why = pass.name + " did not run: " + pass.reason;
+                }
+                std::printf("--dump %s: nothing to write (%s)\n", what.c_str(), why.c_str());
+            }
             bool ok = true;
             for (const auto& file : writeDebugImages(images, out, ok))
                 std::printf("wrote %s\n", file.string().c_str());

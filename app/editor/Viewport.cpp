@@ -341,7 +341,7 @@ void Viewport::emitVisualizerFrame() {
     if (vizRequest_.rsm)
         frame->rsm = renderer_->debugImages("rsm");
     if (vizRequest_.shadow)
-        frame->shadow = renderer_->debugImages("shadow");
+        frame->shadow = renderer_->debugImages("shadowMaps");
     vizFrame_ = frame;
     emit visualizerFrame(frame);
 }

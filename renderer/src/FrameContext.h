@@ -7,7 +7,13 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
+
 namespace lpv::renderer {
+
+// Hands out the texture units of one pass's bindings (the frame graph's
+// PassContext::allocateUnit): every call a unit no other binding of the pass uses.
+using UnitAllocator = std::function<GLuint()>;
 
 struct FrameContext {
     const scene::Scene& scene;

@@ -2,8 +2,9 @@
 
 namespace lpv::renderer {
 
-void bindGlossyReflections(GLuint program, const scene::ParameterSet& params, bool runs) {
-    auto at = [&](const char* name) { return glGetUniformLocation(program, name); };
+void bindGlossyReflections(const CachedProgram& p, const scene::ParameterSet& params, bool runs) {
+    auto at = [&](const char* name) { return p.uniform(name); };
+    const GLuint program = p.id();
     glProgramUniform1i(program, at("uGlossyEnabled"), runs ? 1 : 0);
     glProgramUniform1f(program, at("uGlossyThreshold"), params.getFloat("effects.glossyThreshold"));
     glProgramUniform1i(program, at("uGlossySteps"), params.getInt("effects.glossySteps"));

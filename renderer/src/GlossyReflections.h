@@ -3,12 +3,13 @@
 // registry's settings as the shader's uniforms. The march reads the LPV
 // accumulators the diffuse lookup already binds, so the effect owns no GPU
 // memory; when it does not run, the shader skips the march.
+#include "ProgramCache.h"
 #include "lpv/scene/ParameterRegistry.h"
 
 #include <epoxy/gl.h>
 
 namespace lpv::renderer {
 
-void bindGlossyReflections(GLuint program, const scene::ParameterSet& params, bool runs);
+void bindGlossyReflections(const CachedProgram& program, const scene::ParameterSet& params, bool runs);
 
 } // namespace lpv::renderer

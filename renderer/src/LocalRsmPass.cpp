@@ -118,7 +118,6 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
     const GLuint p = program_.id();
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     const scene::Bounds bounds = frame.scene.worldBounds();
-    frame.timer.begin("localRsm");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
@@ -170,7 +169,6 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
                           [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
         }
     }
-    frame.timer.end("localRsm");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return {};
 }

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace lpv::renderer {
 
@@ -14,7 +15,6 @@ constexpr const char* kVariantNames[] = {"computeGather", "computeScatter", "ras
 
 GLuint groups(int count, int size) { return GLuint((count + size - 1) / size); }
 
-GLint loc(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
 
 constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
@@ -49,8 +49,12 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.injectionOffset = float(params.getFloat("lpv.injectionOffset"));
     s.occlusion = params.getBool("lpv.occlusion");
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
-    // The registry only admits the four names.
-    s.variant = lpvVariantFromName(params.getEnum("lpv.variant")).value_or(LpvVariant::ComputeGather);
+    // The registry only admits the four names; anything else is a bug, not a default.
+    const std::string variant = params.getEnum("lpv.variant");
+    const auto parsed = lpvVariantFromName(variant);
+    if (!parsed)
+        throw std::logic_error("lpv.variant = '" + variant + "' is not a propagation variant");
+    s.variant = *parsed;
     // auto: whenever the LPV runs (SceneAnalysis says the same); off by default in the registry.
     s.directed = params.getEnum("lpv.directedPropagation") != "off";
     s.directedDilation = params.getInt("lpv.directedDilation");
@@ -63,43 +67,83 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
 
 scene::Expected<LpvPass> LpvPass::create() {
     LpvPass pass;
-    struct Build {
-        Program* target;
-        std::vector<std::string> files;
-        std::vector<std::string> defines;
-    };
-    const Build builds[] = {
-        {&pass.fluxMax_, {"lpv_flux_max.comp"}, {}},
-        {&pass.inject_, {"lpv_inject.comp"}, {}},
-        {&pass.resolve_, {"lpv_resolve.comp"}, {}},
-        {&pass.gvFromRsm_, {"lpv_gv_inject.comp"}, {"GV_FROM_RSM 1"}},
-        {&pass.gvFromCamera_, {"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}},
-        {&pass.gvMerge_, {"lpv_gv_merge.comp"}, {}},
-        {&pass.faceBlocking_, {"lpv_face_blocking.comp"}, {}},
-        {&pass.normals_, {"lpv_normals.comp"}, {}},
-        {&pass.normalsDilate_, {"lpv_normals.comp"}, {"NORMALS_DILATE 1"}},
-        {&pass.skyInject_, {"lpv_sky_inject.comp"}, {}},
-        {&pass.bounceInject_, {"lpv_bounce.comp"}, {"BOUNCE_INJECT 1"}},
-        {&pass.bounceAdd_, {"lpv_bounce.comp"}, {}},
-        {&pass.localFluxMax_, {"lpv_inject_local.comp"}, {"LOCAL_FLUX_MAX 1"}},
-        {&pass.localInject_, {"lpv_inject_local.comp"}, {}},
-        {&pass.computeGather_, {"lpv_gather.comp"}, {}},
-        {&pass.computeGatherFirst_, {"lpv_gather.comp"}, {"LPV_FIRST_STEP 1"}},
-        {&pass.deinterleave_, {"lpv_deinterleave.comp"}, {}},
-        {&pass.computeScatter_, {"lpv_scatter.comp"}, {}},
-        {&pass.rasterGather_, {"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}},
-        {&pass.rasterScatter_,
-         {"lpv_raster_scatter.vert", "lpv_raster.geom", "lpv_raster_scatter.frag"},
-         {"LPV_POINTS 1"}},
-    };
-    for (const Build& b : builds) {
-        auto program = buildEmbeddedProgram(b.files, b.defines);
-        if (!program)
-            return std::unexpected(program.error());
-        *b.target = std::move(*program);
-    }
     pass.emptyVao_ = createVertexArray();
     return pass;
+}
+
+ProgramVariant LpvPass::variantOf(LpvKernel kernel) {
+    switch (kernel) {
+    case LpvKernel::FluxMax: return {{"lpv_flux_max.comp"}, {}};
+    case LpvKernel::Inject: return {{"lpv_inject.comp"}, {}};
+    case LpvKernel::Resolve: return {{"lpv_resolve.comp"}, {}};
+    case LpvKernel::GvFromRsm: return {{"lpv_gv_inject.comp"}, {"GV_FROM_RSM 1"}};
+    case LpvKernel::GvFromCamera: return {{"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1"}};
+    case LpvKernel::GvMerge: return {{"lpv_gv_merge.comp"}, {}};
+    case LpvKernel::FaceBlocking: return {{"lpv_face_blocking.comp"}, {}};
+    case LpvKernel::Normals: return {{"lpv_normals.comp"}, {}};
+    case LpvKernel::NormalsDilate: return {{"lpv_normals.comp"}, {"NORMALS_DILATE 1"}};
+    case LpvKernel::SkyInject: return {{"lpv_sky_inject.comp"}, {}};
+    case LpvKernel::BounceInject: return {{"lpv_bounce.comp"}, {"BOUNCE_INJECT 1"}};
+    case LpvKernel::BounceAdd: return {{"lpv_bounce.comp"}, {}};
+    case LpvKernel::LocalFluxMax: return {{"lpv_inject_local.comp"}, {"LOCAL_FLUX_MAX 1"}};
+    case LpvKernel::LocalInject: return {{"lpv_inject_local.comp"}, {}};
+    case LpvKernel::ComputeGather: return {{"lpv_gather.comp"}, {}};
+    case LpvKernel::ComputeGatherFirst: return {{"lpv_gather.comp"}, {"LPV_FIRST_STEP 1"}};
+    case LpvKernel::Deinterleave: return {{"lpv_deinterleave.comp"}, {}};
+    case LpvKernel::ComputeScatter: return {{"lpv_scatter.comp"}, {}};
+    case LpvKernel::RasterGather:
+        return {{"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}};
+    case LpvKernel::RasterScatter:
+        return {{"lpv_raster_scatter.vert", "lpv_raster.geom", "lpv_raster_scatter.frag"}, {"LPV_POINTS 1"}};
+    }
+    throw std::logic_error("unknown LPV kernel");
+}
+
+scene::Expected<void> LpvPass::buildKernel(LpvKernel k) {
+    auto program = programs_.get(variantOf(k));
+    if (!program)
+        return std::unexpected(program.error());
+    byId_[(*program)->id()] = *program;
+    return {};
+}
+
+GLuint LpvPass::kernel(LpvKernel k) {
+    // prepare() built what the settings select; anything else compiles here,
+    // and a compile error fails the frame (the frame graph makes it an error value).
+    auto program = programs_.get(variantOf(k));
+    if (!program)
+        throw std::logic_error(program.error().describe());
+    byId_[(*program)->id()] = *program;
+    return (*program)->id();
+}
+
+GLint LpvPass::loc(GLuint program, const char* name) const {
+    const auto it = byId_.find(program);
+    return it != byId_.end() ? it->second->uniform(name) : glGetUniformLocation(program, name);
+}
+
+scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
+    std::vector<LpvKernel> kernels = {LpvKernel::FluxMax, LpvKernel::Inject, LpvKernel::Resolve};
+    if (settings.occlusion || settings.bounces > 1)
+        kernels.insert(kernels.end(), {LpvKernel::GvFromRsm, LpvKernel::GvMerge, LpvKernel::FaceBlocking});
+    if (settings.gvFromCamera)
+        kernels.push_back(LpvKernel::GvFromCamera);
+    if (settings.directed)
+        kernels.insert(kernels.end(), {LpvKernel::Normals, LpvKernel::NormalsDilate});
+    if (settings.bounces > 1)
+        kernels.insert(kernels.end(), {LpvKernel::BounceInject, LpvKernel::BounceAdd});
+    switch (settings.variant) {
+    case LpvVariant::ComputeGather:
+        kernels.insert(kernels.end(), {LpvKernel::ComputeGather, LpvKernel::ComputeGatherFirst, LpvKernel::Deinterleave});
+        break;
+    case LpvVariant::ComputeScatter: kernels.push_back(LpvKernel::ComputeScatter); break;
+    case LpvVariant::RasterGather: kernels.push_back(LpvKernel::RasterGather); break;
+    case LpvVariant::RasterScatter: kernels.push_back(LpvKernel::RasterScatter); break;
+    }
+    for (LpvKernel k : kernels)
+        if (auto ok = buildKernel(k); !ok)
+            return ok;
+    return {};
 }
 
 void LpvPass::disable(std::string reason) {
@@ -126,18 +170,27 @@ void LpvPass::setCascadeUniforms(GLuint program) const {
     glProgramUniform1fv(program, loc(program, "uCellSize"), 6, cellSize.data());
 }
 
-scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
-                                   const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky,
-                                   const std::vector<LpvLocalInput>& allLocal) {
+namespace {
+
+// Local inputs with something in them.
+std::vector<LpvLocalInput> nonEmpty(const std::vector<LpvLocalInput>& all) {
     std::vector<LpvLocalInput> local;
-    for (const LpvLocalInput& l : allLocal)
+    for (const LpvLocalInput& l : all)
         if (l.layers > 0 && l.size > 0 && l.position)
             local.push_back(l);
-    if (rsm.cascades.empty() || ((rsm.tileSize <= 0 || !rsm.position) && local.empty())) {
+    return local;
+}
+
+} // namespace
+
+scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::vector<LpvCascade>& requested) {
+    if (auto built = buildKernelsFor(settings); !built)
+        return built;
+    const int cascades = std::min<int>(int(requested.size()), 6);
+    if (cascades == 0) {
         disable("no RSM to inject from");
         return {};
     }
-    const int cascades = std::min<int>(int(rsm.cascades.size()), 6);
     if (auto ok = volumes_.ensure(settings.gridSize, cascades); !ok) {
         disable("volumes do not fit");
         if (cascades != settings.requestedCascades)
@@ -149,58 +202,80 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     volumes_.ensureDirected(settings.directed);
     volumes_.ensureBounces(settings.bounces > 1);
     volumes_.ensureInterleaved(settings.variant == LpvVariant::ComputeGather);
-    cascades_.assign(rsm.cascades.begin(), rsm.cascades.begin() + cascades);
-    tileSize_ = rsm.tileSize;
+    cascades_.assign(requested.begin(), requested.begin() + cascades);
     injectionOffset_ = settings.injectionOffset;
     occlusion_ = settings.occlusion;
     propagationSteps_ = settings.propagationSteps;
+    active_ = true;
+    return {};
+}
+
+void LpvPass::injectStage(const LpvRsmInput& rsm, const std::vector<LpvLocalInput>& local, bool directed) {
+    tileSize_ = rsm.tileSize;
     snapshot_.reset();
     capturedStep_ = -1;
-    active_ = true;
+    inject(rsm, directed, nonEmpty(local));
+}
 
-    timer.begin("lpvInject");
-    inject(rsm, settings.directed, local);
-    timer.end("lpvInject");
-    if (sky && sky->depth && sky->size > 0) {
-        timer.begin("skyInject");
-        injectSky(*sky);
-        timer.end("skyInject");
-    }
-    normalsIndex_ = -1;
-    if (settings.directed) {
-        timer.begin("lpvNormals");
-        buildNormals(settings.directedDilation);
-        timer.end("lpvNormals");
-    }
-    // Bounces reflect at the GV's surfels, so they need it even without occlusion.
-    if (settings.occlusion || settings.bounces > 1) {
-        timer.begin("gvInject");
-        injectGeometry(rsm, settings.gvFromCamera ? camera : nullptr);
-        timer.end("gvInject");
-    }
+void LpvPass::skyStage(const LpvSkyInput& sky) { injectSky(sky); }
+
+void LpvPass::normalsStage(int dilation) { buildNormals(dilation); }
+
+void LpvPass::geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera) { injectGeometry(rsm, camera); }
+
+void LpvPass::propagationStage(const LpvSettings& settings) {
+    if (!settings.directed)
+        normalsIndex_ = -1; // the normals volume of an earlier frame is not this frame's
     // V_0 is overwritten by the first step, so a capture of it happens before propagation.
     captureIfRequested(0, readIndex_);
-    timer.begin("lpvPropagate");
     propagate(settings);
-    timer.end("lpvPropagate");
-    if (settings.bounces > 1) {
-        timer.begin("lpvBounce");
-        propagateBounces(settings);
-        timer.end("lpvBounce");
-    }
-    readCapture();
+}
 
+void LpvPass::bounceStage(const LpvSettings& settings) { propagateBounces(settings); }
+
+void LpvPass::finish(const LpvSettings& settings, bool cameraGv, bool sky, const std::vector<LpvLocalInput>& local) {
+    readCapture();
     const int n = settings.gridSize;
-    note_ = "LPV: " + std::to_string(cascades) + " cascades of " + std::to_string(n) + "^3, " +
+    note_ = "LPV: " + std::to_string(cascades_.size()) + " cascades of " + std::to_string(n) + "^3, " +
             std::to_string(settings.propagationSteps) + " steps, " + lpvVariantName(settings.variant) +
-            (settings.occlusion ? ", occlusion from the RSM" +
-                                      std::string(settings.gvFromCamera && camera ? " and the camera" : "")
+            (settings.occlusion ? ", occlusion from the RSM" + std::string(settings.gvFromCamera && cameraGv ? " and the camera" : "")
                                 : ", no occlusion") +
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
-            (sky && sky->depth ? ", sky light injected" : "") +
-            localNote(local) +
+            (sky ? ", sky light injected" : "") + localNote(nonEmpty(local)) +
             (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "");
     computedNote_ = note_.substr(5); // without "LPV: "
+}
+
+scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
+                                   const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky,
+                                   const std::vector<LpvLocalInput>& allLocal) {
+    const std::vector<LpvLocalInput> local = nonEmpty(allLocal);
+    if (rsm.cascades.empty() || ((rsm.tileSize <= 0 || !rsm.position) && local.empty())) {
+        disable("no RSM to inject from");
+        return {};
+    }
+    if (auto ok = prepare(settings, rsm.cascades); !ok)
+        return ok;
+    // The stages in the frame graph's order, timed under the graph's pass names.
+    auto timed = [&](scene::Pass pass, auto&& stage) {
+        const std::string name = scene::passName(pass);
+        timer.begin(name);
+        stage();
+        timer.end(name);
+    };
+    const bool withSky = sky && sky->depth && sky->size > 0;
+    timed(scene::Pass::LpvInjection, [&] { injectStage(rsm, local, settings.directed); });
+    if (withSky)
+        timed(scene::Pass::SkyInjection, [&] { skyStage(*sky); });
+    if (settings.directed)
+        timed(scene::Pass::LpvNormals, [&] { normalsStage(settings.directedDilation); });
+    // Bounces reflect at the GV's surfels, so they need it even without occlusion.
+    if (settings.occlusion || settings.bounces > 1)
+        timed(scene::Pass::GeometryVolume, [&] { geometryStage(rsm, settings.gvFromCamera ? camera : nullptr); });
+    timed(scene::Pass::LpvPropagation, [&] { propagationStage(settings); });
+    if (settings.bounces > 1)
+        timed(scene::Pass::LpvBounces, [&] { bounceStage(settings); });
+    finish(settings, camera != nullptr, withSky, local);
     return {};
 }
 
@@ -218,7 +293,7 @@ void LpvPass::inject(const LpvRsmInput& rsm, bool directed, const std::vector<Lp
     // 1. The brightest texel per tile sets the fixed-point scale.
     for (const LpvLocalInput& l : local)
         localFluxMax(l);
-    GLuint p = fluxMax_.id();
+    GLuint p = kernel(LpvKernel::FluxMax);
     glUseProgram(p);
     glBindTextureUnit(0, rsm.position);
     glBindTextureUnit(1, rsm.flux);
@@ -229,7 +304,7 @@ void LpvPass::inject(const LpvRsmInput& rsm, bool directed, const std::vector<Lp
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 2. VPLs into the fixed-point sums.
-    p = inject_.id();
+    p = kernel(LpvKernel::Inject);
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindTextureUnit(2, rsm.normal);
@@ -255,7 +330,7 @@ void LpvPass::inject(const LpvRsmInput& rsm, bool directed, const std::vector<Lp
 }
 
 void LpvPass::resolveSums(int destination, bool accumulate, int scaleSlot, int recordSlot) {
-    const GLuint p = resolve_.id();
+    const GLuint p = kernel(LpvKernel::Resolve);
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
@@ -279,7 +354,7 @@ void LpvPass::bindStepImages(int destination) const {
 
 void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGvSumsBinding, volumes_.gvSums.id());
-    GLuint p = gvFromRsm_.id();
+    GLuint p = kernel(LpvKernel::GvFromRsm);
     glUseProgram(p);
     setCascadeUniforms(p);
     std::array<float, 6> texelArea{};
@@ -294,7 +369,7 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
         glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(volumes_.cascades()));
 
     if (camera && camera->depth && camera->normal) {
-        p = gvFromCamera_.id();
+        p = kernel(LpvKernel::GvFromCamera);
         glUseProgram(p);
         setCascadeUniforms(p);
         glBindTextureUnit(0, camera->depth);
@@ -311,7 +386,7 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-    p = gvMerge_.id();
+    p = kernel(LpvKernel::GvMerge);
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindImageTexture(0, volumes_.geometry.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -320,7 +395,7 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     glMemoryBarrier(kComputeResults);
 
     // The GV on every cell face, for the compute gather.
-    p = faceBlocking_.id();
+    p = kernel(LpvKernel::FaceBlocking);
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uOcclusion"), 1);
@@ -334,7 +409,7 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
 void LpvPass::buildNormals(int dilation) {
     const int n = volumes_.gridSize();
     const GLuint gx = groups(n, 4), gz = groups(n * volumes_.cascades(), 4);
-    GLuint p = normals_.id();
+    GLuint p = kernel(LpvKernel::Normals);
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
@@ -343,7 +418,7 @@ void LpvPass::buildNormals(int dilation) {
     glDispatchCompute(gx, gx, gz);
     glMemoryBarrier(kComputeResults);
     normalsIndex_ = 0;
-    p = normalsDilate_.id();
+    p = kernel(LpvKernel::NormalsDilate);
     glUseProgram(p);
     setCascadeUniforms(p);
     for (int i = 0; i < dilation; ++i) {
@@ -357,7 +432,7 @@ void LpvPass::buildNormals(int dilation) {
 }
 
 void LpvPass::injectSky(const LpvSkyInput& sky) {
-    const GLuint p = skyInject_.id();
+    const GLuint p = kernel(LpvKernel::SkyInject);
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
@@ -395,7 +470,7 @@ void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const 
 }
 
 void LpvPass::deinterleave(int index) {
-    const GLuint p = deinterleave_.id();
+    const GLuint p = kernel(LpvKernel::Deinterleave);
     const int n = volumes_.gridSize(), k = volumes_.cascades();
     glUseProgram(p);
     glProgramUniform3i(p, loc(p, "uSize"), n, n, n * k);
@@ -409,9 +484,9 @@ void LpvPass::deinterleave(int index) {
 
 void LpvPass::propagate(const LpvSettings& settings) {
     const int n = volumes_.gridSize(), k = volumes_.cascades();
-    const GLuint gatherProgram = computeGather_.id(), scatterProgram = computeScatter_.id();
+    const GLuint gatherProgram = kernel(LpvKernel::ComputeGather), scatterProgram = kernel(LpvKernel::ComputeScatter);
     const GLuint rasterProgram =
-        settings.variant == LpvVariant::RasterScatter ? rasterScatter_.id() : rasterGather_.id();
+        settings.variant == LpvVariant::RasterScatter ? kernel(LpvKernel::RasterScatter) : kernel(LpvKernel::RasterGather);
     const bool raster = settings.variant == LpvVariant::RasterGather || settings.variant == LpvVariant::RasterScatter;
     if (raster) {
         glDisable(GL_DEPTH_TEST);
@@ -434,7 +509,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
         case LpvVariant::ComputeGather: {
             // The first step reads the injected per-channel volume and writes
             // the interleaved one the later steps read: no separate packing pass.
-            const GLuint program = step == 0 ? computeGatherFirst_.id() : gatherProgram;
+            const GLuint program = step == 0 ? kernel(LpvKernel::ComputeGatherFirst) : gatherProgram;
             glUseProgram(program);
             setCascadeUniforms(program);
             bindStepSources(program, read, settings.occlusion);
@@ -498,32 +573,31 @@ void LpvPass::propagate(const LpvSettings& settings) {
     }
 }
 
-void LpvPass::bindForShading(GLuint program, const scene::ParameterSet& params, GLuint firstUnit) const {
+void LpvPass::bindForShading(const CachedProgram& shader, const scene::ParameterSet& params, const UnitAllocator& nextUnit) const {
+    const GLuint program = shader.id();
     const int count = active_ ? volumes_.cascades() : 0;
-    glProgramUniform1i(program, loc(program, "uLpvCascadeCount"), count);
+    glProgramUniform1i(program, shader.uniform("uLpvCascadeCount"), count);
     static constexpr const char* kSamplers[] = {"uLpvAccumR", "uLpvAccumG", "uLpvAccumB"};
-    for (int c = 0; c < 3; ++c)
-        glProgramUniform1i(program, loc(program, kSamplers[c]), GLint(firstUnit) + c);
-    if (count == 0) {
-        // Samplers must still name a 3D texture unit; nothing reads them.
-        for (int c = 0; c < 3; ++c)
-            glBindTextureUnit(firstUnit + GLuint(c), 0);
-        return;
+    for (int c = 0; c < 3; ++c) {
+        // Samplers must name a 3D texture unit even when nothing reads them (count 0).
+        const GLuint unit = nextUnit();
+        glProgramUniform1i(program, shader.uniform(kSamplers[c]), GLint(unit));
+        glBindTextureUnit(unit, count ? volumes_.accumulator.channel[std::size_t(c)].id() : 0);
     }
+    if (count == 0)
+        return;
     std::array<glm::vec3, 6> origin{};
     std::array<float, 6> cellSize{};
     for (std::size_t k = 0; k < cascades_.size(); ++k) {
         origin[k] = cascades_[k].origin;
         cellSize[k] = cascades_[k].cellSize;
     }
-    glProgramUniform1i(program, loc(program, "uLpvGridSize"), volumes_.gridSize());
-    glProgramUniform3fv(program, loc(program, "uLpvOrigin"), 6, glm::value_ptr(origin[0]));
-    glProgramUniform1fv(program, loc(program, "uLpvCellSize"), 6, cellSize.data());
-    glProgramUniform1f(program, loc(program, "uLpvIntensity"), float(params.getFloat("lpv.intensity")));
-    glProgramUniform1f(program, loc(program, "uLpvBleedingDamping"), float(params.getFloat("lpv.bleedingDamping")));
-    glProgramUniform1i(program, loc(program, "uLpvBlendLevels"), params.getInt("lpv.cascadeBlendLevels"));
-    for (int c = 0; c < 3; ++c)
-        glBindTextureUnit(firstUnit + GLuint(c), volumes_.accumulator.channel[std::size_t(c)].id());
+    glProgramUniform1i(program, shader.uniform("uLpvGridSize"), volumes_.gridSize());
+    glProgramUniform3fv(program, shader.uniform("uLpvOrigin"), 6, glm::value_ptr(origin[0]));
+    glProgramUniform1fv(program, shader.uniform("uLpvCellSize"), 6, cellSize.data());
+    glProgramUniform1f(program, shader.uniform("uLpvIntensity"), float(params.getFloat("lpv.intensity")));
+    glProgramUniform1f(program, shader.uniform("uLpvBleedingDamping"), float(params.getFloat("lpv.bleedingDamping")));
+    glProgramUniform1i(program, shader.uniform("uLpvBlendLevels"), params.getInt("lpv.cascadeBlendLevels"));
 }
 
 std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) const {

@@ -3,12 +3,13 @@
 // lpvref::* in LpvReference.h the CPU twin the tests compare with).
 //
 // One frame: the brightest RSM texel per tile (fixed-point scale), VPL
-// injection ("lpvInject"), geometry volume from the RSM and the previous
-// frame's camera G-buffer ("gvInject"), then lpv.propagationSteps steps per
-// cascade in one of four variants ("lpvPropagate"), summed into accumulators
-// that the forward pass samples (bindForShading).
+// injection ("lpvInjection"), geometry volume from the RSM and the previous
+// frame's camera G-buffer ("geometryVolume"), then lpv.propagationSteps steps
+// per cascade in one of four variants ("lpvPropagation"), summed into
+// accumulators that the forward pass samples (bindForShading).
 #include "FrameContext.h"
 #include "LpvVolumes.h"
+#include "ProgramCache.h"
 #include "RsmCascades.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
@@ -18,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,7 +98,23 @@ class LpvPass {
   public:
     static scene::Expected<LpvPass> create();
 
-    // Injection, geometry volume and propagation for this frame.
+    // The LPV as the frame graph runs it (ForwardRenderer): prepare() fits
+    // the volumes to this frame's settings and cascades before the graph
+    // runs (an error names the parameter that does not fit); each stage is
+    // one graph pass, updating the volumes in place; finish() writes the note.
+    scene::Expected<void> prepare(const LpvSettings& settings, const std::vector<LpvCascade>& cascades);
+    void injectStage(const LpvRsmInput& rsm, const std::vector<LpvLocalInput>& local, bool directed);
+    void skyStage(const LpvSkyInput& sky);
+    void normalsStage(int dilation);
+    void geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera);
+    void propagationStage(const LpvSettings& settings);
+    void bounceStage(const LpvSettings& settings);
+    void finish(const LpvSettings& settings, bool cameraGv, bool sky, const std::vector<LpvLocalInput>& local);
+    // Bumped whenever the volumes are (re)allocated or freed: outputs of older generations are gone.
+    std::uint64_t volumesGeneration() const { return volumes_.generation(); }
+
+    // All stages at once, outside a graph (tests and tools), timed under
+    // the graph's pass names.
     // `sky` (may be null): inject sky light as well. `local`: spot and point
     // lights' and emissive surfaces' VPLs as well; with them, `rsm` may hold
     // cascades but no tiles (position 0, tileSize 0): a scene without a sun.
@@ -112,9 +130,8 @@ class LpvPass {
     // One line: what ran and why (or why not), e.g. for `lpv render`.
     const std::string& note() const { return note_; }
 
-    // Sets lpv_lookup.glsl's uniforms and binds the accumulators to texture
-    // units firstUnit .. firstUnit + 2.
-    void bindForShading(GLuint program, const scene::ParameterSet& params, GLuint firstUnit) const;
+    // Sets lpv_lookup.glsl's uniforms and binds the three accumulators to units from `nextUnit`.
+    void bindForShading(const CachedProgram& program, const scene::ParameterSet& params, const UnitAllocator& nextUnit) const;
 
     // Read-back for tests and dumps: per channel N^3 SH of cascade k.
     std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
@@ -167,13 +184,23 @@ class LpvPass {
     void captureIfRequested(int step, int index);
     void readCapture();
 
-    Program fluxMax_, inject_, resolve_, gvFromRsm_, gvFromCamera_, gvMerge_, faceBlocking_;
-    Program computeGather_, computeScatter_, rasterGather_, rasterScatter_;
-    Program computeGatherFirst_; // the compute gather's first step: per-channel sources (LPV_FIRST_STEP)
-    Program normals_, normalsDilate_, skyInject_;
-    Program bounceInject_, bounceAdd_;
-    Program localFluxMax_, localInject_;
-    Program deinterleave_;
+    // The LPV's kernels, each a shader variant built on first use (ProgramCache).
+    enum class LpvKernel {
+        FluxMax, Inject, Resolve, GvFromRsm, GvFromCamera, GvMerge, FaceBlocking, Normals, NormalsDilate,
+        SkyInject, BounceInject, BounceAdd, LocalFluxMax, LocalInject,
+        ComputeGather, ComputeGatherFirst, // the first step reads per-channel sources (LPV_FIRST_STEP)
+        Deinterleave, ComputeScatter, RasterGather, RasterScatter,
+    };
+    static ProgramVariant variantOf(LpvKernel kernel);
+    scene::Expected<void> buildKernel(LpvKernel kernel);
+    // The kernels `settings` select, built now so a compile error is prepare()'s error value.
+    scene::Expected<void> buildKernelsFor(const LpvSettings& settings);
+    // A kernel's program id; one not built yet compiles here (an error throws std::logic_error).
+    GLuint kernel(LpvKernel kernel);
+    // A uniform's location, looked up once per kernel and name.
+    GLint loc(GLuint program, const char* name) const;
+    ProgramCache programs_;
+    std::map<GLuint, const CachedProgram*> byId_;
     VertexArray emptyVao_;
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;

@@ -10,9 +10,6 @@ namespace {
 GLuint groups(int count, int size) {
     return GLuint((count + size - 1) / size);
 }
-GLint loc(GLuint program, const char* name) {
-    return glGetUniformLocation(program, name);
-}
 constexpr GLbitfield kComputeResults =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 constexpr GLuint kScalesBinding = 1; // lpv_common.glsl's LpvScales
@@ -20,7 +17,7 @@ constexpr GLuint kScalesBinding = 1; // lpv_common.glsl's LpvScales
 } // namespace
 
 void LpvPass::addBounceTotal(bool final) {
-    const GLuint p = bounceAdd_.id();
+    const GLuint p = kernel(LpvKernel::BounceAdd);
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uFinal"), final ? 1 : 0);
@@ -53,7 +50,7 @@ void LpvPass::propagateBounces(const LpvSettings& settings) {
         const GLuint zero = 0;
         glClearNamedBufferSubData(volumes_.scales.id(), GL_R32UI, GLintptr(k * (1 + scaleSlot_)) * 4,
                                   GLsizeiptr(k) * 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        const GLuint p = bounceInject_.id();
+        const GLuint p = kernel(LpvKernel::BounceInject);
         glUseProgram(p);
         setCascadeUniforms(p);
         glProgramUniform1f(p, loc(p, "uAlbedo"), settings.bounceAlbedo);

@@ -9,9 +9,6 @@ namespace {
 GLuint groups(int count, int size) {
     return GLuint((count + size - 1) / size);
 }
-GLint loc(GLuint program, const char* name) {
-    return glGetUniformLocation(program, name);
-}
 
 } // namespace
 
@@ -23,7 +20,7 @@ std::string localNote(const std::vector<LpvLocalInput>& local) {
 }
 
 void LpvPass::localFluxMax(const LpvLocalInput& local) {
-    const GLuint p = localFluxMax_.id();
+    const GLuint p = kernel(LpvKernel::LocalFluxMax);
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindTextureUnit(0, local.position);
@@ -34,7 +31,7 @@ void LpvPass::localFluxMax(const LpvLocalInput& local) {
 }
 
 void LpvPass::injectLocal(const LpvLocalInput& local) {
-    const GLuint p = localInject_.id();
+    const GLuint p = kernel(LpvKernel::LocalInject);
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindTextureUnit(0, local.position);

@@ -87,14 +87,12 @@ void LpvSubsurfacePass::setCascadeUniforms(GLuint program, const LpvPass& lpv) c
     glProgramUniform1fv(program, loc(program, "uCellSize"), 6, cellSize.data());
 }
 
-void LpvSubsurfacePass::run(const LpvSubsurfaceSettings& settings, const LpvPass& lpv, const LpvRsmInput& rsm,
-                            GpuTimer& timer) {
+void LpvSubsurfacePass::run(const LpvSubsurfaceSettings& settings, const LpvPass& lpv, const LpvRsmInput& rsm) {
     const LpvVolumes& volumes = lpv.volumes();
     ensureVolumes(volumes.gridSize(), volumes.cascades());
     steps_ = settings.steps;
     const int n = gridSize_, k = cascades_;
 
-    timer.begin("sssInject");
     // The LPV's sums are all zero again after its resolves; its scale [k] is
     // this frame's brightest texel per tile, which bounds flux * translucency too.
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes.lpvSums.id());
@@ -122,9 +120,7 @@ void LpvSubsurfacePass::run(const LpvSubsurfaceSettings& settings, const LpvPass
     glBindImageTexture(1, accumulator_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
     glMemoryBarrier(kComputeResults);
-    timer.end("sssInject");
 
-    timer.begin("sssPropagate");
     p = gather_.id();
     glUseProgram(p);
     setCascadeUniforms(p, lpv);
@@ -141,19 +137,18 @@ void LpvSubsurfacePass::run(const LpvSubsurfaceSettings& settings, const LpvPass
         glMemoryBarrier(kComputeResults);
         read = write;
     }
-    timer.end("sssPropagate");
 }
 
-void LpvSubsurfacePass::bindForShading(GLuint program, GLuint unit) const {
-    glProgramUniform1i(program, loc(program, "uLpvSubsurface"), 1);
-    glProgramUniform1i(program, loc(program, "uLpvSubsurfaceVolume"), GLint(unit));
+void LpvSubsurfacePass::bindForShading(const CachedProgram& program, GLuint unit) const {
+    glProgramUniform1i(program.id(), program.uniform("uLpvSubsurface"), 1);
+    glProgramUniform1i(program.id(), program.uniform("uLpvSubsurfaceVolume"), GLint(unit));
     glBindTextureUnit(unit, accumulator_.id());
 }
 
-void LpvSubsurfacePass::bindNone(GLuint program, GLuint unit) {
-    glProgramUniform1i(program, loc(program, "uLpvSubsurface"), 0);
+void LpvSubsurfacePass::bindNone(const CachedProgram& program, GLuint unit) {
+    glProgramUniform1i(program.id(), program.uniform("uLpvSubsurface"), 0);
     // The sampler must still name a 3D texture unit of its own; nothing reads it.
-    glProgramUniform1i(program, loc(program, "uLpvSubsurfaceVolume"), GLint(unit));
+    glProgramUniform1i(program.id(), program.uniform("uLpvSubsurfaceVolume"), GLint(unit));
     glBindTextureUnit(unit, 0);
 }
 

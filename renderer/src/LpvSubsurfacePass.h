@@ -12,6 +12,7 @@
 // frame the scene analysis wants it and drops it when not: a skipped pass
 // holds no GPU memory.
 #include "LpvPass.h"
+#include "ProgramCache.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/scene/Error.h"
@@ -36,19 +37,20 @@ class LpvSubsurfacePass {
   public:
     static scene::Expected<LpvSubsurfacePass> create();
 
-    // Injection ("sssInject") and propagation ("sssPropagate") into the packed
-    // volumes, on the cascades `lpv` computed this frame (which must be active).
-    void run(const LpvSubsurfaceSettings& settings, const LpvPass& lpv, const LpvRsmInput& rsm,
-             GpuTimer& timer);
+    // Injection and propagation into the packed volumes, on the cascades
+    // `lpv` computed this frame (which must be active); the frame graph
+    // times both as the pass "subsurface".
+    void run(const LpvSubsurfaceSettings& settings, const LpvPass& lpv, const LpvRsmInput& rsm);
 
     // lpv_subsurface_lookup.glsl's uniforms; the accumulator on texture unit `unit`.
-    void bindForShading(GLuint program, GLuint unit) const;
+    void bindForShading(const CachedProgram& program, GLuint unit) const;
     // No subsurface light this frame: the lookup is off, the sampler names an empty unit.
-    static void bindNone(GLuint program, GLuint unit);
+    static void bindNone(const CachedProgram& program, GLuint unit);
 
     // Read-back for tests: per channel N^3 SH of cascade k.
     std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
     std::size_t allocatedBytes() const;
+    GLuint accumulatorTexture() const { return accumulator_.id(); }
     int steps() const { return steps_; }
 
   private:

@@ -106,6 +106,7 @@ void LpvVolumes::release() {
     for (Texture& t : interleaved)
         t.reset();
     gridSize_ = cascades_ = 0;
+    ++generation_;
 }
 
 scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace lpv::renderer {
 
@@ -30,6 +31,8 @@ class LpvVolumes {
     void release();
 
     int gridSize() const { return gridSize_; }
+    // Bumped by every ensure() that allocates and by release().
+    std::uint64_t generation() const { return generation_; }
     int cascades() const { return cascades_; }
     std::size_t allocatedBytes() const;
 
@@ -59,6 +62,7 @@ class LpvVolumes {
   private:
     int gridSize_ = 0;
     int cascades_ = 0;
+    std::uint64_t generation_ = 0;
 };
 
 } // namespace lpv::renderer

@@ -175,7 +175,6 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
         texelArea[tiles_.size() - 1] = tiles_.back().texelArea;
     }
 
-    frame.timer.begin("rsm");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
@@ -201,7 +200,6 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     // triangle from the tiles it misses.
     const auto items = buildDrawList(geometry.draws(), rsmUnionViewProj(tiles_), frame.camera.position);
     geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
-    frame.timer.end("rsm");
     return {};
 }
 

@@ -49,7 +49,7 @@ class RsmPass {
   public:
     static scene::Expected<RsmPass> create();
 
-    // Renders every tile of this frame (timed as "rsm"). Without a directional
+    // Renders every tile of this frame. Without a directional
     // light it renders nothing and frees its targets.
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
                                  const MaterialGpu& materials);

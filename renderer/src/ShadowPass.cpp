@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <string>
 
@@ -19,6 +20,15 @@ namespace {
 constexpr int kMaxLayersPerPass = 8;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
+
+// "name[i]", built once per name and index rather than every frame.
+const std::string& indexed(const char* name, int i) {
+    static std::map<std::pair<std::string, int>, std::string> names;
+    auto [it, inserted] = names.try_emplace({name, i});
+    if (inserted)
+        it->second = std::string(name) + "[" + std::to_string(i) + "]";
+    return it->second;
+}
 
 void setDepthSampling(GLuint texture, bool compare) {
     glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, compare ? GL_LINEAR : GL_NEAREST);
@@ -174,7 +184,6 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
     if (cascades_.empty() && spotViews_.empty() && pointViews_.empty())
         return {};
 
-    frame.timer.begin("shadowMap");
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -234,53 +243,53 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
     if (!pointViews_.empty())
         if (auto ok = drawLocal(pointMap_, pointViews_, pointPositions_, true); !ok)
             return ok;
-    frame.timer.end("shadowMap");
     return {};
 }
 
-int ShadowPass::bindForShading(GLuint program, const FrameContext& frame, int firstUnit) const {
-    const GLuint p = program;
-    glProgramUniform1f(p, loc(p, "uShadowBias"), frame.params.getFloat("shadow.bias"));
-    glProgramUniformMatrix4fv(p, loc(p, "uShadowCameraView"), 1, GL_FALSE, glm::value_ptr(frame.view));
+void ShadowPass::bindForShading(const CachedProgram& shader, const FrameContext& frame,
+                                const UnitAllocator& nextUnit) const {
+    const GLuint p = shader.id();
+    glProgramUniform1f(p, shader.uniform("uShadowBias"), frame.params.getFloat("shadow.bias"));
+    glProgramUniformMatrix4fv(p, shader.uniform("uShadowCameraView"), 1, GL_FALSE, glm::value_ptr(frame.view));
 
     // The sun: shadow.softness is its angular diameter in degrees.
-    glProgramUniform1i(p, loc(p, "uSunShadowLight"), cascades_.empty() ? -1 : lights_.sun);
-    glProgramUniform1i(p, loc(p, "uCascadeCount"), int(cascades_.size()));
+    glProgramUniform1i(p, shader.uniform("uSunShadowLight"), cascades_.empty() ? -1 : lights_.sun);
+    glProgramUniform1i(p, shader.uniform("uCascadeCount"), int(cascades_.size()));
     for (std::size_t k = 0; k < cascades_.size(); ++k) {
-        const std::string idx = "[" + std::to_string(k) + "]";
+        const int idx = int(k);
         const ShadowCascade& c = cascades_[k];
-        glProgramUniformMatrix4fv(p, loc(p, "uCascadeViewProj" + idx), 1, GL_FALSE, glm::value_ptr(c.viewProj));
-        glProgramUniform1f(p, loc(p, "uCascadeSplitFar" + idx), c.splitFar);
-        glProgramUniform1f(p, loc(p, "uCascadeTexel" + idx), c.texelWorld);
-        glProgramUniform1f(p, loc(p, "uCascadeDepthRange" + idx), c.depthRange);
+        glProgramUniformMatrix4fv(p, shader.uniform(indexed("uCascadeViewProj", idx)), 1, GL_FALSE, glm::value_ptr(c.viewProj));
+        glProgramUniform1f(p, shader.uniform(indexed("uCascadeSplitFar", idx)), c.splitFar);
+        glProgramUniform1f(p, shader.uniform(indexed("uCascadeTexel", idx)), c.texelWorld);
+        glProgramUniform1f(p, shader.uniform(indexed("uCascadeDepthRange", idx)), c.depthRange);
     }
     const float softness = frame.params.getFloat("shadow.softness");
-    glProgramUniform1f(p, loc(p, "uSunTanHalfAngle"), std::tan(glm::radians(0.5f * softness)));
+    glProgramUniform1f(p, shader.uniform("uSunTanHalfAngle"), std::tan(glm::radians(0.5f * softness)));
 
     // Point and spot lights: shadow.softness is their diameter in scene units.
-    glProgramUniform1f(p, loc(p, "uLocalLightRadius"), localLightRadius_);
+    glProgramUniform1f(p, shader.uniform("uLocalLightRadius"), localLightRadius_);
     for (int i = 0; i < kMaxShadedLights; ++i) {
-        const std::string idx = "[" + std::to_string(i) + "]";
+        const int idx = int(i);
         const auto spot = std::find(lights_.spots.begin(), lights_.spots.end(), i);
         const auto point = std::find(lights_.points.begin(), lights_.points.end(), i);
-        glProgramUniform1i(p, loc(p, "uSpotShadowLayer" + idx),
+        glProgramUniform1i(p, shader.uniform(indexed("uSpotShadowLayer", idx)),
                            spot == lights_.spots.end() ? -1 : int(spot - lights_.spots.begin()));
-        glProgramUniform1i(p, loc(p, "uPointShadowLayer" + idx),
+        glProgramUniform1i(p, shader.uniform(indexed("uPointShadowLayer", idx)),
                            point == lights_.points.end() ? -1 : int(point - lights_.points.begin()));
     }
     for (std::size_t i = 0; i < spotViews_.size(); ++i) {
-        const std::string idx = "[" + std::to_string(i) + "]";
-        glProgramUniformMatrix4fv(p, loc(p, "uSpotViewProj" + idx), 1, GL_FALSE,
+        const int idx = int(i);
+        glProgramUniformMatrix4fv(p, shader.uniform(indexed("uSpotViewProj", idx)), 1, GL_FALSE,
                                   glm::value_ptr(spotViews_[i].viewProj[0]));
-        glProgramUniform1f(p, loc(p, "uSpotTanHalfFov" + idx), spotViews_[i].tanHalfFov);
-        glProgramUniform3fv(p, loc(p, "uSpotPosition" + idx), 1, glm::value_ptr(spotPositions_[i]));
-        glProgramUniform1f(p, loc(p, "uSpotFar" + idx), spotViews_[i].farPlane);
+        glProgramUniform1f(p, shader.uniform(indexed("uSpotTanHalfFov", idx)), spotViews_[i].tanHalfFov);
+        glProgramUniform3fv(p, shader.uniform(indexed("uSpotPosition", idx)), 1, glm::value_ptr(spotPositions_[i]));
+        glProgramUniform1f(p, shader.uniform(indexed("uSpotFar", idx)), spotViews_[i].farPlane);
     }
     for (std::size_t i = 0; i < pointViews_.size(); ++i) {
-        const std::string idx = "[" + std::to_string(i) + "]";
-        glProgramUniform3fv(p, loc(p, "uPointPosition" + idx), 1, glm::value_ptr(pointPositions_[i]));
-        glProgramUniform1f(p, loc(p, "uPointFar" + idx), pointViews_[i].farPlane);
-        glProgramUniform1f(p, loc(p, "uPointRadius" + idx), pointRadii_[i]);
+        const int idx = int(i);
+        glProgramUniform3fv(p, shader.uniform(indexed("uPointPosition", idx)), 1, glm::value_ptr(pointPositions_[i]));
+        glProgramUniform1f(p, shader.uniform(indexed("uPointFar", idx)), pointViews_[i].farPlane);
+        glProgramUniform1f(p, shader.uniform(indexed("uPointRadius", idx)), pointRadii_[i]);
     }
 
     // Every sampler gets its own unit even when its map does not exist:
@@ -295,13 +304,11 @@ int ShadowPass::bindForShading(GLuint program, const FrameContext& frame, int fi
                                 {"uSpotDepth", spotMap_.texture.id()},
                                 {"uPointCompare", pointMap_.compareView.id()},
                                 {"uPointDepth", pointMap_.texture.id()}};
-    int unit = firstUnit;
     for (const Binding& b : bindings) {
-        glProgramUniform1i(p, loc(p, b.name), unit);
-        glBindTextureUnit(GLuint(unit), b.texture);
-        ++unit;
+        const GLuint unit = nextUnit();
+        glProgramUniform1i(p, shader.uniform(b.name), GLint(unit));
+        glBindTextureUnit(unit, b.texture);
     }
-    return unit;
 }
 
 std::vector<DebugImage> ShadowPass::debugImages() const {

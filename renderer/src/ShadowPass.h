@@ -10,6 +10,7 @@
 // local lights are shadowed; nothing is allocated for lights the scene lacks.
 #include "FrameContext.h"
 #include "MaterialGpu.h"
+#include "ProgramCache.h"
 #include "ShadowCascades.h"
 #include "ShadowLights.h"
 #include "lpv/renderer/ForwardRenderer.h"
@@ -25,17 +26,24 @@ class ShadowPass {
 public:
     static scene::Expected<ShadowPass> create();
 
-    // Renders the shadow maps of this frame (timed as "shadowMap").
+    // Renders the shadow maps of this frame.
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials);
 
     // Sets the uniforms of shadow_sampling.glsl in `program` and binds its
-    // textures to units firstUnit.. firstUnit + 5; returns the next free unit.
-    int bindForShading(GLuint program, const FrameContext& frame, int firstUnit) const;
+    // six textures to units from `nextUnit`.
+    void bindForShading(const CachedProgram& program, const FrameContext& frame, const UnitAllocator& nextUnit) const;
 
     // One image per cascade ("shadow-cascade-K", depth 0..1), per spot light
     // ("shadow-spot-K", distance / far) and per point-light cube face
     // ("shadow-point-K-FACE", distance / far) of the last frame.
     std::vector<DebugImage> debugImages() const;
+
+    // The frame graph's view of the maps: the sun's cascades, else the spot
+    // lights', else the point lights' (0 when nothing casts a shadow).
+    GLuint primaryMap() const {
+        return cascadeMap_.texture ? cascadeMap_.texture.id()
+                                   : spotMap_.texture ? spotMap_.texture.id() : pointMap_.texture.id();
+    }
 
     // The sun's cascades of the last frame (empty without a shadowed sun).
     const std::vector<ShadowCascade>& cascades() const { return cascades_; }

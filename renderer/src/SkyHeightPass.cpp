@@ -70,7 +70,6 @@ scene::Expected<LpvSkyInput> SkyHeightPass::render(const FrameContext& frame, co
     m[3][2] = 2.0f * out.top / h - 1.0f;
     m[3][3] = 1.0f;
 
-    frame.timer.begin("skyHeight");
     const GLuint p = program_.id();
     glUseProgram(p);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -87,7 +86,6 @@ scene::Expected<LpvSkyInput> SkyHeightPass::render(const FrameContext& frame, co
     const auto items = buildDrawList(geometry.draws(), m, glm::vec3(0.0f));
     geometry.draw(p, items, [&](std::uint32_t material) { materials.bind(p, material, MaterialBindMode::Coverage); });
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    frame.timer.end("skyHeight");
     return out;
 }
 

@@ -18,7 +18,7 @@ class SkyHeightPass {
   public:
     static scene::Expected<SkyHeightPass> create();
 
-    // Renders the depth map ("skyHeight" timer) at `resolution`^2 texels over
+    // Renders the depth map at `resolution`^2 texels over
     // `coarsest`'s x-z extent, from above the scene down to below it. The
     // result's radiance is left zero for the caller.
     scene::Expected<LpvSkyInput> render(const FrameContext& frame, const SceneGpu& geometry,

@@ -37,20 +37,19 @@ Expected<SunRaysPass> SunRaysPass::create() {
     return pass;
 }
 
-void SunRaysPass::ensureTargets(int width, int height, GLuint hdrColor) {
-    if (width != width_ || height != height_) {
-        width_ = width;
-        height_ = height;
-        occlusion_ = createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(occlusion_.id(), 1, GL_R16F, std::max(width / 2, 1), std::max(height / 2, 1));
-        glTextureParameteri(occlusion_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(occlusion_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        // Samples that run off the screen read the edge (sky or geometry), not wrap around.
-        glTextureParameteri(occlusion_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(occlusion_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+graph::ResourceDesc SunRaysPass::occlusionTarget(int width, int height) {
+    graph::ResourceDesc d{graph::ResourceKind::Texture2D, GL_R16F, std::max(width / 2, 1), std::max(height / 2, 1)};
+    // Samples between texels blend, and rays that run off the screen read the edge (sky or geometry).
+    d.linearFilter = true;
+    return d;
+}
+
+void SunRaysPass::ensureTargets(GLuint occlusion, GLuint hdrColor) {
+    // Framebuffers around the graph's targets, rebuilt when the graph hands out others.
+    if (attachedOcclusion_ != occlusion) {
         occlusionFbo_ = createFramebuffer();
-        glNamedFramebufferTexture(occlusionFbo_.id(), GL_COLOR_ATTACHMENT0, occlusion_.id(), 0);
-        attachedHdr_ = 0;
+        glNamedFramebufferTexture(occlusionFbo_.id(), GL_COLOR_ATTACHMENT0, occlusion, 0);
+        attachedOcclusion_ = occlusion;
     }
     if (attachedHdr_ != hdrColor) {
         hdrFbo_ = createFramebuffer();
@@ -59,9 +58,9 @@ void SunRaysPass::ensureTargets(int width, int height, GLuint hdrColor) {
     }
 }
 
-void SunRaysPass::render(const FrameContext& frame, GLuint depth, GLuint hdrColor, const scene::Light& sun) {
-    frame.timer.begin("sunRays");
-    ensureTargets(frame.width, frame.height, hdrColor);
+void SunRaysPass::render(const FrameContext& frame, GLuint depth, GLuint hdrColor, GLuint occlusion,
+                         const scene::Light& sun) {
+    ensureTargets(occlusion, hdrColor);
     const glm::vec3 towardSun = -glm::normalize(sun.direction);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -99,10 +98,9 @@ void SunRaysPass::render(const FrameContext& frame, GLuint depth, GLuint hdrColo
     const glm::vec3 color = sun.color * sun.intensity * kRayStrength;
     glProgramUniform3fv(rp, loc(rp, "uRayColor"), 1, glm::value_ptr(color));
     glProgramUniform1i(rp, loc(rp, "uOcclusion"), 0);
-    glBindTextureUnit(0, occlusion_.id());
+    glBindTextureUnit(0, occlusion);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_BLEND);
-    frame.timer.end("sunRays");
 }
 
 } // namespace lpv::renderer

@@ -5,6 +5,7 @@
 // tonemapping. Runs only when decideSunRays says so (the sun on screen, or
 // forced by effects.sunRays); otherwise it allocates nothing.
 #include "FrameContext.h"
+#include "graph/ResourceDesc.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/SceneAnalysis.h"
 
@@ -16,19 +17,20 @@ class SunRaysPass {
 public:
     static Expected<SunRaysPass> create();
 
-    // Adds the rays to `hdrColor` (same size as the frame) from the camera's `depth`.
-    void render(const FrameContext& frame, GLuint depth, GLuint hdrColor, const scene::Light& sun);
+    // Adds the rays to `hdrColor` (same size as the frame) from the camera's
+    // `depth`, through `occlusion` (occlusionTarget(): a transient target of the frame graph).
+    void render(const FrameContext& frame, GLuint depth, GLuint hdrColor, GLuint occlusion, const scene::Light& sun);
+    // The half-resolution occlusion image of a width x height frame (R16F, linear, clamped).
+    static graph::ResourceDesc occlusionTarget(int width, int height);
 
 private:
     SunRaysPass() = default;
-    void ensureTargets(int width, int height, GLuint hdrColor);
+    void ensureTargets(GLuint occlusion, GLuint hdrColor);
 
     Program occlusionProgram_, raysProgram_;
     VertexArray emptyVao_;
-    Texture occlusion_;
     Framebuffer occlusionFbo_, hdrFbo_;
-    int width_ = 0, height_ = 0;
-    GLuint attachedHdr_ = 0;
+    GLuint attachedOcclusion_ = 0, attachedHdr_ = 0;
 };
 
 } // namespace lpv::renderer

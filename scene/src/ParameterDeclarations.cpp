@@ -32,8 +32,10 @@ ParameterInfo choice(std::string key, std::string def, std::vector<std::string> 
 // auto = the scene analysis decides; on/off force the pass.
 const std::vector<std::string> kAutoOnOff{"auto", "on", "off"};
 
-// What a change to the LPV volume layout throws away: everything from injection on.
-constexpr Pass kLpvAll = P::LpvInjection | P::GeometryVolume | P::LpvPropagation | P::Shading;
+// What a change to the LPV volume layout throws away: everything from injection on
+// (the sky's height map and the emissive VPLs are sized by the cells too).
+constexpr Pass kLpvAll = P::EmissiveVpls | P::SkyHeight | P::LpvInjection | P::SkyInjection | P::LpvNormals |
+                         P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Subsurface | P::Shading;
 
 } // namespace
 
@@ -43,35 +45,36 @@ std::vector<ParameterInfo> declareParameters() {
         choice("gi.method", "lpv", {"off", "lpv"}, "GI",
                "How indirect light is made: off = direct light only (no RSM, LPV, sky, subsurface or glossy "
                "pass runs or holds GPU memory); lpv = cascaded light propagation volumes",
-               P::Rsm | kLpvAll | P::SkyInjection | P::Subsurface | P::GlossyReflections),
+               P::Rsm | P::LocalRsm | kLpvAll | P::GlossyReflections),
         // --- LPV ---
         choice("lpv.variant", "computeGather", {"computeGather", "computeScatter", "rasterGather", "rasterScatter"},
                "LPV", "Propagation implementation; all give the same image within tolerance, they differ in time",
-               P::LpvPropagation | P::Shading),
+               P::LpvPropagation | P::LpvBounces | P::Shading),
         integer("lpv.gridSize", 32, 8, 128, "cells", "LPV", "Cells along each axis of every LPV cascade", kLpvAll),
         integer("lpv.cascades", 4, 1, 6, "", "LPV", "Number of nested LPV volumes, each cell twice the previous",
                 kLpvAll | P::Rsm),
         real("lpv.cellSize", 0.25, 0.001, 100.0, "m", "LPV", "Cell size of the finest cascade", kLpvAll | P::Rsm),
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
-                "Propagation iterations per cascade; light travels one cell per step", P::LpvPropagation | P::Shading),
+                "Propagation iterations per cascade; light travels one cell per step",
+               P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.injectionOffset", 1.0, 0.0, 4.0, "cells", "LPV",
              "VPLs are moved this far along their normal before injection to avoid self-illumination",
-             P::LpvInjection | P::LpvPropagation | P::Shading),
+               P::LpvInjection | P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.intensity", 1.0, 0.0, 100.0, "", "LPV", "Scale of the indirect light read from the LPV", P::Shading),
         boolean("lpv.occlusion", true, "LPV", "Geometry-volume occlusion during propagation",
-                P::GeometryVolume | P::LpvPropagation | P::Shading),
+               P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.gvFromCamera", true, "LPV", "Also inject blocking potential from the camera G-buffer",
-                P::GeometryVolume | P::LpvPropagation | P::Shading),
+               P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.bleedingDamping", 1.0, 0.0, 4.0, "", "LPV",
              "Strength of light-bleeding damping from the SH directional derivative along the normal", P::Shading),
         integer("lpv.cascadeBlendLevels", 2, 1, 6, "cascades", "LPV",
                 "Cascades blended at a lookup (2 = the two nearest; more adds coarser ones)", P::Shading),
         choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",
                "Directed propagation: a normals volume keeps light from flowing back onto its emitter",
-               P::LpvInjection | P::LpvPropagation | P::Shading),
+               P::LpvInjection | P::LpvNormals | P::LpvPropagation | P::LpvBounces | P::Shading),
         integer("lpv.directedDilation", 1, 0, 8, "cells", "LPV",
                 "How far the VPL normals of directed propagation spread from the cells they were injected into",
-                P::LpvPropagation | P::Shading),
+               P::LpvNormals | P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.reuse", true, "LPV",
                 "Keep last frame's LPV when nothing it is computed from changed (scene, lights, sky, LPV "
                 "parameters, cascade positions, the camera when the geometry volume reads its G-buffer); "
@@ -82,26 +85,26 @@ std::vector<ParameterInfo> declareParameters() {
         integer("lpv.bounces", 1, 1, 4, "bounces", "LPV",
                 "Light bounces in the LPV: 1 = the VPLs' light only; each further bounce re-injects the last "
                 "one's light where the geometry volume has surfaces and propagates it again",
-                P::LpvPropagation | P::Shading),
+               P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.bounceAlbedo", 0.5, 0.0, 1.0, "", "LPV",
              "Albedo assumed for the geometry volume's surfaces when light bounces again (lpv.bounces > 1)",
-             P::LpvPropagation | P::Shading),
+               P::LpvBounces | P::Shading),
         choice("lpv.localLights", "auto", kAutoOnOff, "LPV",
                "Inject spot and point lights through reflective shadow maps of their own (auto: whenever such a "
                "light lights something, i.e. has a positive intensity)",
-               P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
+               P::LocalRsm | P::LpvInjection | P::LpvPropagation | P::Shading),
         integer("lpv.localRsmSize", 128, 16, 1024, "px", "LPV",
                 "Width and height of each spot light's RSM and of each face of a point light's cube RSM",
-                P::Rsm | P::LpvInjection | P::LpvPropagation | P::Shading),
+               P::LocalRsm | P::LpvInjection | P::LpvPropagation | P::Shading),
         choice("lpv.emissive", "auto", kAutoOnOff, "LPV",
                "Inject emissive surfaces as VPLs sampled on their triangles (auto: when a visible material emits); "
                "an area light's visible surface (an emissive quad in its outline, like the Cornell box lamp) is "
                "left out: it is injected as that light, once",
-               P::LpvInjection | P::LpvPropagation | P::Shading),
+               P::EmissiveVpls | P::LpvInjection | P::LpvPropagation | P::Shading),
         // --- Effects (thesis extensions) ---
         choice("effects.skyInjection", "auto", kAutoOnOff, "Effects",
                "Inject sky light from above the highest occluder of each column (auto: only for open scenes)",
-               P::SkyInjection | P::LpvPropagation | P::Shading),
+               P::SkyHeight | P::SkyInjection | P::LpvPropagation | P::Shading),
         choice("effects.subsurface", "auto", kAutoOnOff, "Effects",
                "Subsurface-scattering LPV for translucent materials (auto: only if the scene has one)",
                P::Subsurface | P::Shading),
@@ -142,7 +145,8 @@ std::vector<ParameterInfo> declareParameters() {
                 P::ShadowMaps | P::Shading),
         real("shadow.softness", 1.0, 0.0, 8.0, "", "Shadows",
              "Light size for soft shadows: the sun's angular diameter in degrees, the diameter of spot and point "
-             "lights in scene units (area lights soften by their own size); the penumbra grows with blocker distance (0 = hard)", P::Shading),
+             "lights in scene units (area lights soften by their own size); the penumbra grows with blocker distance (0 = hard)",
+               P::ShadowMaps | P::Shading),
         real("shadow.bias", 1.0, 0.0, 10.0, "texels", "Shadows",
              "Receiver offset along the normal, in shadow-map texels, against shadow acne", P::Shading),
         boolean("shadow.stabilize", true, "Shadows",
@@ -153,7 +157,7 @@ std::vector<ParameterInfo> declareParameters() {
                "auto: expose the frame's log-average luminance of its lit pixels to output.exposureKey, adapting "
                "over output.exposureAdaptation in the editor and videos (metered on the GPU, no read-back); "
                "manual: 2^output.exposure alone. Only the display image is exposed: metrics and EXR stay linear",
-               P::Tonemap),
+               P::Exposure | P::Tonemap),
         real("output.exposure", 0.0, -16.0, 16.0, "EV", "Output",
              "Exposure before tonemapping: the whole exposure (2^EV) when manual, a compensation on the "
              "metered exposure when auto",
@@ -161,9 +165,10 @@ std::vector<ParameterInfo> declareParameters() {
         real("output.exposureKey", 0.18, 0.001, 10.0, "", "Output",
              "Auto exposure: the display luminance the log-average luminance maps to (Reinhard et al.'s key value; "
              "0.18 = middle grey)",
-             P::Tonemap),
+               P::Exposure | P::Tonemap),
         real("output.exposureAdaptation", 0.5, 0.0, 60.0, "s", "Output",
-             "Auto exposure: time constant of the adaptation in the editor and videos (0 = at once)", P::Tonemap),
+             "Auto exposure: time constant of the adaptation in the editor and videos (0 = at once)",
+               P::Exposure | P::Tonemap),
         choice("output.tonemapper", "aces", {"aces", "reinhard", "uncharted2", "linear"}, "Output",
                "Operator that maps HDR radiance to display values", P::Tonemap),
         choice("output.view", "final", {"final", "indirect", "direct"}, "Output",
@@ -173,7 +178,7 @@ std::vector<ParameterInfo> declareParameters() {
         integer("output.anisotropy", 8, 1, 16, "samples", "Output",
                 "Anisotropic texture filtering (1 = trilinear only); nearly free on GPUs, about 3x the "
                 "forward pass of textured scenes on llvmpipe",
-                P::Rsm | P::Shading),
+               P::ShadowMaps | P::Rsm | P::LocalRsm | P::SkyHeight | P::Shading),
         // --- Radiosity ---
         real("radiosity.maxPatchArea", 0.05, 0.0001, 100.0, "m^2", "Radiosity",
              "Surfaces are subdivided until every patch is at most this large", P::Radiosity),

@@ -20,21 +20,59 @@ const char* toString(ParameterType t) {
     return "?";
 }
 
-std::vector<std::string> passNames(Pass passes) {
-    static const std::pair<Pass, const char*> kNames[] = {
-        {Pass::ShadowMaps, "shadowMaps"},    {Pass::Rsm, "rsm"},
-        {Pass::LpvInjection, "lpvInjection"}, {Pass::GeometryVolume, "geometryVolume"},
-        {Pass::LpvPropagation, "lpvPropagation"}, {Pass::Shading, "shading"},
-        {Pass::SkyInjection, "skyInjection"}, {Pass::Subsurface, "subsurface"},
-        {Pass::GlossyReflections, "glossyReflections"}, {Pass::SunRays, "sunRays"},
-        {Pass::Tonemap, "tonemap"},           {Pass::Radiosity, "radiosity"},
+namespace {
+
+// Frame order; the names are the passes' one name everywhere.
+const std::vector<std::pair<Pass, const char*>>& passTable() {
+    static const std::vector<std::pair<Pass, const char*>> kNames = {
+        {Pass::ShadowMaps, "shadowMaps"},
+        {Pass::Rsm, "rsm"},
+        {Pass::LocalRsm, "localRsm"},
+        {Pass::EmissiveVpls, "emissiveVpls"},
+        {Pass::SkyHeight, "skyHeight"},
+        {Pass::LpvInjection, "lpvInjection"},
+        {Pass::SkyInjection, "skyInjection"},
+        {Pass::LpvNormals, "lpvNormals"},
+        {Pass::GeometryVolume, "geometryVolume"},
+        {Pass::LpvPropagation, "lpvPropagation"},
+        {Pass::LpvBounces, "lpvBounces"},
+        {Pass::Subsurface, "subsurface"},
+        {Pass::Shading, "shading"},
+        {Pass::GlossyReflections, "glossyReflections"},
+        {Pass::SunRays, "sunRays"},
+        {Pass::Exposure, "exposure"},
+        {Pass::Tonemap, "tonemap"},
+        {Pass::Radiosity, "radiosity"},
         {Pass::Reference, "reference"},
     };
+    return kNames;
+}
+
+} // namespace
+
+std::vector<std::string> passNames(Pass passes) {
     std::vector<std::string> out;
-    for (const auto& [pass, name] : kNames)
+    for (const auto& [pass, name] : passTable())
         if (any(passes, pass))
             out.emplace_back(name);
     return out;
+}
+
+std::string passName(Pass pass) {
+    for (const auto& [p, name] : passTable())
+        if (p == pass)
+            return name;
+    return {};
+}
+
+const std::vector<Pass>& allPasses() {
+    static const std::vector<Pass> kAll = [] {
+        std::vector<Pass> all;
+        for (const auto& [pass, name] : passTable())
+            all.push_back(pass);
+        return all;
+    }();
+    return kAll;
 }
 
 std::string formatValue(const ParameterValue& v) {

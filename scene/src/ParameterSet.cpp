@@ -1,14 +1,20 @@
 #include "lpv/scene/ParameterRegistry.h"
 
 #include <algorithm>
-#include <cassert>
+#include <stdexcept>
 
 namespace lpv::scene {
 namespace {
 
+// A key the code reads but the registry lacks is a bug in the program, not
+// bad input: it fails loudly in every build type (an assert would vanish
+// under NDEBUG and leave a null dereference). The renderer turns it into an
+// error value for its frame; ParameterRegistryCode's test finds it first.
 const ParameterInfo& infoOf(std::string_view key) {
     const ParameterInfo* info = ParameterRegistry::instance().find(key);
-    assert(info && "parameter read from code must be declared in ParameterDeclarations.cpp");
+    if (!info)
+        throw std::logic_error("parameter '" + std::string(key) +
+                               "' is read by the code but not declared in ParameterDeclarations.cpp");
     return *info;
 }
 

@@ -57,7 +57,7 @@ TEST(BenchLpv, WritesTheThesisTablesForEveryVariant) {
     std::size_t propagationRows = 0;
     std::istringstream lines(rows);
     for (std::string line; std::getline(lines, line);)
-        propagationRows += line.rfind("steps,", 0) == 0 && line.find(",lpvPropagate,") != std::string::npos;
+        propagationRows += line.rfind("steps,", 0) == 0 && line.find(",lpvPropagation,") != std::string::npos;
     EXPECT_EQ(propagationRows, 16u) << rows; // 4 variants x 2 step counts x occlusion off/on
     fs::remove_all(dir);
 }

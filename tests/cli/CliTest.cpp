@@ -68,7 +68,7 @@ TEST(Cli, RenderWritesACornellImageAndPrintsPassTimes) {
     const RunResult r = runLpv("render " + cornellProject() + " -o " + png.string() +
                                " --width 96 --height 96 --frames 3 --set lpv.propagationSteps=4");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* pass : {"shadowMap", "forward", "tonemap"})
+    for (const char* pass : {"shadowMaps", "shading", "tonemap"})
         EXPECT_NE(r.output.find(pass), std::string::npos) << pass;
     auto image = lpv::importers::readImage8(png);
     ASSERT_TRUE(image.has_value()) << image.error().describe();

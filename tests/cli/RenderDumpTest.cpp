@@ -28,7 +28,7 @@ fs::path tempDir(const std::string& name) {
 TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
     const fs::path dir = tempDir("shadow");
     const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
-                               " --width 64 --height 64 --frames 2 --set shadow.mapSize=256 --dump shadow");
+                               " --width 64 --height 64 --frames 2 --set shadow.mapSize=256 --dump shadowMaps");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::size_t pngs = 0, exrs = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
@@ -82,7 +82,7 @@ TEST(BenchRender, PrintsMedianPassTimesAfterWarmUp) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("3 frames after 1 warm-up"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("median"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("forward"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("shading"), std::string::npos) << r.output;
     EXPECT_EQ(runLpv("bench render").exitCode, 2);
     EXPECT_EQ(runLpv("bench render " + cornellProject() + " --frames 0").exitCode, 2);
 }
@@ -168,7 +168,7 @@ TEST(BenchRender, SweepsWriteCsvAndMarkdownTables) {
         rows256 += line.starts_with("256,") ? 1 : 0;
         rows512 += line.starts_with("512,") ? 1 : 0;
     }
-    EXPECT_GE(rows256, 3u) << "shadowMap, forward, tonemap";
+    EXPECT_GE(rows256, 3u) << "shadowMaps, shading, tonemap";
     EXPECT_EQ(rows256, rows512);
     std::ifstream md(dir / "t.md");
     const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());

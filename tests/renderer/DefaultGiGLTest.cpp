@@ -36,7 +36,7 @@ protected:
             auto ok = r->render(project.scene, params, camera(), kSize, kSize);
             EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
         }
-        return {r->readHdr(), r->lpvNote(), r->debugImages("localrsm").size()};
+        return {r->readHdr(), r->lpvNote(), r->debugImages("localRsm").size()};
     }
     const scene::Camera& camera() const { return project.scene.cameras.front(); }
 

@@ -135,7 +135,7 @@ TEST_F(LpvLocalLightGLTest, LocalRsmExistsOnlyWithSpotOrPointLights) {
     ASSERT_NE(d, nullptr);
     EXPECT_FALSE(d->runs());
     EXPECT_EQ(d->reason, "no spot, point or area light with a positive intensity");
-    EXPECT_TRUE(r->debugImages("localrsm").empty());
+    EXPECT_TRUE(r->debugImages("localRsm").empty());
     EXPECT_FALSE(timed(*r, "localRsm"));
     EXPECT_EQ(r->lpvNote().find("local-light"), std::string::npos) << r->lpvNote();
 
@@ -147,7 +147,7 @@ TEST_F(LpvLocalLightGLTest, LocalRsmExistsOnlyWithSpotOrPointLights) {
     d = decision(*r, "lpv.localLights");
     ASSERT_NE(d, nullptr);
     EXPECT_TRUE(d->runs()) << d->reason;
-    EXPECT_EQ(r->debugImages("localrsm").size(), 18u); // position, normal, flux of 6 faces
+    EXPECT_EQ(r->debugImages("localRsm").size(), 18u); // position, normal, flux of 6 faces
     EXPECT_TRUE(timed(*r, "localRsm"));
     EXPECT_NE(r->lpvNote().find("6 local-light RSM faces injected"), std::string::npos) << r->lpvNote();
 
@@ -157,6 +157,6 @@ TEST_F(LpvLocalLightGLTest, LocalRsmExistsOnlyWithSpotOrPointLights) {
     // The box's lamp quad is an emitter of its own here (no area light covers it): off too.
     ASSERT_TRUE(off.setFromText("lpv.emissive", "off", "test").has_value());
     render(*r, point, off);
-    EXPECT_TRUE(r->debugImages("localrsm").empty());
+    EXPECT_TRUE(r->debugImages("localRsm").empty());
     EXPECT_NE(r->lpvNote().find("off"), std::string::npos) << r->lpvNote();
 }

@@ -190,7 +190,7 @@ TimedFrame timedFrame(renderer::ForwardRenderer& r, const scene::Project& projec
     r.timer().resolveAll();
     TimedFrame f{r.readHdr(), r.lpvNote(), false};
     for (const auto& row : r.timer().table())
-        f.lpvTimed |= row.samples > 0 && (row.pass == "lpvInject" || row.pass == "lpvPropagate");
+        f.lpvTimed |= row.samples > 0 && (row.pass == "lpvInjection" || row.pass == "lpvPropagation");
     return f;
 }
 

@@ -126,7 +126,7 @@ protected:
         r->setScene(s, textures);
         auto ok = r->render(s, params, cam, kSize, kSize);
         EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
-        lastShadowImages = r->debugImages("shadow");
+        lastShadowImages = r->debugImages("shadowMaps");
         return Frame{r->readHdr(), r->readDepth()};
     }
     // Mean red radiance in a 3x3 window around a world point.

@@ -1,9 +1,11 @@
 #pragma once
-// One frame: shadow maps, then a forward pass that shades direct light into
-// HDR and writes the camera G-buffer (depth, normal, albedo) at the same time,
-// then exposure and tonemapping to sRGB. Each pass lives in its own file
-// (ShadowPass, ...); this class owns the targets and the order.
+// One frame as a graph of passes (docs/renderer.md): shadow maps, the
+// indirect light (RSMs, LPV stages), a forward pass that shades into HDR and
+// writes the camera G-buffer (depth, normal, albedo) at the same time, then
+// sun rays, exposure and tonemapping to sRGB. Each pass lives in its own
+// file (ShadowPass, ...); the graph orders them, culls and reuses them.
 #include "lpv/renderer/DrawList.h"
+#include "lpv/renderer/FrameGraphReport.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/LpvSnapshot.h"
 #include "lpv/renderer/SceneAnalysis.h"
@@ -72,11 +74,17 @@ public:
     std::vector<float> readGBufferNormal() const;
     std::vector<float> readGBufferAlbedo() const;
     std::vector<float> readDepth() const;
-    // Internals of the last frame: "shadow" (every shadow map / cascade),
-    // "rsm" (position, normal and flux of every RSM tile) or "lpv" (per
-    // cascade the accumulated DC per channel and the geometry volume, slices
-    // side by side). Unknown: empty.
+    // Internals of the last frame by the frame graph's names: an output
+    // ("rsm.flux", "camera.depth", "lpv.accumulator": per cascade the
+    // accumulated DC per channel, slices side by side; "shadowMaps": every
+    // map and cascade) or a pass ("rsm": all it wrote). Unknown, or not
+    // produced this frame: empty.
     std::vector<DebugImage> debugImages(const std::string& what) const;
+    // Every name debugImages() knows in the last frame: outputs, then passes.
+    std::vector<std::string> dumpNames() const;
+    // The last frame's graph: passes in execution order, what each read and
+    // wrote, whether it ran, was reused or was culled, and why.
+    const FrameGraphReport& graphReport() const;
     // The visualizers' LPV read-back (LpvSnapshot.h): while a request is set,
     // each render() copies that cascade's volumes at that propagation step;
     // nullopt (the default) reads nothing.

@@ -16,7 +16,9 @@ namespace lpv::scene {
 enum class ParameterType { Bool, Int, Float, Enum };
 const char* toString(ParameterType t);
 
-// Render passes a parameter change invalidates (bit flags).
+// The passes of a frame (bit flags). One name per pass (passName): the
+// frame graph's node, its GPU timer row, `lpv render --dump` and `--graph`,
+// and the passes a parameter change invalidates.
 enum class Pass : std::uint32_t {
     None = 0,
     ShadowMaps = 1u << 0,
@@ -32,10 +34,20 @@ enum class Pass : std::uint32_t {
     Tonemap = 1u << 10,
     Radiosity = 1u << 11,
     Reference = 1u << 12,
+    LocalRsm = 1u << 13,     // spot and point lights' RSM faces
+    EmissiveVpls = 1u << 14, // emissive surfaces sampled into VPLs
+    SkyHeight = 1u << 15,    // the sky injection's top-down depth map
+    LpvNormals = 1u << 16,   // directed propagation's normals volume
+    LpvBounces = 1u << 17,   // bounces 2.. lpv.bounces
+    Exposure = 1u << 18,     // auto exposure's meter
 };
 constexpr Pass operator|(Pass a, Pass b) { return Pass(std::uint32_t(a) | std::uint32_t(b)); }
 constexpr bool any(Pass a, Pass b) { return (std::uint32_t(a) & std::uint32_t(b)) != 0; }
 std::vector<std::string> passNames(Pass passes);
+// The name of one pass ("shadowMaps"); empty for None or several flags.
+std::string passName(Pass pass);
+// Every single pass, in frame order.
+const std::vector<Pass>& allPasses();
 
 // Enum values are stored as their name, so project files stay readable.
 using ParameterValue = std::variant<bool, int, double, std::string>;

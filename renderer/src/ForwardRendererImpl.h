@@ -1,0 +1,122 @@
+#pragma once
+// ForwardRenderer's state between frames, and the frame as a graph of
+// passes (graph/FrameGraph.h). Each frame render() plans the indirect light
+// (which effects the scene calls for), declares the resources and passes
+// (FramePasses.cpp: shadows, shading, sun rays, exposure, tonemap;
+// IndirectPasses.cpp: RSMs, VPLs, sky, the LPV's stages, subsurface), then
+// compiles and executes the graph.
+#include "AutoExposurePass.h"
+#include "EmissiveVplBuffer.h"
+#include "FrameContext.h"
+#include "LocalRsmPass.h"
+#include "LpvPass.h"
+#include "LpvSubsurfacePass.h"
+#include "MaterialGpu.h"
+#include "ProgramCache.h"
+#include "RsmPass.h"
+#include "ShadowPass.h"
+#include "SkyHeightPass.h"
+#include "SunRaysPass.h"
+#include "graph/ContentHash.h"
+#include "graph/FrameGraph.h"
+#include "lpv/renderer/ForwardRenderer.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::renderer {
+
+// What lighting a pass reads: every light's parameters but its name.
+inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& lights) {
+    h.add(lights.size());
+    for (const scene::Light& l : lights)
+        h.add(l.type).add(l.color).add(l.intensity).add(l.position).add(l.direction).add(l.range)
+            .add(l.innerConeAngle).add(l.outerConeAngle).add(l.castShadows).add(l.shape).add(l.size).add(l.radius)
+            .add(l.tangent).add(l.twoSided).add(l.unit);
+}
+
+struct ForwardRenderer::Impl {
+    // The forward and tonemap programs, built at create(); their uniform locations looked up once.
+    ProgramCache programs;
+    const CachedProgram* forwardProgram = nullptr;
+    const CachedProgram* tonemapProgram = nullptr;
+    std::optional<ShadowPass> shadows;
+    std::optional<RsmPass> rsm;
+    std::optional<LpvPass> lpv;
+    // Passes that run only when the scene calls for them are created on
+    // their first frame and dropped when culled: they hold no GPU memory then.
+    std::optional<SunRaysPass> sunRays;
+    std::optional<AutoExposurePass> exposure; // its result stays on the GPU
+    std::optional<SkyHeightPass> skyHeight;
+    std::optional<LpvSkyInput> skyInput; // the height map skyHeight last rendered
+    std::optional<LpvSubsurfacePass> subsurface;
+    std::optional<LocalRsmPass> localRsm;
+    std::optional<EmissiveVplBuffer> emissiveVpls;
+    bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
+    // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
+    Buffer ltcTable;
+    // Seconds between this frame and the last, for the exposure's adaptation
+    // (nullopt: each frame is metered on its own, as `lpv render` does).
+    std::optional<double> exposureTimeStep;
+    // What the scene's geometry says (open sky...): rays are cast once per scene change.
+    std::optional<SceneTraits> traits;
+    // Bumped on every scene change: part of every reuse key.
+    std::uint64_t sceneGeneration = 0;
+    std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
+    std::vector<EffectDecision> frameEffects;
+    bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass
+    std::unique_ptr<SceneGpu> sceneGpu;
+    std::unique_ptr<MaterialGpu> materialGpu;
+    GpuTimer timer;
+    graph::FrameGraph graph;
+    bool shadowCascadeTint = false; // the visualizers' view of the sun's shadow cascades
+    VertexArray emptyVao;
+    DrawListStats cameraStats;
+    // The camera G-buffer as the last frame left it: the geometry volume
+    // reads it before this frame's shading overwrites it.
+    bool gBufferValid = false;
+    LpvCameraInput previousCamera;
+    int width = 0, height = 0;
+    // Framebuffers around the graph's camera targets, rebuilt when it hands out others.
+    Framebuffer hdrFbo, displayFbo;
+    GLuint hdrFboDepth = 0, displayFboColor = 0;
+
+    // The indirect light this frame calls for, decided before the graph is built.
+    struct IndirectPlan {
+        bool lpvRuns = false;
+        std::string lpvOffReason;
+        bool sun = false;
+        EffectDecision local, emissive, sky, sss;
+        LpvSettings settings;
+        std::vector<LpvCascade> cascades;
+        bool cameraGv = false; // the geometry volume reads last frame's camera G-buffer
+    } plan;
+
+    // FramePasses.cpp
+    scene::Expected<void> checkSize(int w, int h) const;
+    void declareCameraTargets(const FrameContext& frame);
+    void declareShadows(const FrameContext& frame);
+    void declareShading(const FrameContext& frame);
+    void declarePost(const FrameContext& frame);
+    void renderForward(graph::PassContext& ctx);
+    void renderTonemap(graph::PassContext& ctx, bool autoExposure);
+    void attachCameraTargets();
+    std::uint64_t cameraKey(const FrameContext& frame) const;
+
+    // IndirectPasses.cpp
+    scene::Expected<void> planIndirect(const FrameContext& frame);
+    void declareIndirect(const FrameContext& frame);
+    // Passes the graph culled free what they hold.
+    void releaseCulled();
+    LpvRsmInput rsmInput(const FrameContext& frame) const;
+    std::vector<LpvLocalInput> localInputs() const;
+
+    // FrameDumps.cpp
+    std::vector<DebugImage> dump(const std::string& name) const;
+    std::vector<DebugImage> dumpResource(const std::string& name) const;
+    std::vector<std::string> dumpNames() const;
+};
+
+} // namespace lpv::renderer

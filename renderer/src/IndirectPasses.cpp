@@ -1,0 +1,377 @@
+// The indirect light as graph nodes: the sun's RSM, the local lights' RSMs,
+// the emissive VPLs, the sky's height map, the LPV's stages (injection, sky
+// injection, normals, geometry volume, propagation, bounces) and the
+// subsurface LPV. planIndirect() decides what the scene calls for (each
+// decision with its reason); declareIndirect() turns that into passes.
+#include "ForwardRendererImpl.h"
+
+#include "lpv/renderer/LocalLightAnalysis.h"
+#include "lpv/renderer/lpv/EmissiveVpls.h"
+
+#include <algorithm>
+
+namespace lpv::renderer {
+
+using scene::Pass;
+
+namespace {
+
+EffectDecision runs(const std::string& why) {
+    EffectDecision d;
+    d.wanted = true;
+    d.reason = why;
+    return d;
+}
+
+EffectDecision skipped(const std::string& why) {
+    EffectDecision d;
+    d.reason = why;
+    return d;
+}
+
+// A resource a pass owns, described by asking GL when the graph needs it.
+void importTexture(graph::FrameGraph& g, std::string name, std::function<GLuint()> id) {
+    g.importResource(std::move(name), [id = std::move(id)] {
+        const GLuint t = id();
+        return graph::ImportedView{t, graph::queryTexture(t)};
+    });
+}
+
+} // namespace
+
+scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& frame) {
+    plan = {};
+    const scene::ParameterSet& params = frame.params;
+    if (!giMethodRuns(params)) {
+        plan.lpvOffReason = "gi.method is off: direct light only";
+        return {};
+    }
+    plan.sun = findSun(frame.scene) >= 0;
+    plan.local = decideLocalLightInjection(frame.scene, params);
+    plan.emissive = decideEmissiveInjection(frame.scene, params);
+    if (!plan.sun && !plan.local.runs() && !plan.emissive.runs()) {
+        plan.lpvOffReason = "nothing to inject: no directional light; local lights: " + plan.local.reason +
+                            "; emissive surfaces: " + plan.emissive.reason;
+        return {};
+    }
+    if (params.getFloat("lpv.intensity") <= 0.0) {
+        plan.lpvOffReason = "lpv.intensity is 0";
+        return {};
+    }
+    plan.settings = LpvSettings::fromParameters(params);
+    // One volume per RSM tile, as far as lpv.cascades asks; the tiles follow the camera.
+    const int count = std::min(params.getInt("rsm.cascades"), params.getInt("lpv.cascades"));
+    plan.cascades = lpvCascades(frame.camera.position,
+                                LpvCascadeSettings{count, params.getInt("lpv.gridSize"),
+                                                   float(params.getFloat("lpv.cellSize")),
+                                                   params.getBool("lpv.cellSnapping")});
+    frameEffects.push_back(plan.local);
+    frameEffects.push_back(plan.emissive);
+    frameEffects.push_back(decideBounces(params, true));
+    if (!traits)
+        traits = analyseSceneTraits(frame.scene);
+    plan.sky = decideSkyInjection(frame.scene, *traits, params);
+    frameEffects.push_back(decideDirectedPropagation(params, true, ""));
+    frameEffects.push_back(plan.sky);
+    plan.sss = decideSubsurface(*traits, params, true, "");
+    if (plan.sss.wanted && !plan.sun) {
+        plan.sss.wanted = false;
+        plan.sss.reason += "; but it is injected from the sun's RSM and no directional light lights the scene";
+    }
+    if (plan.sss.wanted && !subsurfaceSampler) {
+        plan.sss.wanted = false;
+        plan.sss.reason += "; but this GL has fewer than 17 fragment texture units for its volume";
+    }
+    frameEffects.push_back(plan.sss);
+    // The volumes are fitted before the graph runs: their size is part of every LPV pass's key.
+    if (auto ok = lpv->prepare(plan.settings, plan.cascades); !ok)
+        return ok;
+    if (!lpv->active()) {
+        plan.lpvOffReason = "no RSM to inject from";
+        return {};
+    }
+    plan.lpvRuns = true;
+    plan.cameraGv = plan.settings.gvFromCamera && gBufferValid;
+    return {};
+}
+
+LpvRsmInput ForwardRenderer::Impl::rsmInput(const FrameContext& frame) const {
+    LpvRsmInput input;
+    input.cascades = lpv->cascades();
+    if (rsm->active()) {
+        for (std::size_t k = 0; k < input.cascades.size() && k < rsm->tiles().size(); ++k)
+            input.texelArea.push_back(rsm->tiles()[k].texelArea);
+        input.tileSize = rsm->tileSize();
+        input.position = rsm->positionArray();
+        input.normal = rsm->normalArray();
+        input.flux = rsm->fluxArray();
+        input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
+    }
+    return input;
+}
+
+std::vector<LpvLocalInput> ForwardRenderer::Impl::localInputs() const {
+    std::vector<LpvLocalInput> local;
+    if (localRsm && localRsm->active())
+        local.push_back({localRsm->positionArray(), localRsm->normalArray(), localRsm->fluxArray(), localRsm->size(),
+                         localRsm->layers(),
+                         std::to_string(localRsm->layers()) + " local-light RSM face" +
+                             (localRsm->layers() == 1 ? "" : "s")});
+    if (emissiveVpls && !emissiveVpls->empty())
+        local.push_back(emissiveVpls->input());
+    return local;
+}
+
+void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
+    const LpvSettings& settings = plan.settings;
+    const bool lpvRuns = plan.lpvRuns;
+    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
+    graph::ContentHash base; // what every LPV pass is computed within: the scene, its lights, the volumes
+    base.add(sceneGeneration).add(lpv->volumesGeneration()).add(plan.cascades);
+    addLights(base, frame.scene.lights);
+
+    // --- The sun's RSM ---
+    for (const char* name : {"rsm.position", "rsm.normal", "rsm.flux"})
+        importTexture(graph, name, [this, n = std::string(name)] {
+            return n == "rsm.position" ? rsm->positionArray() : n == "rsm.normal" ? rsm->normalArray() : rsm->fluxArray();
+        });
+    {
+        graph::PassSpec p;
+        p.id = Pass::Rsm;
+        p.decision = !lpvRuns ? skipped(off) : plan.sun ? runs("the sun lights the scene") : skipped("no directional light");
+        p.writes = {"rsm.position", "rsm.normal", "rsm.flux"};
+        graph::ContentHash h;
+        h.add(sceneGeneration).add(frame.camera.position); // the tiles follow the camera's position only
+        addLights(h, frame.scene.lights);
+        p.inputsKey = h.value();
+        p.execute = [this](graph::PassContext& ctx) { return rsm->render(ctx.frame, *sceneGpu, *materialGpu); };
+        graph.addPass(std::move(p));
+    }
+    // --- Spot and point lights' RSMs ---
+    for (const char* name : {"localRsm.position", "localRsm.normal", "localRsm.flux"})
+        importTexture(graph, name, [this, n = std::string(name)] {
+            if (!localRsm)
+                return GLuint(0);
+            return n == "localRsm.position" ? localRsm->positionArray()
+                   : n == "localRsm.normal" ? localRsm->normalArray()
+                                            : localRsm->fluxArray();
+        });
+    const bool local = lpvRuns && plan.local.runs();
+    {
+        graph::PassSpec p;
+        p.id = Pass::LocalRsm;
+        p.decision = !lpvRuns ? skipped(off) : plan.local;
+        p.writes = {"localRsm.position", "localRsm.normal", "localRsm.flux"};
+        graph::ContentHash h;
+        h.add(sceneGeneration);
+        addLights(h, frame.scene.lights);
+        p.inputsKey = h.value();
+        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
+            if (!localRsm) {
+                auto created = LocalRsmPass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                localRsm.emplace(std::move(*created));
+            }
+            return localRsm->render(ctx.frame, *sceneGpu, *materialGpu, ctx.frame.params.getInt("lpv.localRsmSize"));
+        };
+        graph.addPass(std::move(p));
+    }
+    // --- Emissive surfaces' VPLs (sampled on the CPU, uploaded once per scene and cell size) ---
+    importTexture(graph, "emissiveVpls", [this] { return emissiveVpls ? emissiveVpls->input().position : 0u; });
+    const bool emissive = lpvRuns && plan.emissive.runs();
+    {
+        graph::PassSpec p;
+        p.id = Pass::EmissiveVpls;
+        p.decision = !lpvRuns ? skipped(off) : plan.emissive;
+        p.writes = {"emissiveVpls"};
+        p.inputsKey = graph::ContentHash().add(sceneGeneration).value();
+        p.execute = [this](graph::PassContext& ctx) {
+            // Two VPLs per finest cell along an emitter, at most 256^2.
+            emissiveVpls.emplace();
+            emissiveVpls->upload(lpvref::sampleEmissiveVpls(
+                ctx.frame.scene, float(ctx.frame.params.getFloat("lpv.cellSize")) * 0.5f, 65536));
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    // --- The sky's height map ---
+    importTexture(graph, "skyHeight", [this] { return skyInput ? skyInput->depth : 0u; });
+    {
+        graph::PassSpec p;
+        p.id = Pass::SkyHeight;
+        p.decision = !lpvRuns ? skipped(off) : plan.sky;
+        p.writes = {"skyHeight"};
+        p.inputsKey = graph::ContentHash().add(sceneGeneration).add(plan.cascades).value();
+        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
+            if (!skyHeight) {
+                auto created = SkyHeightPass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                skyHeight.emplace(std::move(*created));
+            }
+            auto rendered = skyHeight->render(ctx.frame, *sceneGpu, *materialGpu, plan.cascades.back(),
+                                              SkyHeightPass::resolutionFor(plan.settings.gridSize,
+                                                                           int(plan.cascades.size())));
+            if (!rendered)
+                return std::unexpected(rendered.error());
+            skyInput = *rendered;
+            return {};
+        };
+        graph.addPass(std::move(p));
+    }
+
+    // --- The LPV's stages, updating its volumes in place ---
+    const LpvVolumes& volumes = lpv->volumes();
+    importTexture(graph, "lpv.volumes", [&volumes] { return volumes.volume[0].channel[0].id(); });
+    importTexture(graph, "lpv.accumulator", [&volumes] { return volumes.accumulator.channel[0].id(); });
+    importTexture(graph, "lpv.geometry", [&volumes] { return volumes.geometry.id(); });
+    importTexture(graph, "lpv.normals", [&volumes] { return volumes.normals[0].id(); });
+    const std::uint64_t lpvKey = base.value();
+    // A visualizer that reads the volumes back watches the computation itself: no reuse while it does.
+    const std::optional<std::uint64_t> propagationKey =
+        lpv->capturing() ? std::nullopt : std::optional<std::uint64_t>(lpvKey);
+    const EffectDecision lpvDecision = lpvRuns ? runs(plan.sun ? "the sun's RSM" : "local lights or emissive surfaces")
+                                               : skipped(plan.lpvOffReason);
+    {
+        graph::PassSpec p;
+        p.id = Pass::LpvInjection;
+        p.decision = lpvDecision;
+        if (plan.sun)
+            p.reads = {"rsm.position", "rsm.normal", "rsm.flux"};
+        if (local)
+            p.reads.insert(p.reads.end(), {"localRsm.position", "localRsm.normal", "localRsm.flux"});
+        if (emissive)
+            p.reads.push_back("emissiveVpls");
+        p.writes = {"lpv.volumes", "lpv.accumulator"};
+        p.inputsKey = lpvKey;
+        p.execute = [this](graph::PassContext& ctx) {
+            lpv->injectStage(rsmInput(ctx.frame), localInputs(), plan.settings.directed);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    {
+        graph::PassSpec p;
+        p.id = Pass::SkyInjection;
+        p.decision = !lpvRuns ? skipped(off) : plan.sky;
+        p.reads = {"skyHeight", "lpv.volumes", "lpv.accumulator"};
+        p.writes = {"lpv.volumes", "lpv.accumulator"};
+        p.inputsKey = graph::ContentHash().add(lpvKey).add(frame.scene.sky).value();
+        p.execute = [this](graph::PassContext& ctx) {
+            LpvSkyInput input = *skyInput;
+            input.radiance = ctx.frame.scene.sky.color * ctx.frame.scene.sky.intensity;
+            lpv->skyStage(input);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    {
+        graph::PassSpec p;
+        p.id = Pass::LpvNormals;
+        p.decision = !lpvRuns ? skipped(off)
+                     : settings.directed ? runs("directed propagation")
+                                         : skipped("lpv.directedPropagation is off");
+        p.reads = {"lpv.volumes"}; // the VPL normals summed at injection
+        p.writes = {"lpv.normals"};
+        p.inputsKey = lpvKey;
+        p.execute = [this](graph::PassContext&) {
+            lpv->normalsStage(plan.settings.directedDilation);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    {
+        graph::PassSpec p;
+        p.id = Pass::GeometryVolume;
+        // Bounces reflect at the GV's surfels, so they need it even without occlusion.
+        p.decision = !lpvRuns ? skipped(off)
+                     : settings.occlusion || settings.bounces > 1 ? runs("lpv.occlusion or lpv.bounces > 1")
+                                                                   : skipped("lpv.occlusion is off and one bounce");
+        if (plan.sun)
+            p.reads = {"rsm.position", "rsm.normal"};
+        if (plan.cameraGv)
+            p.readsHistory = {"camera.depth", "camera.normal"};
+        p.writes = {"lpv.geometry"};
+        p.inputsKey = lpvKey;
+        p.execute = [this](graph::PassContext& ctx) {
+            lpv->geometryStage(rsmInput(ctx.frame), plan.cameraGv ? &previousCamera : nullptr);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    {
+        graph::PassSpec p;
+        p.id = Pass::LpvPropagation;
+        p.decision = lpvDecision;
+        p.reads = {"lpv.volumes", "lpv.accumulator"};
+        if (settings.occlusion || settings.bounces > 1)
+            p.reads.push_back("lpv.geometry");
+        if (settings.directed)
+            p.reads.push_back("lpv.normals");
+        p.writes = {"lpv.volumes", "lpv.accumulator"};
+        p.inputsKey = propagationKey;
+        p.execute = [this](graph::PassContext&) {
+            lpv->propagationStage(plan.settings);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    {
+        graph::PassSpec p;
+        p.id = Pass::LpvBounces;
+        p.decision = !lpvRuns ? skipped(off)
+                     : settings.bounces > 1 ? runs("lpv.bounces = " + std::to_string(settings.bounces))
+                                            : skipped("lpv.bounces is 1");
+        p.reads = {"lpv.volumes", "lpv.accumulator", "lpv.geometry"};
+        p.writes = {"lpv.volumes", "lpv.accumulator"};
+        p.inputsKey = propagationKey;
+        p.execute = [this](graph::PassContext&) {
+            lpv->bounceStage(plan.settings);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    // --- The subsurface LPV, fed by the sun's RSM (its translucent texels) ---
+    importTexture(graph, "subsurface.accumulator", [this] { return subsurface ? subsurface->accumulatorTexture() : 0u; });
+    {
+        graph::PassSpec p;
+        p.id = Pass::Subsurface;
+        p.decision = !lpvRuns ? skipped(off) : plan.sss;
+        p.reads = {"rsm.position", "rsm.normal", "rsm.flux", "lpv.volumes"};
+        p.writes = {"subsurface.accumulator"};
+        p.inputsKey = lpvKey;
+        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
+            if (!subsurface) {
+                auto created = LpvSubsurfacePass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                subsurface.emplace(std::move(*created));
+            }
+            subsurface->run(LpvSubsurfaceSettings::fromParameters(ctx.frame.params), *lpv, rsmInput(ctx.frame));
+            return {};
+        };
+        graph.addPass(std::move(p));
+    }
+}
+
+void ForwardRenderer::Impl::releaseCulled() {
+    if (!graph.produced(Pass::Rsm))
+        rsm->release();
+    if (!graph.produced(Pass::LocalRsm))
+        localRsm.reset();
+    if (!graph.produced(Pass::EmissiveVpls))
+        emissiveVpls.reset();
+    if (!graph.produced(Pass::SkyHeight)) {
+        skyHeight.reset();
+        skyInput.reset();
+    }
+    if (!graph.produced(Pass::Subsurface))
+        subsurface.reset();
+    if (!graph.produced(Pass::SunRays))
+        sunRays.reset();
+    if (!plan.lpvRuns)
+        lpv->disable(plan.lpvOffReason);
+}
+
+} // namespace lpv::renderer

@@ -1,0 +1,439 @@
+#include "graph/FrameGraph.h"
+
+#include "graph/ContentHash.h"
+
+#include <algorithm>
+#include <queue>
+#include <set>
+#include <stdexcept>
+
+namespace lpv::renderer::graph {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+namespace {
+
+bool contains(const std::vector<std::string>& names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The registry keys whose change makes this pass's output stale.
+const std::vector<std::string>& invalidatingKeys(scene::Pass pass) {
+    static std::map<std::uint32_t, std::vector<std::string>> cache;
+    auto [it, inserted] = cache.try_emplace(std::uint32_t(pass));
+    if (inserted)
+        for (const scene::ParameterInfo& info : scene::ParameterRegistry::instance().all())
+            if (scene::any(info.invalidates, pass))
+                it->second.push_back(info.key);
+    return it->second;
+}
+
+} // namespace
+
+// --- PassContext ---
+
+GLuint PassContext::id(std::string_view resource) const {
+    if (!contains(pass_.reads, resource) && !contains(pass_.writes, resource) &&
+        !contains(pass_.readsHistory, resource))
+        throw std::logic_error("pass " + scene::passName(pass_.id) + " uses '" + std::string(resource) +
+                               "', which it did not declare");
+    const auto* r = graph_.findResource(resource);
+    return r ? graph_.viewOf(*r).id : 0;
+}
+
+ResourceDesc PassContext::desc(std::string_view resource) const {
+    id(resource); // the same declaration check
+    return graph_.viewOf(*graph_.findResource(resource)).desc;
+}
+
+GLuint PassContext::allocateUnit() {
+    const auto [first, last] = graph_.reservedUnits_;
+    if (nextUnit_ >= first && nextUnit_ <= last)
+        nextUnit_ = last + 1;
+    return nextUnit_++;
+}
+
+GLuint PassContext::bindTexture(GLuint program, GLint samplerLocation, std::string_view resource) {
+    const GLuint unit = allocateUnit();
+    glBindTextureUnit(unit, id(resource));
+    glProgramUniform1i(program, samplerLocation, GLint(unit));
+    return unit;
+}
+
+// --- FrameGraph: declarations ---
+
+void FrameGraph::beginFrame() {
+    resources_.clear();
+    passes_.clear();
+    order_.clear();
+    status_.clear();
+    reasons_.clear();
+    pending_.clear();
+}
+
+void FrameGraph::importResource(std::string name, std::function<ImportedView()> view, std::uint64_t initialVersion) {
+    resources_.push_back({std::move(name), Lifetime::Imported, std::move(view), {}, initialVersion});
+}
+
+void FrameGraph::createResource(std::string name, ResourceDesc desc, Lifetime lifetime, std::uint64_t initialVersion) {
+    resources_.push_back({std::move(name), lifetime, {}, desc, initialVersion});
+}
+
+void FrameGraph::addPass(PassSpec spec) { passes_.push_back(std::move(spec)); }
+
+const FrameGraph::Resource* FrameGraph::findResource(std::string_view name) const {
+    for (const Resource& r : resources_)
+        if (r.name == name)
+            return &r;
+    return nullptr;
+}
+
+ImportedView FrameGraph::viewOf(const Resource& r) const {
+    if (r.lifetime == Lifetime::Imported)
+        return r.view ? r.view() : ImportedView{};
+    const auto it = owned_.find(r.name);
+    return {it == owned_.end() ? 0u : it->second.id(), r.desc};
+}
+
+// --- compile ---
+
+scene::Expected<void> FrameGraph::resolveVersions() {
+    // Walk the passes as added: a read sees the last write before it; a write
+    // runs after the previous writer and after every reader of the version it replaces.
+    const std::size_t n = passes_.size();
+    inputs_.assign(n, {});
+    edges_.assign(n, {});
+    finalWriter_.clear();
+    std::map<std::string, std::vector<std::size_t>, std::less<>> readersOf;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (status_[i] == PassStatus::Culled)
+            continue;
+        const PassSpec& p = passes_[i];
+        for (const auto* list : {&p.readsHistory, &p.reads})
+            for (const std::string& name : *list) {
+                const auto w = finalWriter_.find(name);
+                const int producer = w == finalWriter_.end() ? -1 : w->second;
+                if (list == &p.readsHistory && producer >= 0)
+                    return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                                     "reads last frame's '" + name + "', but " +
+                                         scene::passName(passes_[std::size_t(producer)].id) + " writes it earlier");
+                inputs_[i].push_back({name, producer});
+                if (producer >= 0)
+                    edges_[std::size_t(producer)].insert(i);
+                readersOf[name].push_back(i);
+            }
+        for (const std::string& name : p.writes) {
+            for (std::size_t r : readersOf[name])
+                if (r != i)
+                    edges_[r].insert(i);
+            readersOf[name].clear();
+            if (const auto w = finalWriter_.find(name); w != finalWriter_.end() && std::size_t(w->second) != i)
+                edges_[std::size_t(w->second)].insert(i);
+            finalWriter_[name] = int(i);
+        }
+    }
+    return {};
+}
+
+scene::Expected<std::vector<std::size_t>> FrameGraph::order() const {
+    // Kahn's algorithm over the version edges; among ready passes the one added first runs first.
+    const std::size_t n = passes_.size();
+    std::vector<int> incoming(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        if (status_[i] != PassStatus::Culled)
+            for (std::size_t j : edges_[i])
+                if (status_[j] != PassStatus::Culled)
+                    ++incoming[j];
+    std::priority_queue<std::size_t, std::vector<std::size_t>, std::greater<>> ready;
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (status_[i] != PassStatus::Culled) {
+            ++live;
+            if (incoming[i] == 0)
+                ready.push(i);
+        }
+    std::vector<std::size_t> out;
+    while (!ready.empty()) {
+        const std::size_t i = ready.top();
+        ready.pop();
+        out.push_back(i);
+        for (std::size_t j : edges_[i])
+            if (status_[j] != PassStatus::Culled && --incoming[j] == 0)
+                ready.push(j);
+    }
+    if (out.size() != live) {
+        std::string stuck;
+        for (std::size_t i = 0; i < n; ++i)
+            if (status_[i] != PassStatus::Culled && incoming[i] > 0)
+                stuck += (stuck.empty() ? "" : ", ") + scene::passName(passes_[i].id);
+        return makeError(ErrorCode::InvalidValue, "frame graph", "order",
+                         "the passes " + stuck + " depend on each other in a cycle");
+    }
+    return out;
+}
+
+scene::Expected<void> FrameGraph::compile(const scene::ParameterSet& params, bool reuse) {
+    const std::size_t n = passes_.size();
+    status_.assign(n, PassStatus::Ran);
+    reasons_.assign(n, "");
+    pending_.assign(n, LastRun{});
+    std::set<std::uint32_t> ids;
+    for (std::size_t i = 0; i < n; ++i) {
+        const PassSpec& p = passes_[i];
+        if (scene::passName(p.id).empty() || !ids.insert(std::uint32_t(p.id)).second)
+            return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                             "each pass needs its own name from scene::Pass");
+        for (const auto* list : {&p.reads, &p.writes, &p.readsHistory})
+            for (const std::string& name : *list)
+                if (!findResource(name))
+                    return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                                     "uses '" + name + "', which no resource of the frame is called");
+        for (const std::string& name : p.readsHistory)
+            if (findResource(name)->lifetime != Lifetime::History)
+                return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                                 "reads '" + name + "' as last frame's, but it is not a history resource");
+        if (!p.decision.runs()) {
+            status_[i] = PassStatus::Culled;
+            reasons_[i] = p.decision.reason;
+        }
+    }
+    if (auto ok = resolveVersions(); !ok)
+        return ok;
+    // Passes nothing needs: keep the final passes and, transitively, the writers of the versions kept passes read.
+    {
+        std::vector<bool> needed(n, false);
+        std::vector<std::size_t> stack;
+        for (std::size_t i = 0; i < n; ++i)
+            if (status_[i] != PassStatus::Culled && passes_[i].final) {
+                needed[i] = true;
+                stack.push_back(i);
+            }
+        while (!stack.empty()) {
+            const std::size_t i = stack.back();
+            stack.pop_back();
+            for (const Access& a : inputs_[i])
+                if (a.producer >= 0 && !needed[std::size_t(a.producer)]) {
+                    needed[std::size_t(a.producer)] = true;
+                    stack.push_back(std::size_t(a.producer));
+                }
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            if (status_[i] != PassStatus::Culled && !needed[i]) {
+                status_[i] = PassStatus::Culled;
+                reasons_[i] = "nothing this frame reads its outputs";
+            }
+    }
+    auto ordered = order();
+    if (!ordered)
+        return std::unexpected(ordered.error());
+    order_ = std::move(*ordered);
+    for (std::size_t i = 0; i < n; ++i)
+        if (status_[i] == PassStatus::Culled)
+            last_.erase(std::uint32_t(passes_[i].id)); // its owner may free what it wrote
+    allocateOwned();
+    decideReuse(params, reuse);
+    return {};
+}
+
+void FrameGraph::allocateOwned() {
+    // This frame's transient targets come from the pool of last frame's.
+    for (auto it = owned_.begin(); it != owned_.end();) {
+        const Resource* r = findResource(it->first);
+        if (!r || r->lifetime == Lifetime::Transient || r->desc != ownedDesc_[it->first]) {
+            if (!r || r->lifetime == Lifetime::Transient)
+                pool_.emplace_back(ownedDesc_[it->first], std::move(it->second));
+            ownedDesc_.erase(it->first);
+            it = owned_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    fresh_.clear();
+    std::vector<std::pair<ResourceDesc, Texture>> unused = std::move(pool_);
+    pool_.clear();
+    for (Resource& r : resources_) {
+        if (r.lifetime == Lifetime::Imported || owned_.count(r.name))
+            continue;
+        bool written = false;
+        for (std::size_t i = 0; i < passes_.size(); ++i)
+            written |= status_[i] != PassStatus::Culled && contains(passes_[i].writes, r.name);
+        if (!written)
+            continue;
+        auto match = std::find_if(unused.begin(), unused.end(), [&](const auto& e) { return e.first == r.desc; });
+        if (match != unused.end()) {
+            owned_[r.name] = std::move(match->second);
+            unused.erase(match);
+        } else {
+            owned_[r.name] = allocateTexture(r.desc);
+        }
+        ownedDesc_[r.name] = r.desc;
+        fresh_.insert(r.name); // new storage: its writers run, and history readers find nothing in it
+        if (r.lifetime == Lifetime::History)
+            r.version = 0;
+    }
+    // Pooled targets no resource of this frame took are freed with `unused`.
+}
+
+void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
+    // A written version is named by its writer's key; a version the frame
+    // started with, by what the resource's owner says it holds.
+    std::vector<std::map<std::string, std::uint64_t, std::less<>>> written(passes_.size());
+    auto versionOf = [&](const Access& a) {
+        return a.producer >= 0 ? written[std::size_t(a.producer)][a.resource] : findResource(a.resource)->version;
+    };
+    std::vector<bool> rerun(passes_.size(), false);
+    for (std::size_t i : order_) {
+        const PassSpec& p = passes_[i];
+        LastRun& run = pending_[i];
+        for (const std::string& key : invalidatingKeys(p.id))
+            run.parameters.push_back(params.get(key));
+        for (const Access& a : inputs_[i])
+            run.inputVersions[a.resource] = versionOf(a);
+        run.inputsKey = p.inputsKey.value_or(0);
+        ContentHash h;
+        h.add(std::uint32_t(p.id)).add(run.inputsKey).add(run.parameters);
+        for (const auto& [name, v] : run.inputVersions)
+            h.add(std::string_view(name)).add(v);
+        run.key = h.value();
+        for (const std::string& name : p.writes)
+            written[i][name] = ContentHash().add(run.key).add(std::string_view(name)).value();
+
+        const auto last = last_.find(std::uint32_t(p.id));
+        std::string& why = reasons_[i];
+        if (!p.inputsKey) {
+            why = "runs every frame";
+        } else if (!reuse) {
+            why = "reuse is off (lpv.reuse = false)";
+        } else if (last == last_.end()) {
+            why = "nothing to reuse: first run";
+        } else if (last->second.key != run.key) {
+            const LastRun& was = last->second;
+            if (was.inputsKey != run.inputsKey)
+                why = "the scene, lights or camera changed";
+            for (std::size_t k = 0; why.empty() && k < run.parameters.size() && k < was.parameters.size(); ++k)
+                if (run.parameters[k] != was.parameters[k])
+                    why = invalidatingKeys(p.id)[k] + " changed";
+            for (const auto& [name, v] : run.inputVersions)
+                if (why.empty() && (!was.inputVersions.count(name) || was.inputVersions.at(name) != v))
+                    why = "its input " + name + " changed";
+            if (why.empty())
+                why = "its inputs changed";
+        } else {
+            for (const std::string& name : p.writes) {
+                if (why.empty() && findResource(name)->lifetime == Lifetime::Transient)
+                    why = name + " is transient: nothing is kept";
+                if (why.empty() && fresh_.count(name))
+                    why = name + " was (re)allocated";
+            }
+        }
+        rerun[i] = !why.empty();
+    }
+    // The memory of a resource holds only its last version. Its writers, and
+    // the passes that read an earlier version, form a chain: when one of them
+    // reruns, every writer reruns, so the earlier versions exist again.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& [resource, last] : finalWriter_) {
+            std::vector<std::size_t> members, writers;
+            for (std::size_t i : order_) {
+                if (contains(passes_[i].writes, resource)) {
+                    members.push_back(i);
+                    writers.push_back(i);
+                    continue;
+                }
+                for (const Access& a : inputs_[i])
+                    if (a.resource == resource && a.producer != last)
+                        members.push_back(i);
+            }
+            const auto dirty = std::find_if(members.begin(), members.end(), [&](std::size_t i) { return rerun[i]; });
+            if (dirty == members.end())
+                continue;
+            for (std::size_t w : writers)
+                if (!rerun[w]) {
+                    rerun[w] = true;
+                    changed = true;
+                    reasons_[w] = "reruns with " + scene::passName(passes_[*dirty].id) + " (they share " + resource + ")";
+                }
+        }
+    }
+    for (std::size_t i : order_) {
+        status_[i] = rerun[i] ? PassStatus::Ran : PassStatus::Reused;
+        if (!rerun[i])
+            reasons_[i] = "nothing it is computed from changed";
+    }
+}
+
+// --- execute ---
+
+scene::Expected<void> FrameGraph::execute(const FrameContext& frame) {
+    for (std::size_t i : order_) {
+        if (status_[i] != PassStatus::Ran)
+            continue;
+        const PassSpec& p = passes_[i];
+        const std::string name = scene::passName(p.id);
+        PassContext context(frame, *this, p);
+        scene::Expected<void> ok;
+        frame.timer.begin(name);
+        try {
+            ok = p.execute(context);
+        } catch (const std::logic_error& e) {
+            ok = makeError(ErrorCode::InvalidValue, "frame graph", name, e.what());
+        }
+        frame.timer.end(name);
+        if (!ok) {
+            last_.erase(std::uint32_t(p.id));
+            return ok;
+        }
+        last_[std::uint32_t(p.id)] = pending_[i];
+    }
+    // The report, with the shapes owners allocated while running.
+    report_ = {};
+    auto entry = [&](std::size_t i) {
+        const PassSpec& p = passes_[i];
+        GraphPassReport r{scene::passName(p.id), status_[i], reasons_[i], {}, {}};
+        for (const std::string& name : p.readsHistory)
+            r.reads.push_back(name + " (last frame's)");
+        for (const std::string& name : p.reads)
+            if (!contains(p.writes, name))
+                r.reads.push_back(name);
+        for (const std::string& name : p.writes)
+            r.writes.push_back({name + (contains(p.reads, name) ? " (updated)" : ""),
+                                describe(viewOf(*findResource(name)).desc)});
+        report_.passes.push_back(std::move(r));
+    };
+    for (std::size_t i : order_)
+        entry(i);
+    for (std::size_t i = 0; i < passes_.size(); ++i)
+        if (status_[i] == PassStatus::Culled)
+            entry(i);
+    return {};
+}
+
+GLuint FrameGraph::resourceId(std::string_view name) const {
+    const Resource* r = findResource(name);
+    return r ? viewOf(*r).id : 0;
+}
+
+std::optional<ResourceDesc> FrameGraph::resourceDesc(std::string_view name) const {
+    const Resource* r = findResource(name);
+    if (!r)
+        return std::nullopt;
+    return viewOf(*r).desc;
+}
+
+std::vector<std::string> FrameGraph::resourceNames() const {
+    std::vector<std::string> names;
+    for (const Resource& r : resources_)
+        names.push_back(r.name);
+    return names;
+}
+
+bool FrameGraph::produced(scene::Pass pass) const {
+    for (std::size_t i = 0; i < passes_.size(); ++i)
+        if (passes_[i].id == pass)
+            return i < status_.size() && status_[i] != PassStatus::Culled;
+    return false;
+}
+
+} // namespace lpv::renderer::graph
