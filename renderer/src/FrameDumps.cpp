@@ -71,6 +71,11 @@ std::vector<DebugImage> ForwardRenderer::Impl::dump(const std::string& name) con
             std::vector<DebugImage> all;
             if (pass.status == PassStatus::Culled)
                 return all;
+            // RSMs in their pass's own order: position, normal, flux per tile.
+            if (name == "rsm")
+                return rsm->active() ? rsm->debugImages() : all;
+            if (name == "localRsm")
+                return localRsm && localRsm->active() ? localRsm->debugImages() : all;
             for (const GraphResourceUse& w : pass.writes) {
                 auto images = dumpResource(w.name.substr(0, w.name.find(' ')));
                 all.insert(all.end(), std::make_move_iterator(images.begin()), std::make_move_iterator(images.end()));

@@ -76,9 +76,9 @@ std::vector<ParameterInfo> declareParameters() {
                 "How far the VPL normals of directed propagation spread from the cells they were injected into",
                P::LpvNormals | P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.reuse", true, "LPV",
-                "Keep last frame's LPV when nothing it is computed from changed (scene, lights, sky, LPV "
-                "parameters, cascade positions, the camera when the geometry volume reads its G-buffer); "
-                "benchmarks turn it off",
+                "Keep a pass's output (shadow maps, RSMs, sky height map, geometry volume, LPV) while nothing "
+                "it is computed from changed: scene, lights, camera where it matters, the parameters that "
+                "invalidate it, its inputs; benchmarks turn it off",
                 P::LpvInjection | P::GeometryVolume | P::LpvPropagation),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),

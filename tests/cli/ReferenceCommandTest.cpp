@@ -130,7 +130,7 @@ TEST_F(ReferenceCommand, SweepWritesTablesPlotsAndTheCheapestSettings) {
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const std::string csv = readText(out / "sweep.csv");
     EXPECT_EQ(std::ranges::count(csv, '\n'), 3) << csv; // header + two settings
-    EXPECT_NE(csv.find("lpvPropagate_median_ms"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("lpvPropagation_median_ms"), std::string::npos) << csv;
     const std::string md = readText(out / "sweep.md");
     EXPECT_NE(md.find("| propagationSteps=4 |"), std::string::npos) << md;
     EXPECT_NE(md.find("indirect MARE <= 10.0%"), std::string::npos) << md;
