@@ -96,7 +96,10 @@ std::string localNote(const std::vector<LpvLocalInput>& local);
 
 class LpvPass {
   public:
+    // Builds no program: each kernel compiles on first use (prepare() builds those the settings select).
     static scene::Expected<LpvPass> create();
+    // Kernels compiled so far (tests: a variant never selected is never compiled).
+    std::size_t builtKernels() const { return programs_.size(); }
 
     // The LPV as the frame graph runs it (ForwardRenderer): prepare() fits
     // the volumes to this frame's settings and cascades before the graph
