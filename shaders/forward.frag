@@ -3,6 +3,12 @@
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
 // premultiplied by their coverage.
+#ifdef LPV_AFTER_DEPTH_PREPASS
+// The depth pre-pass left the nearest surface's depth: test it before
+// shading. Without this, the discard below would defer the test until after
+// the lighting, and every hidden fragment would be lit for nothing.
+layout(early_fragment_tests) in;
+#endif
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec4 vTangent;

@@ -12,6 +12,9 @@ out vec3 vWorldPos;
 out vec3 vNormal;
 out vec4 vTangent;
 out vec2 vUv;
+// The depth pre-pass and shading run this shader in two programs: their
+// depths must agree bit for bit for shading's depth test to pass.
+invariant gl_Position;
 
 void main() {
     vec4 world = uModel * vec4(inPosition, 1.0);

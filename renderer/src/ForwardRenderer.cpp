@@ -33,11 +33,16 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     GLint fragmentUnits = 0;
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
     r.impl_->subsurfaceSampler = fragmentUnits >= kSamplersWithSubsurface;
-    auto forward = r.impl_->programs.get({{"forward.vert", "forward.frag"},
-                                          r.impl_->subsurfaceSampler
-                                              ? std::vector<std::string>{}
-                                              : std::vector<std::string>{"LPV_NO_SUBSURFACE_SAMPLER 1"}});
+    std::vector<std::string> defines;
+    if (!r.impl_->subsurfaceSampler)
+        defines.push_back("LPV_NO_SUBSURFACE_SAMPLER 1");
+    auto forward = r.impl_->programs.get({{"forward.vert", "forward.frag"}, defines});
     if (!forward) return std::unexpected(forward.error());
+    defines.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+    auto forwardAfterPrepass = r.impl_->programs.get({{"forward.vert", "forward.frag"}, defines});
+    if (!forwardAfterPrepass) return std::unexpected(forwardAfterPrepass.error());
+    auto prepass = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {}});
+    if (!prepass) return std::unexpected(prepass.error());
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
     if (!tonemap) return std::unexpected(tonemap.error());
     auto rsm = RsmPass::create();
@@ -54,6 +59,8 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     r.impl_->shadows.emplace(std::move(*shadows));
     r.impl_->rsm.emplace(std::move(*rsm));
     r.impl_->forwardProgram = *forward;
+    r.impl_->forwardAfterPrepassProgram = *forwardAfterPrepass;
+    r.impl_->depthPrepassProgram = *prepass;
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();
     r.impl_->graph.reserveUnits(MaterialGpu::kBaseColorUnit, 15); // MaterialGpu binds these per draw

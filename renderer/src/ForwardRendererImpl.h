@@ -41,6 +41,8 @@ struct ForwardRenderer::Impl {
     // The forward and tonemap programs, built at create(); their uniform locations looked up once.
     ProgramCache programs;
     const CachedProgram* forwardProgram = nullptr;
+    const CachedProgram* forwardAfterPrepassProgram = nullptr; // depth tested before shading
+    const CachedProgram* depthPrepassProgram = nullptr;
     const CachedProgram* tonemapProgram = nullptr;
     std::optional<ShadowPass> shadows;
     std::optional<RsmPass> rsm;
@@ -100,7 +102,8 @@ struct ForwardRenderer::Impl {
     void declareShadows(const FrameContext& frame);
     void declareShading(const FrameContext& frame);
     void declarePost(const FrameContext& frame);
-    void renderForward(graph::PassContext& ctx);
+    void renderDepthPrepass(graph::PassContext& ctx);
+    void renderForward(graph::PassContext& ctx, bool afterPrepass);
     void renderTonemap(graph::PassContext& ctx, bool autoExposure);
     void attachCameraTargets();
     std::uint64_t cameraKey(const FrameContext& frame) const;

@@ -179,38 +179,81 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
 }
 
 void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
+    const bool prepass = frame.params.getBool("output.depthPrepass");
+    {
+        graph::PassSpec p;
+        p.id = Pass::DepthPrepass;
+        p.decision = prepass ? always("output.depthPrepass is on: shading lights each visible pixel once")
+                             : EffectDecision{"Depth pre-pass", "output.depthPrepass", "false", false, true,
+                                              "output.depthPrepass is off"};
+        p.writes = {"camera.depth"};
+        p.execute = [this](graph::PassContext& ctx) {
+            attachCameraTargets();
+            renderDepthPrepass(ctx);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
     graph::PassSpec p;
     p.id = Pass::Shading;
     p.decision = always("the image");
     p.final = true;
     p.reads = {"shadowMaps"};
+    if (prepass)
+        p.reads.push_back("camera.depth");
     if (plan.lpvRuns)
         p.reads.push_back("lpv.accumulator");
     if (plan.lpvRuns && plan.sss.runs())
         p.reads.push_back("subsurface.accumulator");
-    p.writes = {"camera.hdr", "camera.normal", "camera.albedo", "camera.depth"};
+    p.writes = {"camera.hdr", "camera.normal", "camera.albedo"};
+    if (!prepass)
+        p.writes.push_back("camera.depth");
     // Glossy reflections march through the LPV inside this pass.
     if (!traits)
         traits = analyseSceneTraits(frame.scene);
     frameEffects.push_back(decideGlossyReflections(*traits, frame.params, plan.lpvRuns,
                                                    plan.lpvRuns ? "" : "LPV: off (" + plan.lpvOffReason + ")"));
     glossyRuns = frameEffects.back().runs();
-    p.execute = [this](graph::PassContext& ctx) {
+    p.execute = [this, prepass](graph::PassContext& ctx) {
         attachCameraTargets();
-        renderForward(ctx);
+        renderForward(ctx, prepass);
         return scene::Expected<void>{};
     };
     graph.addPass(std::move(p));
 }
 
-void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx) {
+void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
     const FrameContext& frame = ctx.frame;
-    const CachedProgram& shader = *forwardProgram;
-    const GLuint fp = shader.id();
+    const CachedProgram& shader = *depthPrepassProgram;
+    const GLuint program = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(program);
+    glProgramUniformMatrix4fv(program, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+    // Opaque and masked surfaces only: blended ones neither hide nor write depth.
+    const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    const auto firstBlended = std::ranges::find_if(items, [](const DrawItem* d) { return d->bucket == DrawBucket::Blended; });
+    const std::vector<const DrawItem*> solid(items.begin(), firstBlended);
+    sceneGpu->draw(program, solid, [&](std::uint32_t m) { materialGpu->bind(program, m, MaterialBindMode::Coverage); });
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPrepass) {
+    const FrameContext& frame = ctx.frame;
+    // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
+    const CachedProgram& shader = afterPrepass ? *forwardAfterPrepassProgram : *forwardProgram;
+    const GLuint fp = shader.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
+    glViewport(0, 0, frame.width, frame.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(afterPrepass ? GL_LEQUAL : GL_LESS);
+    glDepthMask(afterPrepass ? GL_FALSE : GL_TRUE);
     glDisable(GL_CULL_FACE);
     const int view = outputViewIndex(frame.params);
     // The indirect view's background is no light, not the sky colour.
@@ -220,7 +263,8 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx) {
     glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 0, background);
     glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 2, zero);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    if (!afterPrepass)
+        glClear(GL_DEPTH_BUFFER_BIT);
     glUseProgram(fp);
     glProgramUniformMatrix4fv(fp, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
     glProgramUniform3fv(fp, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
@@ -257,8 +301,9 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx) {
         glDisablei(GL_BLEND, 0);
         glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDepthMask(GL_TRUE);
     }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
 }
 
 void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {

@@ -42,6 +42,15 @@ struct MaterialGpu::Locations {
 };
 
 MaterialGpu::MaterialGpu(const scene::Scene& scene, const scene::TextureImages& images) : materials_(scene.materials) {
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    coverageSampler_ = Sampler(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    if (maxSupportedAnisotropy() > 1.0f)
+        glSamplerParameterf(sampler, 0x84FE /* GL_TEXTURE_MAX_ANISOTROPY */, 1.0f);
     bound_.reserve(materials_.size());
     for (const scene::Material& m : materials_) {
         auto get = [&](const std::string& key, TextureUsage usage) { return textures_.get(images, key, usage); };
@@ -89,6 +98,9 @@ void MaterialGpu::bind(GLuint program, std::uint32_t material, MaterialBindMode 
     };
 
     // Coverage (shaders/coverage.glsl): every mode from here on.
+    const GLuint sampler = mode == MaterialBindMode::Full ? 0 : coverageSampler_.id();
+    glBindSampler(kBaseColorUnit, sampler);
+    glBindSampler(kAlphaUnit, sampler);
     glProgramUniform3fv(program, l.diffuse, 1, glm::value_ptr(m.diffuseColor));
     texture(l.hasBaseColorMap, l.baseColorMap, kBaseColorUnit, t.baseColor);
     texture(l.hasAlphaMap, l.alphaMap, kAlphaUnit, t.alpha);

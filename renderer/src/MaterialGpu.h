@@ -26,6 +26,11 @@ enum class MaterialBindMode {
     Full,        // everything forward shading reads
 };
 
+struct SamplerDeleter {
+    void operator()(GLuint id) const { glDeleteSamplers(1, &id); }
+};
+using Sampler = GlHandle<SamplerDeleter>;
+
 class MaterialGpu {
 public:
     // Uploads every texture the materials use (each image once); a path
@@ -66,6 +71,11 @@ private:
     std::vector<scene::Material> materials_;
     std::vector<Textures> bound_;
     TextureCache textures_;
+    // Coverage and reflectance (shadow maps, RSMs, the sky's height map)
+    // sample trilinearly without anisotropic filtering: an alpha test or a
+    // low-resolution flux gains nothing from it, and on llvmpipe it cost the
+    // shadow pass about 4x (issue #25). Forward shading keeps the textures' own.
+    Sampler coverageSampler_;
 };
 
 } // namespace lpv::renderer

@@ -176,9 +176,13 @@ std::vector<ParameterInfo> declareParameters() {
                "albedo: what `lpv compare` measures against the path-traced reference), or direct light only",
                P::Shading),
         integer("output.anisotropy", 8, 1, 16, "samples", "Output",
-                "Anisotropic texture filtering (1 = trilinear only); nearly free on GPUs, about 3x the "
-                "forward pass of textured scenes on llvmpipe",
-               P::ShadowMaps | P::Rsm | P::LocalRsm | P::SkyHeight | P::Shading),
+                "Anisotropic texture filtering of shading (1 = trilinear only; shadow maps and RSMs never "
+                "filter anisotropically); nearly free on GPUs, costly on llvmpipe",
+               P::Shading),
+        boolean("output.depthPrepass", true, "Output",
+                "Render the camera's depth first, so that shading lights each visible pixel once instead of "
+                "every surface behind it too (off: one pass, the nearest surface wins as it is drawn)",
+                P::DepthPrepass | P::Shading),
         // --- Radiosity ---
         real("radiosity.maxPatchArea", 0.05, 0.0001, 100.0, "m^2", "Radiosity",
              "Surfaces are subdivided until every patch is at most this large", P::Radiosity),

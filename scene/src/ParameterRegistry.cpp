@@ -37,6 +37,7 @@ const std::vector<std::pair<Pass, const char*>>& passTable() {
         {Pass::LpvPropagation, "lpvPropagation"},
         {Pass::LpvBounces, "lpvBounces"},
         {Pass::Subsurface, "subsurface"},
+        {Pass::DepthPrepass, "depthPrepass"},
         {Pass::Shading, "shading"},
         {Pass::GlossyReflections, "glossyReflections"},
         {Pass::SunRays, "sunRays"},

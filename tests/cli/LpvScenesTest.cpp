@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -125,6 +126,46 @@ TEST_P(LpvScenes, TheDefaultsShowAVisibleInterior) {
     std::cout << "[ figures ] " << GetParam() << " at the defaults: 8-bit luma median " << p50 << ", 99th percentile "
               << p99 << "\n";
     EXPECT_GT(p99, 50.0) << r.output;
+    fs::remove_all(dir);
+}
+
+// The depth pre-pass (output.depthPrepass, on by default) lights each
+// visible pixel once; the image must stay the one-pass image on the real
+// scenes, alpha-masked and colour-keyed materials included.
+TEST_P(LpvScenes, TheDepthPrepassKeepsTheImage) {
+    const fs::path source = fs::path(kSharedScenesDir) / GetParam();
+    const fs::path dir = fs::temp_directory_path() / ("lpv-prepass-" + source.stem().string() + "-" +
+                                                      std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path project = dir / "scene.lpvproj";
+    const RunResult imported = runLpv("import " + quoted(source) + " -o " + quoted(project));
+    ASSERT_EQ(imported.exitCode, 0) << imported.output;
+    const RunResult r = runLpv("render " + quoted(project) + " -o " + quoted(dir / "view.png") +
+                               " --width 240 --height 135 --frames 2 --set output.depthPrepass=false,true"
+                               " --set output.exposureMode=manual --set output.exposure=2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto off = lpv::importers::readImage8(dir / "view-output.depthPrepass-false.png");
+    auto on = lpv::importers::readImage8(dir / "view-output.depthPrepass-true.png");
+    ASSERT_TRUE(off.has_value() && on.has_value()) << r.output;
+    ASSERT_EQ(off->pixels.size(), on->pixels.size());
+    std::size_t differing = 0, lit = 0;
+    double sum = 0.0;
+    const std::size_t pixels = std::size_t(off->width) * std::size_t(off->height);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const double d = std::abs(luma(*off, i) - luma(*on, i));
+        sum += d;
+        differing += d > 2.0 / 255.0 ? 1 : 0;
+        lit += luma(*off, i) > 0.05 ? 1 : 0;
+    }
+    std::cout << "[ figures ] " << GetParam() << ": depth pre-pass on against off, " << 100.0 * double(differing) / double(pixels)
+              << "% of pixels differ by more than 2/255, mean |difference| " << sum / double(pixels) * 255.0
+              << "/255\n";
+    EXPECT_GT(lit, pixels / 20) << "a dark image proves nothing";
+    // Coplanar surfaces may resolve the other way (the pre-pass keeps the
+    // first drawn, shading with LEQUAL the last): a handful of pixels.
+    EXPECT_LT(double(differing), 0.005 * double(pixels));
+    EXPECT_LT(sum / double(pixels), 0.5 / 255.0);
     fs::remove_all(dir);
 }
 

@@ -1,0 +1,15 @@
+#version 450 core
+// The camera's depth pre-pass (renderer/src/FramePasses.cpp): depth only,
+// alpha-mask cut-outs included, so that shading (forward.frag with
+// LPV_AFTER_DEPTH_PREPASS) runs its lighting once per visible pixel.
+#include "coverage.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec4 vTangent;
+in vec2 vUv;
+
+void main() {
+    if (materialCutOut(vUv))
+        discard;
+}
