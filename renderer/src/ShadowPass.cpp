@@ -140,6 +140,28 @@ void ShadowPass::drawLayers(GLuint p, const SceneGpu& geometry, const MaterialGp
     geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
 }
 
+scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials) {
+    if (!perCascadeProgram_) {
+        auto built = buildEmbeddedProgram({"shadow.vert", "shadow.frag"}, {"SHADOW_NO_GEOMETRY_SHADER 1"});
+        if (!built)
+            return std::unexpected(built.error());
+        perCascadeProgram_ = std::move(*built);
+    }
+    const GLuint p = perCascadeProgram_.id();
+    glUseProgram(p);
+    const GLuint fbo = cascadeMap_.fbo.id(), map = cascadeMap_.texture.id();
+    for (std::size_t k = 0; k < cascades_.size(); ++k) {
+        // Each cascade culls with its own volume and draws only what it holds.
+        glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, map, 0, GLint(k));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(cascades_[k].viewProj));
+        const auto items = buildDrawList(geometry.draws(), cascades_[k].viewProj, glm::vec3(0.0f));
+        geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
+    }
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, map, 0); // layered again
+    return {};
+}
+
 scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneGpu& geometry,
                                          const MaterialGpu& materials) {
     const scene::Scene& s = frame.scene;
@@ -193,25 +215,30 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
     if (!cascades_.empty()) {
         glBindFramebuffer(GL_FRAMEBUFFER, cascadeMap_.fbo.id());
         glViewport(0, 0, mapSize, mapSize);
-        glClear(GL_DEPTH_BUFFER_BIT);
         // Slope-scaled depth bias: receivers nearly parallel to the light's rays
         // otherwise show acne stripes.
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(2.0f, 2.0f);
-        auto program = programFor(false, int(cascades_.size()));
-        if (!program)
-            return std::unexpected(program.error());
-        const GLuint p = *program;
-        glUseProgram(p);
-        // Cull once against the box around all cascades; shadow.geom drops
-        // triangles outside each cascade.
-        const glm::mat4 unionBox =
-            cascadeUnionViewProj(cascades_, s.lights[std::size_t(lights_.sun)].direction, bounds);
-        const auto items = buildDrawList(geometry.draws(), unionBox, glm::vec3(0.0f));
-        std::vector<glm::mat4> matrices;
-        for (const ShadowCascade& c : cascades_)
-            matrices.push_back(c.viewProj);
-        drawLayers(p, geometry, materials, items, matrices.data(), int(matrices.size()), 0);
+        const glm::vec3 sunDirection = s.lights[std::size_t(lights_.sun)].direction;
+        if (frame.params.getEnum("shadow.cascadeDraws") == "perCascade") {
+            if (auto ok = drawCascadesOneByOne(geometry, materials); !ok)
+                return ok;
+        } else {
+            auto program = programFor(false, int(cascades_.size()));
+            if (!program)
+                return std::unexpected(program.error());
+            const GLuint p = *program;
+            glUseProgram(p);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            // Cull once against the box around all cascades; shadow.geom drops
+            // triangles outside each cascade.
+            const glm::mat4 unionBox = cascadeUnionViewProj(cascades_, sunDirection, bounds);
+            const auto items = buildDrawList(geometry.draws(), unionBox, glm::vec3(0.0f));
+            std::vector<glm::mat4> matrices;
+            for (const ShadowCascade& c : cascades_)
+                matrices.push_back(c.viewProj);
+            drawLayers(p, geometry, materials, items, matrices.data(), int(matrices.size()), 0);
+        }
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
 

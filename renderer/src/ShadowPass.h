@@ -71,6 +71,9 @@ private:
     // The program for `layers` layers per draw (built on first use):
     // shadow.vert + shadow.geom + shadow.frag (depth) or shadow_distance.frag.
     scene::Expected<GLuint> programFor(bool distance, int layers);
+    // shadow.cascadeDraws = perCascade: one draw list and one depth-only draw per cascade, no geometry shader.
+    scene::Expected<void> drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials);
+    Program perCascadeProgram_;
     std::array<Program, 8> depthPrograms_;
     std::array<Program, 8> distancePrograms_;
 

@@ -141,6 +141,10 @@ std::vector<ParameterInfo> declareParameters() {
         // --- Shadows ---
         integer("shadow.cascades", 6, 1, 8, "", "Shadows", "Cascaded shadow map splits for the sun",
                 P::ShadowMaps | P::Shading),
+        choice("shadow.cascadeDraws", "perCascade", {"perCascade", "geometryShader"}, "Shadows",
+               "How the sun's cascades are drawn: perCascade culls and draws each cascade on its own; "
+               "geometryShader draws the scene once and broadcasts every triangle to all cascades",
+               P::ShadowMaps),
         integer("shadow.mapSize", 1024, 256, 8192, "px", "Shadows", "Width and height of each shadow map",
                 P::ShadowMaps | P::Shading),
         real("shadow.softness", 1.0, 0.0, 8.0, "", "Shadows",
