@@ -104,6 +104,10 @@ GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
 int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
+int ForwardRenderer::shadowCascadesDrawn() const {
+    const GraphPassReport* shadows = impl_->graph.report().find(scene::passName(scene::Pass::ShadowMaps));
+    return shadows && shadows->status == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
+}
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
     return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;

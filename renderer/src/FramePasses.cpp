@@ -174,7 +174,16 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     p.decision = always("direct light is shadowed");
     p.writes = {"shadowMaps"};
     p.inputsKey = cameraKey(frame); // the sun's cascades follow the camera
-    p.execute = [this](graph::PassContext& ctx) { return shadows->render(ctx.frame, *sceneGpu, *materialGpu); };
+    // What the maps are drawn from besides the cascades' matrices: a cascade
+    // whose snapped matrix did not move keeps its layer (ShadowPass).
+    graph::ContentHash content;
+    content.add(sceneGeneration);
+    addLights(content, frame.scene.lights);
+    for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws"})
+        content.add(frame.params.get(key));
+    p.execute = [this, key = content.value()](graph::PassContext& ctx) {
+        return shadows->render(ctx.frame, *sceneGpu, *materialGpu, key);
+    };
     graph.addPass(std::move(p));
 }
 

@@ -21,6 +21,17 @@ constexpr int kMaxLayersPerPass = 8;
 
 GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
+// A cascade layer's content: what it was drawn from and with which matrix.
+std::uint64_t cascadeKey(std::uint64_t contentKey, const glm::mat4& viewProj) {
+    std::uint64_t h = contentKey ^ 0x9e3779b97f4a7c15ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&viewProj);
+    for (std::size_t i = 0; i < sizeof(glm::mat4); ++i) {
+        h ^= bytes[i];
+        h *= 0x100000001b3ull;
+    }
+    return h | 1u; // never 0, the "nothing drawn" key
+}
+
 // "name[i]", built once per name and index rather than every frame.
 const std::string& indexed(const char* name, int i) {
     static std::map<std::pair<std::string, int>, std::string> names;
@@ -140,7 +151,8 @@ void ShadowPass::drawLayers(GLuint p, const SceneGpu& geometry, const MaterialGp
     geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
 }
 
-scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials) {
+scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
+                                                       std::uint64_t contentKey) {
     if (!perCascadeProgram_) {
         auto built = buildEmbeddedProgram({"shadow.vert", "shadow.frag"}, {"SHADOW_NO_GEOMETRY_SHADER 1"});
         if (!built)
@@ -150,7 +162,19 @@ scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry,
     const GLuint p = perCascadeProgram_.id();
     glUseProgram(p);
     const GLuint fbo = cascadeMap_.fbo.id(), map = cascadeMap_.texture.id();
+    // A cascade whose snapped matrix did not move keeps its layer while the
+    // scene, the lights and the map are the same: far cascades mostly stay
+    // put while the camera moves.
+    if (cascadeKeys_.size() != cascades_.size() || cascadeMapId_ != map)
+        cascadeKeys_.assign(cascades_.size(), 0);
+    cascadeMapId_ = map;
+    cascadesDrawn_ = 0;
     for (std::size_t k = 0; k < cascades_.size(); ++k) {
+        const std::uint64_t key = cascadeKey(contentKey, cascades_[k].viewProj);
+        if (contentKey != 0 && key == cascadeKeys_[k])
+            continue; // 0: the caller cannot say what the maps are drawn from, so every layer is drawn
+        cascadeKeys_[k] = key;
+        ++cascadesDrawn_;
         // Each cascade culls with its own volume and draws only what it holds.
         glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, map, 0, GLint(k));
         glClear(GL_DEPTH_BUFFER_BIT);
@@ -163,7 +187,7 @@ scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry,
 }
 
 scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneGpu& geometry,
-                                         const MaterialGpu& materials) {
+                                         const MaterialGpu& materials, std::uint64_t contentKey) {
     const scene::Scene& s = frame.scene;
     lights_ = selectShadowLights(s);
     const int mapSize = frame.params.getInt("shadow.mapSize");
@@ -221,9 +245,11 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         glPolygonOffset(2.0f, 2.0f);
         const glm::vec3 sunDirection = s.lights[std::size_t(lights_.sun)].direction;
         if (frame.params.getEnum("shadow.cascadeDraws") == "perCascade") {
-            if (auto ok = drawCascadesOneByOne(geometry, materials); !ok)
+            if (auto ok = drawCascadesOneByOne(geometry, materials, contentKey); !ok)
                 return ok;
         } else {
+            cascadeKeys_.clear(); // the broadcast draws every layer
+            cascadesDrawn_ = int(cascades_.size());
             auto program = programFor(false, int(cascades_.size()));
             if (!program)
                 return std::unexpected(program.error());

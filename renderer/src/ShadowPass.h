@@ -26,8 +26,13 @@ class ShadowPass {
 public:
     static scene::Expected<ShadowPass> create();
 
-    // Renders the shadow maps of this frame.
-    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials);
+    // Renders the shadow maps of this frame. `contentKey` names what the maps
+    // are drawn from besides the cascade matrices (scene, lights, map size):
+    // a sun cascade whose key and matrix are unchanged keeps its layer.
+    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials,
+                                 std::uint64_t contentKey = 0);
+    // Sun cascades drawn by the last render() (the others kept their layer).
+    int cascadesDrawn() const { return cascadesDrawn_; }
 
     // Sets the uniforms of shadow_sampling.glsl in `program` and binds its
     // six textures to units from `nextUnit`.
@@ -72,8 +77,12 @@ private:
     // shadow.vert + shadow.geom + shadow.frag (depth) or shadow_distance.frag.
     scene::Expected<GLuint> programFor(bool distance, int layers);
     // shadow.cascadeDraws = perCascade: one draw list and one depth-only draw per cascade, no geometry shader.
-    scene::Expected<void> drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials);
+    scene::Expected<void> drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
+                                               std::uint64_t contentKey);
     Program perCascadeProgram_;
+    std::vector<std::uint64_t> cascadeKeys_; // per layer: what it holds (0: nothing known)
+    GLuint cascadeMapId_ = 0;
+    int cascadesDrawn_ = 0;
     std::array<Program, 8> depthPrograms_;
     std::array<Program, 8> distancePrograms_;
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace lpv;
 
@@ -22,7 +23,7 @@ struct Maps {
     std::vector<float> hdr;
 };
 
-Maps render(const std::string& mode) {
+scene::Project cornellWithSun() {
     scene::Project project = scene::makeCornellBoxProject();
     scene::Light sun;
     sun.name = "sun";
@@ -30,6 +31,11 @@ Maps render(const std::string& mode) {
     sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
     sun.intensity = 2.0f;
     project.scene.lights.push_back(sun);
+    return project;
+}
+
+Maps render(const std::string& mode) {
+    scene::Project project = cornellWithSun();
     EXPECT_TRUE(project.parameters.setFromText("shadow.cascadeDraws", mode).has_value());
     EXPECT_TRUE(project.parameters.set("shadow.mapSize", 256).has_value());
     auto r = renderer::ForwardRenderer::create();
@@ -68,6 +74,41 @@ TEST_F(ShadowCascadeDrawsGLTest, OneDrawPerCascadeGivesTheGeometryShadersMaps) {
     for (std::size_t i = 0; i < broadcast.hdr.size(); ++i)
         worst = std::max(worst, std::abs(broadcast.hdr[i] - perCascade.hdr[i]));
     EXPECT_LE(worst, 1e-5f);
+}
+
+// The camera moves by a millimetre: the near cascades, snapped to finer
+// texels, move with it; the far ones keep their layers. The maps equal a
+// fresh renderer's.
+TEST_F(ShadowCascadeDrawsGLTest, CascadesThatDidNotMoveKeepTheirLayers) {
+    scene::Project project = cornellWithSun();
+    ASSERT_TRUE(project.parameters.set("shadow.mapSize", 256).has_value());
+    const int cascades = project.parameters.getInt("shadow.cascades");
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    r->setScene(project.scene);
+    scene::Camera camera = project.scene.cameras.front();
+    ASSERT_TRUE(r->render(project.scene, project.parameters, camera, 128, 96).has_value());
+    EXPECT_EQ(r->shadowCascadesDrawn(), cascades);
+    camera.position.x += 0.001f;
+    camera.target.x += 0.001f;
+    ASSERT_TRUE(r->render(project.scene, project.parameters, camera, 128, 96).has_value());
+    const int drawn = r->shadowCascadesDrawn();
+    EXPECT_LT(drawn, cascades) << "every cascade was redrawn for a millimetre";
+    std::cout << "[ figures ] a 1 mm camera move redrew " << drawn << " of " << cascades << " sun cascades\n";
+    const auto kept = r->debugImages("shadowMaps");
+
+    auto fresh = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(fresh.has_value());
+    fresh->setScene(project.scene);
+    ASSERT_TRUE(fresh->render(project.scene, project.parameters, camera, 128, 96).has_value());
+    const auto computed = fresh->debugImages("shadowMaps");
+    ASSERT_EQ(kept.size(), computed.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+        EXPECT_EQ(kept[i].pixels, computed[i].pixels) << kept[i].name;
+    // A changed light redraws every cascade.
+    project.scene.lights.back().direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.3f));
+    ASSERT_TRUE(r->render(project.scene, project.parameters, camera, 128, 96).has_value());
+    EXPECT_EQ(r->shadowCascadesDrawn(), cascades);
 }
 
 } // namespace

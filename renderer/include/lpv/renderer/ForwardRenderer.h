@@ -97,6 +97,8 @@ public:
     // the k-th colour of red, green, blue, yellow, magenta, cyan), for the
     // shadow-map visualizer; off by default.
     void setShadowCascadeTint(bool on);
+    // Sun shadow cascades the last frame drew (the others kept their layer: their snapped matrix did not move).
+    int shadowCascadesDrawn() const;
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
