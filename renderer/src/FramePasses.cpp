@@ -181,7 +181,9 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     addLights(content, frame.scene.lights);
     for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws"})
         content.add(frame.params.get(key));
-    p.execute = [this, key = content.value()](graph::PassContext& ctx) {
+    // lpv.reuse = false (the benchmarks) draws every cascade every frame.
+    const std::uint64_t layersKey = frame.params.getBool("lpv.reuse") ? content.value() : 0;
+    p.execute = [this, key = layersKey](graph::PassContext& ctx) {
         return shadows->render(ctx.frame, *sceneGpu, *materialGpu, key);
     };
     graph.addPass(std::move(p));
