@@ -66,6 +66,16 @@ scene::Expected<void> checkRsmTargets(int tileSize, int tiles, const RsmTargetLi
     return {};
 }
 
+scene::Expected<GLuint> RsmPass::perTileProgram() {
+    if (!perTileProgram_) {
+        auto built = buildEmbeddedProgram({"rsm.vert", "rsm.frag"}, {"RSM_NO_GEOMETRY_SHADER 1"});
+        if (!built)
+            return std::unexpected(built.error());
+        perTileProgram_ = std::move(*built);
+    }
+    return perTileProgram_.id();
+}
+
 scene::Expected<GLuint> RsmPass::programFor(int tiles) {
     if (tiles < 1 || tiles > kMaxRsmCascades)
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.cascades",
@@ -156,7 +166,8 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
         sunIndex_ = -1;
         return ok;
     }
-    const auto program = programFor(count); // outside the timed section: it may compile
+    const bool perTile = frame.params.getEnum("rsm.tileDraws") == "perTile";
+    const auto program = perTile ? perTileProgram() : programFor(count);
     if (!program) {
         sunIndex_ = -1;
         return std::unexpected(program.error());
@@ -185,21 +196,42 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     glDisable(GL_POLYGON_OFFSET_FILL);
     const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float farDepth = 1.0f;
-    for (GLint b = 0; b < 3; ++b)
-        glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
-
+    auto clearTargets = [&] {
+        for (GLint b = 0; b < 3; ++b)
+            glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
+        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
+    };
+    const glm::vec3 irradiance = sun.color * sun.intensity;
     const GLuint p = *program;
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     glUseProgram(p);
-    glProgramUniformMatrix4fv(p, loc("uTileViewProj"), count, GL_FALSE, glm::value_ptr(viewProj[0]));
-    glProgramUniform1fv(p, loc("uTexelArea"), count, texelArea.data());
-    const glm::vec3 irradiance = sun.color * sun.intensity;
     glProgramUniform3fv(p, loc("uSunIrradiance"), 1, glm::value_ptr(irradiance));
-    // Culled once against the box that holds every tile; rsm.geom drops a
-    // triangle from the tiles it misses.
-    const auto items = buildDrawList(geometry.draws(), rsmUnionViewProj(tiles_), frame.camera.position);
-    geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
+    if (perTile) {
+        // Each tile attaches its layer of the four arrays, culls with its own
+        // box and draws only what it holds: no geometry-shader broadcast.
+        const GLuint targets[] = {position_.id(), normal_.id(), flux_.id(), depth_.id()};
+        const GLenum attachments[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                      GL_DEPTH_ATTACHMENT};
+        for (std::size_t k = 0; k < tiles_.size(); ++k) {
+            for (int a = 0; a < 4; ++a)
+                glNamedFramebufferTextureLayer(fbo_.id(), attachments[a], targets[a], 0, GLint(k));
+            clearTargets();
+            glProgramUniformMatrix4fv(p, loc("uViewProj"), 1, GL_FALSE, glm::value_ptr(tiles_[k].viewProj));
+            glProgramUniform1f(p, loc("uTileTexelArea"), tiles_[k].texelArea);
+            const auto items = buildDrawList(geometry.draws(), tiles_[k].viewProj, frame.camera.position);
+            geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
+        }
+        for (int a = 0; a < 4; ++a)
+            glNamedFramebufferTexture(fbo_.id(), attachments[a], targets[a], 0); // layered again
+    } else {
+        clearTargets();
+        glProgramUniformMatrix4fv(p, loc("uTileViewProj"), count, GL_FALSE, glm::value_ptr(viewProj[0]));
+        glProgramUniform1fv(p, loc("uTexelArea"), count, texelArea.data());
+        // Culled once against the box that holds every tile; rsm.geom drops a
+        // triangle from the tiles it misses.
+        const auto items = buildDrawList(geometry.draws(), rsmUnionViewProj(tiles_), frame.camera.position);
+        geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
+    }
     return {};
 }
 

@@ -87,6 +87,9 @@ class RsmPass {
     void releaseTargets();
 
     std::array<Program, kMaxRsmCascades> programs_; // [k] renders k + 1 tiles
+    // rsm.tileDraws = perTile: one draw per tile through rsm.vert alone (RSM_NO_GEOMETRY_SHADER).
+    scene::Expected<GLuint> perTileProgram();
+    Program perTileProgram_;
     int sunIndex_ = -1;
     std::vector<RsmTile> tiles_;
     int tileSize_ = 0;

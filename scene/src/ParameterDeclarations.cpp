@@ -133,6 +133,10 @@ std::vector<ParameterInfo> declareParameters() {
         real("effects.sunRayDensity", 0.8, 0.0, 2.0, "", "Effects",
              "Length of the radial blur as a fraction of the distance to the sun", P::SunRays),
         // --- RSM ---
+        choice("rsm.tileDraws", "perTile", {"perTile", "geometryShader"}, "RSM",
+               "How the RSM tiles are drawn: perTile culls and draws each tile on its own; geometryShader "
+               "draws the scene once and broadcasts every triangle to all tiles",
+               P::Rsm),
         integer("rsm.tileSize", 256, 32, 1024, "px", "RSM",
                 "Width and height of one reflective-shadow-map tile (one tile per LPV cascade)",
                 P::Rsm | kLpvAll),

@@ -76,6 +76,41 @@ TEST_F(ShadowCascadeDrawsGLTest, OneDrawPerCascadeGivesTheGeometryShadersMaps) {
     EXPECT_LE(worst, 1e-5f);
 }
 
+// rsm.tileDraws: the RSM tiles drawn one by one give the broadcast's tiles.
+TEST_F(ShadowCascadeDrawsGLTest, OneDrawPerRsmTileGivesTheGeometryShadersTiles) {
+    auto tiles = [](const std::string& mode) {
+        scene::Project project = cornellWithSun();
+        EXPECT_TRUE(project.parameters.setFromText("rsm.tileDraws", mode).has_value());
+        EXPECT_TRUE(project.parameters.set("rsm.tileSize", 64).has_value());
+        auto r = renderer::ForwardRenderer::create();
+        EXPECT_TRUE(r.has_value()) << r.error().describe();
+        r->setScene(project.scene);
+        auto ok = r->render(project.scene, project.parameters, project.scene.cameras.front(), 64, 48);
+        EXPECT_TRUE(ok.has_value()) << ok.error().describe();
+        return std::make_pair(r->debugImages("rsm"), r->readHdr());
+    };
+    const auto [broadcast, broadcastHdr] = tiles("geometryShader");
+    const auto [perTile, perTileHdr] = tiles("perTile");
+    ASSERT_EQ(broadcast.size(), perTile.size());
+    ASSERT_EQ(broadcast.size(), 12u) << "position, normal and flux of 4 tiles";
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i < broadcast.size(); ++i) {
+        ASSERT_EQ(broadcast[i].pixels.size(), perTile[i].pixels.size());
+        std::size_t differing = 0;
+        for (std::size_t p = 0; p < broadcast[i].pixels.size(); ++p)
+            differing += std::abs(broadcast[i].pixels[p] - perTile[i].pixels[p]) > 1e-5f ? 1 : 0;
+        EXPECT_EQ(differing, 0u) << broadcast[i].name;
+        if (broadcast[i].name.ends_with("-flux"))
+            for (std::size_t p = 0; p < broadcast[i].pixels.size(); p += 4)
+                lit += broadcast[i].pixels[p] > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(lit, 100u) << "the sun lights nothing the RSM sees: the comparison proves nothing";
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < broadcastHdr.size(); ++i)
+        worst = std::max(worst, std::abs(broadcastHdr[i] - perTileHdr[i]));
+    EXPECT_LE(worst, 1e-5f);
+}
+
 // The camera moves by a millimetre: the near cascades, snapped to finer
 // texels, move with it; the far ones keep their layers. The maps equal a
 // fresh renderer's.
