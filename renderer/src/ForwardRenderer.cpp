@@ -1,6 +1,7 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include "ForwardRendererImpl.h"
+#include "ImageRows.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/scene/LtcSpecular.h"
 
@@ -105,8 +106,7 @@ int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 int ForwardRenderer::shadowCascadesDrawn() const {
-    const GraphPassReport* shadows = impl_->graph.report().find(scene::passName(scene::Pass::ShadowMaps));
-    return shadows && shadows->status == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
+    return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
 }
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
@@ -161,8 +161,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         return makeError(ErrorCode::InvalidValue, "render", "frame graph", e.what());
     }
     if (d.plan.lpvRuns) {
-        const GraphPassReport* propagation = d.graph.report().find(scene::passName(scene::Pass::LpvPropagation));
-        if (propagation && propagation->status == PassStatus::Reused)
+        if (d.graph.status(scene::Pass::LpvPropagation) == PassStatus::Reused)
             d.lpv->reuse();
         else
             d.lpv->finish(d.plan.settings, d.plan.cameraGv, d.plan.sky.runs(), d.localInputs());
@@ -193,15 +192,6 @@ void ForwardRenderer::blitRegionTo(GLuint framebuffer, int srcX0, int srcY0, int
 }
 
 namespace {
-
-template <class T>
-void flipRows(std::vector<T>& pixels, int width, int height, int channels) {
-    const std::size_t row = std::size_t(width) * std::size_t(channels);
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row));
-}
 
 std::vector<float> readFloats(GLuint texture, GLenum format, int channels, int width, int height) {
     std::vector<float> px(std::size_t(width) * std::size_t(height) * std::size_t(channels));

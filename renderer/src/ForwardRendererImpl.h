@@ -37,6 +37,20 @@ inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& li
             .add(l.tangent).add(l.twoSided).add(l.unit);
 }
 
+// A graph pass's decision when no scene analysis stands behind it: it runs
+// (or does not) for the reason given.
+inline EffectDecision runsBecause(std::string why) {
+    EffectDecision d;
+    d.wanted = true;
+    d.reason = std::move(why);
+    return d;
+}
+inline EffectDecision skippedBecause(std::string why) {
+    EffectDecision d;
+    d.reason = std::move(why);
+    return d;
+}
+
 struct ForwardRenderer::Impl {
     // The forward and tonemap programs, built at create(); their uniform locations looked up once.
     ProgramCache programs;

@@ -4,6 +4,7 @@
 // with a picture of their own (the LPV's slices of the DC term, shadow
 // maps as depth) give theirs; everything else is read back as stored.
 #include "ForwardRendererImpl.h"
+#include "ImageRows.h"
 
 #include <algorithm>
 
@@ -11,21 +12,9 @@ namespace lpv::renderer {
 
 namespace {
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::vector<DebugImage> keepSuffix(std::vector<DebugImage> images, const std::string& suffix) {
-    std::erase_if(images, [&](const DebugImage& i) { return !endsWith(i.name, suffix); });
+    std::erase_if(images, [&](const DebugImage& i) { return !i.name.ends_with(suffix); });
     return images;
-}
-
-void flipRows(std::vector<float>& pixels, int width, int height, int channels) {
-    const std::size_t row = std::size_t(width) * std::size_t(channels);
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * row));
 }
 
 // One layer (or z slice) of a texture as stored, rows top to bottom.

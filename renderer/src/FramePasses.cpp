@@ -97,13 +97,6 @@ void setLightUniforms(const CachedProgram& shader, const scene::Scene& scene) {
     }
 }
 
-EffectDecision always(const std::string& why) {
-    EffectDecision d;
-    d.wanted = true;
-    d.reason = why;
-    return d;
-}
-
 graph::ResourceDesc target2D(GLenum format, int w, int h) {
     return {graph::ResourceKind::Texture2D, format, w, h};
 }
@@ -171,7 +164,7 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     });
     graph::PassSpec p;
     p.id = Pass::ShadowMaps;
-    p.decision = always("direct light is shadowed");
+    p.decision = runsBecause("direct light is shadowed");
     p.writes = {"shadowMaps"};
     p.inputsKey = cameraKey(frame); // the sun's cascades follow the camera
     // What the maps are drawn from besides the cascades' matrices: a cascade
@@ -194,9 +187,8 @@ void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::DepthPrepass;
-        p.decision = prepass ? always("output.depthPrepass is on: shading lights each visible pixel once")
-                             : EffectDecision{"Depth pre-pass", "output.depthPrepass", "false", false, true,
-                                              "output.depthPrepass is off"};
+        p.decision = prepass ? runsBecause("output.depthPrepass is on: shading lights each visible pixel once")
+                             : skippedBecause("output.depthPrepass is off");
         p.writes = {"camera.depth"};
         p.execute = [this](graph::PassContext& ctx) {
             attachCameraTargets();
@@ -207,7 +199,7 @@ void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
     }
     graph::PassSpec p;
     p.id = Pass::Shading;
-    p.decision = always("the image");
+    p.decision = runsBecause("the image");
     p.final = true;
     p.reads = {"shadowMaps"};
     if (prepass)
@@ -351,9 +343,8 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::Exposure;
-        p.decision = autoExposure ? always("output.exposureMode is auto")
-                                  : EffectDecision{"Auto exposure", "output.exposureMode", "manual", false, true,
-                                                   "output.exposureMode is manual"};
+        p.decision = autoExposure ? runsBecause("output.exposureMode is auto")
+                                  : skippedBecause("output.exposureMode is manual");
         p.reads = {"camera.hdr"};
         p.writes = {"exposure"};
         p.execute = [this](graph::PassContext& ctx) {
@@ -368,7 +359,7 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     }
     graph::PassSpec p;
     p.id = Pass::Tonemap;
-    p.decision = always("the display image");
+    p.decision = runsBecause("the display image");
     p.final = true;
     p.reads = {"camera.hdr"};
     if (autoExposure)

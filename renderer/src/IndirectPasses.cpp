@@ -16,19 +16,6 @@ using scene::Pass;
 
 namespace {
 
-EffectDecision runs(const std::string& why) {
-    EffectDecision d;
-    d.wanted = true;
-    d.reason = why;
-    return d;
-}
-
-EffectDecision skipped(const std::string& why) {
-    EffectDecision d;
-    d.reason = why;
-    return d;
-}
-
 // A resource a pass owns, described by asking GL when the graph needs it.
 void importTexture(graph::FrameGraph& g, std::string name, std::function<GLuint()> id) {
     g.importResource(std::move(name), [id = std::move(id)] {
@@ -138,7 +125,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::Rsm;
-        p.decision = !lpvRuns ? skipped(off) : plan.sun ? runs("the sun lights the scene") : skipped("no directional light");
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.sun ? runsBecause("the sun lights the scene") : skippedBecause("no directional light");
         p.writes = {"rsm.position", "rsm.normal", "rsm.flux"};
         graph::ContentHash h;
         h.add(sceneGeneration).add(frame.camera.position); // the tiles follow the camera's position only
@@ -160,7 +147,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::LocalRsm;
-        p.decision = !lpvRuns ? skipped(off) : plan.local;
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.local;
         p.writes = {"localRsm.position", "localRsm.normal", "localRsm.flux"};
         graph::ContentHash h;
         h.add(sceneGeneration);
@@ -183,7 +170,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::EmissiveVpls;
-        p.decision = !lpvRuns ? skipped(off) : plan.emissive;
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.emissive;
         p.writes = {"emissiveVpls"};
         p.inputsKey = graph::ContentHash().add(sceneGeneration).value();
         p.execute = [this](graph::PassContext& ctx) {
@@ -200,7 +187,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::SkyHeight;
-        p.decision = !lpvRuns ? skipped(off) : plan.sky;
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.sky;
         p.writes = {"skyHeight"};
         p.inputsKey = graph::ContentHash().add(sceneGeneration).add(plan.cascades).value();
         p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
@@ -231,8 +218,8 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     // A visualizer that reads the volumes back watches the computation itself: no reuse while it does.
     const std::optional<std::uint64_t> propagationKey =
         lpv->capturing() ? std::nullopt : std::optional<std::uint64_t>(lpvKey);
-    const EffectDecision lpvDecision = lpvRuns ? runs(plan.sun ? "the sun's RSM" : "local lights or emissive surfaces")
-                                               : skipped(plan.lpvOffReason);
+    const EffectDecision lpvDecision = lpvRuns ? runsBecause(plan.sun ? "the sun's RSM" : "local lights or emissive surfaces")
+                                               : skippedBecause(plan.lpvOffReason);
     {
         graph::PassSpec p;
         p.id = Pass::LpvInjection;
@@ -254,7 +241,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::SkyInjection;
-        p.decision = !lpvRuns ? skipped(off) : plan.sky;
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.sky;
         p.reads = {"skyHeight", "lpv.volumes", "lpv.accumulator"};
         p.writes = {"lpv.volumes", "lpv.accumulator"};
         p.inputsKey = graph::ContentHash().add(lpvKey).add(frame.scene.sky).value();
@@ -269,9 +256,9 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::LpvNormals;
-        p.decision = !lpvRuns ? skipped(off)
-                     : settings.directed ? runs("directed propagation")
-                                         : skipped("lpv.directedPropagation is off");
+        p.decision = !lpvRuns ? skippedBecause(off)
+                     : settings.directed ? runsBecause("directed propagation")
+                                         : skippedBecause("lpv.directedPropagation is off");
         p.reads = {"lpv.volumes"}; // the VPL normals summed at injection
         p.writes = {"lpv.normals"};
         p.inputsKey = lpvKey;
@@ -285,9 +272,9 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         graph::PassSpec p;
         p.id = Pass::GeometryVolume;
         // Bounces reflect at the GV's surfels, so they need it even without occlusion.
-        p.decision = !lpvRuns ? skipped(off)
-                     : settings.occlusion || settings.bounces > 1 ? runs("lpv.occlusion or lpv.bounces > 1")
-                                                                   : skipped("lpv.occlusion is off and one bounce");
+        p.decision = !lpvRuns ? skippedBecause(off)
+                     : settings.occlusion || settings.bounces > 1 ? runsBecause("lpv.occlusion or lpv.bounces > 1")
+                                                                   : skippedBecause("lpv.occlusion is off and one bounce");
         if (plan.sun)
             p.reads = {"rsm.position", "rsm.normal"};
         if (plan.cameraGv)
@@ -320,9 +307,9 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::LpvBounces;
-        p.decision = !lpvRuns ? skipped(off)
-                     : settings.bounces > 1 ? runs("lpv.bounces = " + std::to_string(settings.bounces))
-                                            : skipped("lpv.bounces is 1");
+        p.decision = !lpvRuns ? skippedBecause(off)
+                     : settings.bounces > 1 ? runsBecause("lpv.bounces = " + std::to_string(settings.bounces))
+                                            : skippedBecause("lpv.bounces is 1");
         p.reads = {"lpv.volumes", "lpv.accumulator", "lpv.geometry"};
         p.writes = {"lpv.volumes", "lpv.accumulator"};
         p.inputsKey = propagationKey;
@@ -337,7 +324,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     {
         graph::PassSpec p;
         p.id = Pass::Subsurface;
-        p.decision = !lpvRuns ? skipped(off) : plan.sss;
+        p.decision = !lpvRuns ? skippedBecause(off) : plan.sss;
         p.reads = {"rsm.position", "rsm.normal", "rsm.flux", "lpv.volumes"};
         p.writes = {"subsurface.accumulator"};
         p.inputsKey = lpvKey;

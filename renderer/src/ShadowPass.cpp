@@ -1,5 +1,7 @@
 #include "ShadowPass.h"
 
+#include "graph/ContentHash.h"
+
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -23,13 +25,7 @@ GLint loc(GLuint program, const std::string& name) { return glGetUniformLocation
 
 // A cascade layer's content: what it was drawn from and with which matrix.
 std::uint64_t cascadeKey(std::uint64_t contentKey, const glm::mat4& viewProj) {
-    std::uint64_t h = contentKey ^ 0x9e3779b97f4a7c15ull;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&viewProj);
-    for (std::size_t i = 0; i < sizeof(glm::mat4); ++i) {
-        h ^= bytes[i];
-        h *= 0x100000001b3ull;
-    }
-    return h | 1u; // never 0, the "nothing drawn" key
+    return graph::ContentHash().add(contentKey).add(viewProj).value() | 1u; // never 0, the "nothing drawn" key
 }
 
 // "name[i]", built once per name and index rather than every frame.

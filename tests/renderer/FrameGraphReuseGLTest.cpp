@@ -154,4 +154,25 @@ TEST_F(FrameGraphReuseGLTest, RotatingTheCameraKeepsTheRsmButNotTheShadowMaps) {
     expectSameAsWithoutReuse(*r);
 }
 
+// `lpv render --dump` checks names against frameGraphNames() before any frame
+// exists: every name a frame declares (outputs and passes) must be in it.
+TEST_F(FrameGraphReuseGLTest, EveryDeclaredNameIsKnownToDump) {
+    ASSERT_TRUE(params.set("effects.skyInjection", std::string("on")).has_value());
+    ASSERT_TRUE(params.set("lpv.directedPropagation", std::string("on")).has_value());
+    ASSERT_TRUE(params.set("lpv.bounces", 2).has_value());
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    r->setScene(project.scene);
+    render(*r);
+    const std::vector<std::string> declared = r->dumpNames();
+    const std::vector<std::string>& known = renderer::frameGraphNames();
+    EXPECT_GE(declared.size(), 30u) << "outputs and passes of a frame with sky, directed propagation and bounces";
+    for (const std::string& name : declared)
+        EXPECT_NE(std::find(known.begin(), known.end(), name), known.end())
+            << name << " is declared by the frame but `--dump` would reject it";
+    // And what it names can be dumped: the sky's height map is an image.
+    EXPECT_FALSE(r->debugImages("skyHeight").empty());
+    EXPECT_FALSE(r->debugImages("lpv.normals").empty());
+}
+
 } // namespace

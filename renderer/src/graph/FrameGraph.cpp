@@ -42,11 +42,6 @@ GLuint PassContext::id(std::string_view resource) const {
     return r ? graph_.viewOf(*r).id : 0;
 }
 
-ResourceDesc PassContext::desc(std::string_view resource) const {
-    id(resource); // the same declaration check
-    return graph_.viewOf(*graph_.findResource(resource)).desc;
-}
-
 GLuint PassContext::allocateUnit() {
     const auto [first, last] = graph_.reservedUnits_;
     if (nextUnit_ >= first && nextUnit_ <= last)
@@ -64,6 +59,8 @@ GLuint PassContext::bindTexture(GLuint program, GLint samplerLocation, std::stri
 // --- FrameGraph: declarations ---
 
 void FrameGraph::beginFrame() {
+    report_ = {};
+    reportStale_ = false;
     resources_.clear();
     passes_.clear();
     order_.clear();
@@ -387,8 +384,16 @@ scene::Expected<void> FrameGraph::execute(const FrameContext& frame) {
         }
         last_[std::uint32_t(p.id)] = pending_[i];
     }
-    // The report, with the shapes owners allocated while running.
+    reportStale_ = true; // built when asked for: describing imported targets asks GL
+    return {};
+}
+
+const FrameGraphReport& FrameGraph::report() const {
+    if (!reportStale_)
+        return report_;
+    reportStale_ = false;
     report_ = {};
+    // The shapes are the ones owners allocated while running.
     auto entry = [&](std::size_t i) {
         const PassSpec& p = passes_[i];
         GraphPassReport r{scene::passName(p.id), status_[i], reasons_[i], {}, {}};
@@ -407,7 +412,14 @@ scene::Expected<void> FrameGraph::execute(const FrameContext& frame) {
     for (std::size_t i = 0; i < passes_.size(); ++i)
         if (status_[i] == PassStatus::Culled)
             entry(i);
-    return {};
+    return report_;
+}
+
+std::optional<PassStatus> FrameGraph::status(scene::Pass pass) const {
+    for (std::size_t i = 0; i < passes_.size() && i < status_.size(); ++i)
+        if (passes_[i].id == pass)
+            return status_[i];
+    return std::nullopt;
 }
 
 GLuint FrameGraph::resourceId(std::string_view name) const {
@@ -430,10 +442,8 @@ std::vector<std::string> FrameGraph::resourceNames() const {
 }
 
 bool FrameGraph::produced(scene::Pass pass) const {
-    for (std::size_t i = 0; i < passes_.size(); ++i)
-        if (passes_[i].id == pass)
-            return i < status_.size() && status_[i] != PassStatus::Culled;
-    return false;
+    const std::optional<PassStatus> s = status(pass);
+    return s && *s != PassStatus::Culled;
 }
 
 } // namespace lpv::renderer::graph

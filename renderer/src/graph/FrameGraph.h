@@ -74,7 +74,6 @@ class PassContext {
     // The GL name of a resource this pass declared (read or write).
     // Undeclared: throws std::logic_error, which execute() turns into an error value.
     GLuint id(std::string_view resource) const;
-    ResourceDesc desc(std::string_view resource) const;
     // The next texture unit no other binding of this pass uses.
     GLuint allocateUnit();
     // Binds a declared texture to a fresh unit and points the sampler uniform at it.
@@ -110,7 +109,10 @@ class FrameGraph {
     // Runs every pass compile() kept, each timed under its name.
     scene::Expected<void> execute(const FrameContext& frame);
 
-    const FrameGraphReport& report() const { return report_; }
+    // The last frame's passes, reads, writes (with shapes) and reasons; built on first call after execute().
+    const FrameGraphReport& report() const;
+    // A pass's status in the last compile (nullopt: not declared).
+    std::optional<PassStatus> status(scene::Pass pass) const;
     // After execute(): a resource's GL name and shape (0 / empty if the frame did not declare it).
     GLuint resourceId(std::string_view name) const;
     std::optional<ResourceDesc> resourceDesc(std::string_view name) const;
@@ -163,7 +165,8 @@ class FrameGraph {
     std::vector<std::pair<ResourceDesc, Texture>> pool_;        // transient targets free for reuse
     std::set<std::string, std::less<>> fresh_;
     std::pair<GLuint, GLuint> reservedUnits_{1, 0}; // none                  // owned targets allocated this frame
-    FrameGraphReport report_;
+    mutable FrameGraphReport report_;
+    mutable bool reportStale_ = false;
 };
 
 } // namespace lpv::renderer::graph
