@@ -1,4 +1,5 @@
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/WorldMatrices.h"
 
 #include <algorithm>
 #include <array>
@@ -53,12 +54,13 @@ Probe probe(const Scene& scene, const glm::vec3& origin) {
     std::array<float, 5> nearest;
     nearest.fill(std::numeric_limits<float>::max());
     Probe p;
+    const std::vector<glm::mat4> worlds = worldMatrices(scene);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Object& obj = scene.objects[o];
         if (obj.mesh < 0 || std::size_t(obj.mesh) >= scene.meshes.size())
             continue;
         const Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
-        const glm::mat4 m = scene.worldMatrix(int(o));
+        const glm::mat4& m = worlds[o];
         for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
             if (mesh.indices[i] >= mesh.positions.size() || mesh.indices[i + 1] >= mesh.positions.size() ||
                 mesh.indices[i + 2] >= mesh.positions.size())

@@ -1,4 +1,5 @@
 #include "lpv/scene/Picking.h"
+#include "lpv/scene/WorldMatrices.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -70,12 +71,13 @@ Bounds objectWorldBounds(const Scene& scene, int object) {
 std::optional<PickHit> pickObject(const Scene& scene, const glm::vec3& origin, const glm::vec3& direction) {
     const glm::vec3 dir = glm::normalize(direction);
     std::optional<PickHit> best;
+    const std::vector<glm::mat4> worlds = worldMatrices(scene);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Object& obj = scene.objects[o];
         if (!obj.visible || obj.mesh < 0 || std::size_t(obj.mesh) >= scene.meshes.size())
             continue;
         const Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
-        const glm::mat4 world = scene.worldMatrix(int(o));
+        const glm::mat4& world = worlds[o];
         const auto boxHit = rayBox(origin, dir, transformed(mesh.computeBounds(), world));
         if (!boxHit || (best && *boxHit > best->distance))
             continue;

@@ -6,6 +6,7 @@
 // editing the file by hand can find it.
 #include "ProjectJson.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -92,8 +93,9 @@ public:
     const Error& error() const { return *error_; }
 
     void fail(ErrorCode code, std::string location, std::string message) {
-        if (!error_)
-            error_ = Error{code, file_, std::move(location), std::move(message)};
+        if (!error_) // capped as makeError does: a name in the message can be megabytes long
+            error_ = Error{code, capErrorText(file_), capErrorText(std::move(location)),
+                           capErrorText(std::move(message))};
     }
     void fail(Error error) {
         if (!error_)
@@ -644,15 +646,24 @@ void checkParentChains(Reader& r, const std::vector<Object>& objects) {
             i = static_cast<std::size_t>(objects[i].parent);
         }
         if (state[i] == State::OnChain && objects[i].parent >= 0) {
-            std::string loop;
-            bool inLoop = false;
-            for (const std::size_t c : chain)
-                if (inLoop || c == i) {
-                    inLoop = true;
-                    loop += std::to_string(c) + " -> ";
+            const auto first = std::find(chain.begin(), chain.end(), i);
+            const std::span<const std::size_t> loop(first, chain.end());
+            // A loop of 100,000 objects is named by its ends and its length, not listed.
+            constexpr std::size_t kHead = 8;
+            constexpr std::size_t kTail = 2;
+            std::string text;
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+                if (loop.size() > kHead + kTail + 1 && k == kHead) {
+                    text += "... -> ";
+                    k = loop.size() - kTail;
                 }
+                text += std::to_string(loop[k]) + " -> ";
+            }
+            text += std::to_string(i);
+            if (loop.size() > kHead + kTail + 1)
+                text += concat(": a loop of ", loop.size(), " objects");
             r.fail(ErrorCode::InvalidValue, indexPath("objects", i) + ".parent",
-                   concat("object \"", objects[i].name, "\" is its own ancestor (parent chain ", loop, i, ")"));
+                   concat("object \"", objects[i].name, "\" is its own ancestor (parent chain ", text, ")"));
             return;
         }
         for (const std::size_t c : chain)

@@ -1,0 +1,152 @@
+// Issue #29, hostile input: project files that are valid or nearly so but
+// huge in one direction. Each must load (or fail with its error) in time
+// linear in its size. The time bounds are hundreds of times what the linear
+// code takes; the quadratic code they replaced took minutes.
+#include "ProjectTestSupport.h"
+
+#include "lpv/scene/Project.h"
+#include "lpv/scene/WorldMatrices.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+
+using namespace lpv::scene;
+using namespace lpv::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr auto kBound = std::chrono::seconds(5);
+
+Mesh unitQuad() {
+    Mesh quad;
+    quad.name = "quad";
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quad.normals.assign(4, {0, 0, 1});
+    quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    quad.submeshes = {{0, 6, 0}};
+    return quad;
+}
+
+// Object i is object i-1's child, one unit further along x, and shows the quad.
+Project parentChain(std::size_t n) {
+    Project p;
+    p.name = "chain";
+    Material m;
+    m.name = "m";
+    p.scene.materials = {m};
+    p.scene.meshes = {unitQuad()};
+    p.scene.objects.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        Object& o = p.scene.objects[i];
+        o.name = "o" + std::to_string(i);
+        o.mesh = 0;
+        o.parent = int(i) - 1;
+        o.transform.translation = {1, 0, 0};
+    }
+    return p;
+}
+
+class ProjectLargeInput : public TempDirTest {
+protected:
+    ProjectLargeInput() : TempDirTest("lpv-large-") {}
+};
+
+} // namespace
+
+// World matrices used to walk each object's chain to the root: a chain of
+// 100,000 objects took 178 s to load and show (`lpv info`). Now one pass.
+TEST_F(ProjectLargeInput, ParentChainOf100000ObjectsLoadsWithItsWorldBoundsInLinearTime) {
+    constexpr std::size_t kCount = 100000;
+    const fs::path file = dir_ / "chain.lpvproj";
+    ASSERT_TRUE(saveProject(parentChain(kCount), file));
+    const auto loaded = loadProject(file);
+    ASSERT_TRUE(loaded) << loaded.error().message;
+    ASSERT_EQ(loaded->scene.objects.size(), kCount);
+    EXPECT_EQ(loaded->scene.objects.back().parent, int(kCount) - 2);
+
+    const auto start = std::chrono::steady_clock::now();
+    const Bounds bounds = loaded->scene.worldBounds();
+    const std::vector<glm::mat4> world = worldMatrices(loaded->scene);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, kBound);
+    // Object i sits at x = i + 1, its quad reaching to i + 2 (exact in float).
+    EXPECT_EQ(bounds.min, glm::vec3(1, 0, 0));
+    EXPECT_EQ(bounds.max, glm::vec3(float(kCount) + 1.0f, 1, 0));
+    ASSERT_EQ(world.size(), kCount);
+    EXPECT_EQ(world.back()[3], glm::vec4(float(kCount), 0, 0, 1));
+    EXPECT_EQ(world.back(), loaded->scene.worldMatrix(int(kCount) - 1));
+}
+
+// The one-pass matrices are the per-object ones bit for bit, whatever the
+// order of parents and children in the list and however the transforms round.
+TEST(WorldMatrices, EqualWorldMatrixBitForBitInAnyParentOrder) {
+    Scene s;
+    s.objects.resize(40);
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        Object& o = s.objects[i];
+        // Parents before and after their children, several roots, chains of several levels.
+        o.parent = i % 7 == 0 ? -1 : int(((i * 2654435761u) >> 7) % i);
+        const float f = float(i) * 0.37f;
+        o.transform.translation = {f, -0.3f * f, 1.0f / (f + 1.0f)};
+        o.transform.rotation = glm::normalize(glm::quat(0.9f, 0.1f * f, -0.2f, 0.05f * f));
+        o.transform.scale = {1.1f, 0.7f + 0.01f * f, 1.3f};
+    }
+    // Forward references: object 3's parent comes later in the list.
+    s.objects[3].parent = 30;
+    s.objects[30].parent = 35;
+    s.objects[35].parent = -1;
+    const std::vector<glm::mat4> world = worldMatrices(s);
+    ASSERT_EQ(world.size(), s.objects.size());
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        const glm::mat4 one = s.worldMatrix(int(i));
+        EXPECT_EQ(std::memcmp(&world[i], &one, sizeof one), 0) << "object " << i;
+    }
+    const glm::mat4 three = s.objects[35].transform.matrix() * s.objects[30].transform.matrix() *
+                            s.objects[3].transform.matrix();
+    EXPECT_EQ(world[3], three);
+}
+
+// A scene the loader would refuse still cannot hang either function.
+TEST(WorldMatrices, CyclicChainEndsWhereItCloses) {
+    Scene s;
+    s.objects.resize(3);
+    s.objects[0].parent = 2;
+    s.objects[1].parent = 0;
+    s.objects[2].parent = 1;
+    for (Object& o : s.objects)
+        o.transform.translation = {1, 0, 0};
+    const std::vector<glm::mat4> world = worldMatrices(s);
+    ASSERT_EQ(world.size(), 3u);
+    for (const glm::mat4& m : world)
+        EXPECT_TRUE(std::isfinite(m[3].x));
+    EXPECT_EQ(world[1][3], glm::vec4(1, 0, 0, 1)); // 0 -> 2 -> 1 -> (0): cut before 0 comes round again
+    EXPECT_EQ(world[0][3], glm::vec4(3, 0, 0, 1));
+    EXPECT_TRUE(std::isfinite(s.worldMatrix(0)[3].x));
+}
+
+// The cycle check is linear too, and a loop of 100,000 objects is named by
+// its ends and length (it was listed in full: a 700 KB message).
+TEST_F(ProjectLargeInput, ParentCycleOf100000ObjectsIsInvalidValueNamedByItsEnds) {
+    constexpr std::size_t kCount = 100000;
+    const fs::path file = dir_ / "cycle.lpvproj";
+    ASSERT_TRUE(saveProject(parentChain(kCount), file));
+    std::string text = readFile(file);
+    const std::string first = "\"parent\": -1";
+    const std::size_t at = text.find(first);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, first.size(), "\"parent\": " + std::to_string(kCount - 1));
+    writeFile(file, text);
+
+    const auto start = std::chrono::steady_clock::now();
+    const auto loaded = loadProject(file);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, kBound);
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().code, ErrorCode::InvalidValue);
+    EXPECT_EQ(loaded.error().location, "objects[0].parent");
+    EXPECT_EQ(loaded.error().message,
+              "object \"o0\" is its own ancestor (parent chain 0 -> 99999 -> 99998 -> 99997 -> 99996 -> 99995 -> "
+              "99994 -> 99993 -> ... -> 2 -> 1 -> 0: a loop of 100000 objects)");
+}
