@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <sstream>
+#include <unordered_map>
 
 namespace lpv::scene::detail {
 namespace {
@@ -1033,32 +1034,108 @@ Json cameraPathToDocument(const CameraPath& p) {
 
 namespace {
 
-// Only records where parsing stopped. nlohmann reports a number overflow
-// (1e999) as out_of_range without a byte offset; a second pass with this
-// finds it.
-class ErrorLocator final : public nlohmann::json_sax<Json> {
+// Builds the document Json::parse would, in time linear in the number of
+// keys. nlohmann's ordered_map finds a key by a linear search, so its parser
+// took N^2/2 string comparisons for an object of N keys (100,000 unknown
+// parameter keys: 6.9 s before the loader could name the first). Objects of a
+// few keys keep that search; a larger one gets a hash index. A repeated key
+// keeps its first place and its last value, as with Json::parse. A parse
+// error is recorded, not thrown: where parsing stopped and the token there.
+class DocumentBuilder final : public nlohmann::json_sax<Json> {
 public:
-    bool null() override { return true; }
-    bool boolean(bool) override { return true; }
-    bool number_integer(number_integer_t) override { return true; }
-    bool number_unsigned(number_unsigned_t) override { return true; }
-    bool number_float(number_float_t, const string_t&) override { return true; }
-    bool string(string_t&) override { return true; }
-    bool binary(binary_t&) override { return true; }
-    bool start_object(std::size_t) override { return true; }
-    bool key(string_t&) override { return true; }
-    bool end_object() override { return true; }
-    bool start_array(std::size_t) override { return true; }
-    bool end_array() override { return true; }
-    bool parse_error(std::size_t position, const std::string& lastToken, const Json::exception&) override {
-        // `position` counts the bytes read, which ends after the bad token.
-        offset = position >= lastToken.size() ? position - lastToken.size() : 0;
-        token = lastToken;
+    struct Failure {
+        bool numberOverflow = false; // else a syntax error
+        std::size_t position = 0;    // bytes read, which ends after the bad token
+        std::string token;
+        std::string what;
+    };
+
+    bool null() override { return add(Json(nullptr)); }
+    bool boolean(bool v) override { return add(Json(v)); }
+    bool number_integer(number_integer_t v) override { return add(Json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return add(Json(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return add(Json(v)); }
+    bool string(string_t& v) override { return add(Json(std::move(v))); }
+    bool binary(binary_t&) override { return false; } // JSON text has no binary values
+    bool start_object(std::size_t) override { return open(Json::object()); }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(Json::array()); }
+    bool end_array() override { return close(); }
+
+    bool key(string_t& k) override {
+        Level& level = levels_.back();
+        // ordered_map is a vector of pairs; as one, an index is a position and
+        // appending skips the map's own key search.
+        Json::object_t::Container& members = level.value->get_ref<Json::object_t&>();
+        if (level.index.empty() && members.size() < kIndexedFrom) {
+            for (auto& [name, value] : members)
+                if (name == k) {
+                    slot_ = &value;
+                    return true;
+                }
+        } else {
+            if (level.index.empty())
+                for (std::size_t i = 0; i < members.size(); ++i)
+                    level.index.emplace(members[i].first, i);
+            if (const auto it = level.index.find(k); it != level.index.end()) {
+                slot_ = &members[it->second].second;
+                return true;
+            }
+            level.index.emplace(k, members.size());
+        }
+        members.emplace_back(std::move(k), nullptr);
+        slot_ = &members.back().second;
+        return true;
+    }
+
+    bool parse_error(std::size_t position, const std::string& lastToken, const Json::exception& e) override {
+        // nlohmann reports a number too large for a double (1e999) as out_of_range 406.
+        failure = Failure{e.id == 406, position, lastToken, e.what()};
         return false;
     }
 
-    std::size_t offset = 0;
-    std::string token;
+    Json document;
+    std::optional<Failure> failure;
+
+private:
+    static constexpr std::size_t kIndexedFrom = 16;
+
+    struct Level {
+        Json* value; // an object or an array
+        std::unordered_map<std::string, std::size_t> index; // key -> member, once the object is large
+    };
+
+    // The new value's place: the root, the end of the open array, or the
+    // open object's member named by the last key.
+    Json* place(Json&& v) {
+        if (levels_.empty()) {
+            document = std::move(v);
+            return &document;
+        }
+        Json& open = *levels_.back().value;
+        if (open.is_array()) {
+            auto& elements = open.get_ref<Json::array_t&>();
+            elements.push_back(std::move(v));
+            return &elements.back();
+        }
+        *slot_ = std::move(v);
+        return slot_;
+    }
+    bool add(Json&& v) {
+        place(std::move(v));
+        return true;
+    }
+    bool open(Json&& v) {
+        levels_.push_back(Level{place(std::move(v)), {}});
+        return true;
+    }
+    bool close() {
+        levels_.pop_back();
+        return true;
+    }
+
+    std::vector<Level> levels_;
+    Json* slot_ = nullptr;
 };
 
 // Far deeper than any project file (the format nests 6 levels). nlohmann
@@ -1135,27 +1212,28 @@ Expected<Json> parseProjectText(const std::string& text, const std::string& file
         return makeError(ErrorCode::InvalidValue, file, atByte(*at),
                          concat("the JSON nests more than ", kMaxJsonDepth,
                                 " arrays and objects inside each other; no project file does"));
+    DocumentBuilder builder;
+    bool parsed = false;
     try {
-        return Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        // nlohmann counts bytes from 1; an error past the last byte means the text stopped early.
-        const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        if (offset >= text.size())
-            return makeError(ErrorCode::Truncated, file, atByte(text.size()),
-                             "the file ends in the middle of the JSON (cut off?): " + withoutExceptionPrefix(e.what()));
-        return makeError(ErrorCode::NotJson, file, atByte(offset), "not valid JSON: " + withoutExceptionPrefix(e.what()));
-    } catch (const Json::out_of_range&) {
-        ErrorLocator locator;
-        try {
-            Json::sax_parse(text, &locator);
-        } catch (const Json::exception&) {
-            // The locator stops at the first error; anything else leaves offset 0.
-        }
-        return makeError(ErrorCode::NonFinite, file, atByte(locator.offset),
-                         "the number " + locator.token + " is too large to be finite");
+        parsed = Json::sax_parse(text, &builder);
     } catch (const Json::exception& e) {
         return makeError(ErrorCode::NotJson, file, "", e.what());
     }
+    if (parsed)
+        return std::move(builder.document);
+    if (!builder.failure)
+        return makeError(ErrorCode::NotJson, file, "", "not valid JSON");
+    const DocumentBuilder::Failure& failure = *builder.failure;
+    if (failure.numberOverflow)
+        return makeError(ErrorCode::NonFinite, file,
+                         atByte(failure.position >= failure.token.size() ? failure.position - failure.token.size() : 0),
+                         "the number " + failure.token + " is too large to be finite");
+    // nlohmann counts bytes from 1; an error past the last byte means the text stopped early.
+    const std::size_t offset = failure.position > 0 ? failure.position - 1 : 0;
+    if (offset >= text.size())
+        return makeError(ErrorCode::Truncated, file, atByte(text.size()),
+                         "the file ends in the middle of the JSON (cut off?): " + withoutExceptionPrefix(failure.what));
+    return makeError(ErrorCode::NotJson, file, atByte(offset), "not valid JSON: " + withoutExceptionPrefix(failure.what));
 }
 
 } // namespace lpv::scene::detail
