@@ -29,8 +29,18 @@ and drawn as a placeholder instead of failing the import.
 
   -o, --output FILE         The project to create or add to (required)
   --texture-path DIR        Also look for textures in DIR (and DIR/maps); repeatable
+  --allow-path DIR          Let the scene (and an existing PROJECT) name files in
+                            DIR too; repeatable (see "What a scene may read")
   --no-sun                  Do not add a sun when the project ends up without lights
   --verbose                 Print every warning (default: the first 20)
+
+What a scene may read: files it names (textures, glTF buffers) are read
+only from the scene file's folder, its maps/ and ../maps/ folders, each
+--texture-path (and its maps/), each --allow-path and the folders in
+LPV_ALLOW_PATH (':'-separated), after resolving "..", %-escapes and symbolic
+links. Anything else (an absolute system path, an escape, a folder, a FIFO)
+is a missing texture with a warning that names it, or an error for a glTF
+buffer. Copies in the project are never more widely readable than rw-r--r--.
 
 Prints per file: objects, triangles, materials, textures found/missing,
 degenerate triangles dropped, time. Exit code 1 when a file cannot be
@@ -109,6 +119,8 @@ int runImport(Args args) {
     importers::ImportOptions options;
     for (const std::string& dir : args.options("--texture-path"))
         options.textureSearchPaths.emplace_back(dir);
+    for (const std::string& dir : args.options("--allow-path"))
+        options.allowPaths.emplace_back(dir);
     const bool noSun = args.flag("--no-sun");
     const bool verbose = args.flag("--verbose");
     if (!args.missingValue().empty())
@@ -128,11 +140,13 @@ int runImport(Args args) {
     scene::Project project;
     const bool adding = fs::exists(projectFile);
     if (adding) {
-        auto loaded = scene::loadProject(projectFile);
+        auto loaded = scene::loadProject(projectFile, options.allowPaths);
         if (!loaded) {
             std::cerr << "lpv: cannot add to it: " << loaded.error().describe() << "\n";
             return kFailure;
         }
+        for (const std::string& warning : loaded->loadWarnings)
+            std::cerr << "  warning: " << projectFile.string() << ": " << warning << "\n";
         project = std::move(*loaded);
     } else {
         project.name = projectFile.stem().string();

@@ -36,6 +36,8 @@ std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return std::nullopt;
     }
+    for (const std::string& warning : project->loadWarnings)
+        std::cerr << "  warning: " << projectFile << ": " << warning << "\n";
     for (const std::string& kv : sets) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos) {

@@ -176,6 +176,8 @@ int runVideo(Args args) {
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return kFailure;
     }
+    for (const std::string& warning : project->loadWarnings)
+        std::cerr << "  warning: " << pos.front() << ": " << warning << "\n";
     if (auto ok = video::checkVideoOptions(*project, options); !ok) {
         // A missing path is about the project; everything else about the options given.
         if (ok.error().location == "pathName") {

@@ -404,8 +404,20 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
         return false;
     }
     autosave_->discard(); // the project being replaced was saved or discarded by the caller
+    const std::vector<std::string> warnings = loaded->loadWarnings;
     showProject(std::move(*loaded), path);
     addRecentFile(path);
+    if (!warnings.empty()) {
+        // Texture references led out of the project's folder: say so where
+        // the user looks, and in the dialog when a person opened it.
+        QStringList lines;
+        for (const std::string& w : warnings)
+            lines << QString::fromStdString(w);
+        statusBar()->showMessage(tr("%1: %n texture reference(s) outside the project not read", "", int(lines.size()))
+                                     .arg(path));
+        if (interactive)
+            QMessageBox::warning(this, tr("Textures not read"), lines.join("\n"));
+    }
     return true;
 }
 

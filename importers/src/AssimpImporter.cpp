@@ -6,6 +6,7 @@
 #include "AssimpLog.h"
 #include "TextureResolver.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -30,27 +31,37 @@ glm::vec3 toVec3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Resolves texture names case-insensitively and keeps the counts and
-// warnings of one import (each missing name is reported once).
+// warnings of one import (each missing name is reported once). A file found
+// through a symbolic link that leads out of the import's folders is refused
+// like any other reference outside them (importReadRoots).
 class TextureSlots {
   public:
-    TextureSlots(const std::filesystem::path& file, TextureResolver& resolver, ImportResult& result)
-        : file_(file), resolver_(resolver), result_(result) {}
+    TextureSlots(const std::filesystem::path& file, TextureResolver& resolver, const scene::ReadRoots& roots,
+                 ImportResult& result)
+        : file_(file), resolver_(resolver), roots_(roots), result_(result) {}
 
-    // The absolute path, or the name as stored when the file is missing (the
-    // renderer draws a placeholder for it).
+    // The absolute path, or the stored name's last component when the file is
+    // missing or may not be read (the renderer draws a placeholder for it):
+    // never the stored path itself, which a later copy into the project
+    // would follow (an absolute `map_Kd /etc/shadow`).
     std::string resolve(const aiMaterial& m, aiTextureType type, const std::string& materialName) {
         aiString name;
         if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &name) != AI_SUCCESS || name.length == 0)
             return {};
         const std::string raw(name.C_Str());
+        std::string why = "was not found";
         if (auto found = resolver_.find(raw)) {
-            found_.insert(*found);
-            return found->string();
+            const auto refused = roots_.refusal(*found);
+            if (!refused) {
+                found_.insert(*found);
+                return found->string();
+            }
+            why = "was found as " + scene::capErrorText(found->string()) + ", which " + *refused;
         }
         if (missing_.insert(asciiLower(textureFileName(raw))).second)
-            result_.warnings.push_back(file_.string() + ": texture '" + raw + "' of material '" + materialName +
-                                       "' was not found; a placeholder is drawn instead");
-        return raw;
+            result_.warnings.push_back(file_.string() + ": texture '" + scene::capErrorText(raw) + "' of material '" +
+                                       materialName + "' " + why + "; a placeholder is drawn instead");
+        return std::string(textureFileName(raw));
     }
 
     std::size_t foundCount() const { return found_.size(); }
@@ -59,6 +70,7 @@ class TextureSlots {
   private:
     const std::filesystem::path& file_;
     TextureResolver& resolver_;
+    const scene::ReadRoots& roots_;
     ImportResult& result_;
     std::set<std::filesystem::path> found_;
     std::set<std::string> missing_;
@@ -281,6 +293,28 @@ scene::Camera convertCamera(const aiCamera& c, const glm::mat4& world, const glm
     return cam;
 }
 
+// Assimp opens the files a model names itself (an OBJ's `mtllib`, a glTF's
+// buffers through Assimp): only regular files inside the import's folders
+// (ReadRoots), so `mtllib /etc/shadow` is a missing material library with
+// Assimp's own warning, not a read of the system file. A FIFO is refused
+// rather than blocked on.
+class RootedIOSystem : public Assimp::DefaultIOSystem {
+  public:
+    explicit RootedIOSystem(scene::ReadRoots roots) : roots_(std::move(roots)) {}
+
+    bool Exists(const char* file) const override { return file && !roots_.refusal(std::filesystem::u8path(file)); }
+
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        const bool reading = mode && mode[0] == 'r';
+        if (!file || !reading || roots_.refusal(std::filesystem::u8path(file)))
+            return nullptr;
+        return Assimp::DefaultIOSystem::Open(file, mode);
+    }
+
+  private:
+    scene::ReadRoots roots_;
+};
+
 } // namespace
 
 bool assimpReads(const std::filesystem::path& file) {
@@ -290,6 +324,7 @@ bool assimpReads(const std::filesystem::path& file) {
 
 scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file, const ImportOptions& options) {
     Assimp::Importer importer;
+    importer.SetIOHandler(new RootedIOSystem(importReadRoots(file, options))); // the importer owns it
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_LINE | aiPrimitiveType_POINT);
     AssimpLogCapture log; // Assimp's own warnings ("failed to locate material ...") become ours
     const aiScene* in = importer.ReadFile(
@@ -302,7 +337,8 @@ scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file
         result.warnings.push_back(file.string() + ": " + message);
 
     TextureResolver resolver(textureFoldersFor(file, options.textureSearchPaths));
-    TextureSlots textures(file, resolver, result);
+    const scene::ReadRoots roots = importReadRoots(file, options);
+    TextureSlots textures(file, resolver, roots, result);
     for (unsigned i = 0; i < in->mNumMaterials; ++i)
         result.scene.materials.push_back(convertMaterial(*in->mMaterials[i], file, textures, result));
     if (result.scene.materials.empty()) {

@@ -191,7 +191,8 @@ glm::vec2 convertUv(const glm::vec2& uv) {
 class FourDsParser {
   public:
     FourDsParser(std::span<const std::uint8_t> bytes, const fs::path& file, const ImportOptions& options)
-        : r_(bytes), file_(file), resolver_(textureFoldersFor(file, options.textureSearchPaths)) {}
+        : r_(bytes), file_(file), resolver_(textureFoldersFor(file, options.textureSearchPaths)),
+          roots_(importReadRoots(file, options)) {}
 
     ImportResult parse() {
         readHeader();
@@ -736,41 +737,49 @@ class FourDsParser {
 
     void resolveDiffuse(const RawMaterial& raw, const std::string& label, scene::Material& m) {
         const std::optional<fs::path> diffuse = resolveTexture(raw.diffuseMap, "diffuse map of " + label);
-        m.diffuseTexture = diffuse ? diffuse->string() : raw.diffuseMap;
+        m.diffuseTexture = diffuse ? diffuse->string() : std::string(textureFileName(raw.diffuseMap));
         if (!diffuse)
             return;
         // The thesis convention: <name>_ddn (normal) and <name>_spec (specular)
         // beside the diffuse map. They are optional, so their absence is no warning.
-        if (auto normal = resolver_.findCompanion(*diffuse, "_ddn")) {
+        if (auto normal = resolver_.findCompanion(*diffuse, "_ddn"); normal && !roots_.refusal(*normal)) {
             m.normalTexture = normal->string();
             foundTextures_.insert(*normal);
         }
-        if (auto specular = resolver_.findCompanion(*diffuse, "_spec")) {
+        if (auto specular = resolver_.findCompanion(*diffuse, "_spec"); specular && !roots_.refusal(*specular)) {
             m.specularTexture = specular->string();
             m.specularColor = glm::vec3(1.0f); // the map carries the strength
             foundTextures_.insert(*specular);
         }
     }
 
-    // The absolute path when found, else the name as stored (a placeholder
-    // is drawn for it; resolveTexture has warned).
+    // The absolute path when found, else the stored name's last component
+    // (a placeholder is drawn for it; resolveTexture has warned).
     std::string resolvedOrName(const std::string& name, const std::string& role) {
         const std::optional<fs::path> found = resolveTexture(name, role);
-        return found ? found->string() : name;
+        return found ? found->string() : std::string(textureFileName(name));
     }
 
     // Found: the absolute path. Missing: counted once per name, with a warning
     // that names the file and where it was looked for.
     std::optional<fs::path> resolveTexture(const std::string& name, const std::string& role) {
+        std::string why;
         if (auto found = resolver_.find(name)) {
-            foundTextures_.insert(*found);
-            return found;
+            const auto refused = roots_.refusal(*found); // a symbolic link out of the folders
+            if (!refused) {
+                foundTextures_.insert(*found);
+                return found;
+            }
+            why = "was found as " + scene::capErrorText(found->string()) + ", which " + *refused;
         }
         if (missingTextures_.insert(asciiLower(name)).second) {
-            std::string folders;
-            for (const fs::path& folder : resolver_.folders())
-                folders += (folders.empty() ? "" : ", ") + folder.string();
-            warn("texture '" + name + "' (" + role + ") was not found in " + folders);
+            if (why.empty()) {
+                std::string folders;
+                for (const fs::path& folder : resolver_.folders())
+                    folders += (folders.empty() ? "" : ", ") + folder.string();
+                why = "was not found in " + folders;
+            }
+            warn("texture '" + scene::capErrorText(name) + "' (" + role + ") " + why);
         }
         return std::nullopt;
     }
@@ -792,6 +801,7 @@ class FourDsParser {
     ByteReader r_;
     fs::path file_;
     TextureResolver resolver_;
+    scene::ReadRoots roots_;
     ImportResult result_;
     std::vector<RawMaterial> materials_;
     std::vector<RawFrame> frames_;

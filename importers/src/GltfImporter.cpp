@@ -1,6 +1,8 @@
 #include "lpv/importers/GltfImporter.h"
 
 #include "EmbeddedImages.h"
+#include "TextureResolver.h"
+#include "lpv/importers/Importer.h"
 #include "lpv/scene/FileRead.h"
 
 #include <tiny_gltf.h>
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <vector>
 
 namespace lpv::importers {
 
@@ -53,6 +56,7 @@ struct Context {
     std::filesystem::path file;
     ImportResult& result;
     const EmbeddedBytes& embedded;
+    const scene::ReadRoots& roots;
 };
 
 // The cache file of an embedded image, or "" (counted as missing, with a warning).
@@ -154,14 +158,18 @@ std::string texturePath(const Context& ctx, int textureIndex) {
     const tinygltf::Image& image = m.images[std::size_t(source)];
     if (image.uri.empty() || image.uri.starts_with("data:"))
         return embeddedImagePath(ctx, source, image);
+    // Decoded first, so "%2e%2e/" is the "../" it means; then resolved
+    // (links and "..") and checked against the folders the import may read.
     const std::string decoded = percentDecode(image.uri);
-    const std::filesystem::path p = ctx.file.parent_path() / decoded;
-    if (const auto why = scene::notARegularFile(p)) {
+    const std::filesystem::path p = ctx.file.parent_path() / std::filesystem::u8path(decoded);
+    if (const auto why = ctx.roots.refusal(p)) {
         ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + scene::capErrorText(decoded) + "' " +
                                       (*why == "no such file" ? std::string("not found") : *why) +
                                       " (placeholder used)");
         ++ctx.result.stats.texturesMissing;
-        return decoded;
+        // The last component only: the stored uri would lead a later copy
+        // into the project to the same place.
+        return std::string(textureFileName(decoded));
     }
     ++ctx.result.stats.texturesFound;
     // Absolute, as importScene promises: a path relative to the working
@@ -287,8 +295,12 @@ scene::Transform localTransform(const tinygltf::Node& n) {
         const glm::mat4 f(m);
         t.translation = glm::vec3(f[3]);
         t.scale = {glm::length(glm::vec3(f[0])), glm::length(glm::vec3(f[1])), glm::length(glm::vec3(f[2]))};
-        const glm::mat3 r{glm::vec3(f[0]) / t.scale.x, glm::vec3(f[1]) / t.scale.y, glm::vec3(f[2]) / t.scale.z};
-        t.rotation = glm::quat_cast(r);
+        // A zero column (a collapsed node) has no direction to take a rotation from.
+        if (t.scale.x > 0.0f && t.scale.y > 0.0f && t.scale.z > 0.0f) {
+            const glm::mat3 r{glm::vec3(f[0]) / t.scale.x, glm::vec3(f[1]) / t.scale.y,
+                              glm::vec3(f[2]) / t.scale.z};
+            t.rotation = glm::quat_cast(r);
+        }
         return t;
     }
     if (n.translation.size() == 3)
@@ -339,23 +351,86 @@ void addLightAndCamera(const Context& ctx, const tinygltf::Node& node, const glm
     }
 }
 
-void addNode(const Context& ctx, int index, int parent, const glm::mat4& parentWorld, int depth) {
-    // Node graphs are trees by specification; the depth guard stops a malformed cyclic one.
-    if (index < 0 || std::size_t(index) >= ctx.model.nodes.size() || depth > 256)
-        return;
-    const tinygltf::Node& node = ctx.model.nodes[std::size_t(index)];
-    scene::Object obj;
-    obj.name = node.name;
-    obj.parent = parent;
-    obj.transform = localTransform(node);
-    if (node.mesh >= 0 && std::size_t(node.mesh) < ctx.model.meshes.size())
-        obj.mesh = node.mesh;
-    const int self = int(ctx.result.scene.objects.size());
-    ctx.result.scene.objects.push_back(obj);
-    const glm::mat4 world = parentWorld * obj.transform.matrix();
-    addLightAndCamera(ctx, node, world);
-    for (int child : node.children)
-        addNode(ctx, child, self, world, depth + 1);
+// glTF node graphs are trees by specification, but a file may list a child
+// twice, share a node between parents (a 24-level graph of shared nodes
+// expands to 2^24 copies) or close a cycle. Each node is imported once, under
+// the first parent that reaches it, depth first without recursion (a
+// 100,000-deep chain is fine); every other link to it is dropped with a
+// warning that names both nodes.
+void addNodeTrees(const Context& ctx, const std::vector<int>& roots) {
+    const auto& nodes = ctx.model.nodes;
+    struct Pending {
+        int index;
+        int from;   // the node that lists it, -1 for a scene root
+        int parent; // its parent object, -1 for a root
+        glm::mat4 parentWorld;
+    };
+    std::vector<bool> imported(nodes.size(), false);
+    std::vector<Pending> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, -1, -1, glm::mat4(1.0f)});
+    std::size_t dropped = 0;
+    auto describe = [&](int index) {
+        std::string out = "node " + std::to_string(index);
+        if (index >= 0 && std::size_t(index) < nodes.size() && !nodes[std::size_t(index)].name.empty())
+            out += " ('" + scene::capErrorText(nodes[std::size_t(index)].name) + "')";
+        return out;
+    };
+    auto dropLink = [&](const Pending& p, const std::string& why) {
+        constexpr std::size_t kNamedLinks = 10;
+        if (++dropped <= kNamedLinks)
+            ctx.result.warnings.push_back(ctx.file.string() + ": " + (p.from < 0 ? "the scene" : describe(p.from)) +
+                                          " lists " + describe(p.index) + ", " + why + "; that link is ignored");
+    };
+    while (!stack.empty()) {
+        const Pending p = stack.back();
+        stack.pop_back();
+        if (p.index < 0 || std::size_t(p.index) >= nodes.size()) {
+            dropLink(p, "which does not exist (there are " + std::to_string(nodes.size()) + " nodes)");
+            continue;
+        }
+        if (imported[std::size_t(p.index)]) {
+            dropLink(p, "which is already in the scene (a node listed twice, shared by two parents, or a cycle; "
+                        "glTF nodes form trees)");
+            continue;
+        }
+        imported[std::size_t(p.index)] = true;
+        const tinygltf::Node& node = nodes[std::size_t(p.index)];
+        scene::Object obj;
+        obj.name = node.name;
+        obj.parent = p.parent;
+        obj.transform = localTransform(node);
+        if (node.mesh >= 0 && std::size_t(node.mesh) < ctx.model.meshes.size())
+            obj.mesh = node.mesh;
+        const int self = int(ctx.result.scene.objects.size());
+        ctx.result.scene.objects.push_back(obj);
+        const glm::mat4 world = p.parentWorld * obj.transform.matrix();
+        addLightAndCamera(ctx, node, world);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, p.index, self, world});
+    }
+    if (dropped > 10)
+        ctx.result.warnings.push_back(ctx.file.string() + ": " + std::to_string(dropped - 10) +
+                                      " more node links ignored for the same reasons");
+}
+
+// Every number of every node's transform as the 32-bit float we store: a
+// glTF number such as 1e39 is finite as JSON but infinite as a float, and
+// the error must name the input file and its field, not the project the
+// import would write.
+scene::Expected<void> checkNodeNumbers(const tinygltf::Model& model, const std::filesystem::path& file) {
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        const tinygltf::Node& n = model.nodes[i];
+        const std::pair<const char*, const std::vector<double>*> fields[] = {
+            {"matrix", &n.matrix}, {"translation", &n.translation}, {"rotation", &n.rotation}, {"scale", &n.scale}};
+        for (const auto& [name, values] : fields)
+            for (std::size_t k = 0; k < values->size(); ++k)
+                if (!std::isfinite(float((*values)[k])))
+                    return makeError(ErrorCode::NonFinite, file.string(),
+                                     "nodes[" + std::to_string(i) + "]." + name + "[" + std::to_string(k) + "]",
+                                     std::to_string((*values)[k]) + " is not a finite 32-bit float");
+    }
+    return {};
 }
 
 // tinygltf's own file reader sizes a folder as a huge file (std::bad_alloc on
@@ -366,14 +441,18 @@ constexpr std::uintmax_t kMaxGltfFileBytes = std::uintmax_t{2} << 30;
 
 bool gltfFileExists(const std::string& path, void*) { return !scene::notARegularFile(std::filesystem::u8path(path)); }
 
-bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+// Reads only inside the import's folders (user data: the ReadRoots), so a
+// buffer uri of "/etc/shadow" is an error that says why, and an image uri
+// leading out is not read at all (texturePath warns about it).
+bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* roots) {
     const std::filesystem::path file = std::filesystem::u8path(path);
+    // tinygltf puts "File read error : <path> : " before what we say.
     auto fail = [&](const std::string& why) {
         if (err)
-            *err += scene::capErrorText(path) + ": " + why + "\n";
+            *err += why + "\n";
         return false;
     };
-    if (const auto why = scene::notARegularFile(file))
+    if (const auto why = static_cast<const scene::ReadRoots*>(roots)->refusal(file))
         return fail(*why);
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(file, ec);
@@ -388,28 +467,62 @@ bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const 
     return true;
 }
 
+// tinygltf's warnings about image files it could not find or read: each
+// image gets our own warning in texturePath (with the reason and the
+// placeholder), so these lines would only repeat it.
+std::string withoutImageFileLines(const std::string& warn) {
+    std::string out;
+    std::size_t start = 0;
+    while (start < warn.size()) {
+        std::size_t end = warn.find('\n', start);
+        if (end == std::string::npos)
+            end = warn.size();
+        const std::string_view line(warn.data() + start, end - start);
+        const bool imageFile = line.starts_with("File not found") || line.starts_with("File read error") ||
+                               line.starts_with("File is empty") || line.starts_with("Failed to load external 'uri' for image");
+        if (!line.empty() && !imageFile)
+            out += std::string(line) + "\n";
+        start = end + 1;
+    }
+    if (!out.empty())
+        out.pop_back();
+    return out;
+}
+
 } // namespace
 
-scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, const ImportOptions&) {
+scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, const ImportOptions& options) {
+    const scene::ReadRoots roots = importReadRoots(file, options);
     tinygltf::TinyGLTF loader;
     EmbeddedBytes embedded;
     loader.SetImageLoader(keepUriOrEmbeddedBytes, &embedded);
     loader.SetFsCallbacks({&gltfFileExists, &tinygltf::ExpandFilePath, &gltfReadWholeFile, &tinygltf::WriteWholeFile,
-                           nullptr});
+                           const_cast<scene::ReadRoots*>(&roots)});
     tinygltf::Model model;
     std::string err, warn;
     // Binary by content ("glTF" magic), whatever the extension says.
     char magic[4] = {};
     std::ifstream(file, std::ios::binary).read(magic, 4);
     const bool binary = std::string_view(magic, 4) == "glTF";
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
-    if (!ok)
-        return makeError(ErrorCode::CorruptAsset, file.string(), "", "glTF: " + (err.empty() ? warn : err));
+    // Absolute, so tinygltf's search for external files starts from the
+    // scene's folder whatever the working directory (it also tries ".",
+    // which the ReadRoots then refuse unless it is one of the folders).
+    std::error_code ec;
+    const std::string loadPath = std::filesystem::absolute(file, ec).string();
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, ec ? file.string() : loadPath)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, ec ? file.string() : loadPath);
+    if (!ok) {
+        std::string why = err.empty() ? warn : err;
+        while (!why.empty() && (why.back() == '\n' || why.back() == ' '))
+            why.pop_back();
+        return makeError(ErrorCode::CorruptAsset, file.string(), "", "glTF: " + why);
+    }
+    if (auto numbers = checkNodeNumbers(model, file); !numbers)
+        return std::unexpected(numbers.error());
     ImportResult result;
-    if (!warn.empty())
-        result.warnings.push_back(file.string() + ": " + warn);
-    Context ctx{model, file, result, embedded};
+    if (const std::string own = withoutImageFileLines(warn); !own.empty())
+        result.warnings.push_back(file.string() + ": " + own);
+    Context ctx{model, file, result, embedded, roots};
     for (const tinygltf::Material& m : model.materials)
         result.scene.materials.push_back(convertMaterial(ctx, m));
     // Primitives without a material use the glTF default material.
@@ -427,8 +540,7 @@ scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, cons
     }
     const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
     if (std::size_t(sceneIndex) < model.scenes.size())
-        for (int root : model.scenes[std::size_t(sceneIndex)].nodes)
-            addNode(ctx, root, -1, glm::mat4(1.0f), 0);
+        addNodeTrees(ctx, model.scenes[std::size_t(sceneIndex)].nodes);
     result.stats.objects = result.scene.objects.size();
     result.stats.triangles = result.scene.triangleCount();
     result.stats.materials = result.scene.materials.size();

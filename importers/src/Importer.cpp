@@ -6,6 +6,7 @@
 #include "lpv/importers/MeshCleanup.h"
 
 #include "EmissiveLamps.h"
+#include "lpv/scene/Project.h"
 
 #include <algorithm>
 #include <cctype>
@@ -132,6 +133,14 @@ scene::Expected<ImportResult> importScene(const std::filesystem::path& file, con
     if (!result)
         return result;
     finishImport(file, *result);
+    // What a save would refuse (a number infinite as a float, an index out
+    // of range) is reported now, against this file, not later against the
+    // project the import writes.
+    if (auto valid = scene::validateSceneContent(result->scene, file.string()); !valid) {
+        scene::Error e = valid.error();
+        e.location = "as imported: " + e.location;
+        return std::unexpected(e);
+    }
     result->stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

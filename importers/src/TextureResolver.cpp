@@ -1,5 +1,7 @@
 #include "TextureResolver.h"
 
+#include "lpv/importers/Importer.h"
+
 #include <algorithm>
 #include <system_error>
 
@@ -40,6 +42,20 @@ std::vector<fs::path> textureFoldersFor(const fs::path& modelFile, const std::ve
             unique.push_back(f);
     }
     return unique;
+}
+
+scene::ReadRoots importReadRoots(const fs::path& file, const ImportOptions& options) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(file, ec);
+    scene::ReadRoots roots;
+    roots.add(ec ? file.parent_path() : absolute.parent_path());
+    for (const fs::path& folder : textureFoldersFor(file, options.textureSearchPaths))
+        roots.add(folder);
+    for (const fs::path& folder : options.allowPaths)
+        roots.add(folder);
+    for (const fs::path& folder : scene::allowPathsFromEnvironment())
+        roots.add(folder);
+    return roots;
 }
 
 TextureResolver::TextureResolver(std::vector<fs::path> folders) : folders_(std::move(folders)) {}

@@ -5,6 +5,8 @@
 #include "FileText.h"
 #include "ProjectJson.h"
 #include "lpv/scene/MeshAsset.h"
+#include "lpv/scene/ProjectTextures.h"
+#include "lpv/scene/ReadRoots.h"
 
 #include <algorithm>
 #include <fstream>
@@ -132,7 +134,7 @@ bool Project::operator==(const Project& other) const {
            presets == other.presets;
 }
 
-Expected<Project> loadProject(const fs::path& file) {
+Expected<Project> loadProject(const fs::path& file, const std::vector<fs::path>& allowPaths) {
     const std::string where = file.string();
     const auto text = readFileBytes(file, detail::kProjectFileLimit);
     if (!text)
@@ -153,7 +155,20 @@ Expected<Project> loadProject(const fs::path& file) {
             return std::unexpected(mesh.error());
         project.scene.meshes.push_back(std::move(*mesh));
     }
+    project.loadWarnings = keepTexturesInside(project.scene, projectReadRoots(file, allowPaths), file);
     return project;
+}
+
+Expected<void> validateSceneContent(const Scene& scene, const std::string& source) {
+    Project project;
+    project.name = "import";
+    project.scene = scene;
+    // Placeholder asset names: only the content is checked here.
+    std::vector<std::string> assetPaths(scene.meshes.size(), "import.assets/meshes/mesh.lpvmesh");
+    auto built = buildDocument(project, source, assetPaths);
+    if (!built)
+        return std::unexpected(built.error());
+    return {};
 }
 
 Expected<void> saveProject(const Project& project, const fs::path& file) {

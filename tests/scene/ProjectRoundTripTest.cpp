@@ -89,7 +89,9 @@ Project richProject() {
     pbr.shading = ShadingModel::MetallicRoughness;
     pbr.metallic = 1.0f;
     pbr.roughness = 0.35f;
-    pbr.metallicRoughnessTexture = "../shared/mr.png";
+    // Inside the project's folder: a reference leading out of it is cut to its
+    // file name on load (ReadRoots, tests/importers/ReadPolicyTest.cpp).
+    pbr.metallicRoughnessTexture = "shared/mr.png";
     pbr.occlusionTexture = "ao.png";
     pbr.emissive = {4.0f, 2.0f, 0.0f};
     pbr.emissiveTexture = "glow.png";

@@ -2,6 +2,7 @@
 // One interface for every scene format: a file in, a scene::Scene or an error
 // out. The format is chosen by content (magic bytes) first, extension second.
 #include "lpv/scene/Error.h"
+#include "lpv/scene/ReadRoots.h"
 #include "lpv/scene/Scene.h"
 
 #include <filesystem>
@@ -15,7 +16,19 @@ using ImportError = scene::Error;
 struct ImportOptions {
     // Extra folders searched for textures after the model's own folder and its maps/ folder.
     std::vector<std::filesystem::path> textureSearchPaths;
+    // Folders outside those that the scene may still name files in (textures,
+    // glTF buffers): `lpv import --allow-path DIR`. See importReadRoots.
+    std::vector<std::filesystem::path> allowPaths;
 };
+
+// The folders an import of `file` may read from (docs/importers.md, "What a
+// scene may read"): the scene file's folder, the texture folders searched for
+// it (textureFoldersFor: its maps/, the Mafia layout's ../maps, each
+// --texture-path and its maps/), `options.allowPaths` and LPV_ALLOW_PATH.
+// A reference that resolves anywhere else (an absolute system path, a "../"
+// or "%2e%2e/" escape, a symbolic link out) becomes a missing texture with a
+// warning that names it, or an error for a glTF buffer.
+scene::ReadRoots importReadRoots(const std::filesystem::path& file, const ImportOptions& options);
 
 struct ImportStats {
     std::size_t objects = 0;
@@ -40,7 +53,8 @@ struct ImportResult {
 // Reads the file with the importer its content (or extension) calls for,
 // then cleans every mesh (cleanupMesh: weld, degenerate triangles, normals,
 // tangents). Texture paths in the result are absolute where the file was
-// found, the stored name where it was not (counted and warned about).
+// found and may be read (importReadRoots), else the stored name's last
+// component (counted and warned about): never a path that leads elsewhere.
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options = {});
 
 } // namespace lpv::importers

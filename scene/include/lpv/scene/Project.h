@@ -30,13 +30,29 @@ struct Project {
     Scene scene;
     ParameterSet parameters;
     std::vector<ParameterPreset> presets; // in the order the user made them
+    // What loading changed and why, one line each (a texture reference that
+    // leads out of the project's folder, see loadProject). Not saved, not
+    // compared.
+    std::vector<std::string> loadWarnings;
 
     bool operator==(const Project&) const;
 };
 
 // Loads and validates everything (JSON structure, ranges, finiteness,
 // parameter keys, mesh assets with their checksums and indices). Never writes.
-Expected<Project> loadProject(const std::filesystem::path& file);
+// A texture reference that resolves outside the project's folder,
+// `allowPaths` and LPV_ALLOW_PATH (projectReadRoots) is kept as its last
+// path component only, with a warning in loadWarnings: a project someone
+// sends you cannot make the renderer read, or a save copy, "/etc/shadow".
+Expected<Project> loadProject(const std::filesystem::path& file,
+                              const std::vector<std::filesystem::path>& allowPaths = {});
+
+// The checks a save makes (meshes, finite numbers, ranges, indices) on a
+// scene that came from elsewhere, with errors naming `source` (an imported
+// file) and the place as it would be stored ("objects[0].translation[0]"),
+// so an importer can report a bad value against its input rather than
+// against the project it would write.
+Expected<void> validateSceneContent(const Scene& scene, const std::string& source);
 
 // Writes the assets then the JSON, each to a temporary file in the same
 // folder that is flushed and renamed over the target: a failed save leaves
