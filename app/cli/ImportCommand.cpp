@@ -6,6 +6,7 @@
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
+#include "lpv/scene/SaveCleanup.h"
 #include "lpv/scene/SceneMerge.h"
 
 #include <chrono>
@@ -168,13 +169,21 @@ int runImport(Args args) {
         std::cout << "no lights in the scene: added a sun " << how << " (--no-sun to leave it dark)\n";
     }
 
+    // Texture copies go in before the project that names them; if either
+    // step fails (a full disk), the copies this import made go again.
+    scene::SaveRollback rollback;
+    rollback.watchTextureCopies(scene::assetsFolderOf(projectFile) / "textures");
     auto textures = scene::copyTexturesIntoProject(project.scene, projectFile);
     if (!textures) {
+        rollback.undo();
         std::cerr << "lpv: " << textures.error().describe() << "\n";
         return kFailure;
     }
     if (auto saved = scene::saveProject(project, projectFile); !saved) {
+        rollback.undo();
         std::cerr << "lpv: " << saved.error().describe() << "\n";
+        std::cerr << "lpv: nothing was saved" << (adding ? "; " + projectFile.string() + " is unchanged" : "")
+                  << "\n";
         return kFailure;
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -13,6 +13,7 @@
 #include "lpv/scene/FramingCamera.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
+#include "lpv/scene/SaveCleanup.h"
 
 #include <atomic>
 #include <charconv>
@@ -298,25 +299,36 @@ int runRadiosity(Args args) {
     else
         std::printf("nothing emits light: give a material an emissive colour\n");
 
-    std::filesystem::path target = projectFile;
-    if (output) {
-        target = *output;
-        scene::Project copy = *project;
-        makeTexturePathsAbsolute(copy.scene, std::filesystem::absolute(projectFile).parent_path());
-        if (auto copied = scene::copyTexturesIntoProject(copy.scene, target); !copied) {
-            std::cerr << "lpv: " << copied.error().describe() << "\n";
-            return kFailure;
-        }
-        if (auto ok = scene::saveProject(copy, target); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return kFailure;
-        }
-        std::printf("wrote %s\n", target.string().c_str());
-    }
+    // Assets first, the project last: a project file never names a solution
+    // that is not there. If a step fails, the files this save created go
+    // again (a replaced solution is not restored; its scene signature tells
+    // it does not fit the project it sits beside).
+    const std::filesystem::path target = output ? std::filesystem::path(*output) : projectFile;
     const auto solutionFile = radiosity::solutionPath(target);
-    if (auto ok = radiosity::saveSolution(session.stored(), solutionFile); !ok) {
-        std::cerr << "lpv: " << ok.error().describe() << "\n";
+    scene::SaveRollback rollback;
+    auto fail = [&](const scene::Error& error) {
+        rollback.undo();
+        std::cerr << "lpv: " << error.describe() << "\n";
+        if (output)
+            std::cerr << "lpv: nothing was saved\n";
         return kFailure;
+    };
+    scene::Project copy;
+    if (output) {
+        copy = *project;
+        makeTexturePathsAbsolute(copy.scene, std::filesystem::absolute(projectFile).parent_path());
+        rollback.watchTextureCopies(scene::assetsFolderOf(target) / "textures");
+        if (auto copied = scene::copyTexturesIntoProject(copy.scene, target); !copied)
+            return fail(copied.error());
+    }
+    scene::removeStaleTemporaries(solutionFile); // left by a killed save
+    rollback.willWrite(solutionFile);
+    if (auto ok = radiosity::saveSolution(session.stored(), solutionFile); !ok)
+        return fail(ok.error());
+    if (output) {
+        if (auto ok = scene::saveProject(copy, target); !ok)
+            return fail(ok.error());
+        std::printf("wrote %s\n", target.string().c_str());
     }
     std::printf("wrote %s\n", solutionFile.string().c_str());
 

@@ -7,6 +7,7 @@
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/ProjectTextures.h"
 #include "lpv/scene/ReadRoots.h"
+#include "lpv/scene/SaveCleanup.h"
 
 #include <algorithm>
 #include <fstream>
@@ -189,6 +190,14 @@ Expected<void> saveProject(const Project& project, const fs::path& file) {
     const fs::path folder = file.parent_path();
     const fs::path assetFolder = folder / fromUtf8(utf8(file.stem()) + ".assets");
     const fs::path meshFolder = assetFolder / "meshes";
+    // Temporary files of saves that were killed (never this one's, nor one
+    // still running): first, so on a full disk their space is free again.
+    const std::string projectName = utf8(file.filename());
+    removeStaleTemporaries(folder.empty() ? fs::path(".") : folder,
+                           [&](std::string_view base) { return base == projectName; });
+    removeStaleTemporaries(meshFolder, [](std::string_view base) { return base.ends_with(".lpvmesh"); });
+    removeStaleTemporaries(assetFolder / "textures", isTextureCopyName);
+
     CreatedPaths created;
     std::error_code ec;
     if (!fs::exists(meshFolder, ec))
@@ -215,6 +224,7 @@ Expected<void> saveProject(const Project& project, const fs::path& file) {
         return written;
     }
     removeUnreferencedAssets(meshFolder, referenced);
+    removeOrphanTextures(project.scene, file);
     return {};
 }
 

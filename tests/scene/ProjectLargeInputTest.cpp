@@ -56,8 +56,8 @@ std::string emptyProjectText(const std::string& parameters) {
     return R"({"format": "lpvstudio-project", "version": 2, "name": "p",
   "sky": {"color": [0.5, 0.7, 1.0], "intensity": 1.0},
   "materials": [], "meshes": [], "objects": [], "lights": [], "cameras": [], "cameraPaths": [],
-  "parameters": {)" + parameters +
-           "}}\n";
+  "parameters": {)" +
+           parameters + "}}\n";
 }
 
 std::string jsonText(const ParameterValue& v) {
@@ -127,8 +127,8 @@ TEST(WorldMatrices, EqualWorldMatrixBitForBitInAnyParentOrder) {
         const glm::mat4 one = s.worldMatrix(int(i));
         EXPECT_EQ(std::memcmp(&world[i], &one, sizeof one), 0) << "object " << i;
     }
-    const glm::mat4 three = s.objects[35].transform.matrix() * s.objects[30].transform.matrix() *
-                            s.objects[3].transform.matrix();
+    const glm::mat4 three =
+        s.objects[35].transform.matrix() * s.objects[30].transform.matrix() * s.objects[3].transform.matrix();
     EXPECT_EQ(world[3], three);
 }
 
@@ -169,9 +169,10 @@ TEST_F(ProjectLargeInput, ParentCycleOf100000ObjectsIsInvalidValueNamedByItsEnds
     ASSERT_FALSE(loaded);
     EXPECT_EQ(loaded.error().code, ErrorCode::InvalidValue);
     EXPECT_EQ(loaded.error().location, "objects[0].parent");
-    EXPECT_EQ(loaded.error().message,
-              "object \"o0\" is its own ancestor (parent chain 0 -> 99999 -> 99998 -> 99997 -> 99996 -> 99995 -> "
-              "99994 -> 99993 -> ... -> 2 -> 1 -> 0: a loop of 100000 objects)");
+    EXPECT_EQ(
+        loaded.error().message,
+        "object \"o0\" is its own ancestor (parent chain 0 -> 99999 -> 99998 -> 99997 -> 99996 -> 99995 -> "
+        "99994 -> 99993 -> ... -> 2 -> 1 -> 0: a loop of 100000 objects)");
 }
 
 // nlohmann's ordered map finds each key by a linear search, so parsing an
