@@ -26,7 +26,7 @@ void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
        lpv bench render PROJECT [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
-                                 --csv FILE --markdown FILE]
+                                 --thesis-settings --csv FILE --markdown FILE]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR ... see below]
        lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
@@ -39,6 +39,14 @@ median, min and max, plus every frame with --per-frame. A --set with a list
 of values sweeps that key (several lists: every combination), each with its
 own warm-up. --csv and --markdown write the tables (the Markdown one headed
 by the command and the machine: CPU, cores, GL renderer and version).
+--thesis-settings measures as the thesis application was measured beside us
+(issue #25): 1024x600 (unless --width/--height), its start camera (-2.2, 5.7,
+4.3, pitched 5 degrees down along +x, 60 degrees vertical), 4 LPV cascades of
+32^3, RSM tiles of 128^2, 6 shadow cascades of 1024^2, 8 propagation steps
+(a --set wins); then the same frames with gi.method=off, and a table of the
+thesis application's phases (shadow maps, RSM, injection, propagation, final
+shading, whole frame, LPV off) with its medians beside ours. Use it on
+Sibenik imported from sibenik.4ds.
 
 )";
     printBenchLpvHelp();

@@ -4,6 +4,7 @@
 #include "Cli.h"
 #include "BenchReport.h"
 #include "RenderSetup.h"
+#include "ThesisSettings.h"
 
 #include "lpv/scene/Project.h"
 
@@ -20,8 +21,11 @@ int benchRender(Args args) {
     const std::vector<std::string> sets = args.options("--set");
     const auto csvFile = args.option("--csv");
     const auto markdownFile = args.option("--markdown");
-    const auto width = parseCount(args.option("--width").value_or("1280"), 1);
-    const auto height = parseCount(args.option("--height").value_or("720"), 1);
+    const bool thesis = args.flag("--thesis-settings");
+    const auto width =
+        parseCount(args.option("--width").value_or(thesis ? std::to_string(kThesisWidth) : "1280"), 1);
+    const auto height =
+        parseCount(args.option("--height").value_or(thesis ? std::to_string(kThesisHeight) : "720"), 1);
     const auto frames = parseCount(args.option("--frames").value_or("60"), 1);
     const auto warmup = parseCount(args.option("--warmup").value_or("5"), 0);
     const bool perFrame = args.flag("--per-frame");
@@ -39,6 +43,12 @@ int benchRender(Args args) {
     const SetPlan plan = planSettings(sets, planError);
     if (!planError.empty())
         return usageError(planError, "bench");
+    if (thesis && request.cameraName)
+        return usageError("--thesis-settings sets the thesis application's camera; leave out --camera", "bench");
+    if (thesis && !plan.combinations.empty())
+        return usageError("--thesis-settings takes no --set lists (one value per key)", "bench");
+    if (thesis)
+        request.sets = thesisSettingsSets(); // before the --set values, which win
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
 
@@ -52,6 +62,8 @@ int benchRender(Args args) {
         return exitCode;
     if (auto error = checkCombinations(plan, setup->project.parameters, "--set"))
         return usageError(*error, "bench");
+    if (thesis)
+        setup->camera = thesisStartCamera();
 
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
@@ -86,12 +98,28 @@ int benchRender(Args args) {
             total += row.medianMs;
         std::printf("GPU frame rate from the total: %.1f frames/s\n", total > 0 ? 1000.0 / total : 0.0);
         runs.push_back({combination, table});
+        if (thesis) {
+            // The thesis application's "LPV off" figure: the same frames with GI off.
+            const std::vector<renderer::PassTiming> lpvTable = table;
+            (void)setup->project.parameters.setFromText("gi.method", "off", "--thesis-settings");
+            if (*warmup > 0 && !renderFrames(*setup, *width, *height, *warmup))
+                return kFailure;
+            setup->renderer->timer().clearHistory();
+            if (!renderFrames(*setup, *width, *height, *frames))
+                return kFailure;
+            double offTotal = 0.0;
+            for (const auto& row : setup->renderer->timer().table())
+                if (row.samples > 0)
+                    offTotal += row.medianMs;
+            std::printf("\nthe thesis application's phases (--thesis-settings: %dx%d, its start camera):\n%s", *width,
+                        *height, formatThesisPhases(thesisPhases(lpvTable, offTotal)).c_str());
+        }
     }
 
     const renderer::GlInfo& gl = setup->context->info();
     std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(*width) +
                           " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup);
+                          " --warmup " + std::to_string(*warmup) + (thesis ? " --thesis-settings" : "");
     for (const std::string& kv : sets)
         command += " --set " + kv;
     const std::string machine = describeMachine(gl.renderer, gl.version);

@@ -87,6 +87,23 @@ TEST(BenchRender, PrintsMedianPassTimesAfterWarmUp) {
     EXPECT_EQ(runLpv("bench render " + cornellProject() + " --frames 0").exitCode, 2);
 }
 
+TEST(BenchRender, ThesisSettingsPrintTheThesisPhasesBesideItsFigures) {
+    // Small frames: the table's rows and its own settings are what is checked.
+    const RunResult r = runLpv("bench render " + cornellProject() +
+                               " --thesis-settings --width 64 --height 64 --frames 1 --warmup 0");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("LPV: 4 cascades of 32^3, 8 steps"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the thesis application's phases (--thesis-settings: 64x64, its start camera)"),
+              std::string::npos)
+        << r.output;
+    for (const char* row : {"\nshadow maps ", "\nRSM ", "\ninjection ", "\npropagation ", "\nfinal shading ",
+                            "\nwhole frame ", "\nLPV off (whole frame) "})
+        EXPECT_NE(r.output.find(row), std::string::npos) << "no row" << row << "\n" << r.output;
+    // The thesis application's whole frame, 839 ms, stands beside ours.
+    EXPECT_NE(r.output.find("839"), std::string::npos) << r.output;
+    EXPECT_EQ(runLpv("bench render " + cornellProject() + " --thesis-settings --camera main").exitCode, 2);
+}
+
 TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
     // The Cornell box without its ceiling, lit by a sun slanting in from the
     // green side (-X) towards the red wall (+X): the RSM sees the floor, the

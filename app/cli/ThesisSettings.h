@@ -1,0 +1,43 @@
+#pragma once
+// `lpv bench render --thesis-settings` (issue #25): the settings, view and
+// phase grouping under which the thesis application (djbozkosz, raster
+// gather, its fastest) was measured beside us on a 2-core llvmpipe machine,
+// so later changes compare with those figures like for like.
+#include "lpv/renderer/GpuTimer.h"
+#include "lpv/scene/Camera.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::cli {
+
+inline constexpr int kThesisWidth = 1024;
+inline constexpr int kThesisHeight = 600;
+
+// 4 LPV cascades of 32^3, RSM tiles of 128^2, 6 shadow cascades of 1024^2,
+// 8 propagation steps, as KEY=VALUE (a later --set wins).
+std::vector<std::string> thesisSettingsSets();
+
+// The thesis application's start camera in our coordinates: at (-2.2, 5.7,
+// 4.3), pitched 5 degrees down, looking along +x (its engine.cpp sets
+// rotation (5, -90, 0) degrees and a 60 degree vertical field of view).
+scene::Camera thesisStartCamera();
+
+// One phase as the thesis application times it, with our passes summed
+// into it (median ms of each pass) and the thesis application's figure.
+struct ThesisPhase {
+    std::string name;
+    std::string ourPasses; // which of our passes it sums
+    double oursMs = 0.0;
+    std::optional<double> thesisMs;
+};
+
+// shadow maps | RSM | injection | propagation | final shading | whole frame,
+// then the whole frame with the LPV off when `lpvOffTotalMs` is given.
+std::vector<ThesisPhase> thesisPhases(const std::vector<renderer::PassTiming>& table,
+                                      std::optional<double> lpvOffTotalMs);
+
+std::string formatThesisPhases(const std::vector<ThesisPhase>& phases);
+
+} // namespace lpv::cli
