@@ -6,12 +6,17 @@
 // mesh/LOD/parent indices in range, parent chains without cycles, finite
 // transforms. A broken promise aborts, so libFuzzer reports the input like
 // any crash.
+//
+// checkTexturesInside adds the importers' read-root promise for the targets
+// that import from a path (fuzz_gltf, fuzz_obj).
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -83,7 +88,8 @@ inline void checkScene(const scene::Scene& s, const std::string& file) {
         const scene::Object& o = s.objects[i];
         const std::string label = "objects[" + std::to_string(i) + "]";
         if (!isIndexOf(o.mesh, s.meshes.size()))
-            invariantBroken(label + ".mesh = " + std::to_string(o.mesh) + " of " + std::to_string(s.meshes.size()));
+            invariantBroken(label + ".mesh = " + std::to_string(o.mesh) + " of " +
+                            std::to_string(s.meshes.size()));
         for (const scene::LodLevel& lod : o.lods)
             if (!isIndexOf(lod.mesh, s.meshes.size()))
                 invariantBroken(label + " has a LOD with mesh " + std::to_string(lod.mesh));
@@ -114,6 +120,44 @@ inline void checkScene(const scene::Scene& s, const std::string& file) {
             invariantBroken("objects[" + std::to_string(at) + "] is its own ancestor");
         for (const std::size_t c : chain)
             state[c] = 2;
+    }
+}
+
+// Importers promise that a texture path they hand back as found, i.e.
+// absolute, lies in a folder the import may read: the model's folder, its
+// texture folders, the search paths. A name that was not found is kept as
+// stored and is not a read, so it is not checked here.
+// The comparison is lexical (normalised, no symbolic links resolved): the
+// fuzz work folders hold copies, no links, so any "..", "%2e%2e" or absolute
+// name that reached a file outside shows up as a path outside every root.
+inline bool isInside(const std::filesystem::path& path, const std::filesystem::path& root) {
+    const std::filesystem::path p = path.lexically_normal();
+    const std::filesystem::path r = root.lexically_normal();
+    auto pi = p.begin();
+    for (auto ri = r.begin(); ri != r.end(); ++ri, ++pi) {
+        if (ri->empty() && std::next(ri) == r.end())
+            break; // a root written with a trailing separator
+        if (pi == p.end() || *pi != *ri)
+            return false;
+    }
+    return true;
+}
+
+inline void checkTexturesInside(const scene::Scene& s, const std::vector<std::filesystem::path>& roots) {
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+        const scene::Material& m = s.materials[i];
+        for (const std::string* texture :
+             {&m.diffuseTexture, &m.normalTexture, &m.heightTexture, &m.specularTexture,
+              &m.metallicRoughnessTexture, &m.occlusionTexture, &m.emissiveTexture, &m.alphaTexture,
+              &m.environmentTexture}) {
+            const std::filesystem::path path(*texture);
+            if (texture->empty() || !path.is_absolute())
+                continue;
+            if (std::none_of(roots.begin(), roots.end(),
+                             [&](const std::filesystem::path& root) { return isInside(path, root); }))
+                invariantBroken("materials[" + std::to_string(i) + "] ('" + m.name + "') reads texture '" +
+                                *texture + "', outside every folder the import may read");
+        }
     }
 }
 
