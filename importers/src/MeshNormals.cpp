@@ -77,7 +77,8 @@ public:
         mesh_.request_face_normals();
         mesh_.update_face_normals();
         for (VertexHandle v : mesh_.vertices())
-            assignWedges(v);
+            if (!mesh_.is_isolated(v))
+                assignWedges(v);
         for (std::size_t t = 0; t < isolated_.size(); ++t)
             if (isolated_[t])
                 assignIsolated(t);
@@ -158,6 +159,12 @@ private:
         return first; // unreachable: a face's vertex is one of its corners
     }
 
+    // A vertex without faces is skipped by run(): it is a shared position
+    // whose every triangle was isolated (its first one added the vertex and
+    // was then refused, e.g. for a complex edge), so it has no corner of its
+    // own, and OpenMesh 9's counter-clockwise circulator steps from its
+    // missing halfedge (halfedge -1) before checking it. The corners at such
+    // a position get their normals in assignIsolated.
     void assignWedges(VertexHandle v) {
         ring_.clear();
         for (HalfedgeHandle h : mesh_.voh_ccw_range(v))

@@ -5,6 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -230,6 +234,52 @@ TEST(GltfImporter, ImageUrisThatAreNoFileBecomePlaceholders) {
         for (const std::string& w : r.warnings)
             warned |= w.find(why) != std::string::npos;
         EXPECT_TRUE(warned) << uri.substr(0, 20) << ": no warning ending in '" << why << "'";
+    }
+    fs::remove_all(dir);
+}
+
+// fuzz_gltf (a mutated Box.glb): a triangle that OpenMesh's halfedge mesh
+// refuses (here: the edge 0-1 again in the same direction, a complex edge)
+// left a vertex without a halfedge at its corner that no other triangle uses,
+// and the normal generation's counter-clockwise walk around it asserted in
+// OpenMesh 9. Both triangles are kept; the lone corner gets its face's normal.
+TEST(GltfImporter, TriangleOnAComplexEdgeWithALoneCornerGetsNormals) {
+    const float tilt = std::tan(20.0f * 3.14159265358979f / 180.0f);
+    const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 1, tilt};
+    const std::uint16_t indices[] = {0, 1, 2, 0, 1, 3};
+    std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    const nlohmann::json j = {
+        {"asset", {{"version", "2.0"}}},
+        {"buffers", {{{"uri", "data:application/octet-stream;base64," + base64(bin)}, {"byteLength", bin.size()}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof positions}},
+          {{"buffer", 0}, {"byteOffset", sizeof positions}, {"byteLength", sizeof indices}}}},
+        {"accessors",
+         {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}, {"min", {0, 0, 0}},
+           {"max", {1, 1, tilt}}},
+          {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"scenes", {{{"nodes", {0}}}}}};
+    const fs::path dir = scratch("complexedge");
+    std::ofstream(dir / "fold.gltf") << j.dump();
+    const auto r = importOk(dir / "fold.gltf");
+    EXPECT_EQ(r.stats.degenerateTrianglesDropped, 0u);
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    const scene::Mesh& m = r.scene.meshes[0];
+    ASSERT_EQ(m.triangleCount(), 2u);
+    ASSERT_EQ(m.normals.size(), m.positions.size());
+    const glm::vec3 up(0, 0, 1);
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0, -tilt, 1)); // the second triangle's face normal
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_LT(glm::distance(m.normals[m.indices[k]], up), 1e-6f) << "first triangle, corner " << k;
+    EXPECT_LT(glm::distance(m.normals[m.indices[5]], tilted), 1e-6f) << "the lone corner: its own face's normal";
+    for (std::size_t k = 3; k < 5; ++k) { // on the shared edge: smoothed with the first triangle (20 < 60 degrees)
+        const glm::vec3 n = m.normals[m.indices[k]];
+        EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+        EXPECT_GT(glm::dot(n, up), glm::dot(tilted, up)) << "corner " << k;
+        EXPECT_GT(glm::dot(n, tilted), glm::dot(up, tilted)) << "corner " << k;
     }
     fs::remove_all(dir);
 }

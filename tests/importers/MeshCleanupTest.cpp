@@ -427,6 +427,37 @@ TEST(MeshCleanup, RejectedDuplicateFaceIsSmoothedLikeItsTwin) {
     expectValidOutput(m);
 }
 
+TEST(MeshCleanup, PositionOnlyARejectedFaceUsesGetsItsFaceNormal) {
+    // The second triangle runs along the edge 0-1 in the same direction as
+    // the first (a complex edge), so OpenMesh refuses it; its third corner,
+    // (0.5, 1, tan 20 deg), is a position no other triangle uses, so the
+    // halfedge mesh holds a vertex there without any halfedge. OpenMesh 9's
+    // counter-clockwise circulator asserted on it (fuzz_gltf, a mutated
+    // Box.glb) and reads halfedge -1 with asserts off.
+    const float tilt = std::tan(glm::radians(20.0f));
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5f, 1, tilt}}, {0, 1, 2, 0, 1, 3});
+    CerrCapture cerr;
+    const MeshCleanupStats s = cleanupMesh(m);
+    EXPECT_EQ(cerr.text(), "");
+    EXPECT_EQ(s.degenerateTrianglesDropped, 0u);
+    EXPECT_TRUE(s.normalsGenerated);
+    ASSERT_EQ(m.triangleCount(), 2u);
+    const glm::vec3 up(0, 0, 1);
+    const glm::vec3 tilted = faceNormal(m, 1); // (0, -sin 20, cos 20)
+    EXPECT_NEAR(glm::dot(tilted, up), std::cos(glm::radians(20.0f)), 1e-6f);
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(glm::distance(m.normals[m.indices[k]], up), 0.0f, 1e-6f) << "first triangle, corner " << k;
+    EXPECT_NEAR(glm::distance(m.normals[m.indices[5]], tilted), 0.0f, 1e-6f)
+        << "the lone corner keeps its own face's normal";
+    for (std::size_t k = 3; k < 5; ++k) { // on the shared edge: smoothed with the first triangle (20 < 60 degrees)
+        const glm::vec3 n = m.normals[m.indices[k]];
+        EXPECT_GT(glm::dot(n, up), glm::dot(tilted, up)) << "corner " << k;
+        EXPECT_GT(glm::dot(n, tilted), glm::dot(up, tilted)) << "corner " << k;
+    }
+    expectValidOutput(m);
+    expectIdempotent(m);
+}
+
 TEST(MeshCleanup, CornellBoxWithoutNormalsGetsItsHardEdgesBack) {
     const lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
     ASSERT_FALSE(project.scene.meshes.empty());
