@@ -8,15 +8,20 @@
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
+#include <string_view>
 
 namespace lpv::importers {
 
@@ -293,14 +298,109 @@ scene::Camera convertCamera(const aiCamera& c, const glm::mat4& world, const glm
     return cam;
 }
 
+// ---- material libraries ----------------------------------------------------
+
+// Assimp 5.2.5 (Debian 12's) reads an MTL statement into "the current
+// material" without checking that there is one for texture statements
+// (map_Kd, bump, disp, norm, refl, ...) and `a` (anisotropy): before the
+// first `newmtl` there is none (when the OBJ names its library before any
+// `usemtl`), and it crashes (fuzz_obj). It also throws "File is too small" on
+// a library of 1 to 7 bytes, failing the import and leaking the stream it
+// opened. So a material library is read here and served from memory with
+// every statement line before its first `newmtl` dropped (blank and comment
+// lines stay, and every line keeps its end, so line numbers hold), padded
+// with line ends to 8 bytes when shorter.
+//
+// Lines as Assimp's MTL parser sees them: they end at '\n', '\r', '\f' or
+// '\0'; spaces and tabs in front are skipped, except on the file's first line,
+// which Assimp then skips whole, so the first `newmtl` is served without them.
+constexpr std::uintmax_t kMaxMaterialLibraryBytes = 64u << 20;
+
+bool isAssimpLineEnd(char c) { return c == '\n' || c == '\r' || c == '\f' || c == '\0'; }
+
+struct RepairedLibrary {
+    std::string text;
+    std::size_t droppedLines = 0;
+};
+
+RepairedLibrary repairMaterialLibrary(std::string_view in) {
+    if (in.starts_with("\xEF\xBB\xBF")) // a UTF-8 byte order mark: Assimp drops it too
+        in.remove_prefix(3);
+    RepairedLibrary out;
+    out.text.reserve(in.size() + 8);
+    std::size_t begin = 0;
+    while (begin < in.size()) {
+        std::size_t end = begin;
+        while (end < in.size() && !isAssimpLineEnd(in[end]))
+            ++end;
+        const std::string_view line = in.substr(begin, end - begin);
+        const std::size_t first = line.find_first_not_of(" \t");
+        const std::string_view body = first == std::string_view::npos ? std::string_view() : line.substr(first);
+        if (body.starts_with("newmtl") && (body.size() == 6 || body[6] == ' ' || body[6] == '\t')) {
+            out.text += body;
+            out.text += in.substr(end); // from here on every statement has a material
+            break;
+        }
+        if (body.empty() || body.front() == '#')
+            out.text += line;
+        else
+            ++out.droppedLines;
+        if (end < in.size())
+            out.text += in[end];
+        begin = end + 1;
+    }
+    if (!out.text.empty() && out.text.size() < 8)
+        out.text.append(8 - out.text.size(), '\n');
+    return out;
+}
+
+bool hasExtension(const std::string& file, std::string_view extension) {
+    if (file.size() < extension.size())
+        return false;
+    return std::equal(extension.begin(), extension.end(), file.end() - std::ptrdiff_t(extension.size()),
+                      [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+
+// A stream of the model file itself that tells the IO system while it is open.
+class CountedStream : public Assimp::IOStream {
+  public:
+    CountedStream(Assimp::IOStream* inner, std::shared_ptr<int> open) : inner_(inner), open_(std::move(open)) {
+        ++*open_;
+    }
+    ~CountedStream() override {
+        delete inner_;
+        --*open_;
+    }
+    CountedStream(const CountedStream&) = delete;
+    CountedStream& operator=(const CountedStream&) = delete;
+
+    size_t Read(void* buffer, size_t size, size_t count) override { return inner_->Read(buffer, size, count); }
+    size_t Write(const void* buffer, size_t size, size_t count) override { return inner_->Write(buffer, size, count); }
+    aiReturn Seek(size_t offset, aiOrigin origin) override { return inner_->Seek(offset, origin); }
+    size_t Tell() const override { return inner_->Tell(); }
+    size_t FileSize() const override { return inner_->FileSize(); }
+    void Flush() override { inner_->Flush(); }
+
+  private:
+    Assimp::IOStream* inner_;
+    std::shared_ptr<int> open_;
+};
+
 // Assimp opens the files a model names itself (an OBJ's `mtllib`, a glTF's
 // buffers through Assimp): only regular files inside the import's folders
 // (ReadRoots), so `mtllib /etc/shadow` is a missing material library with
 // Assimp's own warning, not a read of the system file. A FIFO is refused
 // rather than blocked on.
+//
+// Material libraries are repaired (above): files named *.mtl, and in an OBJ
+// import every file opened while the OBJ itself is open (Assimp's OBJ parser
+// holds it open while it parses, and opens nothing else but the libraries its
+// `mtllib` lines name, whatever their name, the OBJ included). What was
+// repaired is noted for the import's warnings.
 class RootedIOSystem : public Assimp::DefaultIOSystem {
   public:
-    explicit RootedIOSystem(scene::ReadRoots roots) : roots_(std::move(roots)) {}
+    RootedIOSystem(scene::ReadRoots roots, std::string model)
+        : roots_(std::move(roots)), model_(std::move(model)), objModel_(hasExtension(model_, ".obj")) {}
 
     bool Exists(const char* file) const override { return file && !roots_.refusal(std::filesystem::u8path(file)); }
 
@@ -308,11 +408,46 @@ class RootedIOSystem : public Assimp::DefaultIOSystem {
         const bool reading = mode && mode[0] == 'r';
         if (!file || !reading || roots_.refusal(std::filesystem::u8path(file)))
             return nullptr;
-        return Assimp::DefaultIOSystem::Open(file, mode);
+        const std::string name(file);
+        if (hasExtension(name, ".mtl") || (objModel_ && *modelOpen_ > 0))
+            return openMaterialLibrary(name, mode);
+        Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
+        if (stream && objModel_ && name == model_)
+            return new CountedStream(stream, modelOpen_);
+        return stream;
     }
 
+    const std::vector<std::string>& notes() const { return notes_; }
+
   private:
+    Assimp::IOStream* openMaterialLibrary(const std::string& name, const char* mode) {
+        const std::unique_ptr<Assimp::IOStream> file(Assimp::DefaultIOSystem::Open(name.c_str(), mode));
+        if (!file)
+            return nullptr;
+        const std::size_t size = file->FileSize();
+        if (size > kMaxMaterialLibraryBytes) {
+            notes_.push_back("material library '" + scene::capErrorText(name) + "' is " + std::to_string(size) +
+                             " bytes, more than 64 MiB; not read");
+            return nullptr;
+        }
+        std::string bytes(size, '\0');
+        bytes.resize(size ? file->Read(bytes.data(), 1, size) : 0);
+        const RepairedLibrary repaired = repairMaterialLibrary(bytes);
+        if (repaired.droppedLines > 0)
+            notes_.push_back("material library '" + scene::capErrorText(name) + "': " +
+                             std::to_string(repaired.droppedLines) +
+                             (repaired.droppedLines == 1 ? " line" : " lines") +
+                             " before its first 'newmtl' dropped (statements outside any material)");
+        auto* buffer = new std::uint8_t[std::max<std::size_t>(repaired.text.size(), 1)];
+        std::copy(repaired.text.begin(), repaired.text.end(), buffer);
+        return new Assimp::MemoryIOStream(buffer, repaired.text.size(), true); // frees it with delete[]
+    }
+
     scene::ReadRoots roots_;
+    std::string model_; // the path as given to ReadFile, which Assimp opens it by
+    bool objModel_;
+    std::shared_ptr<int> modelOpen_ = std::make_shared<int>(0);
+    std::vector<std::string> notes_;
 };
 
 } // namespace
@@ -324,7 +459,8 @@ bool assimpReads(const std::filesystem::path& file) {
 
 scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file, const ImportOptions& options) {
     Assimp::Importer importer;
-    importer.SetIOHandler(new RootedIOSystem(importReadRoots(file, options))); // the importer owns it
+    auto* io = new RootedIOSystem(importReadRoots(file, options), file.string());
+    importer.SetIOHandler(io); // the importer owns it
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_LINE | aiPrimitiveType_POINT);
     AssimpLogCapture log; // Assimp's own warnings ("failed to locate material ...") become ours
     const aiScene* in = importer.ReadFile(
@@ -333,6 +469,8 @@ scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file
         return makeError(ErrorCode::UnknownFormat, file.string(), "",
                          std::string("Assimp could not read it: ") + importer.GetErrorString());
     ImportResult result;
+    for (const std::string& note : io->notes())
+        result.warnings.push_back(file.string() + ": " + note);
     for (const std::string& message : log.messages())
         result.warnings.push_back(file.string() + ": " + message);
 

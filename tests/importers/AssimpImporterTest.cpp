@@ -276,3 +276,95 @@ TEST(AssimpImporter, AnEmissiveCubeStaysAnEmissiveSurface) {
     EXPECT_TRUE(r.notes.empty());
     fs::remove_all(dir);
 }
+
+// ---- material libraries with statements outside any material (fuzz_obj) -----
+// Assimp 5.2.5 writes a texture statement before the first `newmtl` into a
+// material that does not exist (SEGV), and fails on a library of 1 to 7
+// bytes ("File is too small"), leaking its stream. The importer serves the
+// library without the statement lines before its first `newmtl`, padded to 8
+// bytes, and says what it dropped.
+
+namespace {
+
+std::string droppedWarning(const fs::path& obj, const fs::path& library, int lines) {
+    return obj.string() + ": material library '" + library.string() + "': " + std::to_string(lines) +
+           (lines == 1 ? " line" : " lines") + " before its first 'newmtl' dropped (statements outside any material)";
+}
+
+const char* const kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl painted\nf 1/1 2/2 3/3\n";
+
+} // namespace
+
+TEST(AssimpImporter, TextureBeforeAnyNewmtlIsDroppedWithAWarningNotACrash) {
+    TempDir dir;
+    std::ofstream(dir.path / "tri.obj") << "mtllib tri.mtl\n" << kTriangle;
+    std::ofstream(dir.path / "tri.mtl") << "# by hand\nmap_Kd a.png\n  Ns 10\n\n  newmtl painted\nKd 1 0 0\n"
+                                           "map_Kd b.png\n";
+    const auto r = importOk(dir.path / "tri.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "tri.obj", dir.path / "tri.mtl", 2)), 1u);
+    EXPECT_EQ(countWarnings(r, "'a.png'"), 0u) << "the dropped texture is not looked for";
+    const scene::Material* m = findMaterial(r.scene, "painted");
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(m->diffuseColor, glm::vec3(1, 0, 0)) << "the statements after newmtl are read";
+    EXPECT_EQ(m->diffuseTexture, "b.png");
+}
+
+TEST(AssimpImporter, LibraryOfOnlyATextureStatementImportsWithAWarning) {
+    // fuzz_obj's minimal reproducer: the library is the one line `map_Kd a.png`.
+    TempDir dir;
+    std::ofstream(dir.path / "tri.obj") << "mtllib tri.mtl\n" << kTriangle;
+    std::ofstream(dir.path / "tri.mtl") << "map_Kd a.png\n";
+    const auto r = importOk(dir.path / "tri.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "tri.obj", dir.path / "tri.mtl", 1)), 1u);
+    EXPECT_EQ(r.stats.texturesMissing, 0u);
+}
+
+TEST(AssimpImporter, LibrariesShorterThanEightBytesAreRead) {
+    TempDir dir;
+    std::ofstream(dir.path / "tri.obj") << "mtllib tri.mtl\n" << kTriangle;
+    std::ofstream(dir.path / "tri.mtl") << "Ns 10\n"; // 6 bytes: Assimp alone fails with "File is too small"
+    auto r = importOk(dir.path / "tri.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "tri.obj", dir.path / "tri.mtl", 1)), 1u);
+    std::ofstream(dir.path / "tri.mtl", std::ios::trunc) << "newmtl\n"; // 7 bytes, nothing to drop
+    r = importOk(dir.path / "tri.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    EXPECT_EQ(countWarnings(r, "dropped"), 0u);
+}
+
+TEST(AssimpImporter, LibrariesNotNamedMtlAreRepairedToo) {
+    // `mtllib` may name any file, the OBJ itself included: everything Assimp
+    // opens while it parses the OBJ is read as a material library.
+    TempDir dir;
+    std::ofstream(dir.path / "notes.obj") << "mtllib notes.txt\n" << kTriangle;
+    std::ofstream(dir.path / "notes.txt") << "map_Kd a.png\nnewmtl painted\nKd 0 1 0\n";
+    auto r = importOk(dir.path / "notes.obj");
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "notes.obj", dir.path / "notes.txt", 1)), 1u);
+    const scene::Material* m = findMaterial(r.scene, "painted");
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(m->diffuseColor, glm::vec3(0, 1, 0));
+
+    // The OBJ parser skips `map_Kd`; read as its own library, its 10 lines are statements.
+    std::ofstream(dir.path / "self.obj") << "mtllib self.obj\nmap_Kd a.png\n" << kTriangle;
+    r = importOk(dir.path / "self.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "self.obj", dir.path / "self.obj", 10)), 1u);
+}
+
+TEST(AssimpImporter, Utf16LibraryIsNotReadButDoesNotCrash) {
+    // Assimp 5.2.5 converts UTF-16 text into a buffer it then throws away, so
+    // it parses the raw bytes: every character a line, `newmtl` never seen,
+    // and the `a` of the material's name an anisotropy statement (SEGV).
+    TempDir dir;
+    std::ofstream(dir.path / "tri.obj") << "mtllib tri.mtl\n" << kTriangle;
+    std::string utf16 = "\xFF\xFE";
+    for (char c : std::string("newmtl a\n"))
+        utf16 += {c, '\0'};
+    std::ofstream(dir.path / "tri.mtl", std::ios::binary) << utf16;
+    const auto r = importOk(dir.path / "tri.obj");
+    EXPECT_EQ(r.stats.triangles, 1u);
+    // "\xFF\xFEn", "e", "w", "m", "t", "l", "a"; the space stays.
+    EXPECT_EQ(countWarnings(r, droppedWarning(dir.path / "tri.obj", dir.path / "tri.mtl", 7)), 1u);
+}
