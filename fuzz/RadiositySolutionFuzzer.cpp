@@ -98,8 +98,8 @@ void checkSolution(const radiosity::StoredSolution& s) {
                 fuzz::invariantBroken(at + " names vertex " + std::to_string(p.vertices[std::size_t(k)]) +
                                       " of " + std::to_string(mesh.vertices.size()));
         }
-        // Derived by computePatchGeometry on load: finite corners far enough
-        // apart (about 1e19) still overflow the area's float cross product.
+        // Derived by computePatchGeometry on load; the decoder refuses finite
+        // corners far enough apart (about 1e19) to overflow them.
         fuzz::checkFinite(p.area, at + " area");
         fuzz::checkFinite(p.center, at + " centre");
         fuzz::checkFinite(p.normal, at + " normal");

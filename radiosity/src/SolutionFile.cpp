@@ -180,6 +180,21 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
             if (!finite(p.corners[std::size_t(k)]))
                 return makeError(ErrorCode::NonFinite, fileName, at(start),
                                  "patch " + std::to_string(i) + " has a non-finite corner");
+        // Centre, normal and area follow from the corners (in float, as for a
+        // meshed scene): finite corners about 1e19 apart overflow the area's
+        // cross product, near the float limit their sum the centre.
+        computePatchGeometry(p);
+        const char* derived = nullptr;
+        if (!std::isfinite(p.area))
+            derived = "area";
+        else if (!finite(p.center))
+            derived = "centre";
+        else if (!finite(p.normal))
+            derived = "normal";
+        if (derived)
+            return makeError(ErrorCode::NonFinite, fileName, at(start),
+                             "patch " + std::to_string(i) + "'s corners are too far apart: its " + derived +
+                                 " is not finite");
         if (p.material >= materialCount || p.object >= objectCount)
             return makeError(ErrorCode::IndexOutOfRange, fileName, at(start),
                              "patch " + std::to_string(i) + " names material " + std::to_string(p.material) +
@@ -214,9 +229,6 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     if (!r.atEnd())
         return makeError(ErrorCode::InvalidValue, fileName, at(r.offset()),
                          "unexpected bytes after the solution");
-    for (Patch& p : s.mesh.patches) {
-        computePatchGeometry(p); // centre, normal and area follow from the corners
-    }
     buildAdjacency(s.mesh);
     return s;
 }

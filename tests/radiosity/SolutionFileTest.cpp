@@ -143,6 +143,39 @@ TEST(SolutionFile, ImpossibleCountsVersionsAndValuesAreRefused) {
                                        ": radiosity of patch 0 is negative: light is never below 0");
 }
 
+// fuzz_radiosity_solution: finite corners far enough apart overflow the
+// geometry the decoder derives from them (in float, as for a meshed scene);
+// the solver would then multiply light by an infinite area. Each patch
+// record is 89 bytes: its corner count, then per corner xyz and uv.
+TEST(SolutionFile, CornersTooFarApartForAFiniteAreaOrCentreAreRefused) {
+    const std::string bytes = radiosity::encodeSolution(solvedBox());
+    constexpr std::size_t kRecord = 89;
+    const std::size_t patch3 = 48 + 3 * kRecord;
+    // The reproducer: one corner at x = -1.7e32, the others about 1 m away.
+    const scene::Error area = decodeFails(edited(bytes, patch3 + 1, -1.7e32f));
+    EXPECT_EQ(area.code, scene::ErrorCode::NonFinite);
+    EXPECT_EQ(area.describe(), "box.lpvrad: byte offset " + std::to_string(patch3) +
+                                   ": patch 3's corners are too far apart: its area is not finite");
+
+    // Every corner of patch 5 at (3e38, 3e38, 3e38): no area, but their sum overflows the centre.
+    std::string far = bytes;
+    const std::size_t patch5 = 48 + 5 * kRecord;
+    const auto corners = std::uint8_t(far[patch5]);
+    for (std::size_t k = 0; k < corners; ++k)
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            far = edited(far, patch5 + 1 + 20 * k + 4 * axis, 3e38f);
+    const scene::Error centre = decodeFails(far);
+    EXPECT_EQ(centre.code, scene::ErrorCode::NonFinite);
+    EXPECT_EQ(centre.describe(), "box.lpvrad: byte offset " + std::to_string(patch5) +
+                                     ": patch 5's corners are too far apart: its centre is not finite");
+
+    // Far out but within reach of float: loaded, with finite geometry.
+    const auto farButFine = radiosity::decodeSolution(edited(bytes, patch3 + 1, -1e17f), "box.lpvrad", 2, 6);
+    ASSERT_TRUE(farButFine.has_value()) << farButFine.error().describe();
+    const radiosity::Patch& p = farButFine->mesh.patches[3];
+    EXPECT_TRUE(std::isfinite(p.area) && p.area > 1e16f) << p.area;
+}
+
 #ifndef _WIN32
 TEST(SolutionFile, AFifoOrASparseGiantIsRefusedBeforeReading) {
     const auto dir = std::filesystem::path(test::kBinaryDir) / "tests" / "radiosity-solution-special";
