@@ -30,6 +30,10 @@ private:
 
 int usageError(const std::string& message, const std::string& command);
 
+// A loaded project's warnings (scene::Project::loadWarnings) on stderr, each
+// prefixed with the file: the first 20, then how many more.
+void printLoadWarnings(const std::string& projectFile, const std::vector<std::string>& warnings);
+
 int runRender(Args args);
 int runParams(Args args);
 int runNew(Args args);

@@ -146,8 +146,7 @@ int runImport(Args args) {
             std::cerr << "lpv: cannot add to it: " << loaded.error().describe() << "\n";
             return kFailure;
         }
-        for (const std::string& warning : loaded->loadWarnings)
-            std::cerr << "  warning: " << projectFile.string() << ": " << warning << "\n";
+        printLoadWarnings(projectFile.string(), loaded->loadWarnings);
         project = std::move(*loaded);
     } else {
         project.name = projectFile.stem().string();

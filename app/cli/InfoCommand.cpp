@@ -32,8 +32,7 @@ int runInfo(Args args) {
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return kFailure;
     }
-    for (const std::string& warning : project->loadWarnings)
-        std::cerr << "  warning: " << pos.front() << ": " << warning << "\n";
+    printLoadWarnings(pos.front(), project->loadWarnings);
     const scene::Scene& s = project->scene;
     std::printf("project     %s\n", project->name.c_str());
     std::printf("objects     %zu\nmeshes      %zu\ntriangles   %zu\nmaterials   %zu\nlights      %zu\n"

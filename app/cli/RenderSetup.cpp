@@ -28,6 +28,14 @@ std::optional<scene::Camera> pickCamera(const scene::Scene& s, const std::option
     return std::nullopt;
 }
 
+void printLoadWarnings(const std::string& projectFile, const std::vector<std::string>& warnings) {
+    constexpr std::size_t kShown = 20;
+    for (std::size_t i = 0; i < warnings.size() && i < kShown; ++i)
+        std::cerr << "  warning: " << projectFile << ": " << warnings[i] << "\n";
+    if (warnings.size() > kShown)
+        std::cerr << "  ... and " << warnings.size() - kShown << " more warnings\n";
+}
+
 std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile, const std::vector<std::string>& sets,
                                                   const std::string& command, int& exitCode) {
     exitCode = kFailure;
@@ -36,8 +44,7 @@ std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return std::nullopt;
     }
-    for (const std::string& warning : project->loadWarnings)
-        std::cerr << "  warning: " << projectFile << ": " << warning << "\n";
+    printLoadWarnings(projectFile, project->loadWarnings);
     for (const std::string& kv : sets) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos) {

@@ -176,8 +176,7 @@ int runVideo(Args args) {
         std::cerr << "lpv: " << project.error().describe() << "\n";
         return kFailure;
     }
-    for (const std::string& warning : project->loadWarnings)
-        std::cerr << "  warning: " << pos.front() << ": " << warning << "\n";
+    printLoadWarnings(pos.front(), project->loadWarnings);
     if (auto ok = video::checkVideoOptions(*project, options); !ok) {
         // A missing path is about the project; everything else about the options given.
         if (ok.error().location == "pathName") {

@@ -50,7 +50,11 @@ scene::Expected<void> Document::saveAs(const QString& path) {
     scene::Project copy = project_;
     if (auto copied = scene::copyTexturesIntoProject(copy.scene, path.toStdString()); !copied)
         return std::unexpected(copied.error());
-    auto saved = scene::saveProject(copy, path.toStdString());
+    // An undo after this save may bring back a texture no material uses now:
+    // its copy stays until a save with nothing to undo.
+    scene::SaveOptions options;
+    options.collectOrphanTextures = undoStack_->count() == 0;
+    auto saved = scene::saveProject(copy, path.toStdString(), options);
     if (!saved)
         return saved;
     path_ = path;

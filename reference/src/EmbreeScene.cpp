@@ -1,4 +1,5 @@
 #include "lpv/reference/EmbreeScene.h"
+#include "lpv/scene/WorldMatrices.h"
 
 #include "lpv/scene/AreaLight.h"
 
@@ -76,12 +77,13 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
     }
 
     std::vector<glm::vec3> positions;
+    const std::vector<glm::mat4> worlds = scene::worldMatrices(s); // linear in any parent chain
     for (std::size_t o = 0; o < s.objects.size(); ++o) {
         const scene::Object& object = s.objects[o];
         if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= s.meshes.size())
             continue;
         const scene::Mesh& mesh = s.meshes[std::size_t(object.mesh)];
-        const glm::mat4 world = s.worldMatrix(int(o));
+        const glm::mat4 world = worlds[o];
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(world));
         auto addRange = [&](std::uint32_t first, std::uint32_t count, int material) {
             for (std::uint32_t k = first; k + 3 <= std::size_t(first) + count && k + 3 <= mesh.indices.size();

@@ -1,4 +1,5 @@
 #include "lpv/renderer/SceneGpu.h"
+#include "lpv/scene/WorldMatrices.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -96,12 +97,13 @@ SceneGpu::SceneGpu(const scene::Scene& scene) {
 
 void SceneGpu::updateDraws(const scene::Scene& scene) {
     draws_.clear();
+    const std::vector<glm::mat4> worlds = scene::worldMatrices(scene); // linear in any parent chain
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& obj = scene.objects[o];
         if (!obj.visible || obj.mesh < 0 || std::size_t(obj.mesh) >= ranges_.size() ||
             std::size_t(obj.mesh) >= scene.meshes.size())
             continue;
-        const glm::mat4 model = scene.worldMatrix(int(o));
+        const glm::mat4 model = worlds[o];
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(model));
         const MeshRange& r = ranges_[std::size_t(obj.mesh)];
         const scene::Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];

@@ -172,7 +172,7 @@ Expected<void> validateSceneContent(const Scene& scene, const std::string& sourc
     return {};
 }
 
-Expected<void> saveProject(const Project& project, const fs::path& file) {
+Expected<void> saveProject(const Project& project, const fs::path& file, const SaveOptions& options) {
     const std::string where = file.string();
     if (file.filename().empty() || file.stem().empty())
         return makeError(ErrorCode::InvalidValue, where, "", "not a project file name");
@@ -224,7 +224,8 @@ Expected<void> saveProject(const Project& project, const fs::path& file) {
         return written;
     }
     removeUnreferencedAssets(meshFolder, referenced);
-    removeOrphanTextures(project.scene, file);
+    if (options.collectOrphanTextures)
+        removeOrphanTextures(project.scene, file);
     return {};
 }
 

@@ -1,4 +1,5 @@
 #include "lpv/renderer/lpv/EmissiveVpls.h"
+#include "lpv/scene/WorldMatrices.h"
 
 #include "lpv/scene/AreaLight.h"
 
@@ -22,12 +23,13 @@ struct EmissiveTriangle {
 // light's visible surface, until it returns false.
 template <class Visit>
 void forEachEmissiveTriangle(const scene::Scene& scene, Visit&& visit) {
+    const std::vector<glm::mat4> worlds = scene::worldMatrices(scene); // linear in any parent chain
     for (int o = 0; o < int(scene.objects.size()); ++o) {
         const scene::Object& object = scene.objects[std::size_t(o)];
         if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= scene.meshes.size())
             continue;
         const scene::Mesh& mesh = scene.meshes[std::size_t(object.mesh)];
-        const glm::mat4 world = scene.worldMatrix(o);
+        const glm::mat4 world = worlds[std::size_t(o)];
         const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
         for (const scene::Submesh& sub : mesh.submeshes) {
             if (sub.materialIndex >= scene.materials.size() || !emits(scene.materials[sub.materialIndex]))

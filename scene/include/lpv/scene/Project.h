@@ -57,7 +57,14 @@ Expected<void> validateSceneContent(const Scene& scene, const std::string& sourc
 // Writes the assets then the JSON, each to a temporary file in the same
 // folder that is flushed and renamed over the target: a failed save leaves
 // the previous project intact.
-Expected<void> saveProject(const Project& project, const std::filesystem::path& file);
+struct SaveOptions {
+    // Remove texture copies no material names any more (removeOrphanTextures).
+    // The editor turns it off while its undo history could bring a removed
+    // texture back.
+    bool collectOrphanTextures = true;
+};
+Expected<void> saveProject(const Project& project, const std::filesystem::path& file,
+                           const SaveOptions& options = {});
 
 // Atomic write of one file (temp file, flush, fsync, rename).
 Expected<void> writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
