@@ -8,8 +8,7 @@
 #include <QDialogButtonBox>
 #include <QFontDatabase>
 #include <QLabel>
-#include <QOpenGLContext>
-#include <QOpenGLWidget>
+#include <QGuiApplication>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -18,22 +17,19 @@ namespace lpv::editor {
 
 namespace {
 
-// The viewport's own context: the driver the editor really renders with,
+// The viewport's render context: the driver the editor really renders with,
 // which can differ from the headless one `lpv --version` reports.
-std::string viewportOpenGl(QOpenGLWidget* viewport) {
-    if (!viewport || !viewport->isValid() || !viewport->context())
-        return "unavailable: the viewport has no OpenGL context yet";
-    viewport->makeCurrent();
-    const renderer::GlInfo info = renderer::queryCurrentGlInfo();
-    viewport->doneCurrent();
-    return app::describeOpenGl(info) + ", Qt platform " + QGuiApplication::platformName().toStdString();
+std::string viewportOpenGl(const std::optional<renderer::GlInfo>& info) {
+    if (!info)
+        return "unavailable: the viewport has not rendered yet";
+    return app::describeOpenGl(*info) + ", Qt platform " + QGuiApplication::platformName().toStdString();
 }
 
 } // namespace
 
-QString aboutReport(QOpenGLWidget* viewport) {
+QString aboutReport(const std::optional<renderer::GlInfo>& renderer) {
     app::VersionReport report = app::collectVersionReport("LPV Studio");
-    report.openGl = viewportOpenGl(viewport);
+    report.openGl = viewportOpenGl(renderer);
     // Qt first: the editor's own toolkit. The loaded library can be newer than the headers.
     const std::string qtNote = std::string(qVersion()) == QT_VERSION_STR
                                    ? "loaded"
@@ -42,7 +38,7 @@ QString aboutReport(QOpenGLWidget* viewport) {
     return QString::fromStdString(app::formatVersionReport(report));
 }
 
-AboutDialog::AboutDialog(QOpenGLWidget* viewport, QWidget* parent) : QDialog(parent) {
+AboutDialog::AboutDialog(const std::optional<renderer::GlInfo>& renderer, QWidget* parent) : QDialog(parent) {
     setWindowTitle(tr("About LPV Studio"));
     auto* layout = new QVBoxLayout(this);
 
@@ -54,7 +50,7 @@ AboutDialog::AboutDialog(QOpenGLWidget* viewport, QWidget* parent) : QDialog(par
                         .arg(QString::fromStdString(app::buildInfo().version)));
     layout->addWidget(header);
 
-    text_ = new QPlainTextEdit(aboutReport(viewport), this);
+    text_ = new QPlainTextEdit(aboutReport(renderer), this);
     text_->setReadOnly(true);
     text_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     text_->setLineWrapMode(QPlainTextEdit::NoWrap);

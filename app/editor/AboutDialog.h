@@ -3,21 +3,25 @@
 // revision, build, libraries; lpv/app/VersionInfo.h) plus Qt's version and
 // the OpenGL driver the viewport renders with. The text can be selected and
 // copied whole, for bug reports.
+#include "lpv/renderer/GlContext.h"
+
 #include <QDialog>
 
-class QOpenGLWidget;
+#include <optional>
+
 class QPlainTextEdit;
 
 namespace lpv::editor {
 
-// The report as plain text. `viewport` may be null or not yet initialised;
-// the OpenGL line then says so.
-QString aboutReport(QOpenGLWidget* viewport);
+// The report as plain text. `renderer`: the driver of the viewport's render
+// context (Viewport::renderGlInfo); nothing before the viewport's first
+// frame, and the OpenGL line then says so.
+QString aboutReport(const std::optional<renderer::GlInfo>& renderer);
 
 class AboutDialog : public QDialog {
     Q_OBJECT
   public:
-    explicit AboutDialog(QOpenGLWidget* viewport, QWidget* parent = nullptr);
+    explicit AboutDialog(const std::optional<renderer::GlInfo>& renderer, QWidget* parent = nullptr);
 
     QString reportText() const;
 

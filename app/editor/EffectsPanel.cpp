@@ -3,6 +3,7 @@
 #include "Viewport.h"
 
 #include <QComboBox>
+#include <QShowEvent>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -42,6 +43,11 @@ EffectsPanel::EffectsPanel(Document* document, Viewport* viewport, QWidget* pare
     // Sun rays depend on where the camera looks.
     connect(viewport_, &Viewport::viewCameraChanged, this, &EffectsPanel::redecide);
     reanalyse();
+}
+
+void EffectsPanel::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    redecide();
 }
 
 void EffectsPanel::setRendererNote(const QString& note) { note_->setText(tr("Renderer, last frame: ") + note); }

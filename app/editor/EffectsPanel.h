@@ -28,6 +28,10 @@ public:
 public slots:
     void setRendererNote(const QString& note);
 
+protected:
+    // Decisions are not kept up to date while the dock is hidden: shown, it catches up.
+    void showEvent(QShowEvent* event) override;
+
 private:
     void reanalyse();
     void redecide();

@@ -300,7 +300,7 @@ void MainWindow::createActions() {
     viewMenu_->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About LPV Studio"), this, [this] { AboutDialog(viewport_, this).exec(); });
+    help->addAction(tr("&About LPV Studio"), this, [this] { AboutDialog(viewport_->renderGlInfo(), this).exec(); });
 
     QAction* firstGizmoAction = toolbar->actions().value(0);
     for (QAction* a : {newAction, open, saveAction, import, undoAction, redoAction})
@@ -318,13 +318,8 @@ void MainWindow::updateTitle() {
 void MainWindow::showFrameStats(double gpuMs) {
     frameLabel_->setText(tr("GPU %1 ms").arg(gpuMs, 0, 'f', 2));
     frameLabel_->setToolTip(viewport_->glRenderer());
-    static QElapsedTimer lastMemoryQuery;
-    if (lastMemoryQuery.isValid() && lastMemoryQuery.elapsed() < 1000)
-        return;
-    lastMemoryQuery.start();
-    viewport_->makeCurrent();
-    const auto memory = renderer::queryGpuMemory();
-    viewport_->doneCurrent();
+    // Queried by the render thread with each frame (its context is the one that renders).
+    const auto& memory = viewport_->gpuMemory();
     if (!memory)
         memoryLabel_->setText(tr("GPU memory: not reported by this driver"));
     else if (memory->totalMiB > 0.0)

@@ -10,7 +10,6 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QSurfaceFormat>
 #include <QThread>
 #include <QWheelEvent>
 
@@ -28,7 +27,7 @@ constexpr int kClickSlopPixels = 4;
 
 // Whether every image `m` draws with is in `images` (under the keys the
 // renderer looks up: derived images for height and colour-keyed maps).
-bool texturesCached(const scene::Material& m, const scene::TextureImages& images) {
+bool texturesCached(const scene::Material& m, const std::set<std::string>& images) {
     for (const std::string* slot : scene::textureSlots(m))
         if (!slot->empty() && slot != &m.heightTexture && !images.contains(*slot))
             return false;
@@ -46,12 +45,11 @@ QColor axisColor(int axis, bool active) {
 
 } // namespace
 
-Viewport::Viewport(Document* document, QWidget* parent) : QOpenGLWidget(parent), document_(document) {
-    QSurfaceFormat format;
-    format.setVersion(4, 5);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    setFormat(format);
+Viewport::Viewport(Document* document, QWidget* parent) : QWidget(parent), document_(document) {
+    // The frame covers the whole widget: no background to clear first. No
+    // OpenGL in the widget: the window stays a plain raster one, which costs
+    // the UI thread far less than composing a GL widget (on llvmpipe above all).
+    setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(320, 240);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -67,10 +65,8 @@ Viewport::~Viewport() {
         textureWorker_->wait(); // it writes only into its own result, but must end before the process
         delete textureWorker_;
     }
-    // GL objects must die with their context current.
-    makeCurrent();
-    renderer_.reset();
-    doneCurrent();
+    delete worker_; // ends the render thread (its GL objects die there)
+    worker_ = nullptr;
 }
 
 void Viewport::onDocumentChanged(Changes changes) {
@@ -83,6 +79,17 @@ void Viewport::onDocumentChanged(Changes changes) {
     }
     pending_ |= changes;
     update();
+}
+
+void Viewport::renderAgain() {
+    if (requested_)
+        requested_->visualizersChanged = true; // forces the next request
+    update();
+}
+
+bool Viewport::frameUpToDate() const {
+    return pending_ == Changes() && requested_ && !requested_->visualizersChanged && worker_ &&
+           shownSerial_ == worker_->lastSerial();
 }
 
 void Viewport::setViewCamera(const scene::Camera& camera) {
@@ -127,20 +134,8 @@ void Viewport::setResolutionScale(double scale) {
     update();
 }
 
-void Viewport::initializeGL() {
-    renderer::installDebugOutputIfRequested();
-    const renderer::GlInfo info = renderer::queryCurrentGlInfo();
-    glRenderer_ = QString::fromStdString(info.renderer + " | " + info.version);
-    auto created = renderer::ForwardRenderer::create();
-    if (!created) {
-        lastError_ = QString::fromStdString(created.error().describe());
-        emit renderFailed(lastError_);
-        return;
-    }
-    renderer_.emplace(std::move(*created));
-    renderer_->setLpvCapture(vizRequest_.lpv);
-    renderer_->setShadowCascadeTint(vizRequest_.shadowTint);
-    pending_ = Change::Everything;
+std::optional<renderer::GlInfo> Viewport::renderGlInfo() const {
+    return worker_ ? worker_->glInfo() : std::nullopt;
 }
 
 void Viewport::requestMissingTextures() {
@@ -150,7 +145,7 @@ void Viewport::requestMissingTextures() {
     }
     auto wanted = std::make_shared<scene::Scene>();
     for (const scene::Material& m : document_->scene().materials)
-        if (!texturesCached(m, textures_))
+        if (!texturesCached(m, texturesKnown_))
             wanted->materials.push_back(m);
     if (wanted->materials.empty())
         return;
@@ -161,7 +156,9 @@ void Viewport::requestMissingTextures() {
     connect(textureWorker_, &QThread::finished, this, [this, decoded] {
         textureWorker_->deleteLater();
         textureWorker_ = nullptr;
-        textures_.merge(decoded->images);
+        for (const auto& [key, image] : decoded->images)
+            texturesKnown_.insert(key);
+        texturesToSend_.push_back(std::make_shared<const scene::TextureImages>(std::move(decoded->images)));
         QStringList warnings;
         for (const std::string& w : decoded->warnings)
             warnings << QString::fromStdString(w);
@@ -175,71 +172,110 @@ void Viewport::requestMissingTextures() {
 }
 
 void Viewport::uploadPendingChanges() {
-    const scene::Scene& s = document_->scene();
-    if (pending_ == Changes(Change::Everything))
-        textures_.clear(); // another project: its files may differ under the same names
+    // What changed in the document goes to the worker with the next request.
+    if (pending_ == Changes(Change::Everything)) {
+        texturesKnown_.clear(); // another project: its files may differ under the same names
+        texturesToSend_.clear();
+        forgetTexturesOnSend_ = true;
+    }
     if (pending_ & (Change::Geometry | Change::Materials))
         requestMissingTextures();
-    if (pending_ & Change::Geometry) {
-        renderer_->setScene(s, textures_);
-    } else {
-        if (pending_ & Change::Materials)
-            renderer_->updateMaterials(s, textures_);
-        if (pending_ & (Change::Transforms | Change::Structure))
-            renderer_->updateObjects(s);
-    }
-    pending_ = {};
 }
 
-void Viewport::paintGL() {
-    const GLuint target = defaultFramebufferObject();
-    if (!renderer_) {
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
-        glClearColor(0.12f, 0.12f, 0.13f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+void Viewport::requestFrameIfChanged() {
+    if (!worker_) {
+        // Started with the first frame a shown view asks for: a window that
+        // is never shown (a test, a screenshot of a dock) compiles no shaders.
+        worker_ = new FrameWorker(this);
+        connect(worker_, &FrameWorker::frameReady, this, &Viewport::onFrameReady);
+    }
+    const int w = renderWidth(), h = renderHeight();
+    const scene::Camera& camera = controller_.camera();
+    const scene::ParameterSet& params = document_->parameters();
+    // Parameter and preset edits leave the scene as it is: nothing of it to send.
+    const Changes sceneFlags = Change::Transforms | Change::Structure | Change::Geometry | Change::Materials |
+                               Change::Lights | Change::Cameras | Change::CameraPaths | Change::Sky;
+    const bool sceneChanged = (pending_ & sceneFlags) || !sceneRest_;
+    const bool texturesArrived = !texturesToSend_.empty();
+    if (requested_ && pending_ == Changes() && !texturesArrived && !requested_->visualizersChanged &&
+        requested_->camera == camera && requested_->parameters == params && requested_->split == split_ &&
+        requested_->width == w && requested_->height == h)
+        return;
+    uploadPendingChanges();
+    FrameRequest request;
+    const scene::Scene& s = document_->scene();
+    if (sceneChanged) {
+        // The meshes only when they changed: a transform drag or a material
+        // edit sends the small rest of the scene.
+        if (!sceneRest_ || (pending_ & Change::Geometry))
+            request.meshes = std::make_shared<const std::vector<scene::Mesh>>(s.meshes);
+        auto rest = std::make_shared<scene::Scene>();
+        rest->materials = s.materials;
+        rest->objects = s.objects;
+        rest->lights = s.lights;
+        rest->cameras = s.cameras;
+        rest->cameraPaths = s.cameraPaths;
+        rest->sky = s.sky;
+        sceneRest_ = std::move(rest);
+    }
+    request.rest = sceneRest_;
+    request.changes = pending_;
+    if (texturesArrived)
+        request.changes |= Change::Materials;
+    request.newTextures = std::exchange(texturesToSend_, {});
+    request.forgetTextures = std::exchange(forgetTexturesOnSend_, false);
+    request.parameters = params;
+    request.split = split_;
+    request.camera = camera;
+    request.width = w;
+    request.height = h;
+    request.visualizers = vizRequest_;
+    pending_ = {};
+    requested_ = Requested{camera, params, split_, w, h, false};
+    worker_->submit(std::move(request));
+}
+
+void Viewport::onFrameReady(const std::shared_ptr<const FrameResult>& result) {
+    shownSerial_ = result->serial;
+    if (!result->error.isEmpty()) {
+        lastError_ = result->error;
+        emit renderFailed(lastError_);
+        // Once more, in case it was passing (the view stays on the last good
+        // frame meanwhile); a second failure in a row waits for a change.
+        if (!std::exchange(lastFrameFailed_, true))
+            renderAgain();
+        update();
         return;
     }
-    uploadPendingChanges();
-    const scene::Scene& s = document_->scene();
-    const int w = renderWidth(), h = renderHeight();
-    const int fullW = std::max(1, int(width() * devicePixelRatio())), fullH = std::max(1, int(height() * devicePixelRatio()));
-    // Auto exposure adapts over the real time between frames (after an idle
-    // spell it is at its target at once); the split view's halves are two
-    // presets through one renderer, so each is metered on its own.
-    const qint64 sinceLastFrameNs = frameClock_.isValid() ? frameClock_.nsecsElapsed() : -1;
-    frameClock_.start();
-    renderer_->setExposureTimeStep(split_ || sinceLastFrameNs < 0 ? std::nullopt
-                                                                  : std::optional<double>(double(sinceLastFrameNs) * 1e-9));
-    auto renderWith = [&](const scene::ParameterSet& params) -> bool {
-        auto ok = renderer_->render(s, params, controller_.camera(), w, h);
-        if (!ok) {
-            lastError_ = QString::fromStdString(ok.error().describe());
-            emit renderFailed(lastError_);
-        }
-        return bool(ok);
-    };
-    if (split_) {
-        // The same camera twice; each half of the view shows one preset.
-        if (!renderWith(split_->first))
-            return;
-        renderer_->blitRegionTo(target, 0, 0, w / 2, h, 0, 0, fullW / 2, fullH);
-        if (!renderWith(split_->second))
-            return;
-        renderer_->blitRegionTo(target, w / 2, 0, w, h, fullW / 2, 0, fullW, fullH);
-    } else {
-        if (!renderWith(document_->parameters()))
-            return;
-        renderer_->blitRegionTo(target, 0, 0, w, h, 0, 0, fullW, fullH);
-    }
+    lastFrameFailed_ = false;
     lastError_.clear();
-    emitVisualizerFrame();
-    emit frameRendered(renderer_->timer().table());
-    const QString note = QString::fromStdString(renderer_->lpvNote());
-    if (note != lastNote_) {
-        lastNote_ = note;
-        emit lpvNoteChanged(note);
+    gpuMemory_ = result->gpuMemory;
+    if (!result->image.isNull())
+        shownImage_ = result->image;
+    if (result->visualizers && vizRequest_.active()) {
+        vizFrame_ = result->visualizers;
+        emit visualizerFrame(vizFrame_);
     }
-    drawOverlay();
+    emit frameRendered(result->timings);
+    if (result->lpvNote != lastNote_) {
+        lastNote_ = result->lpvNote;
+        emit lpvNoteChanged(lastNote_);
+    }
+    update();
+}
+
+void Viewport::paintEvent(QPaintEvent*) {
+    // Never renders here: asks the worker for a frame when the state changed,
+    // and shows the last finished one at once.
+    requestFrameIfChanged();
+    QPainter painter(this);
+    if (shownImage_.isNull()) {
+        painter.fillRect(rect(), QColor(31, 31, 33));
+    } else {
+        painter.setRenderHint(QPainter::SmoothPixmapTransform, shownImage_.size() != size());
+        painter.drawImage(QRectF(0, 0, width(), height()), shownImage_);
+    }
+    drawOverlay(painter);
 }
 
 std::optional<glm::vec3> Viewport::selectionPivot() const {
@@ -250,16 +286,7 @@ std::optional<glm::vec3> Viewport::selectionPivot() const {
     return glm::vec3(world[3]);
 }
 
-void Viewport::drawOverlay() {
-    // The renderer leaves its own GL state; QPainter's GL engine expects the defaults.
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
-
-    QPainter painter(this);
+void Viewport::drawOverlay(QPainter& painter) {
     painter.setRenderHint(QPainter::Antialiasing);
     const scene::Scene& s = document_->scene();
     const Selection& sel = document_->selection();
@@ -321,29 +348,9 @@ void Viewport::setVisualizerRequest(const VisualizerRequest& request) {
     vizRequest_ = request;
     if (!request.active())
         vizFrame_.reset(); // nothing shown: nothing kept
-    if (renderer_) {
-        makeCurrent();
-        renderer_->setLpvCapture(request.lpv);
-        renderer_->setShadowCascadeTint(request.shadowTint);
-        doneCurrent();
-    }
+    if (requested_)
+        requested_->visualizersChanged = true; // the next frame reads back what is asked now
     update();
-}
-
-void Viewport::emitVisualizerFrame() {
-    if (!vizRequest_.active())
-        return;
-    auto frame = std::make_shared<VisualizerFrame>();
-    frame->cascades = renderer_->lpvCascadeFrames();
-    frame->lpvNote = renderer_->lpvNote();
-    if (const renderer::LpvSnapshot* snapshot = renderer_->lpvSnapshot())
-        frame->lpv = *snapshot;
-    if (vizRequest_.rsm)
-        frame->rsm = renderer_->debugImages("rsm");
-    if (vizRequest_.shadow)
-        frame->shadow = renderer_->debugImages("shadowMaps");
-    vizFrame_ = frame;
-    emit visualizerFrame(frame);
 }
 
 void Viewport::setShownPath(int index) {
@@ -568,7 +575,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         else if (event->key() == Qt::Key_R)
             setGizmoMode(GizmoMode::Scale);
         else
-            QOpenGLWidget::keyPressEvent(event);
+            QWidget::keyPressEvent(event);
     }
 }
 
@@ -581,7 +588,7 @@ void Viewport::keyReleaseEvent(QKeyEvent* event) {
 void Viewport::focusOutEvent(QFocusEvent* event) {
     heldKeys_.clear();
     flyTimer_.stop();
-    QOpenGLWidget::focusOutEvent(event);
+    QWidget::focusOutEvent(event);
 }
 
 void Viewport::flyStep() {

@@ -1,8 +1,11 @@
 #pragma once
-// The central 3D view: a QOpenGLWidget that drives the same renderer library
-// as the CLI. It redraws only when something changed (Qt calls paintGL on
-// update()), never in a busy loop: while flying, a timer runs only as long
-// as a movement key is held.
+// The central 3D view. Its frames render on a worker thread (FrameWorker:
+// the same renderer library as the CLI, in a headless GL context of its
+// own), so no UI event waits for a frame; the widget shows the last finished
+// frame, scaled to the view, with the gizmo, camera path and visualizer
+// overlays drawn over it at once. It asks for a frame only when something
+// changed, never in a busy loop: while flying, a timer runs only as long as
+// a movement key is held.
 //
 // Mouse: left-click selects (ray picking); left-drag orbits, or drags a
 // gizmo handle, or with L held turns the sun; middle-drag pans; wheel
@@ -11,15 +14,15 @@
 // move/rotate/scale mode when not flying.
 #include "CameraController.h"
 #include "Document.h"
+#include "FrameWorker.h"
 #include "TransformGizmo.h"
 #include "VisualizerOverlay.h"
 
-#include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/scene/Image.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
+#include <QWidget>
 #include <QSet>
 #include <QTimer>
 
@@ -36,7 +39,7 @@ class QThread;
 namespace lpv::editor {
 
 
-class Viewport : public QOpenGLWidget {
+class Viewport : public QWidget {
     Q_OBJECT
 public:
     explicit Viewport(Document* document, QWidget* parent = nullptr);
@@ -44,7 +47,20 @@ public:
 
     // Errors from GL set-up or rendering, empty if none.
     const QString& lastError() const { return lastError_; }
-    const QString& glRenderer() const { return glRenderer_; }
+    // The driver that renders the frames (the worker's context).
+    QString glRenderer() const { return worker_ ? worker_->glRenderer() : QString(); }
+    // The image shown is of the current state: no frame waits or renders
+    // (tests wait for this before they look at the view).
+    bool frameUpToDate() const;
+    // What the widget shows (the last frame with the overlays), as an image.
+    QImage grabFramebuffer() { return grab().toImage(); }
+    // The driver that renders the frames, once the worker's context exists.
+    std::optional<renderer::GlInfo> renderGlInfo() const;
+    // GPU memory as the driver reported it with the last frame (nothing where it does not say).
+    const std::optional<renderer::GpuMemoryInfo>& gpuMemory() const { return gpuMemory_; }
+    // Asks for one more frame of the same state (a benchmark, a screenshot
+    // after the exposure settled).
+    void renderAgain();
     // Textures are being decoded in the background (tests wait for this).
     bool texturesPending() const { return textureWorker_ != nullptr; }
 
@@ -98,8 +114,7 @@ signals:
     void visualizerFrame(std::shared_ptr<const lpv::editor::VisualizerFrame> frame);
 
 protected:
-    void initializeGL() override;
-    void paintGL() override;
+    void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -114,18 +129,37 @@ private:
     // Decodes, on a worker thread, the textures of materials not yet in the
     // cache; until they arrive those materials draw untextured.
     void requestMissingTextures();
-    void drawOverlay();
+    void drawOverlay(QPainter& painter);
+    // Sends the worker a request when the state it renders changed since
+    // the last one (camera, parameters, split, size, visualizers, scene).
+    void requestFrameIfChanged();
+    void onFrameReady(const std::shared_ptr<const FrameResult>& result);
     void flyStep();
     void dragSun(const QPoint& delta);
     void dragPathKey(const QPoint& position);
     void drawPath(QPainter& painter);
-    void emitVisualizerFrame();
     std::optional<glm::vec3> selectionPivot() const;
     int renderWidth() const;
     int renderHeight() const;
 
     Document* document_;
-    std::optional<renderer::ForwardRenderer> renderer_;
+    FrameWorker* worker_ = nullptr;
+    QImage shownImage_;       // the last finished frame
+    std::optional<renderer::GpuMemoryInfo> gpuMemory_;
+    quint64 shownSerial_ = 0; // the request it includes
+    bool lastFrameFailed_ = false;
+    // What the last request held, to tell whether a new one is needed.
+    struct Requested {
+        scene::Camera camera;
+        scene::ParameterSet parameters;
+        std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split;
+        int width = 0, height = 0;
+        bool visualizersChanged = true;
+    };
+    std::optional<Requested> requested_;
+    std::shared_ptr<const scene::Scene> sceneRest_; // the document's scene without meshes, as last sent
+    std::vector<std::shared_ptr<const scene::TextureImages>> texturesToSend_;
+    bool forgetTexturesOnSend_ = false;
     CameraController controller_;
     TransformGizmo gizmo_;
     GizmoMode gizmoMode_ = GizmoMode::Move;
@@ -135,7 +169,7 @@ private:
 
     Changes pending_ = Change::Everything;
     double resolutionScale_ = 1.0;
-    scene::TextureImages textures_; // decoded images by key, kept across edits
+    std::set<std::string> texturesKnown_; // keys of the images decoded so far (the worker holds the images)
     QThread* textureWorker_ = nullptr;
     bool texturesRequestedAgain_ = false;
 
@@ -151,13 +185,11 @@ private:
     QSet<int> heldKeys_;
     QTimer flyTimer_;
     QElapsedTimer flyClock_;
-    QElapsedTimer frameClock_; // time between frames, for auto exposure's adaptation
 
     VisualizerRequest vizRequest_;
     std::shared_ptr<const VisualizerFrame> vizFrame_; // the last read-back, for the probe overlay
 
     QString lastError_;
-    QString glRenderer_;
     QString lastNote_;
 };
 

@@ -145,6 +145,12 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         // Build the graph, compile, execute.
         d.frameEffects.clear();
         d.graph.beginFrame();
+        // Before the plan: a new size means new camera targets, so last
+        // frame's G-buffer cannot feed the geometry volume (its textures go
+        // when declareCameraTargets makes the new ones; reading them was a
+        // GL error on every resize of the editor's view).
+        if (width != d.width || height != d.height)
+            d.gBufferValid = false;
         if (auto ok = d.planIndirect(frame); !ok)
             return ok;
         d.declareCameraTargets(frame);

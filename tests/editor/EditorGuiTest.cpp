@@ -17,11 +17,13 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QDir>
+#include <QFileInfo>
 #include <QImage>
 #include <QMessageBox>
 #include <QSettings>
@@ -56,6 +58,14 @@ struct OpenWindow {
     Document& doc() { return *window.document(); }
 };
 
+// The view once it shows a frame of the current state: frames render on the
+// viewport's worker thread, and the widget shows the last finished one.
+QImage upToDateFrame(Viewport* vp) {
+    vp->update();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return vp->frameUpToDate(); }, 120000)) << "no frame of the current state";
+    return vp->grabFramebuffer();
+}
+
 // Fraction of pixels that are not (nearly) black.
 double litFraction(const QImage& image) {
     long lit = 0;
@@ -71,7 +81,7 @@ double litFraction(const QImage& image) {
 
 TEST(EditorGui, OpensCornellBoxAndViewportRendersIt) {
     OpenWindow w;
-    const QImage frame = w.window.viewport()->grabFramebuffer();
+    const QImage frame = upToDateFrame(w.window.viewport());
     ASSERT_FALSE(frame.isNull());
     ASSERT_TRUE(w.window.viewport()->lastError().isEmpty()) << w.window.viewport()->lastError().toStdString();
     // Clearly red pixels (the left wall) lie in the left half, clearly green ones (the right wall) in the right half.
@@ -153,7 +163,7 @@ TEST(EditorGui, PresetsSaveApplyAndSplitTheView) {
     w.window.setSplit(2, 3);
     EXPECT_TRUE(w.window.viewport()->splitActive());
     QTest::qWait(100);
-    const QImage frame = w.window.viewport()->grabFramebuffer();
+    const QImage frame = upToDateFrame(w.window.viewport());
     QImage left = frame.copy(0, 0, frame.width() / 2, frame.height());
     QImage right = frame.copy(frame.width() / 2, 0, frame.width() - frame.width() / 2, frame.height());
     EXPECT_GT(litFraction(right), litFraction(left) + 0.2);
@@ -236,8 +246,8 @@ TEST(EditorGui, CreateDeleteDuplicateAreUndoable) {
     EXPECT_EQ(doc.scene().objects.size(), original.scene.objects.size() + 1);
     w.window.createLight(lpv::scene::LightType::Spot);
     EXPECT_EQ(doc.scene().lights.size(), original.scene.lights.size() + 1);
-    QTest::qWait(50); // the viewport draws the new scene
-    EXPECT_TRUE(w.window.viewport()->lastError().isEmpty());
+    upToDateFrame(w.window.viewport()); // the viewport draws the new scene
+    EXPECT_TRUE(w.window.viewport()->lastError().isEmpty()) << w.window.viewport()->lastError().toStdString();
     while (doc.undoStack()->canUndo())
         doc.undoStack()->undo();
     EXPECT_EQ(doc.project(), original);
@@ -259,7 +269,7 @@ TEST(EditorGui, Import4dsThroughTheImportActionIsOneUndoStep) {
         w.window.statusBar()->currentMessage().toStdString();
     QTRY_VERIFY_WITH_TIMEOUT(!w.window.viewport()->texturesPending(), 60000);
     QTest::qWait(100);
-    EXPECT_GT(litFraction(w.window.viewport()->grabFramebuffer()), 0.05);
+    EXPECT_GT(litFraction(upToDateFrame(w.window.viewport())), 0.05);
     EXPECT_EQ(doc.undoStack()->text(doc.undoStack()->index() - 1), "Import white_box.4ds");
     EXPECT_EQ(doc.scene().lights.size(), 1u) << "an unlit import gets a sun, as with lpv import";
     doc.undoStack()->undo();
@@ -310,7 +320,7 @@ TEST(EditorGui, ReducedViewportResolutionStillFillsTheView) {
     Viewport* vp = w.window.viewport();
     vp->setResolutionScale(0.5);
     QTest::qWait(100);
-    const QImage frame = vp->grabFramebuffer();
+    const QImage frame = upToDateFrame(vp);
     EXPECT_EQ(frame.width(), int(vp->width() * vp->devicePixelRatio()));
     EXPECT_GT(litFraction(frame), 0.15);
     // The right-hand quarter is drawn too (the half-size image is scaled up, not put in a corner).
@@ -331,6 +341,11 @@ TEST(EditorGui, ClosingWithUnsavedChangesAsksAndCancelKeepsTheWindow) {
 
 TEST(EditorGui, EffectsPanelExplainsAndOverrides) {
     OpenWindow w;
+    // The dock shares its place with the inspector: bring it up, and let the
+    // scene analysis that follows opening a project (250 ms later) run.
+    w.window.dock("effects")->raise();
+    QTest::qWait(400);
+    ASSERT_TRUE(w.window.effects()->isVisible());
     const auto& decisions = w.window.effects()->decisions();
     ASSERT_GE(decisions.size(), 6u);
     // The Cornell box's lamp is an area light: injected through its own RSM, so the LPV runs.
@@ -411,6 +426,52 @@ TEST(EditorGui, VideoExportFromTheEditorAndCancelLeavesNothing) {
     EXPECT_EQ(cancelled.run(), "cancelled");
     EXPECT_FALSE(QFileInfo::exists(dir.filePath("cancelled.mp4")));
     EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files).size(), 1) << "no temporary file left";
+}
+
+// Saving collects texture copies no material uses (issue #29), but not while
+// the undo history could bring the material's texture back.
+TEST(EditorGui, UndoAfterSaveStillFindsTheRemovedTexture) {
+    QTemporaryDir dir;
+    const QString texture = dir.filePath("brick.png");
+    {
+        QImage image(4, 4, QImage::Format_RGB32);
+        image.fill(Qt::red);
+        ASSERT_TRUE(image.save(texture));
+    }
+    lpv::scene::Project project;
+    project.name = "textured";
+    lpv::scene::Material m;
+    m.name = "brick";
+    m.diffuseTexture = texture.toStdString();
+    project.scene.materials.push_back(m);
+    Document doc;
+    doc.reset(project, QString());
+    const QString file = dir.filePath("p.lpvproj");
+    ASSERT_TRUE(doc.saveAs(file).has_value());
+    // Opened again, the material names the project's own copy.
+    auto saved = lpv::scene::loadProject(file.toStdString());
+    ASSERT_TRUE(saved.has_value()) << saved.error().describe();
+    doc.reset(*saved, file);
+    const std::string copy = doc.scene().materials[0].diffuseTexture;
+    ASSERT_NE(copy, texture.toStdString());
+    ASSERT_TRUE(QFileInfo::exists(QString::fromStdString(copy))) << copy;
+
+    lpv::scene::Material without = doc.scene().materials[0];
+    without.diffuseTexture.clear();
+    doc.setMaterial(0, without, "Remove texture");
+    ASSERT_TRUE(doc.saveAs(file).has_value());
+    EXPECT_TRUE(QFileInfo::exists(QString::fromStdString(copy))) << "kept: an undo brings it back";
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene().materials[0].diffuseTexture, copy);
+    ASSERT_TRUE(doc.saveAs(file).has_value());
+    EXPECT_TRUE(QFileInfo::exists(QString::fromStdString(copy)));
+
+    // With nothing to undo, a save collects what no material names.
+    doc.undoStack()->clear();
+    doc.setMaterial(0, without, "Remove texture");
+    doc.undoStack()->clear();
+    ASSERT_TRUE(doc.saveAs(file).has_value());
+    EXPECT_FALSE(QFileInfo::exists(QString::fromStdString(copy))) << "an orphan with no undo to need it";
 }
 
 int main(int argc, char** argv) {

@@ -138,3 +138,18 @@ TEST_F(CornellRender, TooLargeShadowMapIsAnErrorNotACrash) {
     ASSERT_FALSE(ok.has_value());
     EXPECT_NE(ok.error().location.find("shadow.mapSize"), std::string::npos);
 }
+
+// The editor's view changes size between frames (a dock opens): the geometry
+// volume read last frame's camera G-buffer, whose textures the new size had
+// already replaced, a GL error on the first frame after every resize.
+TEST_F(CornellRender, AFrameAfterAResizeRendersWithoutAnError) {
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    r->setScene(project.scene);
+    const scene::ParameterSet params = project.parameters;
+    ASSERT_TRUE(params.getBool("lpv.gvFromCamera")) << "the default reads the camera G-buffer";
+    for (const auto& [w, h] : {std::pair{64, 64}, std::pair{64, 64}, std::pair{96, 48}, std::pair{40, 72}}) {
+        auto ok = r->render(project.scene, params, camera(), w, h);
+        EXPECT_TRUE(ok.has_value()) << w << "x" << h << ": " << (ok ? "" : ok.error().describe());
+    }
+}

@@ -1,0 +1,218 @@
+#include "FrameWorker.h"
+
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/GlContext.h"
+
+#include <QMetaObject>
+
+#include <chrono>
+#include <cstring>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+namespace lpv::editor {
+
+namespace {
+
+// The display image of the renderer's last frame (rows top to bottom).
+QImage displayImage(const renderer::ForwardRenderer& renderer) {
+    const std::vector<std::uint8_t> pixels = renderer.readDisplay();
+    const int w = renderer.width(), h = renderer.height();
+    if (w <= 0 || h <= 0 || pixels.size() < std::size_t(w) * std::size_t(h) * 4)
+        return {};
+    QImage image(w, h, QImage::Format_RGBA8888);
+    for (int row = 0; row < h; ++row)
+        std::memcpy(image.scanLine(row), pixels.data() + std::size_t(row) * std::size_t(w) * 4, std::size_t(w) * 4);
+    return image;
+}
+
+// The pieces of a scene that are not its meshes, from `rest`, into `into`.
+void takeAllButMeshes(scene::Scene& into, const scene::Scene& rest) {
+    into.materials = rest.materials;
+    into.objects = rest.objects;
+    into.lights = rest.lights;
+    into.cameras = rest.cameras;
+    into.cameraPaths = rest.cameraPaths;
+    into.sky = rest.sky;
+}
+
+} // namespace
+
+FrameWorker::FrameWorker(QObject* parent) : QObject(parent), thread_([this] { run(); }) {}
+
+FrameWorker::~FrameWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+quint64 FrameWorker::submit(FrameRequest request) {
+    std::lock_guard lock(mutex_);
+    if (waiting_) {
+        // Not rendered yet: fold the older request's news into this one.
+        FrameRequest& old = *waiting_;
+        if (!request.meshes)
+            request.meshes = std::move(old.meshes);
+        request.changes |= old.changes;
+        if (!request.forgetTextures) {
+            old.newTextures.insert(old.newTextures.end(), request.newTextures.begin(), request.newTextures.end());
+            request.newTextures = std::move(old.newTextures);
+            request.forgetTextures = old.forgetTextures;
+        }
+    }
+    waiting_ = std::move(request);
+    ++serial_;
+    wake_.notify_one();
+    return serial_;
+}
+
+quint64 FrameWorker::lastSerial() const {
+    std::lock_guard lock(mutex_);
+    return serial_;
+}
+
+QString FrameWorker::glRenderer() const {
+    std::lock_guard lock(mutex_);
+    return glRenderer_;
+}
+
+std::optional<renderer::GlInfo> FrameWorker::glInfo() const {
+    std::lock_guard lock(mutex_);
+    return glInfo_;
+}
+
+// The render thread yields the CPU to the UI thread: on a software
+// renderer (llvmpipe) a frame keeps every core busy for seconds, and the
+// window must still answer at once. Linux gives each thread its own nice
+// value, and the threads the GL driver starts from here inherit it.
+void lowerThisThreadsPriority() {
+#ifdef __linux__
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
+}
+
+void FrameWorker::run() {
+    lowerThisThreadsPriority();
+    auto post = [this](std::shared_ptr<FrameResult> result) {
+        QMetaObject::invokeMethod(this, [this, result] { emit frameReady(result); }, Qt::QueuedConnection);
+    };
+    auto context = renderer::HeadlessContext::create();
+    std::optional<renderer::ForwardRenderer> renderer;
+    QString startError;
+    if (!context) {
+        startError = QString::fromStdString(context.error().describe());
+    } else {
+        context->makeCurrent();
+        renderer::installDebugOutputIfRequested();
+        auto created = renderer::ForwardRenderer::create();
+        if (created)
+            renderer.emplace(std::move(*created));
+        else
+            startError = QString::fromStdString(created.error().describe());
+        const renderer::GlInfo& info = context->info();
+        std::lock_guard lock(mutex_);
+        glRenderer_ = QString::fromStdString(info.renderer + " | " + info.version);
+        glInfo_ = info;
+    }
+
+    scene::Scene scene; // the worker's own copy: meshes as last sent, the rest as last sent
+    scene::TextureImages textures;
+    bool uploaded = false;
+    std::optional<std::chrono::steady_clock::time_point> lastFrame;
+    for (;;) {
+        FrameRequest request;
+        quint64 serial = 0;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [this] { return stop_ || waiting_; });
+            if (stop_)
+                break;
+            request = std::move(*waiting_);
+            waiting_.reset();
+            serial = serial_;
+        }
+        auto result = std::make_shared<FrameResult>();
+        result->serial = serial;
+        if (!renderer) {
+            result->error = startError;
+            post(result);
+            continue;
+        }
+        if (request.forgetTextures)
+            textures.clear();
+        for (const auto& images : request.newTextures)
+            for (const auto& [key, image] : *images)
+                textures.insert_or_assign(key, image);
+        if (request.meshes)
+            scene.meshes = *request.meshes;
+        if (request.rest)
+            takeAllButMeshes(scene, *request.rest);
+        if (!uploaded || request.meshes || (request.changes & Change::Geometry)) {
+            renderer->setScene(scene, textures);
+            uploaded = true;
+        } else {
+            if ((request.changes & Change::Materials) || !request.newTextures.empty())
+                renderer->updateMaterials(scene, textures);
+            if (request.changes & (Change::Transforms | Change::Structure))
+                renderer->updateObjects(scene);
+        }
+        renderer->setLpvCapture(request.visualizers.lpv);
+        renderer->setShadowCascadeTint(request.visualizers.shadowTint);
+        // Auto exposure adapts over the real time between frames; the split
+        // view's halves are two presets through one renderer, so each is
+        // metered on its own.
+        const auto now = std::chrono::steady_clock::now();
+        renderer->setExposureTimeStep(request.split || !lastFrame
+                                          ? std::nullopt
+                                          : std::optional<double>(std::chrono::duration<double>(now - *lastFrame).count()));
+        lastFrame = now;
+
+        const int w = std::max(1, request.width), h = std::max(1, request.height);
+        auto renderWith = [&](const scene::ParameterSet& params) {
+            auto ok = renderer->render(scene, params, request.camera, w, h);
+            if (!ok)
+                result->error = QString::fromStdString(ok.error().describe());
+            return bool(ok);
+        };
+        if (request.split) {
+            // The same camera twice; each half of the image shows one preset.
+            if (renderWith(request.split->first)) {
+                result->image = displayImage(*renderer);
+                if (renderWith(request.split->second)) {
+                    const QImage right = displayImage(*renderer);
+                    for (int row = 0; row < h && !result->image.isNull() && !right.isNull(); ++row)
+                        std::memcpy(result->image.scanLine(row) + std::size_t(w / 2) * 4,
+                                    right.constScanLine(row) + std::size_t(w / 2) * 4, std::size_t(w - w / 2) * 4);
+                }
+            }
+        } else if (renderWith(request.parameters)) {
+            result->image = displayImage(*renderer);
+        }
+        result->timings = renderer->timer().table();
+        result->gpuMemory = renderer::queryGpuMemory();
+        result->lpvNote = QString::fromStdString(renderer->lpvNote());
+        if (result->error.isEmpty() && request.visualizers.active()) {
+            auto frame = std::make_shared<VisualizerFrame>();
+            frame->cascades = renderer->lpvCascadeFrames();
+            frame->lpvNote = renderer->lpvNote();
+            if (const renderer::LpvSnapshot* snapshot = renderer->lpvSnapshot())
+                frame->lpv = *snapshot;
+            if (request.visualizers.rsm)
+                frame->rsm = renderer->debugImages("rsm");
+            if (request.visualizers.shadow)
+                frame->shadow = renderer->debugImages("shadowMaps");
+            result->visualizers = frame;
+        }
+        post(result);
+    }
+    renderer.reset(); // its GL objects, with the context still current
+}
+
+} // namespace lpv::editor

@@ -1,0 +1,91 @@
+#pragma once
+// The viewport's frames render on a worker thread in a headless GL context
+// of their own (EGL, as `lpv render` does), so no UI event waits for a frame
+// (issue #25: a Sponza frame takes seconds on llvmpipe, and the window froze
+// for all of it). The viewport sends what a frame needs and shows the last
+// finished image; requests sent while a frame renders are merged, so the
+// worker renders the newest state next and never falls behind.
+#include "Document.h"
+#include "VisualizerOverlay.h"
+
+#include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/GpuTimer.h"
+#include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Scene.h"
+
+#include <QImage>
+#include <QObject>
+#include <QString>
+
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace lpv::editor {
+
+// Everything one frame depends on. The meshes travel only when they changed
+// (an import, a new project): a parameter edit or a camera move sends no
+// geometry, and the rest of the scene is small.
+struct FrameRequest {
+    std::shared_ptr<const std::vector<scene::Mesh>> meshes; // null: keep the worker's
+    std::shared_ptr<const scene::Scene> rest;               // the scene without its meshes
+    Changes changes;                                        // what changed since the last request
+    std::vector<std::shared_ptr<const scene::TextureImages>> newTextures; // decoded since, to add
+    bool forgetTextures = false; // another project: its files may differ under the same names
+    scene::ParameterSet parameters;
+    std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split; // A | B halves
+    scene::Camera camera;
+    int width = 1;
+    int height = 1;
+    VisualizerRequest visualizers;
+};
+
+struct FrameResult {
+    quint64 serial = 0; // the newest request this frame includes
+    QImage image;       // width x height of the request (RGBA8)
+    std::vector<renderer::PassTiming> timings;
+    QString lpvNote;
+    QString error; // empty when the frame rendered
+    std::optional<renderer::GpuMemoryInfo> gpuMemory; // as the driver reports it, if it does
+    std::shared_ptr<const VisualizerFrame> visualizers; // when the request asked for any
+};
+
+class FrameWorker : public QObject {
+    Q_OBJECT
+public:
+    explicit FrameWorker(QObject* parent = nullptr);
+    ~FrameWorker() override; // the thread ends; its GL objects die in it
+
+    // Merges `request` into the one waiting (if any) and wakes the thread.
+    // Returns the request's serial, which FrameResult::serial reaches once
+    // a frame includes it.
+    quint64 submit(FrameRequest request);
+    // The serial of the last request submitted.
+    quint64 lastSerial() const;
+    // The renderer's GL driver ("llvmpipe (...) | 4.5 (Core Profile) Mesa ..."), once known.
+    QString glRenderer() const;
+    // The same in full (vendor, renderer, version, EGL platform), once the context exists.
+    std::optional<renderer::GlInfo> glInfo() const;
+
+signals:
+    // On the GUI thread, after every frame (also a failed one: see error).
+    void frameReady(std::shared_ptr<const FrameResult> result);
+
+private:
+    void run();
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<FrameRequest> waiting_;
+    quint64 serial_ = 0;
+    bool stop_ = false;
+    QString glRenderer_;
+    std::optional<renderer::GlInfo> glInfo_;
+    std::thread thread_;
+};
+
+} // namespace lpv::editor
