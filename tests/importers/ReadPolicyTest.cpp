@@ -252,6 +252,24 @@ TEST_F(ReadPolicy, ANumberInfiniteAsAFloatNamesTheInputFileAndField) {
     EXPECT_NE(r.error().message.find("is not a finite 32-bit float"), std::string::npos) << r.error().message;
 }
 
+TEST_F(ReadPolicy, AnyValueASaveWouldRefuseIsReportedAgainstTheInputFile) {
+    // A light intensity of 1e39 candela is a finite JSON number but infinite
+    // as a float: the project the import would write refuses it, so the
+    // import says so, naming the input and where the value lands.
+    const fs::path file = writeGltf("light.gltf", "x.png");
+    json g = json::parse(std::ifstream(file));
+    g["extensionsUsed"] = {"KHR_lights_punctual"};
+    g["extensions"]["KHR_lights_punctual"]["lights"] = json::array({{{"type", "point"}, {"intensity", 1e39}}});
+    g["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    g["scenes"][0]["nodes"].push_back(1);
+    std::ofstream(file) << g.dump();
+    auto r = importers::importScene(file);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().file, file.string());
+    EXPECT_EQ(r.error().location, "as imported: lights[0].intensity");
+    EXPECT_EQ(r.error().message, "inf is not a finite number");
+}
+
 TEST_F(ReadPolicy, AProjectNamingASystemFileKeepsOnlyTheNameAndCopiesNothing) {
     auto imported = importers::importScene(writeObj("x.png"));
     ASSERT_TRUE(imported.has_value());
