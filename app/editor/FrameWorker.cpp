@@ -78,11 +78,6 @@ quint64 FrameWorker::lastSerial() const {
     return serial_;
 }
 
-QString FrameWorker::glRenderer() const {
-    std::lock_guard lock(mutex_);
-    return glRenderer_;
-}
-
 std::optional<renderer::GlInfo> FrameWorker::glInfo() const {
     std::lock_guard lock(mutex_);
     return glInfo_;
@@ -118,7 +113,6 @@ void FrameWorker::run() {
             startError = QString::fromStdString(created.error().describe());
         const renderer::GlInfo& info = context->info();
         std::lock_guard lock(mutex_);
-        glRenderer_ = QString::fromStdString(info.renderer + " | " + info.version);
         glInfo_ = info;
     }
 
@@ -126,6 +120,9 @@ void FrameWorker::run() {
     scene::TextureImages textures;
     bool uploaded = false;
     std::optional<std::chrono::steady_clock::time_point> lastFrame;
+    // GPU memory: asked of the driver at most once a second, not every frame.
+    std::optional<renderer::GpuMemoryInfo> gpuMemory;
+    std::optional<std::chrono::steady_clock::time_point> lastMemoryQuery;
     for (;;) {
         FrameRequest request;
         quint64 serial = 0;
@@ -196,7 +193,11 @@ void FrameWorker::run() {
             result->image = displayImage(*renderer);
         }
         result->timings = renderer->timer().table();
-        result->gpuMemory = renderer::queryGpuMemory();
+        if (!lastMemoryQuery || now - *lastMemoryQuery >= std::chrono::seconds(1)) {
+            gpuMemory = renderer::queryGpuMemory();
+            lastMemoryQuery = now;
+        }
+        result->gpuMemory = gpuMemory;
         result->lpvNote = QString::fromStdString(renderer->lpvNote());
         if (result->error.isEmpty() && request.visualizers.active()) {
             auto frame = std::make_shared<VisualizerFrame>();

@@ -66,9 +66,7 @@ public:
     quint64 submit(FrameRequest request);
     // The serial of the last request submitted.
     quint64 lastSerial() const;
-    // The renderer's GL driver ("llvmpipe (...) | 4.5 (Core Profile) Mesa ..."), once known.
-    QString glRenderer() const;
-    // The same in full (vendor, renderer, version, EGL platform), once the context exists.
+    // The renderer's GL driver (vendor, renderer, version, EGL platform), once the context exists.
     std::optional<renderer::GlInfo> glInfo() const;
 
 signals:
@@ -83,7 +81,6 @@ private:
     std::optional<FrameRequest> waiting_;
     quint64 serial_ = 0;
     bool stop_ = false;
-    QString glRenderer_;
     std::optional<renderer::GlInfo> glInfo_;
     std::thread thread_;
 };

@@ -83,12 +83,12 @@ void Viewport::onDocumentChanged(Changes changes) {
 
 void Viewport::renderAgain() {
     if (requested_)
-        requested_->visualizersChanged = true; // forces the next request
+        requested_->resend = true;
     update();
 }
 
 bool Viewport::frameUpToDate() const {
-    return pending_ == Changes() && requested_ && !requested_->visualizersChanged && worker_ &&
+    return pending_ == Changes() && requested_ && !requested_->resend && worker_ &&
            shownSerial_ == worker_->lastSerial();
 }
 
@@ -138,6 +138,11 @@ std::optional<renderer::GlInfo> Viewport::renderGlInfo() const {
     return worker_ ? worker_->glInfo() : std::nullopt;
 }
 
+QString Viewport::glRenderer() const {
+    const auto info = renderGlInfo();
+    return info ? QString::fromStdString(info->renderer + " | " + info->version) : QString();
+}
+
 void Viewport::requestMissingTextures() {
     if (textureWorker_) {
         texturesRequestedAgain_ = true; // once the running job is in
@@ -171,8 +176,10 @@ void Viewport::requestMissingTextures() {
     textureWorker_->start();
 }
 
-void Viewport::uploadPendingChanges() {
-    // What changed in the document goes to the worker with the next request.
+void Viewport::prepareSceneChanges() {
+    // What changed in the document goes to the worker with the next request;
+    // here only the texture cache follows (forgotten for a new project,
+    // decoding started for new materials).
     if (pending_ == Changes(Change::Everything)) {
         texturesKnown_.clear(); // another project: its files may differ under the same names
         texturesToSend_.clear();
@@ -197,11 +204,11 @@ void Viewport::requestFrameIfChanged() {
                                Change::Lights | Change::Cameras | Change::CameraPaths | Change::Sky;
     const bool sceneChanged = (pending_ & sceneFlags) || !sceneRest_;
     const bool texturesArrived = !texturesToSend_.empty();
-    if (requested_ && pending_ == Changes() && !texturesArrived && !requested_->visualizersChanged &&
+    if (requested_ && pending_ == Changes() && !texturesArrived && !requested_->resend &&
         requested_->camera == camera && requested_->parameters == params && requested_->split == split_ &&
         requested_->width == w && requested_->height == h)
         return;
-    uploadPendingChanges();
+    prepareSceneChanges();
     FrameRequest request;
     const scene::Scene& s = document_->scene();
     if (sceneChanged) {
@@ -231,7 +238,7 @@ void Viewport::requestFrameIfChanged() {
     request.height = h;
     request.visualizers = vizRequest_;
     pending_ = {};
-    requested_ = Requested{camera, params, split_, w, h, false};
+    requested_ = Requested{camera, params, split_, w, h};
     worker_->submit(std::move(request));
 }
 
@@ -349,7 +356,7 @@ void Viewport::setVisualizerRequest(const VisualizerRequest& request) {
     if (!request.active())
         vizFrame_.reset(); // nothing shown: nothing kept
     if (requested_)
-        requested_->visualizersChanged = true; // the next frame reads back what is asked now
+        requested_->resend = true; // the next frame reads back what is asked now
     update();
 }
 

@@ -48,7 +48,7 @@ public:
     // Errors from GL set-up or rendering, empty if none.
     const QString& lastError() const { return lastError_; }
     // The driver that renders the frames (the worker's context).
-    QString glRenderer() const { return worker_ ? worker_->glRenderer() : QString(); }
+    QString glRenderer() const;
     // The image shown is of the current state: no frame waits or renders
     // (tests wait for this before they look at the view).
     bool frameUpToDate() const;
@@ -125,7 +125,7 @@ protected:
 
 private:
     void onDocumentChanged(Changes changes);
-    void uploadPendingChanges();
+    void prepareSceneChanges();
     // Decodes, on a worker thread, the textures of materials not yet in the
     // cache; until they arrive those materials draw untextured.
     void requestMissingTextures();
@@ -154,7 +154,7 @@ private:
         scene::ParameterSet parameters;
         std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split;
         int width = 0, height = 0;
-        bool visualizersChanged = true;
+        bool resend = false; // the next paint sends a request even if nothing above changed
     };
     std::optional<Requested> requested_;
     std::shared_ptr<const scene::Scene> sceneRest_; // the document's scene without meshes, as last sent

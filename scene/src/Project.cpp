@@ -160,13 +160,14 @@ Expected<Project> loadProject(const fs::path& file, const std::vector<fs::path>&
     return project;
 }
 
-Expected<void> validateSceneContent(const Scene& scene, const std::string& source) {
+Expected<void> validateSceneContent(Scene& scene, const std::string& source) {
     Project project;
     project.name = "import";
-    project.scene = scene;
+    project.scene = std::move(scene);
     // Placeholder asset names: only the content is checked here.
-    std::vector<std::string> assetPaths(scene.meshes.size(), "import.assets/meshes/mesh.lpvmesh");
+    const std::vector<std::string> assetPaths(project.scene.meshes.size(), "import.assets/meshes/mesh.lpvmesh");
     auto built = buildDocument(project, source, assetPaths);
+    scene = std::move(project.scene);
     if (!built)
         return std::unexpected(built.error());
     return {};

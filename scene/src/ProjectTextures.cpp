@@ -63,12 +63,9 @@ std::vector<std::string> keepTexturesInside(Scene& scene, const ReadRoots& roots
         for (std::string* slot : textureSlots(m)) {
             if (slot->empty() || roots.contains(locate(*slot, projectFolder)))
                 continue;
-            std::string folders;
-            for (const fs::path& f : roots.folders())
-                folders += (folders.empty() ? "" : ", ") + f.string();
             const std::string kept = utf8(fromUtf8(*slot).filename());
             warnings.push_back("material '" + capErrorText(m.name) + "': texture '" + capErrorText(*slot) +
-                               "' lies outside the folders the project may read from (" + folders +
+                               "' lies outside the folders the project may read from (" + roots.describe() +
                                "; --allow-path DIR or LPV_ALLOW_PATH widens them): not read, kept as '" +
                                capErrorText(kept) + "' (placeholder)");
             *slot = kept;

@@ -38,13 +38,6 @@ bool isInside(const fs::path& file, const fs::path& folder) {
     return true;
 }
 
-std::string listed(const std::vector<fs::path>& folders) {
-    std::string out;
-    for (const fs::path& f : folders)
-        out += (out.empty() ? "" : ", ") + f.string();
-    return out.empty() ? "none" : out;
-}
-
 } // namespace
 
 ReadRoots::ReadRoots(const std::vector<fs::path>& folders) {
@@ -56,6 +49,13 @@ void ReadRoots::add(const fs::path& folder) {
     fs::path root = resolved(folder).value_or(folder.lexically_normal());
     if (std::find(folders_.begin(), folders_.end(), root) == folders_.end())
         folders_.push_back(std::move(root));
+}
+
+std::string ReadRoots::describe() const {
+    std::string out;
+    for (const fs::path& f : folders_)
+        out += (out.empty() ? "" : ", ") + f.string();
+    return out.empty() ? "none" : out;
 }
 
 bool ReadRoots::contains(const fs::path& file) const {
@@ -73,7 +73,7 @@ std::optional<std::string> ReadRoots::refusal(const fs::path& file) const {
         return std::string("cannot be resolved to a file");
     }
     if (!std::any_of(folders_.begin(), folders_.end(), [&](const fs::path& root) { return isInside(*path, root); }))
-        return "lies outside the folders it may be read from (" + listed(folders_) +
+        return "lies outside the folders it may be read from (" + describe() +
                "; --allow-path DIR or LPV_ALLOW_PATH widens them)";
     return notARegularFile(*path);
 }

@@ -52,7 +52,9 @@ Expected<Project> loadProject(const std::filesystem::path& file,
 // file) and the place as it would be stored ("objects[0].translation[0]"),
 // so an importer can report a bad value against its input rather than
 // against the project it would write.
-Expected<void> validateSceneContent(const Scene& scene, const std::string& source);
+// The scene is moved into a project for the check and back, not copied
+// (meshes are megabytes); it is unchanged afterwards.
+Expected<void> validateSceneContent(Scene& scene, const std::string& source);
 
 // Writes the assets then the JSON, each to a temporary file in the same
 // folder that is flushed and renamed over the target: a failed save leaves

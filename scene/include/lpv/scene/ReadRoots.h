@@ -33,6 +33,8 @@ class ReadRoots {
     bool contains(const std::filesystem::path& file) const;
 
     const std::vector<std::filesystem::path>& folders() const { return folders_; }
+    // The folders for a message: "/a, /b" ("none" when there are none).
+    std::string describe() const;
 
   private:
     std::vector<std::filesystem::path> folders_;
