@@ -168,6 +168,10 @@ void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, vec3
     }
 }
 
+// lpv.occlusionStrength: propagation reads strength * B (docs/lpv.md); the
+// stored GV and face blocking stay unscaled (bounces read the GV's coverage).
+uniform float uOcclusionStrength;
+
 #ifdef LPV_WITH_GV
 // The GV stacked like the LPV, (N + 1)^3 per cascade.
 layout(binding = 3) uniform sampler3D uGv;
@@ -230,7 +234,7 @@ uniform bool uOcclusion;
 vec4 lpvFaceBlocking(int axis, ivec3 texel) {
     if (!uOcclusion)
         return vec4(0.0);
-    return texelFetch(uFaceBlocking, ivec3(3 * texel.x + axis, texel.yz), 0);
+    return uOcclusionStrength * texelFetch(uFaceBlocking, ivec3(3 * texel.x + axis, texel.yz), 0);
 }
 
 // The blocking on the face between q and q + sigma e_a: q's +a face for

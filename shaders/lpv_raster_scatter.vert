@@ -33,7 +33,7 @@ void main() {
     vec4 r = texelFetch(uSourceR, texel, 0), g = texelFetch(uSourceG, texel, 0), b = texelFetch(uSourceB, texel, 0);
     if (r == vec4(0.0) && g == vec4(0.0) && b == vec4(0.0))
         return;
-    lpvPropagateThroughFaces(i, r, g, b, lpvBlockingOnFace(k, q, i), lpvDirectedNormal(k, p), vR, vG, vB);
+    lpvPropagateThroughFaces(i, r, g, b, uOcclusionStrength * lpvBlockingOnFace(k, q, i), lpvDirectedNormal(k, p), vR, vG, vB);
     vSlice = k * n + p.z;
     gl_Position = vec4((vec2(p.xy) + 0.5) / float(n) * 2.0 - 1.0, 0.0, 1.0);
 }

@@ -53,6 +53,11 @@ varied alone around the project's settings:
   subsurface effects.subsurface=off,on
   glossy     effects.glossyReflections=off,on
   bounces    lpv.bounces=1,2,3 (one sweep and one reference per value)
+  viewShift  lpv.viewShift=0,0.5,0.75,1
+  damping    lpv.bleedingDamping=0,1,2,4
+  offset     lpv.injectionOffset=0,0.5,1,2
+  firstStep  lpv.occlusionFirstStep=true,false
+  strength   lpv.occlusionStrength=0.5,1,1.333,2
 Like for like: each LPV is measured against the reference's light reflected
 as many times as its lpv.bounces, and the reference traces the sky and
 emissive surfaces where the LPV injects them (reference.skyLight and
@@ -100,6 +105,11 @@ const std::vector<Question> kQuestions = {
     {"subsurface", "effects.subsurface=off,on", ""},
     {"glossy", "effects.glossyReflections=off,on", ""},
     {"bounces", "lpv.bounces=1,2,3", ""},
+    {"viewShift", "lpv.viewShift=0,0.5,0.75,1", ""},
+    {"damping", "lpv.bleedingDamping=0,1,2,4", ""},
+    {"offset", "lpv.injectionOffset=0,0.5,1,2", ""},
+    {"firstStep", "lpv.occlusionFirstStep=true,false", ""},
+    {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
 };
 
 struct SceneSpec {
@@ -117,7 +127,7 @@ struct ReportRun {
     bool projectSettings = false;
     double totalMs = 0.0;
     double indirectMare = 0.0;
-    double meanRatio = 0.0; // the LPV's mean indirect irradiance over the reference's
+    double indirectMeanRatio = 0.0; // the LPV's mean indirect irradiance over the reference's
     double noiseMare = 0.0;
     double imageMare = 0.0;
 };
@@ -236,7 +246,7 @@ std::vector<ReportRun> readSweep(const fs::path& file, const std::string& questi
         run.totalMs = r.value("totalMs", 0.0);
         run.indirectMare = r["indirect"].value("mare", 0.0);
         const double meanReference = r["indirect"].value("meanReference", 0.0);
-        run.meanRatio = meanReference > 0.0 ? r["indirect"].value("meanTest", 0.0) / meanReference : 0.0;
+        run.indirectMeanRatio = meanReference > 0.0 ? r["indirect"].value("meanTest", 0.0) / meanReference : 0.0;
         run.noiseMare = r["indirect"].value("noiseMare", 0.0);
         run.imageMare = r["image"].value("mare", 0.0);
         out.push_back(run);
@@ -339,7 +349,7 @@ std::string runCell(const ReportRun* r) {
     if (!r)
         return "none of the sweeps";
     return "`" + r->setting + "`: " + fixed(r->totalMs, 1) + " ms, " + percent(r->indirectMare) + ", mean " +
-           fixed(r->meanRatio, 2) + "x";
+           fixed(r->indirectMeanRatio, 2) + "x";
 }
 
 std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::string& command,
@@ -365,7 +375,7 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
         }
         out << "| " << s.name << " | "
             << (base ? fixed(base->totalMs, 1) + " ms, " + percent(base->indirectMare) + ", mean " +
-                           fixed(base->meanRatio, 2) + "x"
+                           fixed(base->indirectMeanRatio, 2) + "x"
                      : "-")
             << " | "
             << runCell(cheapestBelow(s.runs, 0.10)) << " | " << runCell(cheapestBelow(s.runs, 0.05)) << " | "
@@ -380,7 +390,7 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
         for (const ReportRun& r : s.runs)
             out << "| " << r.question << " | `" << r.setting << "`" << (r.projectSettings ? " (project)" : "")
                 << " | " << fixed(r.totalMs, 2) << " | " << percent(r.indirectMare) << " | "
-                << fixed(r.meanRatio, 2) << "x | " << percent(r.imageMare) << " |\n";
+                << fixed(r.indirectMeanRatio, 2) << "x | " << percent(r.imageMare) << " |\n";
         std::vector<std::string> questions;
         for (const ReportRun& r : s.runs)
             if (std::ranges::find(questions, r.question) == questions.end())
@@ -424,7 +434,7 @@ std::string reportJson(const std::vector<SceneReport>& scenes, const std::string
                                      {"projectSettings", r.projectSettings},
                                      {"totalMs", r.totalMs},
                                      {"indirectMare", r.indirectMare},
-                                     {"meanRatio", r.meanRatio},
+                                     {"indirectMeanRatio", r.indirectMeanRatio},
                                      {"noiseMare", r.noiseMare},
                                      {"imageMare", r.imageMare}});
         for (const RadiosityPoint& p : s.radiosity)

@@ -48,10 +48,8 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
     plan.settings = LpvSettings::fromParameters(params);
     // One volume per RSM tile, as far as lpv.cascades asks; the tiles follow the camera.
     const int count = std::min(params.getInt("rsm.cascades"), params.getInt("lpv.cascades"));
-    plan.cascades = lpvCascades(frame.camera.position,
-                                LpvCascadeSettings{count, params.getInt("lpv.gridSize"),
-                                                   float(params.getFloat("lpv.cellSize")),
-                                                   params.getBool("lpv.cellSnapping")});
+    plan.cascades = lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
+                                lpvCascadeSettings(params, count));
     frameEffects.push_back(plan.local);
     frameEffects.push_back(plan.emissive);
     frameEffects.push_back(decideBounces(params, true));

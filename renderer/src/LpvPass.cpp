@@ -48,6 +48,8 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.propagationSteps = params.getInt("lpv.propagationSteps");
     s.injectionOffset = float(params.getFloat("lpv.injectionOffset"));
     s.occlusion = params.getBool("lpv.occlusion");
+    s.occludeFirstStep = params.getBool("lpv.occlusionFirstStep");
+    s.occlusionStrength = float(params.getFloat("lpv.occlusionStrength"));
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
     // The registry only admits the four names; anything else is a bug, not a default.
     const std::string variant = params.getEnum("lpv.variant");
@@ -205,6 +207,7 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
     cascades_.assign(requested.begin(), requested.begin() + cascades);
     injectionOffset_ = settings.injectionOffset;
     occlusion_ = settings.occlusion;
+    occlusionStrength_ = settings.occlusionStrength;
     propagationSteps_ = settings.propagationSteps;
     active_ = true;
     return {};
@@ -464,6 +467,7 @@ void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const 
     glBindTextureUnit(4, volumes_.faceBlocking.id());
     glBindTextureUnit(3, volumes_.geometry.id()); // uGv, layout binding 3
     glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
+    glProgramUniform1f(program, loc(program, "uOcclusionStrength"), occlusionStrength_);
     const bool directed = normalsIndex_ >= 0;
     glBindTextureUnit(kNormalsUnit, directed ? volumes_.normals[std::size_t(normalsIndex_)].id() : 0);
     glProgramUniform1i(program, loc(program, "uDirected"), directed ? 1 : 0);
@@ -512,7 +516,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             const GLuint program = step == 0 ? kernel(LpvKernel::ComputeGatherFirst) : gatherProgram;
             glUseProgram(program);
             setCascadeUniforms(program);
-            bindStepSources(program, read, settings.occlusion);
+            bindStepSources(program, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
             if (step > 0)
                 glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
             bindStepImages(write);
@@ -530,7 +534,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             glUseProgram(scatterProgram);
             setCascadeUniforms(scatterProgram);
             glProgramUniform1i(scatterProgram, loc(scatterProgram, "uScaleSlot"), scaleSlot_);
-            bindStepSources(scatterProgram, read, settings.occlusion);
+            bindStepSources(scatterProgram, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
             glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
@@ -551,7 +555,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             glBindFramebuffer(GL_FRAMEBUFFER, fbo);
             glUseProgram(rasterProgram);
             setCascadeUniforms(rasterProgram);
-            bindStepSources(rasterProgram, read, settings.occlusion);
+            bindStepSources(rasterProgram, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
             if (settings.variant == LpvVariant::RasterGather) {
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 3, n * k);
             } else {

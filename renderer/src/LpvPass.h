@@ -36,6 +36,10 @@ struct LpvSettings {
     int propagationSteps = 8;
     float injectionOffset = 1.0f; // cells
     bool occlusion = true;
+    // lpv.occlusionFirstStep: false = the first step ignores the GV (no
+    // self-occlusion by the surface that injected the light).
+    bool occludeFirstStep = true;
+    float occlusionStrength = 1.0f; // lpv.occlusionStrength: blocking potential scale
     bool gvFromCamera = true;
     LpvVariant variant = LpvVariant::ComputeGather;
     // Directed propagation (docs/lpv.md): a normals volume from the VPLs,
@@ -215,6 +219,7 @@ class LpvPass {
     int injectedTexels_ = 0; // the sun's tile and every local face: the fixed-point bound counts them
     float injectionOffset_ = 1.0f;
     bool occlusion_ = true;
+    float occlusionStrength_ = 1.0f;
     int propagationSteps_ = 0;
     std::optional<LpvCaptureRequest> capture_;
     std::optional<LpvSnapshot> snapshot_;

@@ -14,15 +14,30 @@ int findSun(const scene::Scene& scene) {
     return -1;
 }
 
-LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& settings) {
+LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count) {
+    return LpvCascadeSettings{count, int(params.getInt("lpv.gridSize")), float(params.getFloat("lpv.cellSize")),
+                              params.getBool("lpv.cellSnapping"), float(params.getFloat("lpv.viewShift"))};
+}
+
+LpvCascade lpvCascade(const glm::vec3& camera, const glm::vec3& viewDirection, int k,
+                      const LpvCascadeSettings& settings) {
     LpvCascade c;
     c.gridSize = std::max(settings.gridSize, 1);
     c.cellSize = std::ldexp(settings.cellSize, k);
-    const glm::dvec3 ideal = glm::dvec3(camera) - 0.5 * double(c.cellSize) * double(c.gridSize);
+    const double extent = double(c.cellSize) * double(c.gridSize);
+    const float length = glm::length(viewDirection);
+    // At most half the extent less two cells: the camera keeps two cells of
+    // its own cascade behind it (the lookup's margin and blend need them), and
+    // snapping cannot push cascade k out of cascade k+1.
+    const double reach = std::max(0.0, 0.5 * extent - 2.0 * double(c.cellSize));
+    const double shift = std::clamp(double(settings.viewShift), 0.0, 1.0) * reach;
+    const glm::dvec3 ahead =
+        length > 0.0f && std::isfinite(length) ? glm::dvec3(viewDirection / length) * shift : glm::dvec3(0.0);
+    const glm::dvec3 ideal = glm::dvec3(camera) + ahead - 0.5 * extent;
     if (settings.snapToCells) {
         // Round (in double, so that far from the origin the corner still lands
-        // on a cell) rather than floor: the camera stays within half a cell of
-        // the centre. Cascade k+1 then contains cascade k for gridSize >= 3.
+        // on a cell) rather than floor: the centre stays within half a cell of
+        // where it should be. Cascade k+1 then contains cascade k for gridSize >= 3.
         const double cell = double(c.cellSize);
         c.origin = glm::vec3(glm::round(ideal / cell) * cell);
     } else {
@@ -31,11 +46,20 @@ LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& 
     return c;
 }
 
-std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const LpvCascadeSettings& settings) {
+std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const glm::vec3& viewDirection,
+                                    const LpvCascadeSettings& settings) {
     std::vector<LpvCascade> cascades;
     for (int k = 0; k < settings.cascades; ++k)
-        cascades.push_back(lpvCascade(camera, k, settings));
+        cascades.push_back(lpvCascade(camera, viewDirection, k, settings));
     return cascades;
+}
+
+LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& settings) {
+    return lpvCascade(camera, glm::vec3(0.0f), k, settings);
+}
+
+std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const LpvCascadeSettings& settings) {
+    return lpvCascades(camera, glm::vec3(0.0f), settings);
 }
 
 glm::mat4 sunView(const glm::vec3& direction) {

@@ -3,10 +3,16 @@
 // behind the reflective-shadow-map tiles (RsmPass) and, later, the LPV grids.
 //
 // Cascade k is an axis-aligned cube of gridSize^3 cells of size
-// cellSize * 2^k around the camera. With snapping on, its corner sits on a
+// cellSize * 2^k around the camera, its centre moved ahead of the camera along
+// the view direction by viewShift times (half its extent less two cells: the
+// camera keeps two cells behind it) (Kaplanyan and
+// Dachsbacher place cascades so: with the camera at the centre half of the
+// finest cascade lies behind it). With snapping on, its corner sits on a
 // multiple of its own cell size, so the grid does not swim as the camera
 // moves (it jumps by whole cells instead). Cascade k+1 contains cascade k
-// (for gridSize >= 3) and its cell corners are also cell corners of cascade k.
+// (for gridSize >= 4 and viewShift in [0, 1]: the shift grows with the extent,
+// so the coarser cube reaches further both ahead and behind) and its cell
+// corners are also cell corners of cascade k.
 //
 // RSM tile k is an orthographic view along the sun's direction that covers
 // cascade k: its window is the cube's bounding box in light space, made
@@ -14,6 +20,7 @@
 // same piece of the world while the cube stays put. Its depth range reaches
 // back toward the sun to the scene's bounds, so a caster above the cube
 // still shadows (and hides) what lies below it.
+#include "lpv/scene/ParameterRegistry.h"
 #include "lpv/scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -44,9 +51,21 @@ struct LpvCascadeSettings {
     int gridSize = 32;
     float cellSize = 0.25f; // of cascade 0
     bool snapToCells = true;
+    float viewShift = 0.0f; // lpv.viewShift: centre ahead of the camera, 0..1 of (half extent - 2 cells)
 };
 
-// Cascade `k` (0 = finest) around `camera`.
+// The cascade settings of a frame from its parameters (lpv.gridSize,
+// lpv.cellSize, lpv.cellSnapping, lpv.viewShift) for `count` cascades: the
+// RSM tiles and the LPV volumes must agree on them.
+LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count);
+
+// Cascade `k` (0 = finest) around `camera`, shifted along `viewDirection`
+// (need not be unit length; zero means no shift).
+LpvCascade lpvCascade(const glm::vec3& camera, const glm::vec3& viewDirection, int k,
+                      const LpvCascadeSettings& settings);
+std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const glm::vec3& viewDirection,
+                                    const LpvCascadeSettings& settings);
+// Unshifted: the cubes centred on `camera` (tests and callers without a view).
 LpvCascade lpvCascade(const glm::vec3& camera, int k, const LpvCascadeSettings& settings);
 std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const LpvCascadeSettings& settings);
 

@@ -174,13 +174,11 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     }
 
     const scene::Light& sun = frame.scene.lights[std::size_t(sunIndex_)];
-    const LpvCascadeSettings settings{count, frame.params.getInt("lpv.gridSize"),
-                                      frame.params.getFloat("lpv.cellSize"),
-                                      frame.params.getBool("lpv.cellSnapping")};
+    const LpvCascadeSettings settings = lpvCascadeSettings(frame.params, count);
     const scene::Bounds sceneBounds = frame.scene.worldBounds();
     std::array<glm::mat4, kMaxRsmCascades> viewProj{};
     std::array<float, kMaxRsmCascades> texelArea{};
-    for (const LpvCascade& cascade : lpvCascades(frame.camera.position, settings)) {
+    for (const LpvCascade& cascade : lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position, settings)) {
         tiles_.push_back(makeRsmTile(cascade, sun.direction, sceneBounds, size));
         viewProj[tiles_.size() - 1] = tiles_.back().viewProj;
         texelArea[tiles_.size() - 1] = tiles_.back().texelArea;

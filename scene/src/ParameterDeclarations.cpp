@@ -63,6 +63,14 @@ std::vector<ParameterInfo> declareParameters() {
         real("lpv.intensity", 1.0, 0.0, 100.0, "", "LPV", "Scale of the indirect light read from the LPV", P::Shading),
         boolean("lpv.occlusion", true, "LPV", "Geometry-volume occlusion during propagation",
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
+        boolean("lpv.occlusionFirstStep", true, "LPV",
+                "Let the geometry volume block the first propagation step too; off, light leaves the cell it "
+                "was injected into past the surface that injected it (no self-occlusion)",
+               P::LpvPropagation | P::LpvBounces | P::Shading),
+        real("lpv.occlusionStrength", 1.0, 0.0, 4.0, "", "LPV",
+             "Scale of the geometry volume's blocking potential in propagation: 1 = a surface covering a cell "
+             "face blocks 75% of the light meeting it head-on (the two-band cosine lobe), 4/3 = all of it",
+               P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.gvFromCamera", true, "LPV", "Also inject blocking potential from the camera G-buffer",
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.bleedingDamping", 1.0, 0.0, 4.0, "", "LPV",
@@ -82,6 +90,11 @@ std::vector<ParameterInfo> declareParameters() {
                 P::LpvInjection | P::GeometryVolume | P::LpvPropagation),
         boolean("lpv.cellSnapping", true, "LPV",
                 "Snap each cascade to its cell size so the volume does not swim when the camera moves", kLpvAll),
+        real("lpv.viewShift", 0.0, 0.0, 1.0, "", "LPV",
+             "Move each cascade's centre ahead of the camera along the view direction, so its cells cover what "
+             "the camera sees rather than what lies behind it: 0 = centred on the camera, 1 = the camera two "
+             "cells inside the cascade's back face",
+             kLpvAll),
         integer("lpv.bounces", 1, 1, 4, "bounces", "LPV",
                 "Light bounces in the LPV: 1 = the VPLs' light only; each further bounce re-injects the last "
                 "one's light where the geometry volume has surfaces and propagates it again",

@@ -57,6 +57,8 @@ struct LpvCase {
     float texelArea = 0.0f;
     glm::vec3 towardSun{0.0f, 1.0f, 0.0f};
     float injectionOffset = 1.0f;
+    bool occludeFirstStep = true;   // lpv.occlusionFirstStep
+    float occlusionStrength = 1.0f; // lpv.occlusionStrength
 };
 
 // The reference accumulator for the texels of one tile.
@@ -71,9 +73,10 @@ ref::ShGrid referenceAccumulator(const LpvCase& s, const std::vector<Texel>& tex
         surfels.push_back({t.position, t.normal, area});
     }
     const ref::ShGrid injected = ref::injectVpls(s.grid, vpls, s.injectionOffset);
-    const ref::GvGrid gv = ref::mergeByMax(ref::injectSurfels(s.grid, surfels), ref::GvGrid(s.grid.n));
+    ref::GvGrid gv = ref::mergeByMax(ref::injectSurfels(s.grid, surfels), ref::GvGrid(s.grid.n));
+    gv.strength = s.occlusionStrength;
     if (dilation < 0)
-        return ref::propagateAndAccumulate(injected, occlusion ? &gv : nullptr, steps);
+        return ref::propagateAndAccumulate(injected, occlusion ? &gv : nullptr, steps, nullptr, s.occludeFirstStep);
     ref::NormalGrid normals = ref::injectNormals(s.grid, vpls, s.injectionOffset);
     for (int i = 0; i < dilation; ++i)
         normals = ref::dilateNormals(normals);
@@ -116,6 +119,8 @@ class LpvGLTest : public GlTest {
         settings.propagationSteps = steps;
         settings.injectionOffset = s.injectionOffset;
         settings.occlusion = occlusion;
+        settings.occludeFirstStep = s.occludeFirstStep;
+        settings.occlusionStrength = s.occlusionStrength;
         settings.gvFromCamera = false;
         settings.variant = variant;
         settings.directed = dilation >= 0;
@@ -211,6 +216,39 @@ INSTANTIATE_TEST_SUITE_P(AllVariants, LpvVariantTest,
                              return std::string(lpvVariantName(std::get<0>(p.param))) + "_" +
                                     std::to_string(g.n) + "cubed_" + std::to_string(g.steps) + "steps";
                          });
+
+// The leak and over-blocking candidates of issue #24 (docs/lpv.md): the first
+// step without occlusion, and a stronger blocking potential, in every variant
+// against the reference; each must change the result, or it tests nothing.
+class LpvOcclusionOptionsTest : public LpvGLTest, public ::testing::WithParamInterface<LpvVariant> {};
+
+TEST_P(LpvOcclusionOptionsTest, FirstStepAndStrengthMatchReference) {
+    const LpvVariant variant = GetParam();
+    LpvCase base{{glm::vec3(1.0f, -3.0f, 0.5f), 0.25f, 10}, 0.002f};
+    const auto texels = wallScene(base.grid, 80, 2.0f, 10u);
+    FakeRsm rsm(int(std::ceil(std::sqrt(double(texels.size())))), {texels});
+    const ref::ShGrid plain = referenceAccumulator(base, texels, 6, true);
+    LpvCase firstOpen = base, stronger = base;
+    firstOpen.occludeFirstStep = false;
+    stronger.occlusionStrength = 4.0f / 3.0f;
+    for (const auto& [name, s] : {std::pair{"first step unoccluded", firstOpen}, std::pair{"strength 4/3", stronger}}) {
+        const ref::ShGrid expected = referenceAccumulator(s, texels, 6, true);
+        const Difference d = compare(expected, runGpu(s, rsm, variant, 6, true));
+        const Difference change = compare(plain, [&] {
+            std::array<std::vector<glm::vec4>, 3> v;
+            for (int c = 0; c < 3; ++c)
+                v[std::size_t(c)] = expected.channel[c];
+            return v;
+        }());
+        std::cout << "[ figures ] " << lpvVariantName(variant) << ", " << name << ": relative |GPU - CPU| "
+                  << d.relative() << "; the option changes the reference by " << change.relative() << "\n";
+        EXPECT_LT(d.relative(), 2e-5f) << name;
+        EXPECT_GT(change.relative(), 1e-3f) << name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllVariants, LpvOcclusionOptionsTest, ::testing::ValuesIn(kVariants),
+                         [](const auto& p) { return std::string(lpvVariantName(p.param)); });
 
 // 1024^2 VPLs of high flux into one 8^3 grid: integer atomics must neither
 // overflow nor lose precision (the scale follows the brightest texel).

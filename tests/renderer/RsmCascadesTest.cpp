@@ -165,3 +165,57 @@ TEST(RsmCascades, SunIsTheFirstDirectionalLight) {
     s.lights.push_back(light(scene::LightType::Directional));
     EXPECT_EQ(renderer::findSun(s), 1);
 }
+
+// lpv.viewShift (issue #24 item 1): each cube moves ahead of the camera along
+// the view direction, still snapped to its own cells, still nested, and the
+// camera keeps two cells of every cascade behind it.
+TEST(RsmCascades, ViewShiftMovesEachCascadeAheadAndKeepsThemNested) {
+    const glm::vec3 directions[] = {glm::vec3(0, 0, 1), glm::vec3(-1, 0, 0), glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)),
+                                    glm::normalize(glm::vec3(1, 1, 1))};
+    for (const float shift : {0.25f, 0.5f, 1.0f})
+        for (const glm::vec3& dir : directions)
+            for (const glm::vec3 camera : {glm::vec3(0.0f), glm::vec3(3.37f, -1.21f, 12.9f), glm::vec3(-101.3f, 7.7f, 0.13f)}) {
+                LpvCascadeSettings settings = kSettings;
+                settings.viewShift = shift;
+                const auto cascades = renderer::lpvCascades(camera, dir * 3.0f, settings); // any length
+                ASSERT_EQ(cascades.size(), 4u);
+                for (std::size_t k = 0; k < cascades.size(); ++k) {
+                    const auto& c = cascades[k];
+                    const float wanted = shift * (0.5f * c.extent() - 2.0f * c.cellSize);
+                    const glm::vec3 offset = c.bounds().center() - camera;
+                    // Ahead by the wanted distance, up to the half-cell snap per axis.
+                    EXPECT_NEAR(glm::dot(offset, dir), wanted, 0.5f * std::sqrt(3.0f) * c.cellSize + 1e-3f)
+                        << "shift " << shift << " cascade " << k;
+                    EXPECT_LE(glm::length(offset - dir * wanted), 0.5f * std::sqrt(3.0f) * c.cellSize + 1e-3f);
+                    for (int a = 0; a < 3; ++a) {
+                        EXPECT_LT(offGrid(c.origin[a], c.cellSize), 1e-4f);
+                        // The camera keeps at least 1.5 cells (2 less the snap) to every face.
+                        EXPECT_GE(camera[a] - c.origin[a], 1.5f * c.cellSize - 1e-3f) << "axis " << a;
+                        EXPECT_GE(c.origin[a] + c.extent() - camera[a], 1.5f * c.cellSize - 1e-3f) << "axis " << a;
+                    }
+                    if (k > 0)
+                        EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds()))
+                            << "shift " << shift << ": cascade " << k << " must hold " << k - 1;
+                }
+            }
+}
+
+// What the shift is for: the Cornell template's camera stands 8 m in front
+// of its 5.6 m box, so centred cubes put the box only in the coarser
+// cascades; with the shift a finer one holds all of it.
+TEST(RsmCascades, ViewShiftBringsADistantBoxIntoAFinerCascade) {
+    const LpvCascadeSettings centred{4, 32, 0.25f, true, 0.0f};
+    LpvCascadeSettings ahead = centred;
+    ahead.viewShift = 1.0f;
+    const glm::vec3 camera(2.78f, 2.73f, -8.0f), dir(0.0f, 0.0f, 1.0f);
+    const scene::Bounds box{glm::vec3(0.0f), glm::vec3(5.56f, 5.49f, 5.59f)};
+    auto finestHolding = [&](const LpvCascadeSettings& s) {
+        const auto cascades = renderer::lpvCascades(camera, dir, s);
+        for (std::size_t k = 0; k < cascades.size(); ++k)
+            if (contains(cascades[k].bounds(), box))
+                return int(k);
+        return -1;
+    };
+    EXPECT_EQ(finestHolding(centred), 2); // 1 m cells: 5.6 across the box
+    EXPECT_EQ(finestHolding(ahead), 1);   // 0.5 m cells: 11 across
+}

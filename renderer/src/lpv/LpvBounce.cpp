@@ -31,14 +31,15 @@ ShGrid bounceVpls(const ShGrid& accumulated, const GvGrid& gv, float albedo) {
 }
 
 ShGrid propagateWithBounces(const ShGrid& injected, const GvGrid& gv, bool occlude, int steps, int bounces,
-                            float albedo, std::vector<ShGrid>* perBounce) {
+                            float albedo, std::vector<ShGrid>* perBounce, bool occludeFirstStep) {
     const GvGrid* blocking = occlude ? &gv : nullptr;
-    ShGrid bounce = propagateAndAccumulate(injected, blocking, steps);
+    // Every bounce's propagation starts like the first: lpv.occlusionFirstStep applies to each.
+    ShGrid bounce = propagateAndAccumulate(injected, blocking, steps, nullptr, occludeFirstStep);
     ShGrid total = bounce;
     if (perBounce)
         perBounce->push_back(bounce);
     for (int b = 2; b <= bounces; ++b) {
-        bounce = propagateAndAccumulate(bounceVpls(bounce, gv, albedo), blocking, steps);
+        bounce = propagateAndAccumulate(bounceVpls(bounce, gv, albedo), blocking, steps, nullptr, occludeFirstStep);
         total += bounce;
         if (perBounce)
             perBounce->push_back(bounce);

@@ -121,7 +121,7 @@ GvGrid mergeByMax(const GvGrid& a, const GvGrid& b) {
 
 float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& travel) {
     // A surfel blocks light that hits its front, i.e. travels against its normal.
-    const float blocked = sh::evaluate(gv.sample(g), -travel);
+    const float blocked = gv.strength * sh::evaluate(gv.sample(g), -travel);
     return 1.0f - std::clamp(blocked, 0.0f, 1.0f);
 }
 
@@ -245,11 +245,12 @@ ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* n
     return out;
 }
 
-ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps, const NormalGrid* normals) {
+ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps, const NormalGrid* normals,
+                              bool occludeFirstStep) {
     ShGrid accumulated = injected;
     ShGrid current = injected;
     for (int i = 0; i < steps; ++i) {
-        current = propagateStep(current, gv, normals);
+        current = propagateStep(current, i == 0 && !occludeFirstStep ? nullptr : gv, normals);
         accumulated += current;
     }
     return accumulated;

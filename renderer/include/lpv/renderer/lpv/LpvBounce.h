@@ -22,6 +22,6 @@ ShGrid bounceVpls(const ShGrid& accumulated, const GvGrid& gv, float albedo);
 // way (occlusion by `gv` when `occlude`). Returns the sum of all bounces;
 // `perBounce`, when given, receives each bounce's accumulator.
 ShGrid propagateWithBounces(const ShGrid& injected, const GvGrid& gv, bool occlude, int steps, int bounces,
-                            float albedo, std::vector<ShGrid>* perBounce = nullptr);
+                            float albedo, std::vector<ShGrid>* perBounce = nullptr, bool occludeFirstStep = true);
 
 } // namespace lpv::renderer::lpvref

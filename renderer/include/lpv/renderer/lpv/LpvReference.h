@@ -40,6 +40,9 @@ struct ShGrid {
 struct GvGrid {
     int n = 0; // LPV cells per axis; the GV has n + 1 per axis
     std::vector<glm::vec4> potential;
+    // lpv.occlusionStrength: propagation reads strength * B (docs/lpv.md,
+    // Propagation); the stored potential (which bounces read) is unscaled.
+    float strength = 1.0f;
 
     explicit GvGrid(int lpvCells = 0);
     int size() const { return n + 1; }
@@ -130,9 +133,11 @@ ShGrid injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& r
 
 // One propagation step (gather); `gv` null = no occlusion, `normals` null = undirected.
 ShGrid propagateStep(const ShGrid& source, const GvGrid* gv, const NormalGrid* normals = nullptr);
-// V_0 + V_1 + ... + V_steps, V_0 = injected.
+// V_0 + V_1 + ... + V_steps, V_0 = injected. With occludeFirstStep false
+// (lpv.occlusionFirstStep) the step from V_0 to V_1 ignores the GV: the light
+// leaves the cell it was injected into past the surface that injected it.
 ShGrid propagateAndAccumulate(const ShGrid& injected, const GvGrid* gv, int steps,
-                              const NormalGrid* normals = nullptr);
+                              const NormalGrid* normals = nullptr, bool occludeFirstStep = true);
 
 // Total flux (W) of all cells of one channel: the integral of I over the sphere, summed.
 double totalFlux(const ShGrid& grid, int channel);
