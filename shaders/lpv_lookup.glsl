@@ -1,6 +1,8 @@
 // Indirect diffuse light from the LPV at shading (docs/lpv.md, Lookup):
-// trilinear accumulator samples, irradiance toward the normal, blend between
-// cascades, light-bleeding damping. LpvPass::bindForShading sets these.
+// trilinear accumulator samples (or, with lpv.visibilityLookup, 8 taps each
+// weighted by the chance that the point sees it), irradiance toward the
+// normal, blend between cascades, light-bleeding damping.
+// LpvPass::bindForShading sets these.
 // Needs sh.glsl included before it (includes are one level deep).
 
 uniform int uLpvCascadeCount; // 0: no LPV this frame
@@ -13,6 +15,13 @@ uniform int uLpvBlendLevels;
 uniform sampler3D uLpvAccumR;
 uniform sampler3D uLpvAccumG;
 uniform sampler3D uLpvAccumB;
+// The visibility-aware lookup (docs/lpv.md; lpvref::irradianceVisibleAt is
+// the CPU twin): per cell and axis the distance moments lpv_visibility.comp
+// wrote. An image, not a sampler: the forward pass has no sampler unit left.
+uniform int uLpvVisibility;       // 1: on and built this frame
+uniform float uLpvVisibilityBias; // cells along the normal
+layout(binding = 7, rgba32f) uniform readonly image3D uLpvMoments;
+const float LPV_MIN_VARIANCE = 1e-4; // cells^2 (lpvref::VisibilitySettings)
 
 // Cells between x and the nearest face of cascade k's cube (negative outside).
 float lpvMargin(int k, vec3 x) {
@@ -21,8 +30,65 @@ float lpvMargin(int k, vec3 x) {
     return min(m.x, min(m.y, m.z));
 }
 
+// The chance that a point at `offset` (cells) from the centre of the cell at
+// `texel` sees it: per axis the one-sided Chebyshev bound beyond the mean
+// distance toward the point, multiplied (lpvref::chebyshevVisibility).
+float lpvTapVisibility(ivec3 texel, vec3 offset) {
+    float visible = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        vec4 m = imageLoad(uLpvMoments, ivec3(3 * texel.x + a, texel.yz));
+        vec2 moments = offset[a] < 0.0 ? m.zw : m.xy;
+        float d = abs(offset[a]);
+        if (d > moments.x) {
+            float variance = max(moments.y - moments.x * moments.x, LPV_MIN_VARIANCE);
+            visible *= variance / (variance + (d - moments.x) * (d - moments.x));
+        }
+    }
+    return visible;
+}
+
+// lpvIrradianceRaw with the 8 taps of the trilinear filter fetched by hand,
+// each weighted by its visibility from x moved along n, renormalised.
+vec3 lpvIrradianceVisible(int k, vec3 x, vec3 n) {
+    int grid = uLpvGridSize;
+    vec3 u = (x - uLpvOrigin[k]) / uLpvCellSize[k];
+    vec3 seen = u + n * uLpvVisibilityBias;
+    vec3 v = clamp(u - 0.5, vec3(0.0), vec3(float(grid - 1)));
+    ivec3 i0 = min(ivec3(floor(v)), ivec3(grid - 1));
+    ivec3 i1 = min(i0 + 1, ivec3(grid - 1));
+    vec3 f = v - vec3(i0);
+    vec4 weightedR = vec4(0.0), weightedG = vec4(0.0), weightedB = vec4(0.0);
+    vec4 plainR = vec4(0.0), plainG = vec4(0.0), plainB = vec4(0.0);
+    float weights = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        bvec3 o = bvec3(corner & 1, corner & 2, corner & 4);
+        ivec3 c = mix(i0, i1, o);
+        vec3 t = mix(1.0 - f, f, o);
+        float trilinear = t.x * t.y * t.z;
+        ivec3 texel = ivec3(c.xy, k * grid + c.z);
+        float w = trilinear * lpvTapVisibility(texel, seen - (vec3(c) + 0.5));
+        vec4 r = texelFetch(uLpvAccumR, texel, 0), g = texelFetch(uLpvAccumG, texel, 0),
+             b = texelFetch(uLpvAccumB, texel, 0);
+        weights += w;
+        weightedR += w * r;
+        weightedG += w * g;
+        weightedB += w * b;
+        plainR += trilinear * r;
+        plainG += trilinear * g;
+        plainB += trilinear * b;
+    }
+    vec4 lobe = shCosineLobe(-n);
+    // Every tap hidden (a point inside a closed cell): the plain lookup rather than a division by zero.
+    vec3 e = weights > 1e-6 ? vec3(dot(weightedR, lobe), dot(weightedG, lobe), dot(weightedB, lobe)) / weights
+                            : vec3(dot(plainR, lobe), dot(plainG, lobe), dot(plainB, lobe));
+    float s = uLpvCellSize[k];
+    return max(e, vec3(0.0)) / (s * s);
+}
+
 // Irradiance (rgb) from cascade k at x toward normal n, times s^-2.
 vec3 lpvIrradianceRaw(int k, vec3 x, vec3 n) {
+    if (uLpvVisibility != 0)
+        return lpvIrradianceVisible(k, x, n);
     float grid = float(uLpvGridSize);
     vec3 u = clamp((x - uLpvOrigin[k]) / uLpvCellSize[k], vec3(0.5), vec3(grid - 0.5));
     // Cascades are stacked along z: clamping keeps the filter inside cascade k.

@@ -1,6 +1,7 @@
 #include "LpvPass.h"
 
 #include "lpv/renderer/ShaderLibrary.h"
+#include "lpv/renderer/lpv/LpvVisibility.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -23,6 +24,8 @@ constexpr GLbitfield kComputeResults =
 constexpr GLuint kSumsBinding = 0, kScalesBinding = 1, kGvSumsBinding = 2, kNormalSumsBinding = 3;
 // Texture unit of the directed propagation's normals (lpv_common.glsl, LPV_WITH_DIRECTED).
 constexpr GLuint kNormalsUnit = 7;
+// Image unit of the visibility moments in the lookup (lpv_lookup.glsl's uLpvMoments).
+constexpr GLuint kVisibilityImageUnit = 7;
 
 std::vector<glm::vec4> readVolumeBlock(GLuint texture, int size, int firstSlice) {
     std::vector<glm::vec4> v(std::size_t(size) * std::size_t(size) * std::size_t(size));
@@ -64,6 +67,7 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.bounceAlbedo = float(params.getFloat("lpv.bounceAlbedo"));
     s.requestedCascades = params.getInt("lpv.cascades");
     s.rsmCascades = params.getInt("rsm.cascades");
+    s.visibility = params.getBool("lpv.visibilityLookup");
     return s;
 }
 
@@ -97,6 +101,7 @@ ProgramVariant LpvPass::variantOf(LpvKernel kernel) {
         return {{"lpv_raster_gather.vert", "lpv_raster.geom", "lpv_raster_gather.frag"}, {}};
     case LpvKernel::RasterScatter:
         return {{"lpv_raster_scatter.vert", "lpv_raster.geom", "lpv_raster_scatter.frag"}, {"LPV_POINTS 1"}};
+    case LpvKernel::Visibility: return {{"lpv_visibility.comp"}, {}};
     }
     throw std::logic_error("unknown LPV kernel");
 }
@@ -134,6 +139,8 @@ scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
         kernels.insert(kernels.end(), {LpvKernel::Normals, LpvKernel::NormalsDilate});
     if (settings.bounces > 1)
         kernels.insert(kernels.end(), {LpvKernel::BounceInject, LpvKernel::BounceAdd});
+    if (settings.visibility && (settings.occlusion || settings.bounces > 1))
+        kernels.push_back(LpvKernel::Visibility);
     switch (settings.variant) {
     case LpvVariant::ComputeGather:
         kernels.insert(kernels.end(), {LpvKernel::ComputeGather, LpvKernel::ComputeGatherFirst, LpvKernel::Deinterleave});
@@ -204,6 +211,10 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
     volumes_.ensureDirected(settings.directed);
     volumes_.ensureBounces(settings.bounces > 1);
     volumes_.ensureInterleaved(settings.variant == LpvVariant::ComputeGather);
+    // The moments come from the GV, which only runs for occlusion or bounces.
+    visibilityActive_ = settings.visibility && (settings.occlusion || settings.bounces > 1);
+    if (volumes_.ensureVisibility(visibilityActive_) || !visibilityActive_)
+        visibilityReady_ = false; // new or freed: nothing built into them yet
     cascades_.assign(requested.begin(), requested.begin() + cascades);
     injectionOffset_ = settings.injectionOffset;
     occlusion_ = settings.occlusion;
@@ -245,7 +256,8 @@ void LpvPass::finish(const LpvSettings& settings, bool cameraGv, bool sky, const
                                 : ", no occlusion") +
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
             (sky ? ", sky light injected" : "") + localNote(nonEmpty(local)) +
-            (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "");
+            (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "") +
+            (visibilityActive_ ? ", visibility-aware lookup" : "");
     computedNote_ = note_.substr(5); // without "LPV: "
 }
 
@@ -407,6 +419,25 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     const int n = volumes_.gridSize();
     glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
+    if (visibilityActive_)
+        buildVisibility();
+}
+
+void LpvPass::buildVisibility() {
+    // lpvref::VisibilitySettings' defaults: the CPU twin and the GPU read the same constants.
+    const lpvref::VisibilitySettings constants;
+    const GLuint p = kernel(LpvKernel::Visibility);
+    glUseProgram(p);
+    setCascadeUniforms(p);
+    glProgramUniform1f(p, loc(p, "uMaxDistance"), constants.maxDistance);
+    glProgramUniform1f(p, loc(p, "uClosedCoverage"), constants.closedCoverage);
+    glBindTextureUnit(3, volumes_.geometry.id());
+    glBindImageTexture(0, volumes_.visibility.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const int n = volumes_.gridSize();
+    glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
+    // The forward pass reads them with imageLoad.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    visibilityReady_ = true;
 }
 
 void LpvPass::buildNormals(int dilation) {
@@ -581,6 +612,10 @@ void LpvPass::bindForShading(const CachedProgram& shader, const scene::Parameter
     const GLuint program = shader.id();
     const int count = active_ ? volumes_.cascades() : 0;
     glProgramUniform1i(program, shader.uniform("uLpvCascadeCount"), count);
+    const bool visibility = count > 0 && visibilityActive_ && visibilityReady_;
+    glProgramUniform1i(program, shader.uniform("uLpvVisibility"), visibility ? 1 : 0);
+    if (visibility) // an image unit: the fragment stage has no sampler unit left (docs/lpv.md)
+        glBindImageTexture(kVisibilityImageUnit, volumes_.visibility.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     static constexpr const char* kSamplers[] = {"uLpvAccumR", "uLpvAccumG", "uLpvAccumB"};
     for (int c = 0; c < 3; ++c) {
         // Samplers must name a 3D texture unit even when nothing reads them (count 0).
@@ -602,6 +637,7 @@ void LpvPass::bindForShading(const CachedProgram& shader, const scene::Parameter
     glProgramUniform1f(program, shader.uniform("uLpvIntensity"), float(params.getFloat("lpv.intensity")));
     glProgramUniform1f(program, shader.uniform("uLpvBleedingDamping"), float(params.getFloat("lpv.bleedingDamping")));
     glProgramUniform1i(program, shader.uniform("uLpvBlendLevels"), params.getInt("lpv.cascadeBlendLevels"));
+    glProgramUniform1f(program, shader.uniform("uLpvVisibilityBias"), float(params.getFloat("lpv.visibilityBias")));
 }
 
 std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) const {
@@ -684,6 +720,16 @@ std::vector<glm::vec4> LpvPass::readGeometryVolume(int cascade) const {
         return {};
     const int m = volumes_.gridSize() + 1;
     return readVolumeBlock(volumes_.geometry.id(), m, cascade * m);
+}
+
+std::vector<glm::vec4> LpvPass::readVisibilityMoments(int cascade) const {
+    if (!active_ || !volumes_.visibility || cascade < 0 || cascade >= volumes_.cascades())
+        return {};
+    const int n = volumes_.gridSize();
+    std::vector<glm::vec4> v(std::size_t(3 * n) * std::size_t(n) * std::size_t(n));
+    glGetTextureSubImage(volumes_.visibility.id(), 0, 0, 0, cascade * n, 3 * n, n, n, GL_RGBA, GL_FLOAT,
+                         GLsizei(v.size() * sizeof(glm::vec4)), v.data());
+    return v;
 }
 
 std::vector<DebugImage> LpvPass::debugImages() const {

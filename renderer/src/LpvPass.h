@@ -54,6 +54,9 @@ struct LpvSettings {
     // are RSM tiles, and an error about them names both (issue #29).
     int requestedCascades = 4;
     int rsmCascades = 4;
+    // lpv.visibilityLookup (docs/lpv.md): distance moments built after the
+    // geometry volume, read by the lookup; needs the GV (occlusion or bounces).
+    bool visibility = false;
 
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };
@@ -143,6 +146,8 @@ class LpvPass {
     // Read-back for tests and dumps: per channel N^3 SH of cascade k.
     std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
     std::vector<glm::vec4> readGeometryVolume(int cascade) const; // (N+1)^3, x fastest
+    // The visibility-aware lookup's moments of cascade k, 3N x N x N (empty when off).
+    std::vector<glm::vec4> readVisibilityMoments(int cascade) const;
     // "lpv-K-accum" (rgb = DC of each channel per cell, slices side by side) and "lpv-K-gv".
     std::vector<DebugImage> debugImages() const;
     std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
@@ -168,6 +173,8 @@ class LpvPass {
     void localFluxMax(const LpvLocalInput& local);
     void injectLocal(const LpvLocalInput& local);
     void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
+    // The visibility-aware lookup's moments from the GV (lpv_visibility.comp).
+    void buildVisibility();
     void propagate(const LpvSettings& settings);
     // Directed propagation: the injected normal sums to averages, then dilated.
     void buildNormals(int dilation);
@@ -196,7 +203,7 @@ class LpvPass {
         FluxMax, Inject, Resolve, GvFromRsm, GvFromCamera, GvMerge, FaceBlocking, Normals, NormalsDilate,
         SkyInject, BounceInject, BounceAdd, LocalFluxMax, LocalInject,
         ComputeGather, ComputeGatherFirst, // the first step reads per-channel sources (LPV_FIRST_STEP)
-        Deinterleave, ComputeScatter, RasterGather, RasterScatter,
+        Deinterleave, ComputeScatter, RasterGather, RasterScatter, Visibility,
     };
     static ProgramVariant variantOf(LpvKernel kernel);
     scene::Expected<void> buildKernel(LpvKernel kernel);
@@ -221,6 +228,8 @@ class LpvPass {
     bool occlusion_ = true;
     float occlusionStrength_ = 1.0f;
     int propagationSteps_ = 0;
+    bool visibilityActive_ = false; // lpv.visibilityLookup on and a GV to build it from
+    bool visibilityReady_ = false;  // the moments hold the current GV's (false after allocation)
     std::optional<LpvCaptureRequest> capture_;
     std::optional<LpvSnapshot> snapshot_;
     std::array<Texture, 6> captureCopy_; // N^3 per channel: V_step (0-2), accumulator (3-5); only while capturing

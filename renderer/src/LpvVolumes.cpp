@@ -42,8 +42,10 @@ std::size_t LpvVolumes::allocatedBytes() const {
     const std::size_t directed = normals[0] ? 2 * n * n * n * k * kTexelBytes + 4 * n * n * n * k * 4 : 0;
     const std::size_t bounces = bounceTotal.channel[0] ? 3 * n * n * n * k * kTexelBytes : 0;
     const std::size_t interleavedBytes = interleaved[0] ? 6 * n * n * n * k * kTexelBytes : 0;
+    const std::size_t visibilityBytes = visibility ? 3 * n * n * n * k * kTexelBytes : 0;
     return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
-           8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces + interleavedBytes;
+           8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces + interleavedBytes +
+           visibilityBytes;
 }
 
 void LpvVolumes::ensureDirected(bool directed) {
@@ -85,6 +87,17 @@ void LpvVolumes::ensureInterleaved(bool wanted) {
         t = makeVolume(3 * gridSize_, gridSize_, gridSize_ * cascades_);
 }
 
+bool LpvVolumes::ensureVisibility(bool on) {
+    if (!on || gridSize_ == 0) {
+        visibility.reset();
+        return false;
+    }
+    if (visibility)
+        return false;
+    visibility = makeVolume(3 * gridSize_, gridSize_, gridSize_ * cascades_);
+    return true;
+}
+
 void LpvVolumes::release() {
     for (auto& set : volume)
         for (Texture& t : set.channel)
@@ -105,6 +118,7 @@ void LpvVolumes::release() {
         t.reset();
     for (Texture& t : interleaved)
         t.reset();
+    visibility.reset();
     gridSize_ = cascades_ = 0;
     ++generation_;
 }

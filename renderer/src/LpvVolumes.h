@@ -28,6 +28,9 @@ class LpvVolumes {
     void ensureBounces(bool bounces);
     // The compute gather's interleaved ping-pong volumes, allocated only while it runs.
     void ensureInterleaved(bool interleaved);
+    // The visibility-aware lookup's moments, allocated only while it is on;
+    // true when this call allocated them (their content is not this frame's yet).
+    bool ensureVisibility(bool visibility);
     void release();
 
     int gridSize() const { return gridSize_; }
@@ -58,7 +61,10 @@ class LpvVolumes {
     // volume[] (V_0) and writes here; the later steps live here, and
     // lpv_deinterleave.comp unpacks a step the LPV viewer captures.
     std::array<Texture, 2> interleaved;
-
+    // Visibility-aware lookup only (ensureVisibility, docs/lpv.md): per cell
+    // and axis a the distance moments (E[d], E[d^2]) toward +a and -a, the
+    // three axes side by side like faceBlocking, 3N x N x NK RGBA32F.
+    Texture visibility;
   private:
     int gridSize_ = 0;
     int cascades_ = 0;

@@ -75,6 +75,14 @@ std::vector<ParameterInfo> declareParameters() {
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.bleedingDamping", 1.0, 0.0, 4.0, "", "LPV",
              "Strength of light-bleeding damping from the SH directional derivative along the normal", P::Shading),
+        boolean("lpv.visibilityLookup", false, "LPV",
+                "Weight each trilinear tap of the lookup by the chance that the shading point sees it (distance "
+                "moments from the geometry volume, a Chebyshev bound), so a cell behind a wall is not read; needs "
+                "lpv.occlusion or lpv.bounces > 1",
+                P::GeometryVolume | P::Shading),
+        real("lpv.visibilityBias", 0.5, 0.0, 2.0, "cells", "LPV",
+             "How far the visibility-aware lookup moves the shading point along its normal before the test, so "
+             "the surface it lies on does not hide the cells in front of it", P::Shading),
         integer("lpv.cascadeBlendLevels", 2, 1, 6, "cascades", "LPV",
                 "Cascades blended at a lookup (2 = the two nearest; more adds coarser ones)", P::Shading),
         choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",
