@@ -12,6 +12,7 @@ uniform float uLpvCellSize[6];
 uniform float uLpvIntensity;
 uniform float uLpvBleedingDamping;
 uniform int uLpvBlendLevels;
+uniform float uLpvLookupOffset; // lpv.lookupOffset: cells along the normal
 uniform sampler3D uLpvAccumR;
 uniform sampler3D uLpvAccumG;
 uniform sampler3D uLpvAccumB;
@@ -87,6 +88,10 @@ vec3 lpvIrradianceVisible(int k, vec3 x, vec3 n) {
 
 // Irradiance (rgb) from cascade k at x toward normal n, times s^-2.
 vec3 lpvIrradianceRaw(int k, vec3 x, vec3 n) {
+    // lpv.lookupOffset: read in front of the surface; at x itself the
+    // trilinear filter takes half its taps from cells behind the surface
+    // (outside the room, inside the wall). lpvref::irradianceAt's twin.
+    x += n * (uLpvLookupOffset * uLpvCellSize[k]);
     if (uLpvVisibility != 0)
         return lpvIrradianceVisible(k, x, n);
     float grid = float(uLpvGridSize);

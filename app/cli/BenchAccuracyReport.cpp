@@ -58,6 +58,8 @@ varied alone around the project's settings:
   offset     lpv.injectionOffset=0,0.5,1,2
   firstStep  lpv.occlusionFirstStep=true,false
   strength   lpv.occlusionStrength=0.5,1,1.333,2
+  lookupOffset lpv.lookupOffset=0,0.5,1
+  visibility lpv.visibilityLookup=false,true
 Like for like: each LPV is measured against the reference's light reflected
 as many times as its lpv.bounces, and the reference traces the sky and
 emissive surfaces where the LPV injects them (reference.skyLight and
@@ -110,6 +112,8 @@ const std::vector<Question> kQuestions = {
     {"offset", "lpv.injectionOffset=0,0.5,1,2", ""},
     {"firstStep", "lpv.occlusionFirstStep=true,false", ""},
     {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
+    {"lookupOffset", "lpv.lookupOffset=0,0.5,1", ""},
+    {"visibility", "lpv.visibilityLookup=false,true", ""},
 };
 
 struct SceneSpec {

@@ -636,6 +636,7 @@ void LpvPass::bindForShading(const CachedProgram& shader, const scene::Parameter
     glProgramUniform1fv(program, shader.uniform("uLpvCellSize"), 6, cellSize.data());
     glProgramUniform1f(program, shader.uniform("uLpvIntensity"), float(params.getFloat("lpv.intensity")));
     glProgramUniform1f(program, shader.uniform("uLpvBleedingDamping"), float(params.getFloat("lpv.bleedingDamping")));
+    glProgramUniform1f(program, shader.uniform("uLpvLookupOffset"), float(params.getFloat("lpv.lookupOffset")));
     glProgramUniform1i(program, shader.uniform("uLpvBlendLevels"), params.getInt("lpv.cascadeBlendLevels"));
     glProgramUniform1f(program, shader.uniform("uLpvVisibilityBias"), float(params.getFloat("lpv.visibilityBias")));
 }

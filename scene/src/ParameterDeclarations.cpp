@@ -83,6 +83,10 @@ std::vector<ParameterInfo> declareParameters() {
         real("lpv.visibilityBias", 0.5, 0.0, 2.0, "cells", "LPV",
              "How far the visibility-aware lookup moves the shading point along its normal before the test, so "
              "the surface it lies on does not hide the cells in front of it", P::Shading),
+        real("lpv.lookupOffset", 0.0, 0.0, 2.0, "cells", "LPV",
+             "Read the LPV this far in front of the shaded surface, along its normal: at the surface itself the "
+             "trilinear filter takes half its taps from cells behind it (outside the room, inside the wall)",
+             P::Shading),
         integer("lpv.cascadeBlendLevels", 2, 1, 6, "cascades", "LPV",
                 "Cascades blended at a lookup (2 = the two nearest; more adds coarser ones)", P::Shading),
         choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",

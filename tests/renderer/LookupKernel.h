@@ -21,8 +21,9 @@ struct LookupPoint {
 // Irradiance (rgb, times s^-2: lpvIrradianceRaw) at each point from cascade
 // `cascade`; `visibility` selects the visibility-aware path (its moments must
 // have been built by the pass), `bias` its normal bias in cells.
+// `lookupOffset`: lpv.lookupOffset in cells.
 inline std::vector<glm::vec3> runLookup(const LpvPass& pass, int cascade, bool visibility, float bias,
-                                        const std::vector<LookupPoint>& points) {
+                                        const std::vector<LookupPoint>& points, float lookupOffset = 0.0f) {
     auto program = buildEmbeddedProgram({"lpv_lookup_test.comp"});
     EXPECT_TRUE(program.has_value()) << (program ? "" : program.error().describe());
     if (!program)
@@ -39,6 +40,7 @@ inline std::vector<glm::vec3> runLookup(const LpvPass& pass, int cascade, bool v
     }
     glProgramUniform1i(p, at("uLpvVisibility"), visibility ? 1 : 0);
     glProgramUniform1f(p, at("uLpvVisibilityBias"), bias);
+    glProgramUniform1f(p, at("uLpvLookupOffset"), lookupOffset);
     glProgramUniform1i(p, at("uCascade"), cascade);
     const char* samplers[] = {"uLpvAccumR", "uLpvAccumG", "uLpvAccumB"};
     for (int c = 0; c < 3; ++c) {

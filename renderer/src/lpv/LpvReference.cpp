@@ -280,8 +280,9 @@ glm::vec4 sampleTrilinear(const ShGrid& grid, int channel, const glm::vec3& u) {
     return glm::vec4(sum);
 }
 
-glm::vec3 irradianceAt(const ShGrid& accumulated, const GridFrame& grid, const glm::vec3& x, const glm::vec3& n) {
-    const glm::vec3 u = (x - grid.origin) / grid.cellSize;
+glm::vec3 irradianceAt(const ShGrid& accumulated, const GridFrame& grid, const glm::vec3& x, const glm::vec3& n,
+                       float lookupOffsetCells) {
+    const glm::vec3 u = (x + n * (lookupOffsetCells * grid.cellSize) - grid.origin) / grid.cellSize;
     const float faceArea = grid.cellSize * grid.cellSize;
     glm::vec3 e(0.0f);
     // Kaplanyan's approximation: the intensity over the cell face area taken as radiance.

@@ -144,6 +144,8 @@ double totalFlux(const ShGrid& grid, int channel);
 // Trilinear sample of channel c at cell coordinate `u` (centres at integer + 0.5, clamped to the grid).
 glm::vec4 sampleTrilinear(const ShGrid& grid, int channel, const glm::vec3& u);
 // Indirect irradiance (rgb) at world position x with normal n, from one cascade's accumulator.
-glm::vec3 irradianceAt(const ShGrid& accumulated, const GridFrame& grid, const glm::vec3& x, const glm::vec3& n);
+// `lookupOffsetCells` (lpv.lookupOffset) moves x that many cells along n first.
+glm::vec3 irradianceAt(const ShGrid& accumulated, const GridFrame& grid, const glm::vec3& x, const glm::vec3& n,
+                       float lookupOffsetCells = 0.0f);
 
 } // namespace lpv::renderer::lpvref
