@@ -22,6 +22,11 @@ uniform vec3 uOrigin[6];
 uniform float uCellSize[6];
 uniform float uInjectionOffset; // cells
 layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; };
+// Directed propagation: these VPLs' normals join the sun's in the same sums
+// (lpv_inject.comp), so light does not flow back onto the surfaces a spot,
+// point or area light lit either.
+layout(std430, binding = 3) buffer LpvNormalSums { int normalSums[]; }; // 4 per cell: x, y, z, count
+uniform bool uDirected;
 #else
 shared uint groupMax;
 #endif
@@ -62,6 +67,13 @@ void main() {
             continue;
         ivec3 cell = min(ivec3(floor(u)), ivec3(uGridSize - 1));
         vec4 lobe = shCosineLobe(n) * (lpvFixedScale(k) / SH_PI);
+        if (uDirected) {
+            int nb = lpvCellIndex(k, cell) * 4;
+            float normalScale = 1073741824.0 / float(uTexelsPerTile);
+            for (int j = 0; j < 3; ++j)
+                atomicAdd(normalSums[nb + j], int(round(n[j] * normalScale)));
+            atomicAdd(normalSums[nb + 3], 1);
+        }
         int base = lpvCellIndex(k, cell) * 12;
         for (int c = 0; c < 3; ++c) {
             if (flux[c] == 0.0)

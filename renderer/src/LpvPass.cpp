@@ -335,7 +335,7 @@ void LpvPass::inject(const LpvRsmInput& rsm, bool directed, const std::vector<Lp
     if (sun)
         glDispatchCompute(groups(rsm.tileSize, 8), groups(rsm.tileSize, 8), GLuint(tiles));
     for (const LpvLocalInput& l : local)
-        injectLocal(l);
+        injectLocal(l, directed);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 3. Sums to floats: volume 0 and the accumulator both start as V_0.

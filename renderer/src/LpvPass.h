@@ -171,7 +171,7 @@ class LpvPass {
     // Local lights' share of inject() (LpvPassLocal.cpp): their brightest texel
     // into every cascade's bound, then their VPLs into the fixed-point sums.
     void localFluxMax(const LpvLocalInput& local);
-    void injectLocal(const LpvLocalInput& local);
+    void injectLocal(const LpvLocalInput& local, bool directed);
     void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
     // The visibility-aware lookup's moments from the GV (lpv_visibility.comp).
     void buildVisibility();

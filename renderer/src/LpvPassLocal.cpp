@@ -30,7 +30,7 @@ void LpvPass::localFluxMax(const LpvLocalInput& local) {
     glDispatchCompute(groups(local.size, 8), groups(local.size, 8), GLuint(local.layers));
 }
 
-void LpvPass::injectLocal(const LpvLocalInput& local) {
+void LpvPass::injectLocal(const LpvLocalInput& local, bool directed) {
     const GLuint p = kernel(LpvKernel::LocalInject);
     glUseProgram(p);
     setCascadeUniforms(p);
@@ -43,6 +43,8 @@ void LpvPass::injectLocal(const LpvLocalInput& local) {
     glProgramUniform1i(p, loc(p, "uTexelsPerTile"), injectedTexels_);
     glProgramUniform1i(p, loc(p, "uScaleSlot"), -1);
     glProgramUniform1f(p, loc(p, "uInjectionOffset"), injectionOffset_);
+    // The normal sums are bound by inject() while directed propagation runs.
+    glProgramUniform1i(p, loc(p, "uDirected"), directed ? 1 : 0);
     glDispatchCompute(groups(local.size, 8), groups(local.size, 8), GLuint(local.layers));
 }
 

@@ -61,11 +61,17 @@ TEST_F(LpvLocalInjectionGLTest, EveryCascadeThatHoldsAVplGetsItAsTheReferenceSay
                                Texel{{-1.1f, 0.4f, 0.2f}, {1, 0, 0}, {2.0f, 1.0f, 0.5f}}},
                               {Texel{{2.6f, 1.5f, -3.1f}, {0, 0, 1}, {1.0f, 1.0f, 1.0f}}}});
     GpuTimer timer;
+    // Directed: the local VPLs' normals join the sun's in the normals volume (issue #24).
+    for (bool directed : {false, true})
     for (bool withSun : {false, true})
         for (int steps : {0, 4}) {
+            if (directed && steps == 0)
+                continue; // the normals only weight propagation
             LpvSettings settings;
             settings.gridSize = 8;
             settings.propagationSteps = steps;
+            settings.directed = directed;
+            settings.directedDilation = 1;
             settings.occlusion = false;
             settings.gvFromCamera = false;
             LpvRsmInput rsm;
@@ -97,10 +103,20 @@ TEST_F(LpvLocalInjectionGLTest, EveryCascadeThatHoldsAVplGetsItAsTheReferenceSay
                             tile == 0 ? (i == 0 ? glm::vec3(5, 4, 3) : glm::vec3(2, 1, 0.5f)) : glm::vec3(1);
                         all.push_back({p, n, f});
                     }
-                const ref::ShGrid expected =
-                    ref::propagateAndAccumulate(ref::injectVpls(frame, all, 1.0f), nullptr, steps);
+                const ref::NormalGrid normals = ref::dilateNormals(ref::injectNormals(frame, all, 1.0f));
+                const ref::ShGrid expected = ref::propagateAndAccumulate(ref::injectVpls(frame, all, 1.0f), nullptr,
+                                                                         steps, directed ? &normals : nullptr);
                 const double d = relative(expected, pass->readAccumulator(k));
-                std::cout << "[ figures ] local VPLs" << (withSun ? " + sun tile" : "") << ", cascade " << k
+                if (directed) { // the normals must change the result, or this tests nothing
+                    const ref::ShGrid undirected =
+                        ref::propagateAndAccumulate(ref::injectVpls(frame, all, 1.0f), nullptr, steps);
+                    std::array<std::vector<glm::vec4>, 3> plain;
+                    for (int c = 0; c < 3; ++c)
+                        plain[std::size_t(c)] = undirected.channel[c];
+                    EXPECT_GT(relative(expected, plain), 1e-3);
+                }
+                std::cout << "[ figures ] local VPLs" << (withSun ? " + sun tile" : "") << (directed ? ", directed" : "")
+                          << ", cascade " << k
                           << ", " << steps << " steps: relative |GPU - CPU| " << d << "\n";
                 EXPECT_LT(d, 2e-5);
             }
