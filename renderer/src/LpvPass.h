@@ -39,7 +39,10 @@ struct LpvSettings {
     // lpv.occlusionFirstStep: false = the first step ignores the GV (no
     // self-occlusion by the surface that injected the light).
     bool occludeFirstStep = true;
-    float occlusionStrength = 1.0f; // lpv.occlusionStrength: blocking potential scale
+    // lpv.occlusionStrength: blocking potential scale. 1 here, as lpvref::GvGrid
+    // has it, for the tests that build settings by hand; frames take the
+    // registry default (4/3) through fromParameters.
+    float occlusionStrength = 1.0f;
     bool gvFromCamera = true;
     LpvVariant variant = LpvVariant::ComputeGather;
     // Directed propagation (docs/lpv.md): a normals volume from the VPLs,
