@@ -106,7 +106,8 @@ struct ForwardRenderer::Impl {
         bool sun = false;
         EffectDecision local, emissive, sky, sss;
         LpvSettings settings;
-        std::vector<LpvCascade> cascades;
+        std::vector<LpvCascade> cascades;    // the LPV's: min(lpv.cascades, rsm.cascades)
+        std::vector<LpvCascade> rsmCascades; // the sun's RSM tiles': rsm.cascades, the LPV's first
         bool cameraGv = false; // the geometry volume reads last frame's camera G-buffer
     } plan;
 

@@ -48,8 +48,10 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
     plan.settings = LpvSettings::fromParameters(params);
     // One volume per RSM tile, as far as lpv.cascades asks; the tiles follow the camera.
     const int count = std::min(params.getInt("rsm.cascades"), params.getInt("lpv.cascades"));
-    plan.cascades = lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
-                                lpvCascadeSettings(params, count));
+    // The RSM's tiles and the LPV's volumes share one placement; the RSM may have more (rsm.cascades).
+    plan.rsmCascades = lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
+                                   lpvCascadeSettings(params, params.getInt("rsm.cascades")));
+    plan.cascades.assign(plan.rsmCascades.begin(), plan.rsmCascades.begin() + count);
     frameEffects.push_back(plan.local);
     frameEffects.push_back(plan.emissive);
     frameEffects.push_back(decideBounces(params, true));
@@ -126,10 +128,13 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         p.decision = !lpvRuns ? skippedBecause(off) : plan.sun ? runsBecause("the sun lights the scene") : skippedBecause("no directional light");
         p.writes = {"rsm.position", "rsm.normal", "rsm.flux"};
         graph::ContentHash h;
-        h.add(sceneGeneration).add(frame.camera.position); // the tiles follow the camera's position only
+        // The tiles follow the cascades (the camera's position, its view with lpv.viewShift).
+        h.add(sceneGeneration).add(plan.rsmCascades);
         addLights(h, frame.scene.lights);
         p.inputsKey = h.value();
-        p.execute = [this](graph::PassContext& ctx) { return rsm->render(ctx.frame, *sceneGpu, *materialGpu); };
+        p.execute = [this](graph::PassContext& ctx) {
+            return rsm->render(ctx.frame, *sceneGpu, *materialGpu, plan.rsmCascades);
+        };
         graph.addPass(std::move(p));
     }
     // --- Spot and point lights' RSMs ---

@@ -41,7 +41,7 @@ struct LpvSettings {
     bool occludeFirstStep = true;
     // lpv.occlusionStrength: blocking potential scale. 1 here, as lpvref::GvGrid
     // has it, for the tests that build settings by hand; frames take the
-    // registry default (4/3) through fromParameters.
+    // registry default (1.333) through fromParameters.
     float occlusionStrength = 1.0f;
     bool gvFromCamera = true;
     LpvVariant variant = LpvVariant::ComputeGather;

@@ -154,13 +154,21 @@ scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
 
 scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu& geometry,
                                       const MaterialGpu& materials) {
+    const int count = frame.params.getInt("rsm.cascades");
+    return render(frame, geometry, materials,
+                  lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
+                              lpvCascadeSettings(frame.params, count)));
+}
+
+scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu& geometry,
+                                      const MaterialGpu& materials, const std::vector<LpvCascade>& cascades) {
     sunIndex_ = findSun(frame.scene);
     tiles_.clear();
     if (sunIndex_ < 0) {
         releaseTargets();
         return {};
     }
-    const int count = frame.params.getInt("rsm.cascades");
+    const int count = int(cascades.size());
     const int size = frame.params.getInt("rsm.tileSize");
     if (auto ok = ensureTargets(size, count); !ok) {
         sunIndex_ = -1;
@@ -174,11 +182,10 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     }
 
     const scene::Light& sun = frame.scene.lights[std::size_t(sunIndex_)];
-    const LpvCascadeSettings settings = lpvCascadeSettings(frame.params, count);
     const scene::Bounds sceneBounds = frame.scene.worldBounds();
     std::array<glm::mat4, kMaxRsmCascades> viewProj{};
     std::array<float, kMaxRsmCascades> texelArea{};
-    for (const LpvCascade& cascade : lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position, settings)) {
+    for (const LpvCascade& cascade : cascades) {
         tiles_.push_back(makeRsmTile(cascade, sun.direction, sceneBounds, size));
         viewProj[tiles_.size() - 1] = tiles_.back().viewProj;
         texelArea[tiles_.size() - 1] = tiles_.back().texelArea;

@@ -53,6 +53,10 @@ class RsmPass {
     // light it renders nothing and frees its targets.
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
                                  const MaterialGpu& materials);
+    // The same with the cascades given (rsm.cascades of them, as the LPV
+    // places them this frame, lpv.viewShift included).
+    scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry, const MaterialGpu& materials,
+                                 const std::vector<LpvCascade>& cascades);
 
     // Frees the targets and renders nothing until the next render() (gi.method = off).
     void release() {

@@ -67,8 +67,9 @@ std::vector<ParameterInfo> declareParameters() {
                 "Let the geometry volume block the first propagation step too; off, light leaves the cell it "
                 "was injected into past the surface that injected it (no self-occlusion)",
                P::LpvPropagation | P::LpvBounces | P::Shading),
-        // 4/3 from the accuracy measurements of issue #24 (docs/lpv.md, "Leaks and over-blocking").
-        real("lpv.occlusionStrength", 4.0 / 3.0, 0.0, 4.0, "", "LPV",
+        // 1.333 (4/3 in three decimals, which the inspector's spin box shows exactly) from the
+        // accuracy measurements of issue #24 (docs/lpv.md, "Leaks, over-blocking and placement").
+        real("lpv.occlusionStrength", 1.333, 0.0, 4.0, "", "LPV",
              "Scale of the geometry volume's blocking potential in propagation: 1 = a surface covering a cell "
              "face blocks 75% of the light meeting it head-on (the two-band cosine lobe), 4/3 = all of it",
                P::LpvPropagation | P::LpvBounces | P::Shading),

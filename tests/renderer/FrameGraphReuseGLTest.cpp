@@ -154,6 +154,27 @@ TEST_F(FrameGraphReuseGLTest, RotatingTheCameraKeepsTheRsmButNotTheShadowMaps) {
     expectSameAsWithoutReuse(*r);
 }
 
+// With lpv.viewShift the cascades sit ahead of the camera, so turning moves
+// them: the RSM tiles must follow them (their key is the cascades, not the
+// camera's position), or the LPV would inject tiles of the old view.
+TEST_F(FrameGraphReuseGLTest, RotatingTheCameraWithTheCascadesShiftedRedrawsTheRsm) {
+    ASSERT_TRUE(params.set("lpv.gvFromCamera", false).has_value());
+    ASSERT_TRUE(params.set("lpv.viewShift", 1.0).has_value());
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    r->setScene(project.scene);
+    render(*r);
+    render(*r);
+    const auto before = r->lpvCascadeFrames();
+    scene::Camera& camera = project.scene.cameras.front();
+    camera.target += glm::vec3(3.0f, 0.0f, 0.0f); // turn about 20 degrees, do not move
+    render(*r);
+    ASSERT_NE(r->lpvCascadeFrames().front().origin, before.front().origin) << "the turn must move the cascades";
+    EXPECT_EQ(status(*r, Pass::Rsm), PassStatus::Ran) << reason(*r, Pass::Rsm);
+    EXPECT_EQ(status(*r, Pass::LpvPropagation), PassStatus::Ran) << reason(*r, Pass::LpvPropagation);
+    expectSameAsWithoutReuse(*r);
+}
+
 // `lpv render --dump` checks names against frameGraphNames() before any frame
 // exists: every name a frame declares (outputs and passes) must be in it.
 TEST_F(FrameGraphReuseGLTest, EveryDeclaredNameIsKnownToDump) {

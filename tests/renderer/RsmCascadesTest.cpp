@@ -219,3 +219,4 @@ TEST(RsmCascades, ViewShiftBringsADistantBoxIntoAFinerCascade) {
     EXPECT_EQ(finestHolding(centred), 2); // 1 m cells: 5.6 across the box
     EXPECT_EQ(finestHolding(ahead), 1);   // 0.5 m cells: 11 across
 }
+
