@@ -59,9 +59,11 @@ uniform sampler2D uNormal;
 uniform mat4 uInvViewProj;   // of the frame that wrote the G-buffer
 uniform vec3 uCameraPos;     // of that frame
 uniform float uPixelAngle;   // 2 tan(fovY / 2) / height: a pixel's size at distance 1
+uniform int uStride;         // lpv.gvCameraStride: one surfel per uStride^2 pixels
 
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    // The middle pixel of each uStride x uStride block stands for the block.
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * uStride + uStride / 2;
     if (any(greaterThanEqual(pixel, textureSize(uDepth, 0))))
         return;
     vec4 normal = texelFetch(uNormal, pixel, 0);
@@ -76,7 +78,7 @@ void main() {
     vec3 n = normalize(normal.xyz);
     vec3 toCamera = uCameraPos - p;
     float dist = length(toCamera);
-    float side = dist * uPixelAngle;
+    float side = dist * uPixelAngle * float(uStride);
     float area = side * side / max(abs(dot(n, toCamera / max(dist, 1e-6))), 0.2);
     for (int k = 0; k < uCascades; ++k)
         addSurfel(1, k, p, n, area);

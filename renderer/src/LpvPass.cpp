@@ -54,6 +54,7 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.occludeFirstStep = params.getBool("lpv.occlusionFirstStep");
     s.occlusionStrength = float(params.getFloat("lpv.occlusionStrength"));
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
+    s.gvCameraStride = params.getInt("lpv.gvCameraStride");
     // The registry only admits the four names; anything else is a bug, not a default.
     const std::string variant = params.getEnum("lpv.variant");
     const auto parsed = lpvVariantFromName(variant);
@@ -217,6 +218,7 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
         visibilityReady_ = false; // new or freed: nothing built into them yet
     cascades_.assign(requested.begin(), requested.begin() + cascades);
     injectionOffset_ = settings.injectionOffset;
+    gvCameraStride_ = std::max(settings.gvCameraStride, 1);
     occlusion_ = settings.occlusion;
     occlusionStrength_ = settings.occlusionStrength;
     propagationSteps_ = settings.propagationSteps;
@@ -394,10 +396,12 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
         glProgramUniformMatrix4fv(p, loc(p, "uInvViewProj"), 1, GL_FALSE, glm::value_ptr(camera->inverseViewProj));
         glProgramUniform3fv(p, loc(p, "uCameraPos"), 1, glm::value_ptr(camera->position));
         glProgramUniform1f(p, loc(p, "uPixelAngle"), camera->pixelAngle);
+        glProgramUniform1i(p, loc(p, "uStride"), gvCameraStride_);
         GLint w = 0, h = 0;
         glGetTextureLevelParameteriv(camera->depth, 0, GL_TEXTURE_WIDTH, &w);
         glGetTextureLevelParameteriv(camera->depth, 0, GL_TEXTURE_HEIGHT, &h);
-        glDispatchCompute(groups(w, 8), groups(h, 8), 1);
+        const int s = gvCameraStride_;
+        glDispatchCompute(groups((w + s - 1) / s, 8), groups((h + s - 1) / s, 8), 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 

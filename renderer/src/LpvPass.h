@@ -44,6 +44,9 @@ struct LpvSettings {
     // registry default (1.333) through fromParameters.
     float occlusionStrength = 1.0f;
     bool gvFromCamera = true;
+    // lpv.gvCameraStride: the camera G-buffer gives one surfel per stride x
+    // stride pixels (the block's middle pixel, stride^2 its area).
+    int gvCameraStride = 1;
     LpvVariant variant = LpvVariant::ComputeGather;
     // Directed propagation (docs/lpv.md): a normals volume from the VPLs,
     // dilated this many cells, keeps light from flowing back into its emitter.
@@ -228,6 +231,7 @@ class LpvPass {
     int tileSize_ = 0;  // of this frame's RSM
     int injectedTexels_ = 0; // the sun's tile and every local face: the fixed-point bound counts them
     float injectionOffset_ = 1.0f;
+    int gvCameraStride_ = 1;
     bool occlusion_ = true;
     float occlusionStrength_ = 1.0f;
     int propagationSteps_ = 0;

@@ -75,6 +75,10 @@ std::vector<ParameterInfo> declareParameters() {
                P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.gvFromCamera", true, "LPV", "Also inject blocking potential from the camera G-buffer",
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
+        integer("lpv.gvCameraStride", 1, 1, 8, "pixels", "LPV",
+                "The camera G-buffer gives the geometry volume one surfel per stride x stride pixels (the "
+                "middle one, with the block's area): fewer atomics for the same coverage",
+                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.bleedingDamping", 1.0, 0.0, 4.0, "", "LPV",
              "Strength of light-bleeding damping from the SH directional derivative along the normal", P::Shading),
         boolean("lpv.visibilityLookup", false, "LPV",

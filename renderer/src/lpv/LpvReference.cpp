@@ -110,6 +110,37 @@ GvGrid injectSurfels(const GridFrame& grid, std::span<const Surfel> surfels) {
     return out;
 }
 
+std::vector<Surfel> cameraSurfels(const CameraGBuffer& g, int stride) {
+    stride = std::max(stride, 1);
+    std::vector<Surfel> out;
+    auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    for (int by = 0; by * stride < g.height; ++by)
+        for (int bx = 0; bx * stride < g.width; ++bx) {
+            const int x = bx * stride + stride / 2, y = by * stride + stride / 2;
+            if (x >= g.width || y >= g.height)
+                continue;
+            const std::size_t i = std::size_t(x) + std::size_t(g.width) * std::size_t(y);
+            const glm::vec4 normal = g.normal[i];
+            if (normal.w <= 0.0f)
+                continue;
+            const glm::vec2 ndc = (glm::vec2(float(x), float(y)) + 0.5f) / glm::vec2(float(g.width), float(g.height)) *
+                                      2.0f -
+                                  1.0f;
+            const glm::vec4 world = g.inverseViewProj * glm::vec4(ndc, g.depth[i] * 2.0f - 1.0f, 1.0f);
+            const glm::vec3 p = glm::vec3(world) / world.w;
+            const glm::vec3 rawNormal(normal);
+            if (!finite(p) || !finite(rawNormal) || glm::dot(rawNormal, rawNormal) <= 1e-12f)
+                continue;
+            const glm::vec3 n = glm::normalize(rawNormal);
+            const glm::vec3 toCamera = g.position - p;
+            const float dist = glm::length(toCamera);
+            const float side = dist * g.pixelAngle * float(stride);
+            const float cosine = std::abs(glm::dot(n, toCamera / std::max(dist, 1e-6f)));
+            out.push_back({p, n, side * side / std::max(cosine, 0.2f)});
+        }
+    return out;
+}
+
 GvGrid mergeByMax(const GvGrid& a, const GvGrid& b) {
     assert(a.n == b.n && "geometry volumes of different sizes");
     GvGrid out(a.n);

@@ -88,6 +88,24 @@ ShGrid injectVpls(const GridFrame& grid, std::span<const Vpl> vpls, float offset
 
 // Geometry volume: surfels into the GV cell nearest to them, summed.
 GvGrid injectSurfels(const GridFrame& grid, std::span<const Surfel> surfels);
+// The camera G-buffer as the geometry volume reads it (the previous frame's):
+// depth in [0, 1] and normals (w > 0 where a surface was seen) per pixel,
+// row by row from the bottom, with the camera that rendered it.
+struct CameraGBuffer {
+    int width = 0, height = 0;
+    std::vector<float> depth;
+    std::vector<glm::vec4> normal;
+    glm::mat4 inverseViewProj{1.0f};
+    glm::vec3 position{0.0f};
+    float pixelAngle = 0.0f; // 2 tan(fovY / 2) / height
+};
+// Its surfels, as lpv_gv_inject.comp (GV_FROM_CAMERA) makes them: one per
+// stride x stride block of pixels (lpv.gvCameraStride), from the block's
+// middle pixel (x * stride + stride / 2; a block whose middle pixel lies
+// outside the image gives none), at the pixel's world position with its
+// normal, area (stride d pixelAngle)^2 / max(|n.v|, 0.2), d its distance to
+// the camera and v the direction to it. Non-finite pixels are skipped.
+std::vector<Surfel> cameraSurfels(const CameraGBuffer& gbuffer, int stride);
 // Per GV cell, the SH of the two with the larger DC coefficient.
 GvGrid mergeByMax(const GvGrid& a, const GvGrid& b);
 // Transmittance of light travelling along unit `travel` through GV coordinate `g`.
