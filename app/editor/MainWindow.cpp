@@ -568,7 +568,14 @@ void MainWindow::importFile(const QString& path, bool interactive) {
     auto* job = new ImportJob(path, this);
     auto* progress = new QProgressDialog(tr("Importing %1...").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 0, this);
     progress->setWindowModality(Qt::WindowModal);
+    // Shown after 300 ms by a timer of our own: with a busy range (0, 0) and
+    // no setValue() the dialog's minimumDuration never starts, and its
+    // built-in 4 s timer is what used to show it.
     progress->setMinimumDuration(300);
+    auto* shower = new QTimer(progress);
+    shower->setSingleShot(true);
+    connect(shower, &QTimer::timeout, progress, &QWidget::show);
+    shower->start(300);
     auto* ticker = new QTimer(progress);
     QElapsedTimer clock;
     clock.start();
@@ -577,8 +584,16 @@ void MainWindow::importFile(const QString& path, bool interactive) {
             tr("Importing %1... %2 s").arg(QFileInfo(path).fileName()).arg(clock.elapsed() / 1000.0, 0, 'f', 1));
     });
     ticker->start(200);
-    auto finish = [this, job, progress] {
+    auto finish = [this, job, progress, ticker, shower] {
         importRunning_ = false;
+        // Hidden before an error box opens: deleteLater waits for this event
+        // loop, not the box's, and meanwhile the dialog stayed up (or its
+        // timers showed it), modal, over the box and blocking its OK.
+        shower->stop();
+        ticker->stop();
+        progress->disconnect(this);
+        progress->reset(); // stops that timer
+        progress->hide();
         progress->deleteLater();
         job->deleteLater();
     };

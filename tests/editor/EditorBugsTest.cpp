@@ -1,0 +1,129 @@
+// Editor bugs found by using it (issue #26 item 6), each with the test that
+// showed it: through the real window under xvfb, as EditorGuiTest.cpp.
+#include "Autosave.h"
+#include "Document.h"
+#include "MainWindow.h"
+#include "ParameterInspector.h"
+#include "ProfilerPanel.h"
+#include "TestPaths.h"
+#include "Viewport.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QMessageBox>
+#include <QPointer>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace lpv::editor;
+
+namespace {
+
+QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+
+// A shown window with the Cornell box open; autosaves go to a temporary folder.
+struct Window {
+    QTemporaryDir autosaveDir;
+    MainWindow window;
+    Window() {
+        Autosave::setRootForTests(autosaveDir.path());
+        window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+        EXPECT_TRUE(window.openProject(cornell(), false));
+        window.resize(1280, 900);
+        window.show();
+        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
+    }
+    Document& doc() { return *window.document(); }
+    // The timing table of the next frame of the current state.
+    std::vector<lpv::renderer::PassTiming> nextFrame() {
+        Viewport* vp = window.viewport();
+        QSignalSpy frames(vp, &Viewport::frameRendered);
+        vp->renderAgain();
+        EXPECT_TRUE(QTest::qWaitFor([&] { return !frames.isEmpty() && vp->frameUpToDate(); }, 120000));
+        return frames.isEmpty() ? std::vector<lpv::renderer::PassTiming>{}
+                                : frames.last().at(0).value<std::vector<lpv::renderer::PassTiming>>();
+    }
+};
+
+} // namespace
+
+// Bug 1: a failed import left its progress dialog up (it was only deleted
+// later, after the error box's own event loop), window-modal over the error
+// box: the box's OK did nothing until the import's Cancel was pressed. And
+// the dialog came up after 4 s, not after its minimum duration of 300 ms.
+TEST(EditorBugs, FailedImportLeavesNoProgressDialogOverItsErrorBox) {
+    Window w;
+    // Vertices and no faces: Assimp reads all 48 MB (1-2 s), then fails.
+    // Long enough for the progress dialog to be up when the error comes.
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("nofaces.obj");
+    QFile f(bad);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    const QByteArray vertices = QByteArray("v 1 2 3\n").repeated(100000);
+    for (int i = 0; i < 60; ++i)
+        f.write(vertices);
+    f.close();
+
+    // The error box runs its own event loop: watch it from a timer.
+    QPointer<QMessageBox> box;
+    QElapsedTimer boxShown;
+    bool progressBeforeBox = false, progressOverBox = false, clickedOk = false, closedByOk = false;
+    QTimer watch;
+    watch.setInterval(50);
+    QObject::connect(&watch, &QTimer::timeout, [&] {
+        if (!boxShown.isValid()) {
+            for (QProgressDialog* p : w.window.findChildren<QProgressDialog*>())
+                progressBeforeBox |= p->isVisible();
+            for (QWidget* top : QApplication::topLevelWidgets())
+                if (auto* b = qobject_cast<QMessageBox*>(top); b && b->isVisible())
+                    box = b;
+            if (box)
+                boxShown.start();
+            return;
+        }
+        if (!clickedOk) {
+            if (boxShown.elapsed() < 600) // past the progress dialog's minimum duration
+                return;
+            if (!box) {
+                watch.stop();
+                return;
+            }
+            for (QProgressDialog* p : w.window.findChildren<QProgressDialog*>())
+                progressOverBox |= p->isVisible();
+            QTest::mouseClick(box->button(QMessageBox::Ok), Qt::LeftButton);
+            clickedOk = true;
+            return;
+        }
+        QMessageBox* open = box.data();
+        closedByOk = open == nullptr || !open->isVisible();
+        // Before the fix the click was blocked: get out of the box's loop anyway.
+        for (QProgressDialog* p : w.window.findChildren<QProgressDialog*>())
+            p->cancel();
+        if (open != nullptr)
+            open->done(QMessageBox::Ok);
+        watch.stop();
+    });
+    watch.start();
+    w.window.importFile(bad, true);
+    QTRY_VERIFY_WITH_TIMEOUT(!watch.isActive(), 30000);
+    EXPECT_TRUE(clickedOk) << "no error box";
+    EXPECT_TRUE(progressBeforeBox) << "the import failed before its progress dialog came up: the case is not tested";
+    EXPECT_FALSE(progressOverBox) << "the progress dialog came up over the error box";
+    EXPECT_TRUE(closedByOk) << "the error box's OK did not close it";
+    EXPECT_FALSE(w.window.importRunning());
+    EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("nofaces.obj"));
+}
