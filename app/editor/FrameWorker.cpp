@@ -40,6 +40,19 @@ void takeAllButMeshes(scene::Scene& into, const scene::Scene& rest) {
     into.sky = rest.sky;
 }
 
+// The rows of the passes that ran in the last frame. The timer keeps a row
+// for every pass it ever timed, with its last time: a pass culled or reused
+// since (the LPV of the project before, an effect switched off) must not
+// count in this frame's total.
+std::vector<renderer::PassTiming> timingsOfThisFrame(std::vector<renderer::PassTiming> table,
+                                                     const renderer::FrameGraphReport& report) {
+    std::erase_if(table, [&](const renderer::PassTiming& t) {
+        const renderer::GraphPassReport* pass = report.find(t.pass);
+        return t.samples == 0 || !pass || pass->status != renderer::PassStatus::Ran;
+    });
+    return table;
+}
+
 } // namespace
 
 FrameWorker::FrameWorker(QObject* parent) : QObject(parent), thread_([this] { run(); }) {}
@@ -142,6 +155,8 @@ void FrameWorker::run() {
             post(result);
             continue;
         }
+        if (request.changes == Changes(Change::Everything))
+            renderer->timer().clearHistory(); // another project: its passes' statistics start again
         if (request.forgetTextures)
             textures.clear();
         for (const auto& images : request.newTextures)
@@ -192,7 +207,10 @@ void FrameWorker::run() {
         } else if (renderWith(request.parameters)) {
             result->image = displayImage(*renderer);
         }
-        result->timings = renderer->timer().table();
+        // The read-back above waited for the GPU, so collecting the queries
+        // now stalls nothing and the table holds this frame's times.
+        renderer->timer().resolveAll();
+        result->timings = timingsOfThisFrame(renderer->timer().table(), renderer->graphReport());
         if (!lastMemoryQuery || now - *lastMemoryQuery >= std::chrono::seconds(1)) {
             gpuMemory = renderer::queryGpuMemory();
             lastMemoryQuery = now;

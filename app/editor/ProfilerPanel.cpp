@@ -109,14 +109,22 @@ ProfilerPanel::Track& ProfilerPanel::track(const QString& name) {
 }
 
 void ProfilerPanel::addFrame(const std::vector<renderer::PassTiming>& table) {
+    // A row without a sample has no time yet (its query is still in flight):
+    // counted as 0 ms it would make the frame's minimum read 0.
+    std::vector<renderer::PassTiming> measured;
+    for (const renderer::PassTiming& p : table)
+        if (p.samples > 0)
+            measured.push_back(p);
+    if (measured.empty())
+        return;
     const double now = double(clock_.nsecsElapsed()) * 1e-9;
     double frameMs = 0.0;
-    for (const renderer::PassTiming& p : table) {
+    for (const renderer::PassTiming& p : measured) {
         frameMs += p.lastMs;
         track(QString::fromStdString(p.pass)).samples.push_back({now, p.lastMs});
     }
     tracks_.front().samples.push_back({now, frameMs});
-    last_ = table;
+    last_ = std::move(measured);
     for (Track& t : tracks_)
         while (!t.samples.empty() && now - t.samples.front().t > kWindowSeconds)
             t.samples.pop_front();

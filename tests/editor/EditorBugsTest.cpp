@@ -127,3 +127,50 @@ TEST(EditorBugs, FailedImportLeavesNoProgressDialogOverItsErrorBox) {
     EXPECT_FALSE(w.window.importRunning());
     EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("nofaces.obj"));
 }
+
+// Bug 2: the timer keeps a row for every pass it ever timed; the profiler
+// summed the LPV rows of an earlier frame into a frame that ran no LPV.
+TEST(EditorBugs, ProfilerCountsOnlyThePassesThatRanThisFrame) {
+    Window w;
+    auto names = [](const std::vector<lpv::renderer::PassTiming>& table) {
+        std::set<std::string> out;
+        for (const auto& t : table)
+            out.insert(t.pass);
+        return out;
+    };
+    const auto withLpv = names(w.nextFrame());
+    ASSERT_TRUE(withLpv.count("lpvPropagation")) << "the Cornell box runs the LPV";
+    w.doc().setParameter("gi.method", lpv::scene::ParameterValue(std::string("off")));
+    const auto table = w.nextFrame();
+    EXPECT_FALSE(names(table).count("lpvPropagation")) << "a pass that did not run is in the frame";
+    EXPECT_FALSE(names(table).count("lpvInjection"));
+    EXPECT_TRUE(names(table).count("shading"));
+    w.window.profiler()->refreshNow();
+    const QTableWidget* rows = w.window.profiler()->table();
+    for (int r = 0; r < rows->rowCount(); ++r)
+        EXPECT_FALSE(rows->item(r, 0)->text().startsWith("lpv")) << rows->item(r, 0)->text().toStdString();
+}
+
+// Bug 2: a project opened anew kept the statistics (median, min, max over
+// 120 frames) of the one before, and the first frame's total read 0 ms
+// (its timer queries were still in flight), so the Frame row's Min said 0.000.
+TEST(EditorBugs, ProfilerStartsAgainWithANewProjectAndNeverReadsZero) {
+    Window w;
+    for (int i = 0; i < 3; ++i)
+        w.nextFrame();
+    ASSERT_TRUE(w.window.openProject(cornell(), false));
+    QSignalSpy frames(w.window.viewport(), &Viewport::frameRendered);
+    QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 120000);
+    const auto first = frames.first().at(0).value<std::vector<lpv::renderer::PassTiming>>();
+    ASSERT_FALSE(first.empty()) << "the first frame of a project has its times";
+    for (const auto& t : first) {
+        EXPECT_EQ(t.samples, 1u) << t.pass << ": statistics of the project before";
+        EXPECT_GT(t.lastMs, 0.0) << t.pass;
+    }
+    w.window.profiler()->refreshNow();
+    const QTableWidget* rows = w.window.profiler()->table();
+    ASSERT_GT(rows->rowCount(), 1);
+    const int frameRow = rows->rowCount() - 1;
+    ASSERT_TRUE(rows->item(frameRow, 0)->text().startsWith(ProfilerPanel::kFrameName));
+    EXPECT_GT(rows->item(frameRow, 3)->text().toDouble(), 0.0) << "the frame's Min";
+}

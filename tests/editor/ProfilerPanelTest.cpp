@@ -90,3 +90,19 @@ TEST(ProfilerPanel, PassThatStopsRunningLeavesTheTable) {
     EXPECT_EQ(panel.table()->rowCount(), 0);
     EXPECT_EQ(panel.series("lpvPropagate"), nullptr);
 }
+
+// A pass whose timer query has no result yet (samples 0) has no time: counted
+// as 0 ms it made the Frame row's Min read 0.000 (issue #26).
+TEST(ProfilerPanel, RowsWithoutASampleDoNotCountAsZeroMilliseconds) {
+    ProfilerPanel panel;
+    panel.show();
+    std::vector<PassTiming> inFlight = fakeTable(1.0);
+    for (PassTiming& t : inFlight)
+        t = PassTiming{t.pass, 0.0, 0.0, 0.0, 0.0, 0};
+    panel.addFrame(inFlight);
+    panel.addFrame(fakeTable(1.0));
+    panel.refreshNow();
+    ASSERT_EQ(panel.table()->rowCount(), 3);
+    EXPECT_EQ(text(panel.table(), 2, 3), "4.000"); // the Frame row's Min
+    EXPECT_EQ(panel.series(ProfilerPanel::kFrameName)->count(), 1);
+}
