@@ -17,15 +17,19 @@
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/SceneMerge.h"
 
+#include <QAbstractSpinBox>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDialog>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -83,6 +87,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
 
     createActions();
     createDocks();
+    qApp->installEventFilter(this); // see eventFilter: undo while a field has the focus
     resize(1400, 900);
     defaultState_ = saveState();
     QSettings settings;
@@ -538,6 +543,37 @@ void MainWindow::offerRecovery() {
         Autosave::remove(a);
         return;
     }
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::ShortcutOverride)
+        return QMainWindow::eventFilter(watched, event);
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool undo = key->matches(QKeySequence::Undo), redo = key->matches(QKeySequence::Redo);
+    auto* widget = qobject_cast<QWidget*>(watched);
+    if ((!undo && !redo) || !widget)
+        return QMainWindow::eventFilter(watched, event);
+    // Only fields of this window and its docks (floating ones too), not of a dialog.
+    bool ours = false;
+    for (QObject* o = widget; o && !ours; o = o->parent()) {
+        if (o != widget && qobject_cast<QDialog*>(o))
+            return QMainWindow::eventFilter(watched, event);
+        ours = o == this;
+    }
+    if (!ours)
+        return QMainWindow::eventFilter(watched, event);
+    // A spin box commits what it shows as an edit, so its own undo (the text
+    // typed) would only fight the project's history: the history wins. A text
+    // field undoes its own typing first, then hands Ctrl+Z on.
+    auto* spin = qobject_cast<QAbstractSpinBox*>(widget);
+    if (!spin)
+        spin = qobject_cast<QAbstractSpinBox*>(widget->parentWidget());
+    auto* line = qobject_cast<QLineEdit*>(widget);
+    const bool yield = spin || (line && !(undo ? line->isUndoAvailable() : line->isRedoAvailable()));
+    if (!yield)
+        return QMainWindow::eventFilter(watched, event);
+    event->ignore();
+    return true; // not accepted by the field: Edit > Undo / Redo take the key
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -75,6 +75,9 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    // Ctrl+Z / Ctrl+Shift+Z in a spin box (or a text field with nothing of
+    // its own to undo) go to the project's history, not the field's.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void createActions();

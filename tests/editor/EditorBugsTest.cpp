@@ -174,3 +174,28 @@ TEST(EditorBugs, ProfilerStartsAgainWithANewProjectAndNeverReadsZero) {
     ASSERT_TRUE(rows->item(frameRow, 0)->text().startsWith(ProfilerPanel::kFrameName));
     EXPECT_GT(rows->item(frameRow, 3)->text().toDouble(), 0.0) << "the frame's Min";
 }
+
+// Bug 3: a spin box with the focus took Ctrl+Z as its own text undo, and the
+// project's history never saw it.
+TEST(EditorBugs, CtrlZUndoesWhileAnInspectorSpinBoxHasTheFocus) {
+    Window w;
+    w.window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&w.window));
+    auto* steps = qobject_cast<QSpinBox*>(w.window.inspector()->editorFor("lpv.propagationSteps"));
+    ASSERT_NE(steps, nullptr);
+    const int before = w.doc().parameters().getInt("lpv.propagationSteps");
+    steps->setFocus();
+    QTRY_VERIFY(steps->hasFocus());
+    // Typed, as a user does: select all, the new value, Enter.
+    QTest::keyClick(steps, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(steps, "17");
+    QTest::keyClick(steps, Qt::Key_Return);
+    ASSERT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), 17);
+    ASSERT_TRUE(steps->hasFocus());
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), before);
+    EXPECT_EQ(steps->value(), before) << "the spin box follows the undo";
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), 17);
+    EXPECT_EQ(steps->value(), 17);
+}
