@@ -398,6 +398,7 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
     auto loaded = scene::loadProject(path.toStdString());
     if (!loaded) {
         const QString message = QString::fromStdString(loaded.error().describe());
+        lastOpenError_ = message;
         statusBar()->showMessage(message);
         if (interactive)
             QMessageBox::critical(this, tr("Cannot open project"), message);
@@ -419,6 +420,18 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
             QMessageBox::warning(this, tr("Textures not read"), lines.join("\n"));
     }
     return true;
+}
+
+bool MainWindow::openFromCommandLine(const QString& path) {
+    if (openProject(path, false))
+        return true;
+    // Not exec(): main() has not shown the window yet, and the box belongs over it.
+    auto* box = new QMessageBox(QMessageBox::Critical, tr("Cannot open project"), lastOpenError_, QMessageBox::Ok, this);
+    box->setObjectName("openError");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    QTimer::singleShot(0, box, [box] { box->open(); });
+    return false;
 }
 
 bool MainWindow::confirmDiscardChanges() {

@@ -35,6 +35,12 @@ public:
     // Loads a project; on failure shows the loader's error (a dialog when
     // `interactive`) and keeps the current one.
     bool openProject(const QString& path, bool interactive = true);
+    // The loader's error of the last openProject that failed (names file and field).
+    const QString& lastOpenError() const { return lastOpenError_; }
+    // The project named on the command line. If it cannot be read the editor
+    // still opens, and a box over the window (once it is shown) gives the
+    // loader's error; returns false then.
+    bool openFromCommandLine(const QString& path);
     // Shows a project that is not on disk (the built-in Cornell box when its file is missing).
     void showProject(scene::Project project, const QString& path);
     // Saves to the document's path, or asks for one; false if cancelled or failed.
@@ -120,6 +126,7 @@ private:
     QMenu* viewMenu_ = nullptr;
     QByteArray defaultState_;
     bool importRunning_ = false;
+    QString lastOpenError_;
     int unsavedAnswerForTests_ = 0;
 };
 

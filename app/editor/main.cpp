@@ -81,10 +81,16 @@ int main(int argc, char** argv) {
     const std::filesystem::path builtIn = lpv::app::findBuiltInProject(
         "cornell-box", std::filesystem::path(QCoreApplication::applicationDirPath().toStdU16String()));
     const QString path = args.isEmpty() ? QString::fromStdU16String(builtIn.u16string()) : args.front();
-    if (!args.isEmpty() || !builtIn.empty()) {
+    // Screenshots and smoke tests have nobody to read a dialog: there a project
+    // that cannot be read ends the run with its reason and exit code 1.
+    const bool unattended = parser.isSet(screenshot) || quitAfterMs >= 0;
+    if (!args.isEmpty() && !unattended) {
+        // The editor opens either way; the box over it names file and field.
+        if (!window.openFromCommandLine(path))
+            fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(window.lastOpenError()));
+    } else if (!args.isEmpty() || !builtIn.empty()) {
         if (!window.openProject(path, false) && !args.isEmpty()) {
-            // The error is on the status bar too; a missing file named by the user is worth a non-zero exit.
-            fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(path));
+            fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(window.lastOpenError()));
             return 1;
         }
     } else {

@@ -199,3 +199,35 @@ TEST(EditorBugs, CtrlZUndoesWhileAnInspectorSpinBoxHasTheFocus) {
     EXPECT_EQ(w.doc().parameters().getInt("lpv.propagationSteps"), 17);
     EXPECT_EQ(steps->value(), 17);
 }
+
+// Bug 4: `lpvstudio bad.lpvproj` exited with "could not open" and no reason;
+// now the editor opens and says what is wrong where.
+TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheError) {
+    QTemporaryDir dir;
+    QFile good(cornell());
+    ASSERT_TRUE(good.open(QIODevice::ReadOnly));
+    QByteArray text = good.readAll();
+    const qsizetype at = text.indexOf("\"fovY\": ");
+    ASSERT_GE(at, 0);
+    text.replace(at, text.indexOf(',', at) - at, "\"fovY\": -1.0");
+    const QString bad = dir.filePath("bad.lpvproj");
+    QFile out(bad);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(text);
+    out.close();
+
+    QTemporaryDir autosaveDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    MainWindow window;
+    EXPECT_FALSE(window.openFromCommandLine(bad));
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QMessageBox* box = nullptr;
+    QTRY_VERIFY((box = window.findChild<QMessageBox*>("openError")) && box->isVisible());
+    EXPECT_TRUE(box->text().contains("bad.lpvproj")) << box->text().toStdString();
+    EXPECT_TRUE(box->text().contains("fovY")) << box->text().toStdString();
+    EXPECT_EQ(box->text(), window.lastOpenError());
+    EXPECT_TRUE(window.isVisible());
+    box->button(QMessageBox::Ok)->click();
+    QTRY_VERIFY(!window.findChild<QMessageBox*>("openError"));
+}
