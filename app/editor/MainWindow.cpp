@@ -33,6 +33,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
@@ -178,7 +179,14 @@ void MainWindow::createDocks() {
     inspectorDock->raise();
     // Hidden until asked for: while hidden it reads nothing back from the renderer.
     visualizers_ = new VisualizerPanel(document_, viewport_, this);
-    QDockWidget* vizDock = addDock(visualizers_, "visualizers", tr("Visualizers"), Qt::RightDockWidgetArea);
+    // In a scroll area: its controls' minimum height, stacked under the
+    // inspector's, grew the window past a 1024 px screen (to 1091 px), and
+    // it stayed so after the dock was closed.
+    auto* vizScroll = new QScrollArea(this);
+    vizScroll->setWidget(visualizers_);
+    vizScroll->setWidgetResizable(true);
+    vizScroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget* vizDock = addDock(vizScroll, "visualizers", tr("Visualizers"), Qt::RightDockWidgetArea);
     connect(vizDock, &QDockWidget::visibilityChanged, visualizers_, &VisualizerPanel::setActive);
     vizDock->hide();
     resizeDocks({profilerDock}, {220}, Qt::Vertical);

@@ -10,6 +10,8 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QDockWidget>
+#include <QScreen>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QMessageBox>
@@ -230,4 +232,23 @@ TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheE
     EXPECT_TRUE(window.isVisible());
     box->button(QMessageBox::Ok)->click();
     QTRY_VERIFY(!window.findChild<QMessageBox*>("openError"));
+}
+
+// Bug 7: showing the Visualizers dock grew the window past the screen (its
+// controls' minimum height stacked under the inspector's), and closing the
+// dock left it so.
+TEST(EditorBugs, VisualizersDockKeepsTheWindowOnTheScreen) {
+    Window w;
+    w.window.resize(1280, 900);
+    QTRY_COMPARE(w.window.height(), 900);
+    const int screen = w.window.screen()->availableGeometry().height();
+    QDockWidget* viz = w.window.dock("visualizers");
+    viz->show();
+    QTest::qWait(200);
+    const int shown = w.window.frameGeometry().height();
+    EXPECT_LE(w.window.height(), 900);
+    EXPECT_LE(shown, screen);
+    viz->hide();
+    QTest::qWait(200);
+    EXPECT_LE(w.window.height(), 900) << "after closing the dock";
 }
