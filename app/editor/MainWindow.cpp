@@ -628,11 +628,11 @@ void MainWindow::importFile(const QString& path, bool interactive) {
     // Shown after 300 ms by a timer of our own: with a busy range (0, 0) and
     // no setValue() the dialog's minimumDuration never starts, and its
     // built-in 4 s timer is what used to show it.
-    progress->setMinimumDuration(300);
+    progress->setMinimumDuration(importProgressDelayMs_);
     auto* shower = new QTimer(progress);
     shower->setSingleShot(true);
     connect(shower, &QTimer::timeout, progress, &QWidget::show);
-    shower->start(300);
+    shower->start(importProgressDelayMs_);
     auto* ticker = new QTimer(progress);
     QElapsedTimer clock;
     clock.start();

@@ -69,6 +69,9 @@ public:
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
+    // How long an import runs before its progress dialog shows (300 ms; tests
+    // set 0 so that a fast machine's import still meets the dialog).
+    void setImportProgressDelay(int ms) { importProgressDelayMs_ = ms; }
     // Docks by object name ("outliner", "inspector", ...).
     QDockWidget* dock(const QString& name) const;
     // When a dialog would ask (unsaved changes on close), what the answer is: tests set it.
@@ -126,6 +129,7 @@ private:
     QMenu* viewMenu_ = nullptr;
     QByteArray defaultState_;
     bool importRunning_ = false;
+    int importProgressDelayMs_ = 300;
     QString lastOpenError_;
     int unsavedAnswerForTests_ = 0;
 };
