@@ -1,5 +1,7 @@
 #include "EffectsPanel.h"
 
+#include <algorithm>
+
 #include "Viewport.h"
 
 #include <QComboBox>
@@ -22,6 +24,11 @@ EffectsPanel::EffectsPanel(Document* document, Viewport* viewport, QWidget* pare
     table_->verticalHeader()->hide();
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setWordWrap(true);
+    // The "why" column takes the rest of the width and wraps; rows grow to
+    // its wrapped text whenever the column's width changes (they were sized
+    // once, before the column had its final width, and cut the text off).
+    connect(table_->horizontalHeader(), &QHeaderView::sectionResized, table_,
+            [this] { table_->resizeRowsToContents(); });
     layout->addWidget(table_);
     traitsLabel_->setWordWrap(true);
     layout->addWidget(traitsLabel_);
@@ -99,7 +106,11 @@ void EffectsPanel::redecide() {
         why->setToolTip(why->text());
         table_->setItem(row, 3, why);
     }
-    table_->resizeColumnsToContents();
+    for (int column = 0; column < 3; ++column) // not "why": its one-line width would push it off the panel
+        table_->resizeColumnToContents(column);
+    // Long effect names wrap rather than leave "why" (the stretched last
+    // column) less than its minimum in a dock of the default 400 px.
+    table_->setColumnWidth(0, std::min(table_->columnWidth(0), 120));
     table_->resizeRowsToContents();
     updating_ = false;
 }

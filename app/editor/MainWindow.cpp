@@ -112,7 +112,7 @@ QDockWidget* MainWindow::dock(const QString& name) const { return findChild<QDoc
 
 void MainWindow::createDocks() {
     outliner_ = new OutlinerPanel(document_, this);
-    addDock(outliner_, "outliner", tr("Outliner"), Qt::LeftDockWidgetArea);
+    QDockWidget* outlinerDock = addDock(outliner_, "outliner", tr("Outliner"), Qt::LeftDockWidgetArea);
 
     undoView_ = new QUndoView(document_->undoStack(), this);
     undoView_->setEmptyLabel(tr("<opened>"));
@@ -191,6 +191,9 @@ void MainWindow::createDocks() {
     vizDock->hide();
     resizeDocks({profilerDock}, {220}, Qt::Vertical);
     resizeDocks({inspectorDock}, {400}, Qt::Horizontal);
+    // Given no width, the left area shrank to its minimum (about 65 px) and
+    // cut every name in the outliner to its first letters.
+    resizeDocks({outlinerDock}, {220}, Qt::Horizontal);
 }
 
 void MainWindow::createActions() {

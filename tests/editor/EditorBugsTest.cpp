@@ -4,6 +4,8 @@
 #include "Document.h"
 #include "MainWindow.h"
 #include "ParameterInspector.h"
+#include "EffectsPanel.h"
+#include "OutlinerPanel.h"
 #include "ProfilerPanel.h"
 #include "TestPaths.h"
 #include "Viewport.h"
@@ -21,7 +23,9 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QHeaderView>
 #include <QTableWidget>
+#include <QTreeWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -252,4 +256,47 @@ TEST(EditorBugs, VisualizersDockKeepsTheWindowOnTheScreen) {
     viz->hide();
     QTest::qWait(200);
     EXPECT_LE(w.window.height(), 900) << "after closing the dock";
+}
+
+// The outliner's dock had no width of its own and showed names cut to one or
+// two letters; the Effects panel's "why" text was cut off (rows sized before
+// the column had its width, and the column as wide as its one-line text).
+TEST(EditorBugs, OutlinerNamesAndEffectsReasonsAreShownWhole) {
+    Window w;
+    QTRY_VERIFY(w.window.isVisible());
+    QTest::qWait(100);
+    QTreeWidget* tree = w.window.outliner()->tree();
+    int cut = 0, names = 0;
+    for (QTreeWidgetItemIterator it(tree); *it; ++it) {
+        if (!(*it)->parent())
+            continue; // the group headers
+        ++names;
+        const QRect shown = tree->visualItemRect(*it);
+        const int needed = tree->fontMetrics().horizontalAdvance((*it)->text(0));
+        // The item's text starts after its indentation and check box.
+        cut += shown.left() + needed + 24 > tree->viewport()->width() ? 1 : 0;
+    }
+    ASSERT_GT(names, 3);
+    EXPECT_EQ(cut, 0) << "outliner names cut: the tree is " << tree->viewport()->width() << " px wide";
+
+    QDockWidget* effectsDock = w.window.dock("effects");
+    effectsDock->show();
+    effectsDock->raise();
+    QTest::qWait(200);
+    QTableWidget* table = w.window.effects()->table();
+    ASSERT_GT(table->rowCount(), 3);
+    // QTableView::sizeHintForRow is protected: reach it through a derived class's using-declaration.
+    struct Hint : QTableWidget {
+        using QTableWidget::sizeHintForRow;
+    };
+    int (QTableView::*rowHint)(int) const = &Hint::sizeHintForRow;
+    EXPECT_LE(table->horizontalHeader()->sectionPosition(3) + table->columnWidth(3), table->viewport()->width() + 1)
+        << "the why column runs off the panel: columns " << table->columnWidth(0) << ", " << table->columnWidth(1)
+        << ", " << table->columnWidth(2) << ", " << table->columnWidth(3);
+    for (int row = 0; row < table->rowCount(); ++row) {
+        ASSERT_NE(table->item(row, 3), nullptr);
+        // What the row needs at the columns' present widths (the delegate's own wrapping).
+        EXPECT_GE(table->rowHeight(row), (table->*rowHint)(row))
+            << "row " << row << " cut: " << table->item(row, 3)->text().toStdString();
+    }
 }
