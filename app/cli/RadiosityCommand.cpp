@@ -209,7 +209,14 @@ int runRadiosity(Args args) {
     }
     const float maxPatchArea = params.getFloat("radiosity.maxPatchArea");
     const auto meshStart = std::chrono::steady_clock::now();
-    radiosity::RadiositySession session(project->scene, textures.images, maxPatchArea, std::move(saved));
+    auto created = radiosity::RadiositySession::create(project->scene, textures.images, maxPatchArea,
+                                                       std::size_t(params.getInt("radiosity.maxPatches")),
+                                                       std::move(saved));
+    if (!created) {
+        std::cerr << "lpv: " << projectFile.string() << ": " << created.error().describe() << "\n";
+        return kFailure;
+    }
+    radiosity::RadiositySession& session = *created;
     std::printf("patches: %zu (%zu source quads, %zu source triangles, max area %g m^2), meshed in %.2f s\n",
                 session.mesh().size(), session.mesh().sourceQuads, session.mesh().sourceTriangles,
                 maxPatchArea,

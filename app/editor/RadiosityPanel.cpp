@@ -131,8 +131,17 @@ void RadiosityPanel::start() {
         }
         if (!saved && memory->has_value())
             saved = **memory;
-        radiosity::RadiositySession session(project.scene, textures.images,
-                                            p.getFloat("radiosity.maxPatchArea"), std::move(saved));
+        auto created = radiosity::RadiositySession::create(project.scene, textures.images,
+                                                           p.getFloat("radiosity.maxPatchArea"),
+                                                           std::size_t(p.getInt("radiosity.maxPatches")),
+                                                           std::move(saved));
+        if (!created) { // nothing emits, or too many patches: say so, save nothing
+            QMetaObject::invokeMethod(this, "onStopped", Qt::QueuedConnection,
+                                      Q_ARG(QString, QString::fromStdString(created.error().describe())),
+                                      Q_ARG(QImage, QImage()));
+            return;
+        }
+        radiosity::RadiositySession& session = *created;
         auto hemicube = renderer::GpuHemicube::create(
             session.mesh(), p.getInt("radiosity.hemicubeResolution"), p.getInt("radiosity.shootersPerBatch"));
         if (!hemicube) {

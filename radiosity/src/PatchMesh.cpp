@@ -27,8 +27,11 @@ int cutsFor(float length, float step) {
 // Source face -> patches, appended to `out`.
 class Subdivider {
   public:
-    Subdivider(float maxArea, std::uint32_t material, std::uint32_t object, std::vector<Patch>& out)
-        : maxArea_(maxArea), step_(std::sqrt(maxArea)), material_(material), object_(object), out_(out) {}
+    // With `countOnly`, patches are counted there and not stored (countPatches).
+    Subdivider(float maxArea, std::uint32_t material, std::uint32_t object, std::vector<Patch>& out,
+               std::size_t* countOnly = nullptr)
+        : maxArea_(maxArea), step_(std::sqrt(maxArea)), material_(material), object_(object), out_(out),
+          countOnly_(countOnly) {}
 
     void quad(const std::array<Corner, 4>& q) {
         int nu = std::max(cutsFor(glm::length(q[1].p - q[0].p), step_),
@@ -81,7 +84,11 @@ class Subdivider {
         p.material = material_;
         p.object = object_;
         computePatchGeometry(p);
-        if (p.area > 0.0f)
+        if (p.area <= 0.0f)
+            return;
+        if (countOnly_)
+            ++*countOnly_;
+        else
             out_.push_back(p);
     }
 
@@ -90,11 +97,13 @@ class Subdivider {
     std::uint32_t material_;
     std::uint32_t object_;
     std::vector<Patch>& out_;
+    std::size_t* countOnly_;
 };
 
 // Triangles of one submesh in world space, paired into quads where the
 // longest edges of two coplanar triangles coincide (the usual split of a quad).
-void meshObject(const scene::Scene& scene, std::uint32_t objectIndex, float maxArea, PatchMesh& out) {
+void meshObject(const scene::Scene& scene, std::uint32_t objectIndex, float maxArea, PatchMesh& out,
+                std::size_t* countOnly = nullptr) {
     const scene::Object& object = scene.objects[objectIndex];
     const scene::Mesh& mesh = scene.meshes[std::size_t(object.mesh)];
     const glm::mat4 world = scene.worldMatrix(int(objectIndex));
@@ -139,7 +148,7 @@ void meshObject(const scene::Scene& scene, std::uint32_t objectIndex, float maxA
             byEdge[{std::min(a, b), std::max(a, b)}].push_back(i);
         }
         std::vector<bool> used(tris.size(), false);
-        Subdivider subdivider(maxArea, sub.materialIndex, objectIndex, out.patches);
+        Subdivider subdivider(maxArea, sub.materialIndex, objectIndex, out.patches, countOnly);
         for (std::size_t i = 0; i < tris.size(); ++i) {
             if (used[i])
                 continue;
@@ -201,6 +210,19 @@ float PatchMesh::totalArea() const {
     for (const Patch& p : patches)
         sum += p.area;
     return float(sum);
+}
+
+std::size_t countPatches(const scene::Scene& scene, const MeshingOptions& options) {
+    PatchMesh none; // receives the quad and triangle counts only
+    std::size_t count = 0;
+    const float maxArea = std::max(options.maxPatchArea, 1e-8f);
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const scene::Object& o = scene.objects[i];
+        if (!o.visible || o.mesh < 0 || std::size_t(o.mesh) >= scene.meshes.size())
+            continue;
+        meshObject(scene, i, maxArea, none, &count);
+    }
+    return count;
 }
 
 PatchMesh buildPatchMesh(const scene::Scene& scene, const MeshingOptions& options) {

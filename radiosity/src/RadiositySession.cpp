@@ -1,8 +1,48 @@
 #include "lpv/radiosity/RadiositySession.h"
 
+#include "lpv/radiosity/SurfaceProperties.h"
+
 #include <cstdio>
 
 namespace lpv::radiosity {
+
+namespace {
+
+// Whether a visible object's mesh uses a material that emits (its emissive
+// colour times its texture's average has a positive channel).
+bool anythingEmits(const scene::Scene& scene, const scene::TextureImages& textures) {
+    const std::vector<glm::vec3> emission = materialEmissions(scene, textures);
+    for (const scene::Object& o : scene.objects) {
+        if (!o.visible || o.mesh < 0 || std::size_t(o.mesh) >= scene.meshes.size())
+            continue;
+        for (const scene::Submesh& sub : scene.meshes[std::size_t(o.mesh)].submeshes)
+            if (sub.materialIndex < emission.size() && sub.indexCount >= 3 &&
+                glm::any(glm::greaterThan(emission[sub.materialIndex], glm::vec3(0.0f))))
+                return true;
+    }
+    return false;
+}
+
+} // namespace
+
+scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
+                                                           const scene::TextureImages& textures, float maxPatchArea,
+                                                           std::size_t maxPatches,
+                                                           std::optional<StoredSolution> saved) {
+    if (!anythingEmits(scene, textures))
+        return scene::makeError(scene::ErrorCode::InvalidValue, "radiosity", "materials",
+                                "nothing in the scene emits light: radiosity shoots from emissive surfaces "
+                                "only (give a material an emissive colour), so the solve would end at once "
+                                "with a black solution; nothing was solved or written");
+    const std::size_t patches = countPatches(scene, {maxPatchArea});
+    if (patches > maxPatches)
+        return scene::makeError(scene::ErrorCode::OutOfRange, "radiosity", "radiosity.maxPatches",
+                                "the scene would mesh into " + std::to_string(patches) +
+                                    " patches at radiosity.maxPatchArea = " + std::to_string(maxPatchArea) +
+                                    " m^2, over radiosity.maxPatches = " + std::to_string(maxPatches) +
+                                    "; raise radiosity.maxPatchArea or radiosity.maxPatches");
+    return RadiositySession(scene, textures, maxPatchArea, std::move(saved));
+}
 
 RadiositySession::RadiositySession(const scene::Scene& scene, const scene::TextureImages& textures,
                                    float maxPatchArea, std::optional<StoredSolution> saved)

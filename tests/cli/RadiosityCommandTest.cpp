@@ -52,3 +52,29 @@ TEST(RadiosityCommand, BadOptionsAreUsageErrors) {
     auto v = runLpv("radiosity " + cornellProject() + " --view sideways");
     EXPECT_EQ(v.exitCode, 2) << v.output;
 }
+
+// Issue #27 item 6: a scene where nothing emits gets a clear error and no
+// solution file (Sponza used to "converge" at once and save 158 MB of black),
+// and a scene over radiosity.maxPatches is refused with the count and the
+// limit before it is meshed.
+TEST(RadiosityCommand, NothingThatEmitsAndTooManyPatchesAreRefusedAndWriteNothing) {
+    const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-radiosity-refused";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path box = dir / "box.lpvproj";
+    auto imported = runLpv("import '" + (fs::path(kSharedScenesDir) / "gltf-small/Box/glTF/Box.gltf").string() +
+                           "' -o '" + box.string() + "'");
+    ASSERT_EQ(imported.exitCode, 0) << imported.output;
+    auto dark = runLpv("radiosity '" + box.string() + "' --residual 0.5");
+    EXPECT_EQ(dark.exitCode, 1) << dark.output;
+    EXPECT_TRUE(contains(dark.output, "nothing in the scene emits light")) << dark.output;
+    EXPECT_FALSE(fs::exists(dir / "box.assets" / "radiosity.lpvrad")) << "no solution may be written";
+
+    const fs::path copy = dir / "cornell.lpvproj";
+    auto many = runLpv("radiosity " + cornellProject() + " --set radiosity.maxPatchArea=0.5 --set "
+                       "radiosity.maxPatches=100 -o '" + copy.string() + "'");
+    EXPECT_EQ(many.exitCode, 1) << many.output;
+    EXPECT_TRUE(contains(many.output, "over radiosity.maxPatches = 100")) << many.output;
+    EXPECT_TRUE(contains(many.output, "would mesh into ")) << many.output;
+    EXPECT_FALSE(fs::exists(copy)) << "a refused solve writes no project";
+}

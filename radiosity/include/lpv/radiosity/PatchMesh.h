@@ -54,6 +54,9 @@ void computePatchGeometry(Patch& patch);
 
 // Patches of every visible object with a mesh. Degenerate triangles are skipped.
 PatchMesh buildPatchMesh(const scene::Scene& scene, const MeshingOptions& options);
+// How many patches buildPatchMesh would make, without storing them (the
+// radiosity.maxPatches check runs before meshing allocates).
+std::size_t countPatches(const scene::Scene& scene, const MeshingOptions& options);
 
 // Splits each patch in `which` into children of at most a quarter of its
 // area (a square into 2x2, a triangle at its edge midpoints), keeping the

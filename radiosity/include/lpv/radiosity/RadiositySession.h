@@ -4,6 +4,7 @@
 // refine where the light changes fast, and package the result for saving.
 #include "lpv/radiosity/ProgressiveSolver.h"
 #include "lpv/radiosity/SolutionFile.h"
+#include "lpv/scene/Error.h"
 #include "lpv/scene/Image.h"
 #include "lpv/scene/Scene.h"
 
@@ -15,6 +16,16 @@ namespace lpv::radiosity {
 
 class RadiositySession {
   public:
+    // The checks a solve needs before it meshes (issue #27 item 6), then the
+    // session: an error value when nothing in the scene emits light (only
+    // emissive surfaces shoot; the solve would "converge" at once to black
+    // and save it), or when the scene would mesh into more than `maxPatches`
+    // patches (radiosity.maxPatches; counted without storing them, so a 1.4
+    // million patch Sponza is refused before it allocates).
+    static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::TextureImages& textures,
+                                                    float maxPatchArea, std::size_t maxPatches,
+                                                    std::optional<StoredSolution> saved = std::nullopt);
+
     // `saved` (from loadSolution) is resumed if its scene signature matches
     // the scene meshed with `maxPatchArea`; otherwise the solve starts over and
     // note() says why.
