@@ -62,7 +62,30 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     EXPECT_NE(text.str().find("| cornell-box |"), std::string::npos);
     EXPECT_NE(text.str().find("like for like"), std::string::npos);
     EXPECT_NE(text.str().find("Radiosity against solve time"), std::string::npos);
+    EXPECT_NE(text.str().find("lowest error with the mean within 0.8-1.25x"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir / "cornell-box" / "steps" / "error-time.png"));
+
+    // --resume reuses every sweep the same command made, and gives the same error figures.
+    const RunResult again = runLpv("bench report --quick --scene cornell-box --out '" + dir.string() +
+                                   "' --width 64 --height 48 --spp 64 --frames 1 --warmup 0 --resume");
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    std::size_t reused = 0;
+    for (std::size_t at = again.output.find("(--resume: made by the same sweep command)"); at != std::string::npos;
+         at = again.output.find("(--resume: made by the same sweep command)", at + 1))
+        ++reused;
+    EXPECT_EQ(reused, 3u) << again.output; // steps, grid, occlusion
+    EXPECT_EQ(again.output.find("$ lpv bench "), std::string::npos) << "no sweep may run again";
+    std::ifstream in2(dir / "report.json");
+    const auto j2 = nlohmann::json::parse(in2, nullptr, false);
+    ASSERT_FALSE(j2.is_discarded());
+    ASSERT_EQ(j2["scenes"][0]["runs"].size(), scene["runs"].size());
+    for (std::size_t i = 0; i < scene["runs"].size(); ++i)
+        EXPECT_EQ(j2["scenes"][0]["runs"][i]["indirectMare"], scene["runs"][i]["indirectMare"]);
+    // A different size is another command: nothing is reused.
+    const RunResult other = runLpv("bench report --quick --scene cornell-box --question occlusion --out '" +
+                                   dir.string() + "' --width 48 --height 32 --spp 16 --frames 1 --warmup 0 --resume");
+    ASSERT_EQ(other.exitCode, 0) << other.output;
+    EXPECT_EQ(other.output.find("(--resume: made by the same sweep command)"), std::string::npos) << other.output;
     fs::remove_all(dir);
 }
 
