@@ -1,7 +1,6 @@
 #include "Cli.h"
+#include "lpv/app/ImportDefaults.h"
 
-#include "lpv/reference/SunPlacement.h"
-#include "lpv/scene/FramingCamera.h"
 
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/Project.h"
@@ -87,28 +86,10 @@ void printSummary(const fs::path& file, const importers::ImportResult& r, bool v
 // scene's camera (or the framing camera) sees (reference::chooseSunDirection),
 // the old fixed direction when nothing beats it. Returns what to print.
 std::string addDefaultSun(scene::Scene& s) {
-    scene::Light sun;
-    sun.name = "sun (added by lpv import)";
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
-    sun.color = glm::vec3(1.0f, 0.95f, 0.85f);
-    sun.intensity = 3.0f;
-    std::string how = "the default direction (the scene could not be ray traced to choose one)";
-    if (auto embree = reference::EmbreeScene::build(s, {})) {
-        const scene::Camera camera = s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front();
-        const reference::SunChoice fallback = reference::sunlitShare(*embree, camera, sun.direction);
-        const reference::SunChoice best = reference::chooseSunDirection(*embree, camera, sun.direction);
-        sun.direction = best.direction;
-        char text[200];
-        std::snprintf(text, sizeof text,
-                      "from azimuth %.0f, elevation %.0f degrees: it lights %.0f%% of what the %s camera sees "
-                      "(the default direction: %.0f%%)",
-                      best.azimuthDegrees, best.elevationDegrees, 100.0 * best.litFraction,
-                      s.cameras.empty() ? "framing" : "scene's", 100.0 * fallback.litFraction);
-        how = text;
-    }
-    s.lights.push_back(sun);
-    return how;
+    app::DefaultSun sun = app::chooseDefaultSun(s);
+    sun.light.name = "sun (added by lpv import)";
+    s.lights.push_back(sun.light);
+    return sun.how;
 }
 
 } // namespace

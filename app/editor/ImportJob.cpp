@@ -20,16 +20,24 @@ void ImportJob::start() {
     QPointer<ImportJob> self(this);
     thread_ = QThread::create([this, self, path] {
         auto result = importers::importScene(path);
+        std::shared_ptr<ImportedScene> done;
+        if (result && !cancelled_) {
+            done = std::make_shared<ImportedScene>();
+            done->view = app::firstView(result->scene);
+            if (result->scene.lights.empty())
+                done->sun = app::chooseDefaultSun(result->scene);
+            done->result = std::move(*result);
+        }
         // Deliver on the GUI thread; the job may have been cancelled meanwhile.
         QMetaObject::invokeMethod(
             this,
-            [this, self, result = std::move(result)]() mutable {
+            [this, self, done, error = result ? std::string() : result.error().describe()]() mutable {
                 if (!self || cancelled_)
                     return;
-                if (result)
-                    emit imported(std::make_shared<importers::ImportResult>(std::move(*result)));
+                if (done)
+                    emit imported(done);
                 else
-                    emit failed(QString::fromStdString(result.error().describe()));
+                    emit failed(QString::fromStdString(error));
             },
             Qt::QueuedConnection);
     });

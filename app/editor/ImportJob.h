@@ -3,6 +3,7 @@
 // drawing during a long import. The importer cannot be interrupted midway:
 // cancelling discards its result when it arrives (the project is untouched)
 // and the window is free at once.
+#include "lpv/app/ImportDefaults.h"
 #include "lpv/importers/Importer.h"
 
 #include <QObject>
@@ -10,10 +11,20 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 class QThread;
 
 namespace lpv::editor {
+
+// An import's result with what the worker also worked out for it, as `lpv
+// import` does: the view to show it from, and a sun in case it has no lights
+// (ray traced: Sponza takes about a second, so not on the GUI thread).
+struct ImportedScene {
+    importers::ImportResult result;
+    scene::Camera view;
+    std::optional<app::DefaultSun> sun; // set when the imported scene has no lights
+};
 
 class ImportJob : public QObject {
     Q_OBJECT
@@ -28,7 +39,7 @@ public:
 
 signals:
     // Exactly one of these, on the GUI thread, unless cancelled.
-    void imported(std::shared_ptr<lpv::importers::ImportResult> result);
+    void imported(std::shared_ptr<lpv::editor::ImportedScene> imported);
     void failed(const QString& message);
 
 private:

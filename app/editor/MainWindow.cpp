@@ -669,25 +669,23 @@ void MainWindow::importFile(const QString& path, bool interactive) {
             QMessageBox::critical(this, tr("Import failed"), message);
     });
     connect(job, &ImportJob::imported, this,
-            [this, finish, path](std::shared_ptr<importers::ImportResult> result) {
+            [this, finish, path](std::shared_ptr<ImportedScene> imported) {
                 finish();
+                importers::ImportResult* result = &imported->result;
                 const auto& st = result->stats;
                 const bool addSun = document_->scene().lights.empty() && result->scene.lights.empty();
                 document_->editScene(tr("Import %1").arg(QFileInfo(path).fileName()), Change::Structure | Change::Materials |
                                          Change::Lights | Change::Cameras | Change::CameraPaths,
                                      [&](scene::Scene& s) {
                                          scene::appendScene(s, std::move(result->scene));
-                                         if (addSun) {
-                                             // Like `lpv import`: an unlit scene would render black.
-                                             scene::Light sun;
-                                             sun.name = "sun";
-                                             sun.direction = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
-                                             sun.color = glm::vec3(1.0f, 0.95f, 0.85f);
-                                             sun.intensity = 3.0f;
-                                             s.lights.push_back(sun);
-                                         }
+                                         // Like `lpv import`: an unlit scene would render black, so
+                                         // it gets the sun that lights the most of its first view.
+                                         if (addSun && imported->sun)
+                                             s.lights.push_back(imported->sun->light);
                                      });
-                viewport_->frameSelection();
+                // Seen as `lpv import` and `lpv render` see it: its own camera, or from
+                // inside an enclosed scene (Sponza), not framed from outside.
+                viewport_->setViewCamera(imported->view);
                 statusBar()->showMessage(tr("Imported %1: %2 objects, %3 triangles, %4 materials, textures %5 found / "
                                             "%6 missing, %7 warnings, %8 s")
                                              .arg(path)

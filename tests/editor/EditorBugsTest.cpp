@@ -300,3 +300,25 @@ TEST(EditorBugs, OutlinerNamesAndEffectsReasonsAreShownWhole) {
             << "row " << row << " cut: " << table->item(row, 3)->text().toStdString();
     }
 }
+
+// An imported interior was framed from outside while `lpv import` and `lpv
+// render` stand inside it (issue #26 item 6): the editor now shows an imported
+// scene from its own camera or scene::framingCamera, as the CLI does.
+TEST(EditorBugs, AnImportedInteriorIsSeenFromInsideAsTheCliSeesIt) {
+    Window w;
+    QTemporaryDir dir;
+    const QString room = dir.filePath("room.obj");
+    QFile f(room);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    // A closed 10 x 4 x 6 m hall, every face turned inward, and a pillar.
+    f.write("v 0 0 0\nv 10 0 0\nv 10 0 6\nv 0 0 6\nv 0 4 0\nv 10 4 0\nv 10 4 6\nv 0 4 6\n"
+            "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n"
+            "v 4.8 0 2.8\nv 5.2 0 2.8\nv 5.2 0 3.2\nv 4.8 0 3.2\nv 4.8 4 2.8\nv 5.2 4 2.8\nv 5.2 4 3.2\nv 4.8 4 3.2\n"
+            "f 9 10 14 13\nf 10 11 15 14\nf 11 12 16 15\nf 12 9 13 16\n");
+    f.close();
+    w.window.importFile(room, false);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 30000);
+    const glm::vec3 eye = w.window.viewport()->viewCamera().position;
+    EXPECT_TRUE(eye.x > 0.0f && eye.x < 10.0f && eye.y > 0.0f && eye.y < 4.0f && eye.z > 0.0f && eye.z < 6.0f)
+        << "the view stands at (" << eye.x << ", " << eye.y << ", " << eye.z << "), outside the hall";
+}
