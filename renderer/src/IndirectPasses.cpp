@@ -276,7 +276,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         p.id = Pass::GeometryVolume;
         // Bounces reflect at the GV's surfels, so they need it even without occlusion.
         p.decision = !lpvRuns ? skippedBecause(off)
-                     : settings.occlusion || settings.bounces > 1 ? runsBecause("lpv.occlusion or lpv.bounces > 1")
+                     : settings.geometryVolumeRuns() ? runsBecause("lpv.occlusion or lpv.bounces > 1")
                                                                    : skippedBecause("lpv.occlusion is off and one bounce");
         if (plan.sun)
             p.reads = {"rsm.position", "rsm.normal"};
@@ -295,7 +295,7 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         p.id = Pass::LpvPropagation;
         p.decision = lpvDecision;
         p.reads = {"lpv.volumes", "lpv.accumulator"};
-        if (settings.occlusion || settings.bounces > 1)
+        if (settings.geometryVolumeRuns())
             p.reads.push_back("lpv.geometry");
         if (settings.directed)
             p.reads.push_back("lpv.normals");

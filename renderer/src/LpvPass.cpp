@@ -132,7 +132,7 @@ GLint LpvPass::loc(GLuint program, const char* name) const {
 
 scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
     std::vector<LpvKernel> kernels = {LpvKernel::FluxMax, LpvKernel::Inject, LpvKernel::Resolve};
-    if (settings.occlusion || settings.bounces > 1)
+    if (settings.geometryVolumeRuns())
         kernels.insert(kernels.end(), {LpvKernel::GvFromRsm, LpvKernel::GvMerge, LpvKernel::FaceBlocking});
     if (settings.gvFromCamera)
         kernels.push_back(LpvKernel::GvFromCamera);
@@ -140,7 +140,7 @@ scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
         kernels.insert(kernels.end(), {LpvKernel::Normals, LpvKernel::NormalsDilate});
     if (settings.bounces > 1)
         kernels.insert(kernels.end(), {LpvKernel::BounceInject, LpvKernel::BounceAdd});
-    if (settings.visibility && (settings.occlusion || settings.bounces > 1))
+    if (settings.visibilityRuns())
         kernels.push_back(LpvKernel::Visibility);
     switch (settings.variant) {
     case LpvVariant::ComputeGather:
@@ -212,8 +212,7 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
     volumes_.ensureDirected(settings.directed);
     volumes_.ensureBounces(settings.bounces > 1);
     volumes_.ensureInterleaved(settings.variant == LpvVariant::ComputeGather);
-    // The moments come from the GV, which only runs for occlusion or bounces.
-    visibilityActive_ = settings.visibility && (settings.occlusion || settings.bounces > 1);
+    visibilityActive_ = settings.visibilityRuns();
     if (volumes_.ensureVisibility(visibilityActive_) || !visibilityActive_)
         visibilityReady_ = false; // new or freed: nothing built into them yet
     cascades_.assign(requested.begin(), requested.begin() + cascades);
@@ -286,8 +285,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
         timed(scene::Pass::SkyInjection, [&] { skyStage(*sky); });
     if (settings.directed)
         timed(scene::Pass::LpvNormals, [&] { normalsStage(settings.directedDilation); });
-    // Bounces reflect at the GV's surfels, so they need it even without occlusion.
-    if (settings.occlusion || settings.bounces > 1)
+    if (settings.geometryVolumeRuns())
         timed(scene::Pass::GeometryVolume, [&] { geometryStage(rsm, settings.gvFromCamera ? camera : nullptr); });
     timed(scene::Pass::LpvPropagation, [&] { propagationStage(settings); });
     if (settings.bounces > 1)
@@ -551,7 +549,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             const GLuint program = step == 0 ? kernel(LpvKernel::ComputeGatherFirst) : gatherProgram;
             glUseProgram(program);
             setCascadeUniforms(program);
-            bindStepSources(program, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
+            bindStepSources(program, read, settings.occludesStep(step));
             if (step > 0)
                 glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
             bindStepImages(write);
@@ -569,7 +567,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             glUseProgram(scatterProgram);
             setCascadeUniforms(scatterProgram);
             glProgramUniform1i(scatterProgram, loc(scatterProgram, "uScaleSlot"), scaleSlot_);
-            bindStepSources(scatterProgram, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
+            bindStepSources(scatterProgram, read, settings.occludesStep(step));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
             glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
@@ -590,7 +588,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             glBindFramebuffer(GL_FRAMEBUFFER, fbo);
             glUseProgram(rasterProgram);
             setCascadeUniforms(rasterProgram);
-            bindStepSources(rasterProgram, read, settings.occlusion && (step > 0 || settings.occludeFirstStep));
+            bindStepSources(rasterProgram, read, settings.occludesStep(step));
             if (settings.variant == LpvVariant::RasterGather) {
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 3, n * k);
             } else {

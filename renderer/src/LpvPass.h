@@ -64,6 +64,13 @@ struct LpvSettings {
     // geometry volume, read by the lookup; needs the GV (occlusion or bounces).
     bool visibility = false;
 
+    // The geometry volume runs for occlusion, and for bounces (they reflect at its surfels).
+    bool geometryVolumeRuns() const { return occlusion || bounces > 1; }
+    // The visibility moments are built from the geometry volume, so only while it runs.
+    bool visibilityRuns() const { return visibility && geometryVolumeRuns(); }
+    // Whether propagation step `step` reads the GV (lpv.occlusionFirstStep).
+    bool occludesStep(int step) const { return occlusion && (step > 0 || occludeFirstStep); }
+
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };
 
