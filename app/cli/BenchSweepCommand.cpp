@@ -338,7 +338,7 @@ int benchSweep(Args args) {
         scene::Project traceProject = setup->project;
         (void)traceProject.parameters.setFromText("reference.bounces", std::to_string(maxBounces), "bench");
         auto traced =
-            traceReference(traceProject, request.projectFile, setup->camera, {*width, *height, 0, true});
+            traceReference(traceProject, request.projectFile, setup->camera, {*width, *height, 0, true, {}});
         if (!traced)
             return kFailure;
         ref = std::move(traced->image);

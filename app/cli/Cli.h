@@ -46,6 +46,7 @@ int runPath(Args args);
 int runRadiosity(Args args); // `lpv radiosity`, in RadiosityCommand.cpp
 int runReference(Args args); // `lpv reference`, in ReferenceCommand.cpp
 int runCompare(Args args);   // `lpv compare`, in CompareCommand.cpp
+int runMerge(Args args);     // `lpv merge`, in MergeCommand.cpp
 int runDump(Args args); // `lpv dump`, in DumpCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
@@ -64,6 +65,7 @@ void printPathHelp();
 void printRadiosityHelp();
 void printReferenceHelp();
 void printCompareHelp();
+void printMergeHelp();
 void printDumpHelp();
 
 } // namespace lpv::cli

@@ -41,6 +41,12 @@ Compare a renderer image with it using `lpv compare`.
                         (or its indirect1 layer for k = 1)
   --threads N           Worker threads (default: every hardware thread)
   --set KEY=VALUE       Any other registry parameter, e.g. reference.skyLight=on
+  --shard I/N           Trace only shard I of N (0-based): the 16x16-pixel tiles
+                        on every N-th diagonal; the other pixels stay 0. Merge the N
+                        files with `lpv merge`: the result is bit-identical to one
+                        process tracing all (each pixel's samples depend only on the
+                        pixel and the sample index). Needs a sample count, not
+                        --max-seconds (shards would stop at different counts).
   --preview             Also write REF-image.png and REF-indirect.png to look at
                         (x / (x + mean), gamma 2.2)
 
@@ -68,6 +74,7 @@ std::optional<TracedReference> traceReference(const scene::Project& project,
     settings.width = request.width;
     settings.height = request.height;
     settings.threads = request.threads;
+    settings.shard = request.shard;
     settings.samplesPerPixel = project.parameters.getInt("reference.samplesPerPixel");
     settings.bounces = project.parameters.getInt("reference.bounces");
     settings.maxSeconds = project.parameters.getFloat("reference.maxSeconds");
@@ -76,8 +83,10 @@ std::optional<TracedReference> traceReference(const scene::Project& project,
     settings.skyLight = lights.sky;
     settings.emissiveLight = lights.emissive;
     if (request.printProgress) {
-        std::printf("reference: %zu triangles, %dx%d, up to %d spp, %d bounces%s\n", embree->triangleCount(),
-                    settings.width, settings.height, settings.samplesPerPixel, settings.bounces,
+        std::printf("reference: %zu triangles, %dx%d%s, up to %d spp, %d bounces%s\n", embree->triangleCount(),
+                    settings.width, settings.height,
+                    settings.shard.whole() ? "" : (", shard " + reference::formatShard(settings.shard)).c_str(),
+                    settings.samplesPerPixel, settings.bounces,
                     settings.maxSeconds > 0.0
                         ? (", at most " + std::to_string(settings.maxSeconds) + " s").c_str()
                         : "");
@@ -110,6 +119,7 @@ int runReference(Args args) {
     const auto seconds = args.option("--max-seconds");
     const auto bounces = args.option("--bounces");
     const auto cameraName = args.option("--camera");
+    const auto shardText = args.option("--shard");
     const bool preview = args.flag("--preview");
     std::vector<std::string> sets = args.options("--set");
     if (!args.missingValue().empty())
@@ -130,6 +140,13 @@ int runReference(Args args) {
         return usageError("--width and --height must be positive integers", "reference");
     if (!threads)
         return usageError("--threads must be a whole number", "reference");
+    reference::ShardSpec shard;
+    if (shardText) {
+        auto parsed = reference::parseShard(*shardText);
+        if (!parsed)
+            return usageError(parsed.error().message, "reference");
+        shard = *parsed;
+    }
     // The flags are shorthands for registry parameters: one place checks their ranges.
     if (spp)
         sets.push_back("reference.samplesPerPixel=" + *spp);
@@ -142,15 +159,27 @@ int runReference(Args args) {
     auto project = loadProjectWithSets(pos.front(), sets, "reference", exitCode);
     if (!project)
         return exitCode;
+    if (!shard.whole() && project->parameters.getFloat("reference.maxSeconds") > 0.0f)
+        return usageError("--shard needs a sample count, not a time budget: shards stopped by "
+                          "reference.maxSeconds would reach different sample counts and could not be merged",
+                          "reference");
     const auto camera = pickCamera(project->scene, cameraName, pos.front());
     if (!camera)
         return kFailure;
-    const auto traced = traceReference(*project, pos.front(), *camera, {*width, *height, *threads, true});
+    const auto projectHash = projectContentHash(pos.front());
+    if (!projectHash) {
+        std::cerr << "lpv: " << projectHash.error().describe() << "\n";
+        return kFailure;
+    }
+    const auto traced =
+        traceReference(*project, pos.front(), *camera, {*width, *height, *threads, true, shard});
     if (!traced)
         return kFailure;
     const reference::ReferenceImage* image = &traced->image;
-    const std::map<std::string, std::string> attributes{
+    std::map<std::string, std::string> attributes{
         {"lpv:project", pos.front()},
+        {"lpv:projectHash", *projectHash},
+        {"lpv:parametersHash", parametersHash(project->parameters)},
         {"lpv:camera", camera->name},
         {"lpv:spp", std::to_string(image->samplesPerPixel)},
         {"lpv:seconds", std::to_string(image->seconds)},
@@ -158,6 +187,10 @@ int runReference(Args args) {
         {"lpv:skyLight", traced->lights.sky ? "true" : "false"},
         {"lpv:emissiveLight", traced->lights.emissive ? "true" : "false"},
     };
+    if (!shard.whole()) {
+        attributes["lpv:shard"] = reference::formatShard(shard);
+        attributes["lpv:shardTile"] = std::to_string(reference::kShardTileSize);
+    }
     if (auto ok = writeReferenceExr(*output, *image, attributes); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;

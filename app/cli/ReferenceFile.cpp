@@ -2,9 +2,12 @@
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/reference/Metrics.h"
+#include "lpv/scene/FileRead.h"
+#include "lpv/scene/MeshAsset.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lpv::cli {
 
@@ -100,6 +103,32 @@ float meanLuminance(const std::vector<glm::vec3>& pixels, const std::vector<floa
             ++n;
         }
     return float(std::max(n ? sum / double(n) : 0.0, 1e-6));
+}
+
+namespace {
+std::string hex64(std::uint64_t v) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+    return buf;
+}
+} // namespace
+
+scene::Expected<std::string> projectContentHash(const std::filesystem::path& projectFile) {
+    auto bytes = scene::readFileBytes(projectFile);
+    if (!bytes)
+        return std::unexpected(bytes.error());
+    return hex64(scene::contentHash64(*bytes));
+}
+
+std::string parametersHash(const scene::ParameterSet& parameters) {
+    std::vector<std::string> lines;
+    for (const auto& [key, value] : parameters.overrides())
+        lines.push_back(key + "=" + scene::formatValue(value));
+    std::ranges::sort(lines);
+    std::string text;
+    for (const std::string& l : lines)
+        text += l + "\n";
+    return hex64(scene::contentHash64(text));
 }
 
 } // namespace lpv::cli

@@ -5,6 +5,7 @@
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/scene/Error.h"
 #include "lpv/scene/Image.h"
+#include "lpv/scene/ParameterRegistry.h"
 
 #include <filesystem>
 #include <map>
@@ -39,5 +40,12 @@ scene::Image8 previewImage(const std::vector<glm::vec3>& pixels, int width, int 
                            float key);
 // The mean luminance of `pixels` where `mask` > 0.5: a key for previewImage.
 float meanLuminance(const std::vector<glm::vec3>& pixels, const std::vector<float>& mask);
+
+// What a reference's header records so that pieces traced apart can be
+// checked to belong together (`lpv merge`): the XXH3 of the project file's
+// bytes (which name every mesh asset by its checksum), and of the effective
+// parameter overrides (the project's and --set's, sorted), as 16 hex digits.
+scene::Expected<std::string> projectContentHash(const std::filesystem::path& projectFile);
+std::string parametersHash(const scene::ParameterSet& parameters);
 
 } // namespace lpv::cli

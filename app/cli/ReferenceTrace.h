@@ -2,6 +2,7 @@
 // Tracing the reference of a loaded project, shared by `lpv reference` and
 // `lpv bench PROJECT --sweep` (which traces one when not given a file).
 #include "lpv/reference/ReferenceImage.h"
+#include "lpv/reference/Shards.h"
 #include "lpv/renderer/ReferenceLights.h"
 #include "lpv/scene/Project.h"
 
@@ -15,6 +16,7 @@ struct ReferenceRequest {
     int height = 180;
     int threads = 0;
     bool printProgress = true;
+    reference::ShardSpec shard; // trace only these tiles (`lpv reference --shard`)
 };
 
 struct TracedReference {

@@ -38,7 +38,9 @@ Commands:
                               Add or replace a camera path of the project from a JSON file
   reference PROJECT -o REF.exr
                               Path-trace (CPU, Embree) the reference image and indirect light
-                              with per-pixel variance (--spp, --max-seconds, --bounces)
+                              with per-pixel variance (--spp, --max-seconds, --bounces);
+                              --shard I/N traces 1/N of it, for a cluster (docs/cluster.md)
+  merge OUT.exr SHARD.exr...  Join the shards of one reference, bit-identical to one process
   compare TEST.exr REF.exr    Error of a rendered EXR against the reference: relMSE, MARE,
                               SSIM, each beside the reference's own noise
   radiosity PROJECT [-o OUT.lpvproj]
@@ -87,6 +89,7 @@ int dispatch(std::vector<std::string> args) {
         {"radiosity", {runRadiosity, printRadiosityHelp}},
         {"reference", {runReference, printReferenceHelp}},
         {"compare", {runCompare, printCompareHelp}},
+        {"merge", {runMerge, printMergeHelp}},
         {"dump", {runDump, printDumpHelp}},
     };
     auto it = commands.find(command);

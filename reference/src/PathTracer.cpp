@@ -16,7 +16,7 @@ namespace lpv::reference {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-constexpr int kTile = 16;
+constexpr int kTile = kShardTileSize; // shards are made of whole tiles
 // Paths longer than this continue with probability = their throughput (Russian roulette).
 constexpr int kRouletteDepth = 3;
 
@@ -261,7 +261,11 @@ ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
     std::vector<PixelState> state(result.pixelCount());
     const int tilesX = (settings_.width + kTile - 1) / kTile;
     const int tilesY = (settings_.height + kTile - 1) / kTile;
-    const int tileCount = tilesX * tilesY;
+    std::vector<int> tiles; // this shard's tiles (all of them unsharded)
+    for (int t = 0; t < tilesX * tilesY; ++t)
+        if (shardOwnsTile(settings_.shard, t % tilesX, t / tilesX))
+            tiles.push_back(t);
+    const int tileCount = int(tiles.size());
     const int threadCount =
         settings_.threads > 0 ? settings_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     const int target = std::max(1, settings_.samplesPerPixel);
@@ -277,7 +281,8 @@ ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
         const int sampleIndex = done;
         std::atomic<int> nextTile{0};
         auto worker = [&] {
-            for (int t = nextTile++; t < tileCount; t = nextTile++) {
+            for (int next = nextTile++; next < tileCount; next = nextTile++) {
+                const int t = tiles[std::size_t(next)];
                 const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
                 for (int y = y0; y < std::min(y0 + kTile, settings_.height); ++y)
                     for (int x = x0; x < std::min(x0 + kTile, settings_.width); ++x) {

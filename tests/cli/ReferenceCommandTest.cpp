@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -190,3 +191,73 @@ TEST_F(ReferenceCommand, PrintsWhichLightsTheReferenceTraces) {
 }
 
 } // namespace
+
+// Issue #28: `lpv reference --shard I/N` and `lpv merge`, as a cluster job runs them.
+namespace {
+
+std::vector<float> pixelsOf(const fs::path& exr) {
+    auto image = lpv::importers::readImageChannels(exr);
+    return image ? image->pixels : std::vector<float>{};
+}
+
+} // namespace
+
+TEST_F(ReferenceCommand, ShardsMergeIntoTheBitsOfOneProcessAndABadSetIsRefused) {
+    const std::string common = " --width 40 --height 30 --spp 4 --bounces 2";
+    const fs::path whole = dir_ / "whole.exr";
+    ASSERT_EQ(runLpv("reference '" + project_ + "' -o '" + whole.string() + "'" + common).exitCode, 0);
+    std::string shards;
+    for (int i = 0; i < 3; ++i) {
+        const fs::path shard = dir_ / ("shard" + std::to_string(i) + ".exr");
+        const RunResult r = runLpv("reference '" + project_ + "' -o '" + shard.string() + "'" + common +
+                                   " --shard " + std::to_string(i) + "/3");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("shard " + std::to_string(i) + "/3"), std::string::npos) << r.output;
+        shards += " '" + shard.string() + "'";
+    }
+    const fs::path merged = dir_ / "merged.exr";
+    const RunResult m = runLpv("merge '" + merged.string() + "'" + shards);
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    const auto a = pixelsOf(whole), b = pixelsOf(merged);
+    ASSERT_FALSE(a.empty());
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0) << "the merge must be bit-identical";
+
+    // Incomplete: the error names what is missing and nothing is written.
+    const fs::path out = dir_ / "incomplete.exr";
+    RunResult r = runLpv("merge '" + out.string() + "' '" + (dir_ / "shard0.exr").string() + "' '" +
+                         (dir_ / "shard2.exr").string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("missing shard 1/3"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+
+    // Another setting (one more bounce) is not of the same reference.
+    const fs::path other = dir_ / "other1.exr";
+    ASSERT_EQ(runLpv("reference '" + project_ + "' -o '" + other.string() +
+                     "' --width 40 --height 30 --spp 4 --bounces 3 --shard 1/3")
+                  .exitCode,
+              0);
+    r = runLpv("merge '" + out.string() + "' '" + (dir_ / "shard0.exr").string() + "' '" + other.string() +
+               "' '" + (dir_ / "shard2.exr").string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("not of one reference"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+
+    // A shard cut short (as a copy interrupted mid-file would be) is refused, not merged.
+    const fs::path cut = dir_ / "cut1.exr";
+    {
+        const std::string bytes = readText(dir_ / "shard1.exr");
+        std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    }
+    r = runLpv("merge '" + out.string() + "' '" + (dir_ / "shard0.exr").string() + "' '" + cut.string() + "' '" +
+               (dir_ / "shard2.exr").string() + "'");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+
+    // A time budget would stop shards at different sample counts.
+    r = runLpv("reference '" + project_ + "' -o '" + (dir_ / "t.exr").string() + "'" + common +
+               " --max-seconds 5 --shard 0/2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("time budget"), std::string::npos) << r.output;
+    EXPECT_EQ(runLpv("reference '" + project_ + "' -o x.exr --shard 2/2").exitCode, 2);
+}

@@ -9,6 +9,7 @@
 // range window and smoothstep cone; secondary surfaces are Lambertian.
 #include "lpv/reference/EmbreeScene.h"
 #include "lpv/reference/ReferenceImage.h"
+#include "lpv/reference/Shards.h"
 #include "lpv/scene/Scene.h"
 
 #include <atomic>
@@ -30,6 +31,8 @@ struct PathTracerSettings {
     // box's spot) already stands for the emitting panel: both would count it twice.
     bool emissiveLight = false;
     int threads = 0; // 0 = std::thread::hardware_concurrency()
+    // Trace only this shard's tiles (Shards.h); the other pixels stay zero.
+    ShardSpec shard;
 };
 
 struct TraceProgress {
