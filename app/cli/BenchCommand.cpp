@@ -1,6 +1,7 @@
 // `lpv bench`: measured figures, printed, never asserted (machines are shared
 // and noisy). `lpv bench import` compares importing a source file with
 // loading the project it becomes.
+#include "BenchSweepShard.h"
 #include "Cli.h"
 
 #include "lpv/importers/Importer.h"
@@ -28,7 +29,8 @@ void printBenchHelp() {
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
                                  --thesis-settings --csv FILE --markdown FILE]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
-       lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR ... see below]
+       lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
+       lpv bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]
        lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
        lpv bench PROJECT --flicker (--path NAME | --sun-rotate DEG) [--frames N ... see below]
 
@@ -51,6 +53,7 @@ Sibenik imported from sibenik.4ds.
 )";
     printBenchLpvHelp();
     printBenchSweepHelp();
+    printBenchMergeHelp();
     printBenchAccuracyReportHelp();
     printBenchFlickerHelp();
     std::cout << R"(
@@ -168,6 +171,8 @@ int runBench(Args args) {
         return benchLpv(std::move(args));
     if (pos.front() == "report")
         return benchAccuracyReport(std::move(args));
+    if (pos.front() == "merge")
+        return benchMerge(std::move(args));
     if (pos.front() == "import") {
         try {
             return benchImport(args);
@@ -175,7 +180,7 @@ int runBench(Args args) {
             return usageError("--repeat needs a whole number", "bench");
         }
     }
-    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report)", "bench");
+    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report, merge)", "bench");
 }
 
 } // namespace lpv::cli

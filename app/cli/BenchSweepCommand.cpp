@@ -4,6 +4,7 @@
 // image); written as CSV, JSON, a Markdown report and PNG plots.
 #include "BenchReport.h"
 #include "BenchSweep.h"
+#include "BenchSweepShard.h"
 #include "Cli.h"
 #include "ReferenceFile.h"
 #include "ReferenceTrace.h"
@@ -53,6 +54,10 @@ marked) and crops.png (reference and each setting's indirect light).
   --width N --height N  Image size (default 320x180, as `lpv reference`)
   --frames N --warmup N Timed frames (default 20) after warm-up frames (default 3)
   --camera NAME --set KEY=VALUE
+  --shard I/N           Render only the combinations whose index is I modulo N
+                        (0-based), for a cluster: needs --reference; writes
+                        DIR/shard.json and DIR/run-K.exr, which `lpv bench merge`
+                        joins into the files above (docs/cluster.md)
 )";
 }
 
@@ -80,6 +85,7 @@ int benchSweep(Args args) {
     const auto warmup = parseCount(args.option("--warmup").value_or("3"), 0);
     const auto spp = args.option("--spp");
     const auto seconds = args.option("--max-seconds");
+    const auto shardText = args.option("--shard");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "bench");
     if (auto unknown = args.unknownOption())
@@ -92,6 +98,18 @@ int benchSweep(Args args) {
                           "bench");
     if (sweeps.empty())
         return usageError("give at least one --sweep KEY=V1,V2,...", "bench");
+    reference::ShardSpec shard;
+    if (shardText) {
+        auto parsed = reference::parseShard(*shardText);
+        if (!parsed)
+            return usageError(parsed.error().message, "bench");
+        shard = *parsed;
+        // Every shard must be measured against one and the same reference.
+        if (!referenceFile)
+            return usageError("--shard needs --reference REF.exr: every shard is measured against the one "
+                              "reference (trace it first, sharded too: `lpv reference --shard`, `lpv merge`)",
+                              "bench");
+    }
     std::vector<std::string> all = sets;
     all.insert(all.end(), sweeps.begin(), sweeps.end());
     if (spp)
@@ -193,8 +211,15 @@ int benchSweep(Args args) {
         return kFailure;
     }
 
+    if (!shard.whole())
+        fs::remove(outDir / "shard.json", ec); // a rerun into the folder of a killed one starts unfinished
     std::vector<SweepRun> runs;
-    for (const auto& combination : combinations) {
+    std::vector<int> runIndices;
+    for (std::size_t index = 0; index < combinations.size(); ++index) {
+        if (!shardRunsCombination(shard, int(index)))
+            continue;
+        const auto& combination = combinations[index];
+        runIndices.push_back(int(index));
         SweepRun run;
         run.settings = combination;
         setup->project.parameters = base;
@@ -244,6 +269,16 @@ int benchSweep(Args args) {
     if (referenceFile)
         command += " --reference " + *referenceFile;
     const std::string machine = describeMachine(gl.renderer, gl.version);
+    if (!shard.whole()) {
+        SweepShard out{shard, int(combinations.size()), command, machine, *width, *height, *referenceFile,
+                       fs::absolute(*referenceFile).string(), fileContentHash(*referenceFile), runIndices,
+                       std::move(runs)};
+        if (!writeSweepShard(outDir, out))
+            return kFailure;
+        std::printf("shard %s: %zu of %zu combinations; join the shards with `lpv bench merge`\n",
+                    reference::formatShard(shard).c_str(), out.runs.size(), combinations.size());
+        return kOk;
+    }
     if (!writeSweepOutputs(outDir, runs, *width, *height, command, machine, ref))
         return kFailure;
     return kOk;

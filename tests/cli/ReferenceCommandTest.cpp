@@ -261,3 +261,88 @@ TEST_F(ReferenceCommand, ShardsMergeIntoTheBitsOfOneProcessAndABadSetIsRefused) 
     EXPECT_NE(r.output.find("time budget"), std::string::npos) << r.output;
     EXPECT_EQ(runLpv("reference '" + project_ + "' -o x.exr --shard 2/2").exitCode, 2);
 }
+
+namespace {
+
+// sweep.csv as rows of cells, the header first.
+std::vector<std::vector<std::string>> csvRows(const fs::path& file) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream in(readText(file));
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::istringstream cellsIn(line);
+        for (std::string cell; std::getline(cellsIn, cell, ',');)
+            cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+} // namespace
+
+TEST_F(ReferenceCommand, ASweepInShardsMergesIntoTheSameErrorsAndABadSetIsRefused) {
+    ASSERT_EQ(traced_.exitCode, 0) << traced_.output;
+    const std::string sweep = "bench '" + project_ + "' --sweep lpv.propagationSteps=0,4,8 --reference '" +
+                              (dir_ / "ref.exr").string() + "' --width 40 --height 30 --frames 2 --warmup 1";
+    const fs::path whole = dir_ / "sweep-whole";
+    RunResult r = runLpv(sweep + " --out '" + whole.string() + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::string shards;
+    for (int i = 0; i < 2; ++i) {
+        const fs::path dir = dir_ / ("sweep-shard" + std::to_string(i));
+        r = runLpv(sweep + " --out '" + dir.string() + "' --shard " + std::to_string(i) + "/2");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_TRUE(fs::exists(dir / "shard.json"));
+        EXPECT_FALSE(fs::exists(dir / "sweep.csv")) << "a shard writes its part, not a sweep";
+        shards += " '" + dir.string() + "'";
+    }
+    const fs::path merged = dir_ / "sweep-merged";
+    r = runLpv("bench merge '" + merged.string() + "'" + shards);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto a = csvRows(whole / "sweep.csv"), b = csvRows(merged / "sweep.csv");
+    ASSERT_EQ(a.size(), 4u);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(a[0], b[0]) << "the same columns";
+    int compared = 0;
+    for (std::size_t row = 1; row < a.size(); ++row)
+        for (std::size_t c = 0; c < a[0].size(); ++c) {
+            if (a[0][c].ends_with("_ms")) { // timings: measured anew, present in both
+                EXPECT_FALSE(b[row][c].empty()) << a[0][c];
+                continue;
+            }
+            EXPECT_EQ(a[row][c], b[row][c]) << a[0][c] << " of row " << row;
+            ++compared;
+        }
+    EXPECT_GE(compared, 3 * 12);
+    EXPECT_EQ(readText(whole / "crops.png"), readText(merged / "crops.png")) << "the same indirect images";
+    EXPECT_TRUE(fs::exists(merged / "sweep.md"));
+    EXPECT_TRUE(fs::exists(merged / "error-time.png"));
+
+    // One shard missing: named.
+    const fs::path out = dir_ / "sweep-bad";
+    r = runLpv("bench merge '" + out.string() + "' '" + (dir_ / "sweep-shard1").string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("missing shard 0/2"), std::string::npos) << r.output;
+    // A shard of another sweep.
+    const fs::path other = dir_ / "sweep-other1";
+    ASSERT_EQ(runLpv("bench '" + project_ + "' --sweep lpv.propagationSteps=0,4,16 --reference '" +
+                     (dir_ / "ref.exr").string() + "' --width 40 --height 30 --frames 2 --warmup 1 --out '" +
+                     other.string() + "' --shard 1/2")
+                  .exitCode,
+              0);
+    r = runLpv("bench merge '" + out.string() + "' '" + (dir_ / "sweep-shard0").string() + "' '" +
+               other.string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("not a shard of the same sweep"), std::string::npos) << r.output;
+    // A shard that did not finish has no shard.json.
+    fs::remove(other / "shard.json");
+    r = runLpv("bench merge '" + out.string() + "' '" + (dir_ / "sweep-shard0").string() + "' '" +
+               other.string() + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("did not finish"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+    // Shards are measured against one reference, so one must be given.
+    r = runLpv("bench '" + project_ + "' --sweep lpv.propagationSteps=0,4 --width 40 --height 30 --shard 0/2");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("--shard needs --reference"), std::string::npos) << r.output;
+}

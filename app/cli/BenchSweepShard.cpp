@@ -1,0 +1,283 @@
+#include "BenchSweepShard.h"
+
+#include "BenchReport.h"
+#include "ReferenceFile.h"
+
+#include "lpv/importers/ImageIO.h"
+#include "lpv/scene/Project.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+namespace lpv::cli {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr const char* kFormat = "lpvstudio-sweep-shard";
+constexpr int kVersion = 1;
+
+std::string runImageName(int index) { return "run-" + std::to_string(index) + ".exr"; }
+
+Json metricsToJson(const reference::ErrorMetrics& m) {
+    // nlohmann writes doubles so that they read back to the same bits: the
+    // merged sweep's error columns are those of an unsharded run, exactly.
+    return {{"pixels", m.pixels},       {"relMse", m.relMse},       {"mare", m.mare},
+            {"ssim", m.ssim},           {"meanTest", m.meanTest},   {"meanReference", m.meanReference},
+            {"noiseRelMse", m.noiseRelMse}, {"noiseMare", m.noiseMare}};
+}
+
+reference::ErrorMetrics metricsFromJson(const Json& j) {
+    reference::ErrorMetrics m;
+    m.pixels = j.at("pixels").get<std::size_t>();
+    m.relMse = j.at("relMse").get<double>();
+    m.mare = j.at("mare").get<double>();
+    m.ssim = j.at("ssim").get<double>();
+    m.meanTest = j.at("meanTest").get<double>();
+    m.meanReference = j.at("meanReference").get<double>();
+    m.noiseRelMse = j.at("noiseRelMse").get<double>();
+    m.noiseMare = j.at("noiseMare").get<double>();
+    return m;
+}
+
+// Reads DIR/shard.json and its run images; the error names the file.
+scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
+    const fs::path file = dir / "shard.json";
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return scene::makeError(scene::ErrorCode::FileNotFound, file.string(), "",
+                                "no shard.json: the shard did not finish (run it again; a killed shard "
+                                "leaves none)");
+    std::ifstream in(file);
+    const Json j = Json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.is_object())
+        return scene::makeError(scene::ErrorCode::NotJson, file.string(), "", "not JSON");
+    const auto format = j.find("format");
+    const auto version = j.find("version");
+    if (format == j.end() || *format != kFormat || version == j.end() || *version != kVersion)
+        return scene::makeError(scene::ErrorCode::UnknownFormat, file.string(), "format",
+                                std::string("not a sweep shard (") + kFormat + " version " +
+                                    std::to_string(kVersion) + ")");
+    SweepShard s;
+    try {
+        auto spec = reference::parseShard(j.at("shard").get<std::string>());
+        if (!spec)
+            return scene::makeError(scene::ErrorCode::InvalidValue, file.string(), "shard", spec.error().message);
+        s.shard = *spec;
+        s.combinations = j.at("combinations").get<int>();
+        s.command = j.at("command").get<std::string>();
+        s.machine = j.at("machine").get<std::string>();
+        s.width = j.at("width").get<int>();
+        s.height = j.at("height").get<int>();
+        s.referenceFile = j.at("reference").at("file").get<std::string>();
+        s.referenceAbsolute = j.at("reference").at("absolute").get<std::string>();
+        s.referenceHash = j.at("reference").at("hash").get<std::string>();
+        for (const Json& r : j.at("runs")) {
+            SweepRun run;
+            for (const Json& kv : r.at("settings"))
+                run.settings.emplace_back(kv.at(0).get<std::string>(), kv.at(1).get<std::string>());
+            run.bounces = r.at("bounces").get<int>();
+            run.totalMs = r.at("totalMs").get<double>();
+            for (const Json& p : r.at("passes"))
+                run.passes.push_back({p.at("pass").get<std::string>(), p.at("medianMs").get<double>(),
+                                      p.at("minMs").get<double>(), p.at("maxMs").get<double>(),
+                                      p.at("lastMs").get<double>(), p.at("frames").get<std::size_t>()});
+            run.indirect = metricsFromJson(r.at("indirect"));
+            run.indirectOne = metricsFromJson(r.at("indirectOneBounce"));
+            run.image = metricsFromJson(r.at("image"));
+            const int index = r.at("index").get<int>();
+            auto pixels = importers::readImageChannels(dir / runImageName(index));
+            if (!pixels)
+                return std::unexpected(pixels.error());
+            if (pixels->width != s.width || pixels->height != s.height || pixels->names.size() != 3)
+                return scene::makeError(scene::ErrorCode::InvalidValue, (dir / runImageName(index)).string(), "",
+                                        "not this shard's " + std::to_string(s.width) + "x" +
+                                            std::to_string(s.height) + " RGB image");
+            run.indirectPixels.resize(pixels->pixels.size() / 3);
+            for (std::size_t i = 0; i < run.indirectPixels.size(); ++i)
+                run.indirectPixels[i] = {pixels->pixels[3 * i], pixels->pixels[3 * i + 1], pixels->pixels[3 * i + 2]};
+            s.indices.push_back(index);
+            s.runs.push_back(std::move(run));
+        }
+    } catch (const Json::exception& e) {
+        return scene::makeError(scene::ErrorCode::MissingField, file.string(), "", e.what());
+    }
+    return s;
+}
+
+} // namespace
+
+bool shardRunsCombination(const reference::ShardSpec& shard, int combinationIndex) {
+    return combinationIndex % shard.count == shard.index;
+}
+
+bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
+    Json runs = Json::array();
+    for (std::size_t k = 0; k < shard.runs.size(); ++k) {
+        const SweepRun& r = shard.runs[k];
+        const int index = shard.indices[k];
+        importers::FloatChannels rgb{shard.width, shard.height, {"R", "G", "B"}, {}, {}};
+        for (const glm::vec3& c : r.indirectPixels)
+            rgb.pixels.insert(rgb.pixels.end(), {c.r, c.g, c.b});
+        if (auto ok = importers::writeImageChannels(dir / runImageName(index), rgb); !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            return false;
+        }
+        Json settings = Json::array();
+        for (const auto& [key, value] : r.settings)
+            settings.push_back({key, value});
+        Json passes = Json::array();
+        for (const auto& p : r.passes)
+            passes.push_back({{"pass", p.pass}, {"medianMs", p.medianMs}, {"minMs", p.minMs},
+                              {"maxMs", p.maxMs}, {"lastMs", p.lastMs}, {"frames", p.samples}});
+        runs.push_back({{"index", index},
+                        {"settings", settings},
+                        {"bounces", r.bounces},
+                        {"totalMs", r.totalMs},
+                        {"passes", passes},
+                        {"indirect", metricsToJson(r.indirect)},
+                        {"indirectOneBounce", metricsToJson(r.indirectOne)},
+                        {"image", metricsToJson(r.image)}});
+    }
+    const Json j{{"format", kFormat},
+                 {"version", kVersion},
+                 {"shard", reference::formatShard(shard.shard)},
+                 {"combinations", shard.combinations},
+                 {"command", shard.command},
+                 {"machine", shard.machine},
+                 {"width", shard.width},
+                 {"height", shard.height},
+                 {"reference",
+                  {{"file", shard.referenceFile}, {"absolute", shard.referenceAbsolute}, {"hash", shard.referenceHash}}},
+                 {"runs", runs}};
+    return writeReportFiles({{(dir / "shard.json").string(), j.dump(1) + "\n"}});
+}
+
+void printBenchMergeHelp() {
+    std::cout << R"(
+bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]:
+joins the shards of one sweep (`lpv bench PROJECT --sweep ... --reference
+REF.exr --shard I/N --out SHARD_DIR`, one per process or cluster task, see
+docs/cluster.md) and writes into OUT_DIR the files the sweep writes unsharded
+(sweep.csv, sweep.json, sweep.md, the plots and crops), its error columns
+exactly as one process would have measured them. Refuses shards of different
+sweeps (command, size, reference file content, shard count), a shard given
+twice, a shard folder without its shard.json (killed before it finished) and
+an incomplete set, naming the missing shards. Warns, and says so in sweep.md,
+when the shards ran on different machines (their timings do not compare).
+  --reference REF.exr   The reference, where it is no longer at the path the
+                        shards recorded (its content must be the same)
+)";
+}
+
+int benchMerge(Args args) {
+    const auto referenceOverride = args.option("--reference");
+    if (!args.missingValue().empty())
+        return usageError(args.missingValue() + " needs a value", "bench");
+    if (auto unknown = args.unknownOption())
+        return usageError("unknown option '" + *unknown + "'", "bench");
+    auto pos = args.positionals();
+    pos.erase(pos.begin()); // "merge"
+    if (pos.size() < 2)
+        return usageError("bench merge expects OUT_DIR and at least one shard folder", "bench");
+    const fs::path outDir = pos.front();
+    std::vector<SweepShard> shards;
+    std::vector<std::string> folders(pos.begin() + 1, pos.end());
+    for (const std::string& folder : folders) {
+        auto s = readSweepShard(folder);
+        if (!s) {
+            std::cerr << "lpv: " << s.error().describe() << "\n";
+            return kFailure;
+        }
+        shards.push_back(std::move(*s));
+    }
+    const SweepShard& first = shards.front();
+    std::vector<const SweepShard*> byIndex(std::size_t(first.shard.count), nullptr);
+    std::set<std::string> machines;
+    auto refuse = [&](const std::string& folder, const std::string& why) {
+        std::cerr << "lpv: " << folder << ": " << why << "\n";
+        return kFailure;
+    };
+    for (std::size_t k = 0; k < shards.size(); ++k) {
+        const SweepShard& s = shards[k];
+        const std::string& folder = folders[k];
+        if (s.shard.count != first.shard.count)
+            return refuse(folder, "shard " + reference::formatShard(s.shard) + " is one of " +
+                                      std::to_string(s.shard.count) + ", but " + folders[0] + " is one of " +
+                                      std::to_string(first.shard.count));
+        if (s.command != first.command || s.combinations != first.combinations || s.width != first.width ||
+            s.height != first.height)
+            return refuse(folder, "not a shard of the same sweep as " + folders[0] + ": its command is\n  " +
+                                      s.command + "\nagainst\n  " + first.command);
+        if (s.referenceHash != first.referenceHash)
+            return refuse(folder, "measured against another reference (content hash " + s.referenceHash +
+                                      ", " + folders[0] + " has " + first.referenceHash + ")");
+        if (const SweepShard*& slot = byIndex[std::size_t(s.shard.index)]; slot)
+            return refuse(folder, "shard " + reference::formatShard(s.shard) + " is given twice");
+        else
+            slot = &s;
+        std::vector<int> expected;
+        for (int i = 0; i < s.combinations; ++i)
+            if (shardRunsCombination(s.shard, i))
+                expected.push_back(i);
+        if (s.indices != expected)
+            return refuse(folder, "shard " + reference::formatShard(s.shard) + " has " +
+                                      std::to_string(s.indices.size()) + " runs, not its " +
+                                      std::to_string(expected.size()) + " combinations");
+        machines.insert(s.machine);
+    }
+    std::string missing;
+    for (int i = 0; i < first.shard.count; ++i)
+        if (!byIndex[std::size_t(i)])
+            missing += (missing.empty() ? "" : ", ") + reference::formatShard({i, first.shard.count});
+    if (!missing.empty())
+        return refuse("lpv bench merge", "incomplete set: missing shard" +
+                                             std::string(missing.find(',') != std::string::npos ? "s " : " ") +
+                                             missing);
+
+    // The reference: for the crops and the report's header; it must be the one measured against.
+    fs::path refFile = referenceOverride ? fs::path(*referenceOverride) : fs::path(first.referenceAbsolute);
+    if (!referenceOverride && !fs::exists(refFile))
+        refFile = first.referenceFile;
+    if (fileContentHash(refFile) != first.referenceHash)
+        return refuse(refFile.string(), "not the reference the shards were measured against (content hash " +
+                                            first.referenceHash +
+                                            "); give that file with --reference");
+    auto loaded = readReferenceExr(refFile);
+    if (!loaded) {
+        std::cerr << "lpv: " << loaded.error().describe() << "\n";
+        return kFailure;
+    }
+    reference::ReferenceImage ref = std::move(loaded->image);
+    if (auto it = loaded->attributes.find("lpv:seconds"); it != loaded->attributes.end())
+        ref.seconds = std::atof(it->second.c_str());
+
+    std::vector<SweepRun> runs(std::size_t(first.combinations));
+    for (const SweepShard* s : byIndex)
+        for (std::size_t k = 0; k < s->runs.size(); ++k)
+            runs[std::size_t(s->indices[k])] = s->runs[k];
+    std::string note;
+    if (machines.size() > 1) {
+        note = "**The shards ran on different machines**; their timings do not compare:";
+        for (const std::string& m : machines)
+            note += "\n- " + m;
+        std::cerr << "lpv: warning: the shards ran on " << machines.size()
+                  << " different machines; their timings do not compare (listed in sweep.md)\n";
+    }
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
+    if (ec)
+        return refuse(outDir.string(), "cannot create the folder: " + ec.message());
+    if (!writeSweepOutputs(outDir, runs, first.width, first.height, first.command, first.machine, ref, note))
+        return kFailure;
+    std::printf("merged %d shards: %d runs\n", first.shard.count, first.combinations);
+    return kOk;
+}
+
+} // namespace lpv::cli
