@@ -9,6 +9,7 @@
 // (report.md, report.json) names per scene the cheapest settings that reach
 // 10% and 5% indirect error; each sweep keeps its own CSV, JSON and plots.
 #include "BenchReport.h"
+#include "BenchReportPlan.h"
 #include "Cli.h"
 #include "ReferenceFile.h"
 
@@ -30,6 +31,7 @@ namespace lpv::cli {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using namespace report;
 
 void printBenchAccuracyReportHelp() {
     std::cout << R"(
@@ -89,54 +91,20 @@ JSON, Markdown and plots stay in DIR/NAME/QUESTION/.
                         Sibenik 4096, Sponza 2048; --quick: 256)
   --radiosity-seconds S Longest radiosity solve (default 160; solve times
                         double from 5 s up to it)
+
+On a cluster (docs/cluster.md, packaging/cluster/), in pieces that share DIR:
+  --merge-shards N      The coordinator: each run does the next step, first
+                        making the projects, then merging the N shards'
+                        references (lpv merge), then merging their sweeps (lpv
+                        bench merge), measuring radiosity and writing the report
+  --shard I/N           Shard I of N (0-based): its tiles of every missing
+                        reference, or once they are merged, its combinations of
+                        every sweep. Same options as the coordinator's.
+  Order: coordinator, N shards, coordinator, N shards, coordinator.
 )";
 }
 
 namespace {
-
-struct Question {
-    std::string name;
-    std::string sweep;      // full report
-    std::string quickSweep; // --quick; empty = left out
-};
-
-const std::vector<Question> kQuestions = {
-    {"steps", "lpv.propagationSteps=0,1,2,4,8,16,32,64", "lpv.propagationSteps=0,4,16"},
-    {"grid", "lpv.gridSize=16,32,64", "lpv.gridSize=16,32"},
-    {"cascades", "lpv.cascades=1,2,3,4", ""},
-    {"rsm", "rsm.tileSize=64,128,256,512,1024", ""},
-    {"variant", "lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter", ""},
-    {"occlusion", "lpv.occlusion=false,true", "lpv.occlusion=false,true"},
-    {"directed", "lpv.directedPropagation=off,on", ""},
-    {"sky", "effects.skyInjection=off,on", ""},
-    {"subsurface", "effects.subsurface=off,on", ""},
-    {"glossy", "effects.glossyReflections=off,on", ""},
-    {"bounces", "lpv.bounces=1,2,3", ""},
-    {"viewShift", "lpv.viewShift=0,0.5,0.75,1", ""},
-    {"damping", "lpv.bleedingDamping=0,1,2,4", ""},
-    {"offset", "lpv.injectionOffset=0,0.5,1,2", ""},
-    {"firstStep", "lpv.occlusionFirstStep=true,false", ""},
-    {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
-    {"lookupOffset", "lpv.lookupOffset=0,0.5,1", ""},
-    {"visibility", "lpv.visibilityLookup=false,true", ""},
-};
-
-struct SceneSpec {
-    std::string name;
-    std::string source; // relative to --scenes; empty = the built-in template
-    // Reference samples per pixel unless --spp says otherwise: enough that the
-    // reference's own noise stays well under the errors it measures. At 256
-    // spp (160x90) Sibenik's one-bounce light, which enters through a few
-    // windows, had a noise MARE of 41% and pixels the tracer had not reached
-    // yet read as black, so the LPV's MARE came out 1,927% against it and 282%
-    // against 4096 spp (noise 19%); Sponza 17% -> 6.5% at 2048, the Cornell
-    // box 11% -> 2.7% at 4096 (issue #24, docs/lpv.md).
-    int defaultSpp;
-};
-
-const std::vector<SceneSpec> kScenes = {{"cornell-box", "", 4096},
-                                        {"sibenik", "sibenik/sibenik.obj", 4096},
-                                        {"sponza", "sponza/sponza.obj", 2048}};
 
 // One render of a sweep, as its sweep.json gives it.
 struct ReportRun {
@@ -165,16 +133,6 @@ struct SceneReport {
     std::string radiosityNote;
 };
 
-// Runs one `lpv` command in this process, echoing it as a user would type it.
-int call(const char* name, int (*command)(Args), std::vector<std::string> args) {
-    std::printf("\n$ lpv %s", name);
-    for (const auto& a : args)
-        std::printf(" %s", a.c_str());
-    std::printf("\n");
-    std::fflush(stdout);
-    return command(Args(std::move(args)));
-}
-
 std::string percent(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * v);
@@ -185,47 +143,6 @@ std::string fixed(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
-}
-
-// "lpv.bounces=1,2,3" -> {"1", "2", "3"}.
-std::vector<std::string> splitValues(const std::string& sweep) {
-    std::vector<std::string> out;
-    std::string values = sweep.substr(sweep.find('=') + 1);
-    std::stringstream in(values);
-    for (std::string v; std::getline(in, v, ',');)
-        out.push_back(v);
-    return out;
-}
-
-// A fresh project for the scene; false (and a message) when it cannot be made.
-bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::path& project) {
-    std::error_code ec;
-    fs::remove(project, ec);
-    fs::remove_all(fs::path(project).replace_extension(".assets"), ec);
-    if (spec.source.empty()) {
-        if (call("new", runNew, {project.string(), "--template", "cornell-box"}) != kOk)
-            return false;
-        // The default project as a user first sees it: lit by its ceiling
-        // lamp (an area light), which the LPV injects on auto.
-        return true;
-    }
-    const fs::path source = scenesDir / spec.source;
-    if (!fs::exists(source)) {
-        std::cerr << "lpv: " << source.string() << ": no such scene file (give --scenes DIR)\n";
-        return false;
-    }
-    return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
-}
-
-// A reference traced earlier with the same size and bounce count is reused.
-bool referenceMatches(const fs::path& file, int width, int height, int bounces = 0, int spp = 0) {
-    if (!fs::exists(file))
-        return false;
-    auto ref = readReferenceExr(file);
-    if (!ref || ref->image.width != width || ref->image.height != height || ref->image.samplesPerPixel < spp)
-        return false;
-    const auto it = ref->attributes.find("lpv:bounces");
-    return bounces == 0 || (it != ref->attributes.end() && it->second == std::to_string(bounces));
 }
 
 std::string describeReference(const fs::path& file) {
@@ -355,28 +272,6 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
     }
 }
 
-// --resume: whether `file` was written by the very sweep the report would run
-// now (its recorded command holds the project, the swept values, the
-// reference, the size, frames and warm-up) after the reference was traced.
-bool sweepDoneAlready(const fs::path& file, const fs::path& project, const std::string& sweep,
-                      const fs::path& reference, int width, int height, int frames, int warmup) {
-    std::error_code ec;
-    if (!fs::exists(file, ec) || fs::last_write_time(file, ec) < fs::last_write_time(reference, ec) || ec)
-        return false;
-    std::ifstream in(file);
-    const Json j = Json::parse(in, nullptr, false);
-    if (j.is_discarded() || !j.contains("runs") || j["runs"].empty())
-        return false;
-    const std::string command = j.value("command", "") + " ";
-    for (const std::string& part :
-         {"lpv bench " + project.string() + " ", "--sweep " + sweep + " ", "--reference " + reference.string() + " ",
-          "--width " + std::to_string(width) + " ", "--height " + std::to_string(height) + " ",
-          "--frames " + std::to_string(frames) + " ", "--warmup " + std::to_string(warmup) + " "})
-        if (command.find(part) == std::string::npos)
-            return false;
-    return true;
-}
-
 // The lowest error among the settings whose mean is within 0.8-1.25x of the
 // reference's (issue #24's band): a setting that shows almost no light can
 // have a low MARE where the reference is dark.
@@ -500,13 +395,16 @@ std::string reportJson(const std::vector<SceneReport>& scenes, const std::string
 
 } // namespace
 
-int benchAccuracyReport(Args args) {
-    const fs::path outDir = args.option("--out").value_or("bench-report");
-    const fs::path scenesDir = args.option("--scenes").value_or("../shared/scenes");
-    const std::vector<std::string> only = args.options("--scene");
-    const std::vector<std::string> onlyQuestions = args.options("--question");
-    const bool quick = args.flag("--quick");
-    const bool resume = args.flag("--resume");
+namespace report {
+
+std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode) {
+    ReportOptions o;
+    o.outDir = args.option("--out").value_or("bench-report");
+    o.scenesDir = args.option("--scenes").value_or("../shared/scenes");
+    o.scenes = args.options("--scene");
+    o.questions = args.options("--question");
+    o.quick = args.flag("--quick");
+    o.resume = args.flag("--resume");
     const auto width = parseCount(args.option("--width").value_or("320"), 1);
     const auto height = parseCount(args.option("--height").value_or("180"), 1);
     const auto frames = parseCount(args.option("--frames").value_or("10"), 1);
@@ -514,35 +412,64 @@ int benchAccuracyReport(Args args) {
     const auto sppOption = args.option("--spp");
     const auto spp = parseCount(sppOption.value_or("1"), 1);
     const auto radiosityText = args.option("--radiosity-seconds");
+    auto fail = [&](const std::string& message) -> std::optional<ReportOptions> {
+        exitCode = usageError(message, "bench");
+        return std::nullopt;
+    };
     if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
+        return fail(args.missingValue() + " needs a value");
     if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
+        return fail("unknown option '" + *unknown + "'");
     if (args.positionals().size() != 1)
-        return usageError("bench report takes no files (scenes come from --scenes)", "bench");
+        return fail("bench report takes no files (scenes come from --scenes)");
     if (!width || !height || !frames || !warmup || !spp)
-        return usageError(
-            "--width, --height, --frames and --spp must be positive integers, --warmup zero or more",
-            "bench");
-    const auto radiosityCount = parseCount(radiosityText.value_or(quick ? "5" : "160"), 5);
+        return fail("--width, --height, --frames and --spp must be positive integers, --warmup zero or more");
+    const auto radiosityCount = parseCount(radiosityText.value_or(o.quick ? "5" : "160"), 5);
     if (!radiosityCount)
-        return usageError("--radiosity-seconds must be a whole number of seconds, at least 5", "bench");
-    for (const std::string& name : onlyQuestions)
+        return fail("--radiosity-seconds must be a whole number of seconds, at least 5");
+    for (const std::string& name : o.questions)
         if (std::ranges::find(kQuestions, name, &Question::name) == kQuestions.end())
-            return usageError("unknown question '" + name + "' (see lpv bench --help)", "bench");
-    for (const std::string& name : only)
+            return fail("unknown question '" + name + "' (see lpv bench --help)");
+    for (const std::string& name : o.scenes)
         if (std::ranges::find(kScenes, name, &SceneSpec::name) == kScenes.end())
-            return usageError("unknown scene '" + name + "' (cornell-box, sibenik, sponza)", "bench");
+            return fail("unknown scene '" + name + "' (cornell-box, sibenik, sponza)");
+    o.width = *width;
+    o.height = *height;
+    o.frames = *frames;
+    o.warmup = *warmup;
+    if (sppOption)
+        o.spp = *spp;
+    o.radiosityCount = *radiosityCount;
+    return o;
+}
 
+std::string reportCommand(const ReportOptions& o) {
+    std::string command = "lpv bench report --out " + o.outDir.string() + " --scenes " + o.scenesDir.string() +
+                          " --width " + std::to_string(o.width) + " --height " + std::to_string(o.height) +
+                          " --frames " + std::to_string(o.frames) + " --warmup " + std::to_string(o.warmup) +
+                          (o.spp ? " --spp " + std::to_string(*o.spp) : std::string()) + " --radiosity-seconds " +
+                          std::to_string(o.radiosityCount);
+    for (const std::string& s : o.scenes)
+        command += " --scene " + s;
+    for (const std::string& q : o.questions)
+        command += " --question " + q;
+    if (o.resume)
+        command += " --resume";
+    if (o.quick)
+        command += " --quick";
+    return command;
+}
+
+int runWholeReport(const ReportOptions& o) {
     std::vector<SceneReport> reports;
     std::string machine;
     int status = kOk;
     for (const SceneSpec& spec : kScenes) {
-        if (!only.empty() && std::ranges::find(only, spec.name) == only.end())
+        if (!o.wantsScene(spec.name))
             continue;
         SceneReport report;
         report.name = spec.name;
-        const fs::path sceneDir = outDir / spec.name;
+        const fs::path sceneDir = o.outDir / spec.name;
         std::error_code ec;
         fs::create_directories(sceneDir, ec);
         if (ec) {
@@ -550,125 +477,102 @@ int benchAccuracyReport(Args args) {
                       << "\n";
             return kFailure;
         }
-        const fs::path project = sceneDir / (spec.name + ".lpvproj");
+        const fs::path project = projectFileOf(spec, o);
         report.projectFile = project.string();
         std::printf("\n=== %s\n", spec.name.c_str());
-        if (!makeProject(spec, scenesDir, project)) {
+        // --resume keeps a project that loads (its references and sweeps were made from it).
+        const bool keepProject = o.resume && scene::loadProject(project).has_value();
+        if (keepProject)
+            std::printf("reusing %s (--resume)\n", project.string().c_str());
+        const auto plan = keepProject || makeProject(spec, o.scenesDir, project) ? planScene(spec, o) : std::nullopt;
+        if (!plan) {
             report.failures.push_back("making the project");
             reports.push_back(report);
             status = kFailure;
             continue;
         }
-        // --quick is a smoke run: 256 spp unless --spp says otherwise.
-        const int sceneSpp = sppOption ? *spp : (quick ? 256 : spec.defaultSpp);
-        const auto loaded = scene::loadProject(project);
-        const scene::ParameterSet current = loaded ? loaded->parameters : scene::ParameterSet{};
-        // One reference per bounce count a sweep needs (like for like); the
-        // project's own lpv.bounces first.
-        // `sky`: the value of effects.skyInjection the sweep renders with (empty:
-        // the project's), so that reference.skyLight=auto follows it.
-        auto referenceFor = [&](int bounces, const std::string& sky = "") -> std::optional<fs::path> {
-            const fs::path ref = sceneDir / ("reference-" + std::to_string(bounces) + "-bounce" +
-                                             (sky.empty() ? "" : "-sky-" + sky) + ".exr");
-            if (referenceMatches(ref, *width, *height, bounces, sceneSpp)) {
-                std::printf("reusing %s (delete it to trace again)\n", ref.string().c_str());
-                return ref;
+        std::vector<int> traced(plan->references.size(), -1); // -1 not yet, 0 failed, 1 there
+        auto referenceThere = [&](std::size_t i) {
+            if (traced[i] < 0) {
+                const PlannedReference& ref = plan->references[i];
+                if (referenceMatches(ref.file, o.width, o.height, ref.bounces, plan->spp)) {
+                    std::printf("reusing %s (delete it to trace again)\n", ref.file.string().c_str());
+                    traced[i] = 1;
+                } else {
+                    traced[i] = call("reference", runReference, referenceArgs(*plan, ref, ref.file, o)) == kOk;
+                }
             }
-            std::vector<std::string> traceArgs{project.string(), "-o", ref.string(), "--width",
-                                               std::to_string(*width), "--height", std::to_string(*height),
-                                               "--spp", std::to_string(sceneSpp), "--bounces", std::to_string(bounces)};
-            if (!sky.empty())
-                traceArgs.insert(traceArgs.end(), {"--set", "effects.skyInjection=" + sky});
-            if (call("reference", runReference, traceArgs) != kOk)
-                return std::nullopt;
-            return ref;
+            return traced[i] == 1;
         };
-        const int projectBounces = current.getInt("lpv.bounces");
-        const auto ref = referenceFor(projectBounces);
-        if (!ref) {
+        if (!referenceThere(0)) {
             report.failures.push_back("tracing the reference");
             reports.push_back(report);
             status = kFailure;
             continue;
         }
-        report.referenceNote = describeReference(*ref) + ", " + std::to_string(projectBounces) + " bounce" +
-                               (projectBounces == 1 ? "" : "s");
-        for (const Question& q : kQuestions) {
-            const std::string& sweep = quick ? q.quickSweep : q.sweep;
-            if (sweep.empty() ||
-                (!onlyQuestions.empty() && std::ranges::find(onlyQuestions, q.name) == onlyQuestions.end()))
+        report.referenceNote = describeReference(plan->references[0].file) + ", " +
+                               std::to_string(plan->projectBounces) + " bounce" +
+                               (plan->projectBounces == 1 ? "" : "s");
+        for (const PlannedSweep& sweep : plan->sweeps) {
+            std::vector<std::string> args = sweepArgs(*plan, sweep, o);
+            args.insert(args.end(), {"--out", sweep.dir.string()});
+            if (referenceThere(sweep.reference) && o.resume &&
+                sweepDoneAlready(sweep.dir / "sweep.json", *plan, sweep, o)) {
+                std::printf("reusing %s (--resume: made by the same sweep command)\n",
+                            (sweep.dir / "sweep.json").string().c_str());
+            } else if (!referenceThere(sweep.reference) || call("bench", benchSweep, args) != kOk) {
+                report.failures.push_back("sweep " + sweep.question + " (" + sweep.sweep + ")");
+                status = kFailure;
                 continue;
-            // Each sweep against its like-for-like reference: the bounces
-            // question runs one sweep per value, each against a reference with
-            // as many bounces; the sky question one per value, each against a
-            // reference that traces sky light exactly when that LPV injects it.
-            struct Part {
-                std::string sweep, folder, sky;
-                int bounces = 1;
-            };
-            std::vector<Part> parts;
-            if (q.name == "bounces") {
-                for (const std::string& k : splitValues(sweep))
-                    parts.push_back({"lpv.bounces=" + k, k, "", std::atoi(k.c_str())});
-            } else if (q.name == "sky") {
-                for (const std::string& v : splitValues(sweep))
-                    parts.push_back({"effects.skyInjection=" + v, v, v, projectBounces});
-            } else {
-                parts.push_back({sweep, "", "", projectBounces});
             }
-            for (const Part& p : parts) {
-                const std::string& part = p.sweep;
-                const auto partRef =
-                    p.bounces == projectBounces && p.sky.empty() ? ref : referenceFor(p.bounces, p.sky);
-                const fs::path dir = p.folder.empty() ? sceneDir / q.name : sceneDir / q.name / p.folder;
-                if (partRef && resume && sweepDoneAlready(dir / "sweep.json", project, part, *partRef, *width, *height,
-                                                          *frames, *warmup)) {
-                    std::printf("reusing %s (--resume: made by the same sweep command)\n",
-                                (dir / "sweep.json").string().c_str());
-                } else if (!partRef ||
-                    call("bench", benchSweep,
-                         {project.string(), "--sweep", part, "--reference", partRef->string(), "--out",
-                          dir.string(), "--width", std::to_string(*width), "--height", std::to_string(*height),
-                          "--frames", std::to_string(*frames), "--warmup", std::to_string(*warmup)}) != kOk) {
-                    report.failures.push_back("sweep " + q.name + " (" + part + ")");
-                    status = kFailure;
-                    continue;
-                }
-                auto runs = readSweep(dir / "sweep.json", q.name, current);
-                report.runs.insert(report.runs.end(), runs.begin(), runs.end());
-                if (machine.empty()) {
-                    std::ifstream in(dir / "sweep.json");
-                    const Json j = Json::parse(in, nullptr, false);
-                    if (!j.is_discarded())
-                        machine = j.value("machine", "");
-                }
+            auto runs = readSweep(sweep.dir / "sweep.json", sweep.question, plan->current);
+            report.runs.insert(report.runs.end(), runs.begin(), runs.end());
+            if (machine.empty()) {
+                std::ifstream in(sweep.dir / "sweep.json");
+                const Json j = Json::parse(in, nullptr, false);
+                if (!j.is_discarded() && j.contains("machine") && j["machine"].is_string())
+                    machine = j["machine"].get<std::string>();
             }
         }
-        measureRadiosity(report, sceneDir, *width, *height, sceneSpp, double(*radiosityCount));
+        measureRadiosity(report, sceneDir, o.width, o.height, plan->spp, double(o.radiosityCount));
         if (!report.failures.empty())
             status = kFailure;
         reports.push_back(std::move(report));
     }
 
-    std::string command = "lpv bench report --out " + outDir.string() + " --scenes " + scenesDir.string() +
-                          " --width " + std::to_string(*width) + " --height " + std::to_string(*height) +
-                          " --frames " + std::to_string(*frames) + " --warmup " + std::to_string(*warmup) +
-                          (sppOption ? " --spp " + std::to_string(*spp) : std::string()) + " --radiosity-seconds " +
-                          std::to_string(*radiosityCount);
-    for (const std::string& s : only)
-        command += " --scene " + s;
-    for (const std::string& q : onlyQuestions)
-        command += " --question " + q;
-    if (resume)
-        command += " --resume";
-    if (quick)
-        command += " --quick";
-    const std::optional<std::string> md = (outDir / "report.md").string(),
-                                     json = (outDir / "report.json").string();
+    const std::string command = reportCommand(o);
+    const std::optional<std::string> md = (o.outDir / "report.md").string(),
+                                     json = (o.outDir / "report.json").string();
     if (!writeReportFiles(
             {{md, reportMarkdown(reports, command, machine)}, {json, reportJson(reports, command, machine)}}))
         return kFailure;
     return status;
+}
+
+} // namespace report
+
+int benchAccuracyReport(Args args) {
+    const auto shardText = args.option("--shard");
+    const auto mergeText = args.option("--merge-shards");
+    int exitCode = kOk;
+    const auto options = parseReportOptions(args, exitCode);
+    if (!options)
+        return exitCode;
+    if (shardText && mergeText)
+        return usageError("--shard runs one shard, --merge-shards joins them: give one", "bench");
+    if (shardText) {
+        auto shard = reference::parseShard(*shardText);
+        if (!shard)
+            return usageError(shard.error().message, "bench");
+        return report::runReportShard(*options, *shard);
+    }
+    if (mergeText) {
+        const auto count = parseCount(*mergeText, 1);
+        if (!count)
+            return usageError("--merge-shards needs the shard count N (a whole number, at least 1)", "bench");
+        return report::runReportCoordinator(*options, *count);
+    }
+    return report::runWholeReport(*options);
 }
 
 } // namespace lpv::cli

@@ -236,6 +236,12 @@ int benchSweep(Args args) {
         std::erase_if(run.passes, [](const renderer::PassTiming& t) { return t.samples == 0; });
         for (const auto& p : run.passes)
             run.totalMs += p.medianMs;
+        // The measured frame must follow a frame of the same settings: the
+        // camera's geometry volume reads the previous frame's G-buffer, so
+        // the first frame of a combination depends on what ran before it
+        // (in a shard, another combination than in one process).
+        if (*warmup == 0 && *frames == 1 && !renderFrames(*setup, *width, *height, 1))
+            return kFailure;
         const auto image = readRgb(setup->renderer->readHdr());
         // The indirect view: the LPV irradiance at the same pixels, no albedo, no tonemap.
         (void)setup->project.parameters.setFromText("output.view", "indirect", "bench");

@@ -122,3 +122,54 @@ TEST(BenchReport, BouncesAndSkyAreMeasuredAgainstTheirOwnReferences) {
     EXPECT_TRUE(fs::exists(dir / "cornell-box" / "bounces" / "3" / "sweep.md"));
     fs::remove_all(dir);
 }
+
+// Issue #28: the report in pieces, as the cluster job runs it (coordinator,
+// shards, coordinator, shards, coordinator), gives the errors one process gives.
+TEST(BenchReport, ShardedReportMatchesTheOneProcessReport) {
+    const fs::path dir = fs::temp_directory_path() / ("lpv-bench-report-shards-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const std::string options = " --quick --scene cornell-box --question steps --width 48 --height 32 --spp 16 "
+                                "--frames 1 --warmup 0 --radiosity-seconds 5 --out '";
+    const std::string sharded = "bench report" + options + (dir / "sharded").string() + "'";
+    // A shard before the coordinator made the projects is told to wait for it.
+    RunResult r = runLpv(sharded + " --shard 0/2");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("--merge-shards 2"), std::string::npos) << r.output;
+    auto step = [&](const std::string& args) {
+        const RunResult s = runLpv(sharded + args);
+        EXPECT_EQ(s.exitCode, 0) << args << "\n" << s.output;
+        return s.output;
+    };
+    EXPECT_NE(step(" --merge-shards 2").find("projects made"), std::string::npos);
+    step(" --shard 0/2");
+    // One shard short: the coordinator names the missing piece and writes no reference.
+    r = runLpv(sharded + " --merge-shards 2");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("reference-1-bounce.shard-1-of-2.exr"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "sharded" / "cornell-box" / "reference-1-bounce.exr"));
+    step(" --shard 1/2");
+    EXPECT_NE(step(" --merge-shards 2").find("references merged"), std::string::npos);
+    step(" --shard 1/2");
+    step(" --shard 0/2");
+    step(" --merge-shards 2");
+    ASSERT_TRUE(fs::exists(dir / "sharded" / "report.json"));
+
+    r = runLpv("bench report" + options + (dir / "whole").string() + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto runsOf = [](const fs::path& file) {
+        std::ifstream in(file);
+        const auto j = nlohmann::json::parse(in, nullptr, false);
+        return j.is_discarded() ? nlohmann::json() : j["scenes"][0]["runs"];
+    };
+    const auto a = runsOf(dir / "whole" / "report.json"), b = runsOf(dir / "sharded" / "report.json");
+    ASSERT_EQ(a.size(), 3u);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i]["setting"], b[i]["setting"]);
+        EXPECT_EQ(a[i]["indirectMare"], b[i]["indirectMare"]) << a[i]["setting"];
+        EXPECT_EQ(a[i]["indirectMeanRatio"], b[i]["indirectMeanRatio"]) << a[i]["setting"];
+        EXPECT_EQ(a[i]["imageMare"], b[i]["imageMare"]) << a[i]["setting"];
+        EXPECT_GT(b[i]["totalMs"].get<double>(), 0.0);
+    }
+    fs::remove_all(dir);
+}
