@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Submits a path-traced reference split into N shards to Slurm: a job array
+# of N tasks (slurm-reference.sbatch, one `lpv reference --shard I/N` each)
+# and a merge job (slurm-reference-merge.sbatch) that runs only after every
+# task succeeded (--dependency=afterok; cancelled if one fails). Issue #28,
+# docs/cluster.md.
+#
+#   submit-reference.sh PROJECT.lpvproj OUT.exr N [lpv reference options...]
+#
+# e.g. submit-reference.sh sibenik.lpvproj sibenik-ref.exr 32 --width 1920 --height 1080 --spp 4096
+#
+# Prints, on stdout, ARRAY_JOB=<id>, MERGE_JOB=<id> and SHARD_DIR=<folder>
+# (shell assignments, for eval). Environment:
+#   LPV              the lpv binary the jobs run (default `lpv` on the nodes' PATH)
+#   LPV_SHARD_DIR    where the shards go (default OUT.shards/ beside OUT.exr; a
+#                    folder every node sees, as OUT.exr and PROJECT must be)
+#   LPV_SBATCH_ARGS  more sbatch options for both jobs, e.g. "--partition=cpu --time=4:00:00
+#                    --cpus-per-task=32" (word-split); SBATCH_* variables work too
+set -euo pipefail
+
+if [ $# -lt 3 ]; then
+  sed -n '2,20s/^# \{0,1\}//p' "$0" >&2
+  exit 2
+fi
+here=$(dirname "$(realpath "$0")")
+project=$(realpath -e "$1")
+out=$(realpath -m "$2")
+count=$3
+shift 3
+case $count in
+  '' | *[!0-9]* | 0) echo "N must be a positive integer, got '$count'" >&2; exit 2 ;;
+esac
+case $out in
+  *.exr) ;;
+  *) echo "OUT must end in .exr: $out" >&2; exit 2 ;;
+esac
+shard_dir=$(realpath -m "${LPV_SHARD_DIR:-${out%.exr}.shards}")
+# A relative LPV path is made absolute: the jobs may start in another folder.
+lpv=${LPV:-lpv}
+case $lpv in */*) lpv=$(realpath -e "$lpv") ;; esac
+export LPV=$lpv
+read -r -a extra <<<"${LPV_SBATCH_ARGS:-}"
+mkdir -p "$shard_dir"
+
+jobid() { cut -d';' -f1; } # --parsable prints "id" or "id;cluster"
+array=$(sbatch --parsable --export=ALL,LPV_SHARD_COUNT="$count" --array=0-$((count - 1)) "${extra[@]}" \
+  "$here/slurm-reference.sbatch" "$project" "$shard_dir" "$@" | jobid)
+if ! merge=$(sbatch --parsable --export=ALL --dependency=afterok:"$array" --kill-on-invalid-dep=yes "${extra[@]}" \
+  "$here/slurm-reference-merge.sbatch" "$out" "$shard_dir" "$count" | jobid); then
+  scancel "$array" || true
+  echo "could not submit the merge job; cancelled array job $array" >&2
+  exit 1
+fi
+echo "submitted $count shards as array job $array and the merge into $out as job $merge" >&2
+echo "ARRAY_JOB=$array"
+echo "MERGE_JOB=$merge"
+echo "SHARD_DIR=$shard_dir"
