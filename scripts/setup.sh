@@ -24,6 +24,8 @@ PACKAGES=(
   libembree-dev fonts-dejavu-core
   xvfb xauth
   desktop-file-utils appstream shared-mime-info
+  # the cluster test (tests/cluster, docs/cluster.md) runs a private Slurm on localhost
+  munge slurmctld slurmd slurm-client
 )
 
 if [ "${1:-}" = "--print-packages" ]; then

@@ -7,11 +7,13 @@
 #include "lpv/importers/ImageIO.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -62,7 +64,7 @@ const JobRecord* find(const std::vector<JobRecord>& records, const std::string& 
 double fieldOf(const std::string& text, const std::string& key, std::size_t from = 0) {
     const auto at = text.find(key + "=", from);
     if (at == std::string::npos)
-        return -1;
+        return std::numeric_limits<double>::quiet_NaN(); // fails every comparison
     return std::stod(text.substr(at + key.size() + 1));
 }
 
@@ -89,14 +91,6 @@ CommandResult runLpv(std::vector<std::string> args, std::chrono::seconds timeout
     return runCommand(args, options);
 }
 
-// Whether the lpv built here has `command` yet (issue #28 items 1-2 add
-// `lpv merge`, `--shard` and `lpv bench merge`).
-bool lpvHas(const std::vector<std::string>& command) {
-    std::vector<std::string> args = command;
-    args.push_back("--help");
-    return runLpv(args, 60s).exitCode == 0;
-}
-
 // Bit for bit on every channel of every pixel; the header (which records the
 // seconds each run took) is not compared.
 void expectSamePixels(const fs::path& expected, const fs::path& actual) {
@@ -115,10 +109,10 @@ void expectSamePixels(const fs::path& expected, const fs::path& actual) {
     if (differing > 0) {
         const std::size_t channels = a->names.size();
         const std::size_t pixel = first / channels;
-        ADD_FAILURE() << differing << " of " << a->pixels.size() << " values differ between " << expected << " and "
-                      << actual << "; the first at pixel (" << pixel % std::size_t(a->width) << ", "
-                      << pixel / std::size_t(a->width) << ") channel " << a->names[first % channels] << ": "
-                      << a->pixels[first] << " vs " << b->pixels[first];
+        ADD_FAILURE() << differing << " of " << a->pixels.size() << " values differ between " << expected
+                      << " and " << actual << "; the first at pixel (" << pixel % std::size_t(a->width)
+                      << ", " << pixel / std::size_t(a->width) << ") channel " << a->names[first % channels]
+                      << ": " << a->pixels[first] << " vs " << b->pixels[first];
     }
 }
 
@@ -141,7 +135,7 @@ std::vector<std::vector<std::string>> readCsv(const fs::path& file) {
 } // namespace
 
 class Cluster : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         auto started = SlurmCluster::start();
         if (started)
@@ -189,7 +183,8 @@ protected:
                 "LPV_SBATCH_ARGS=--output=" + (work_ / "slurm-%x-%A_%a.out").string()};
     }
 
-    Submitted submit(const std::string& script, const std::vector<std::string>& args, std::vector<std::string> env) {
+    Submitted submit(const std::string& script, const std::vector<std::string>& args,
+                     std::vector<std::string> env) {
         std::vector<std::string> argv{(kJobFiles / script).string()};
         argv.insert(argv.end(), args.begin(), args.end());
         const CommandResult r = cluster_->run(argv, std::move(env), work_);
@@ -227,19 +222,21 @@ protected:
 // The harness itself: an array job and a job that depends on it run, in order.
 TEST_F(Cluster, RunsAnArrayThenTheJobThatDependsOnIt) {
     const fs::path script = work_ / "task.sh";
-    std::ofstream(script) << "#!/bin/sh\n"
-                          << "echo \"task=$SLURM_ARRAY_TASK_ID count=$SLURM_ARRAY_TASK_COUNT start=$(date +%s.%N)\" > "
-                          << work_.string() << "/task-$SLURM_ARRAY_TASK_ID\n"
-                          << "sleep 0.3\n"
-                          << "echo \"end=$(date +%s.%N)\" >> " << work_.string() << "/task-$SLURM_ARRAY_TASK_ID\n";
+    std::ofstream(script)
+        << "#!/bin/sh\n"
+        << "echo \"task=$SLURM_ARRAY_TASK_ID count=$SLURM_ARRAY_TASK_COUNT start=$(date +%s.%N)\" > "
+        << work_.string() << "/task-$SLURM_ARRAY_TASK_ID\n"
+        << "sleep 0.3\n"
+        << "echo \"end=$(date +%s.%N)\" >> " << work_.string() << "/task-$SLURM_ARRAY_TASK_ID\n";
     const std::string output = "--output=" + (work_ / "slurm-%A_%a.out").string();
-    const CommandResult array = cluster_->run({"sbatch", "--parsable", "--export=ALL", "--array=0-3", output,
-                                               script.string()}, {}, work_);
+    const CommandResult array = cluster_->run(
+        {"sbatch", "--parsable", "--export=ALL", "--array=0-3", output, script.string()}, {}, work_);
     ASSERT_EQ(array.exitCode, 0) << array.output;
     const std::string arrayId = array.output.substr(0, array.output.find_first_of(";\n"));
-    const CommandResult after = cluster_->run({"sbatch", "--parsable", "--dependency=afterok:" + arrayId, output,
-                                               "--wrap", "date +%s.%N > " + (work_ / "after").string()},
-                                              {}, work_);
+    const CommandResult after =
+        cluster_->run({"sbatch", "--parsable", "--dependency=afterok:" + arrayId, output, "--wrap",
+                       "date +%s.%N > " + (work_ / "after").string()},
+                      {}, work_);
     ASSERT_EQ(after.exitCode, 0) << after.output;
     const std::string afterId = after.output.substr(0, after.output.find_first_of(";\n"));
 
@@ -249,7 +246,8 @@ TEST_F(Cluster, RunsAnArrayThenTheJobThatDependsOnIt) {
     for (int i = 0; i < 4; ++i) {
         const std::string task = readTextFile(work_ / ("task-" + std::to_string(i)));
         EXPECT_NE(task.find("task=" + std::to_string(i) + " count=4"), std::string::npos) << task;
-        EXPECT_LE(fieldOf(task, "end"), afterStart) << "the dependent job started before task " << i << " ended";
+        EXPECT_LE(fieldOf(task, "end"), afterStart)
+            << "the dependent job started before task " << i << " ended";
     }
 }
 
@@ -260,23 +258,26 @@ TEST_F(Cluster, JobFilesRunEveryShardThenTheMerge) {
     const std::vector<std::string> env = jobEnv(kFakeLpv);
     const fs::path project = work_ / "p.lpvproj";
     std::ofstream(project) << "{}\n";
-    const Submitted ref = submit("submit-reference.sh", {project.string(), (work_ / "ref.exr").string(), "4",
-                                                         "--width", "64"}, env);
-    const Submitted sweep = submit("submit-sweep.sh", {project.string(), (work_ / "sweep").string(), "3", "--sweep",
-                                                       "lpv.propagationSteps=0,4,8"}, env);
+    const Submitted ref = submit("submit-reference.sh",
+                                 {project.string(), (work_ / "ref.exr").string(), "4", "--width", "64"}, env);
+    const Submitted sweep = submit(
+        "submit-sweep.sh",
+        {project.string(), (work_ / "sweep").string(), "3", "--sweep", "lpv.propagationSteps=0,4,8"}, env);
     const auto records = waitFor({ref.arrayJob, ref.mergeJob, sweep.arrayJob, sweep.mergeJob});
     expectAllCompleted(records, 4 + 1 + 3 + 1);
 
     EXPECT_EQ(ref.shardDir, (work_ / "ref.shards").string());
     EXPECT_EQ(filesUnder(work_ / "ref.shards"),
-              (std::vector<std::string>{"shard-0-of-4.exr", "shard-1-of-4.exr", "shard-2-of-4.exr", "shard-3-of-4.exr"}))
+              (std::vector<std::string>{"shard-0-of-4.exr", "shard-1-of-4.exr", "shard-2-of-4.exr",
+                                        "shard-3-of-4.exr"}))
         << "no temporary file is left";
     const std::string merged = readTextFile(work_ / "ref.exr");
     const double mergeStart = fieldOf(merged, "merge-start");
     for (int i = 0; i < 4; ++i) {
         const auto at = merged.find("shard=" + std::to_string(i) + "/4 ");
         ASSERT_NE(at, std::string::npos) << merged;
-        EXPECT_LE(fieldOf(merged, "end", at), mergeStart) << "the merge started before shard " << i << " ended";
+        EXPECT_LE(fieldOf(merged, "end", at), mergeStart)
+            << "the merge started before shard " << i << " ended";
     }
 
     EXPECT_EQ(filesUnder(work_ / "sweep.shards"),
@@ -294,7 +295,8 @@ TEST_F(Cluster, AFailedShardCancelsTheMergeAndLeavesNoFile) {
     env.push_back("LPV_FAKE_FAIL_SHARD=2");
     const fs::path project = work_ / "p.lpvproj";
     std::ofstream(project) << "{}\n";
-    const Submitted ref = submit("submit-reference.sh", {project.string(), (work_ / "ref.exr").string(), "4"}, env);
+    const Submitted ref =
+        submit("submit-reference.sh", {project.string(), (work_ / "ref.exr").string(), "4"}, env);
     const auto records = waitFor({ref.arrayJob, ref.mergeJob});
     const JobRecord* failed = find(records, ref.arrayJob + "_2");
     ASSERT_TRUE(failed) << describe(records);
@@ -310,9 +312,9 @@ TEST_F(Cluster, AFailedShardCancelsTheMergeAndLeavesNoFile) {
 
 namespace {
 
-// Whether a process of this machine has these arguments, in this order, on
-// its command line (the lpv a job started).
-bool processWithArguments(const std::vector<std::string>& args) {
+// Whether a process of this machine has each of these argument runs, in
+// order, on its command line (the lpv of one shard of one test's project).
+bool processWithArguments(const std::vector<std::vector<std::string>>& runs) {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator("/proc", ec)) {
         const std::string raw = readTextFile(e.path() / "cmdline");
@@ -322,7 +324,8 @@ bool processWithArguments(const std::vector<std::string>& args) {
             argv.push_back(raw.substr(at, end - at));
             at = end == std::string::npos ? raw.size() : end + 1;
         }
-        if (std::ranges::search(argv, args).begin() != argv.end())
+        if (std::ranges::all_of(runs,
+                                [&](const auto& run) { return !std::ranges::search(argv, run).empty(); }))
             return true;
     }
     return false;
@@ -338,8 +341,6 @@ std::vector<std::string> concat(std::vector<std::string> a, const std::vector<st
 // Item 4: a 4-shard reference of the Cornell box through the job files, merged
 // by the merge job, equals one process' reference bit for bit.
 TEST_F(Cluster, AFourShardReferenceIsBitIdenticalToOneProcess) {
-    if (!lpvHas({"merge"}))
-        GTEST_SKIP() << "awaits `lpv merge` and `lpv reference --shard I/N` (issue #28 item 1)";
     const fs::path project = newCornellBox();
     const std::vector<std::string> options{"--width", "64", "--height", "36", "--spp", "16"};
     const Submitted s = submit("submit-reference.sh",
@@ -357,17 +358,20 @@ TEST_F(Cluster, AFourShardReferenceIsBitIdenticalToOneProcess) {
 // Item 4: a 3-shard sweep through the job files, merged by the merge job, has
 // the one-process sweep's files, the same error columns exactly, and timings.
 TEST_F(Cluster, AThreeShardSweepMergesIntoTheOneProcessSweep) {
-    if (!lpvHas({"bench", "merge"}))
-        GTEST_SKIP() << "awaits `lpv bench merge` and `lpv bench ... --shard I/N` (issue #28 item 2)";
     const fs::path project = newCornellBox();
     const fs::path reference = work_ / "ref.exr";
-    const CommandResult traced = runLpv({"reference", project.string(), "-o", reference.string(), "--width", "64",
-                                         "--height", "36", "--spp", "16"});
+    const CommandResult traced = runLpv({"reference", project.string(), "-o", reference.string(), "--width",
+                                         "64", "--height", "36", "--spp", "16"});
     ASSERT_EQ(traced.exitCode, 0) << traced.output;
-    const std::vector<std::string> options{"--sweep", "lpv.propagationSteps=0,4,8", "--reference", reference.string(),
-                                           "--width", "64", "--height", "36", "--frames", "2", "--warmup", "1"};
-    const Submitted s = submit("submit-sweep.sh", concat({project.string(), (work_ / "sharded").string(), "3"}, options),
-                               jobEnv(kLpvExecutable));
+    const std::vector<std::string> options{"--sweep",     "lpv.propagationSteps=0,4,8",
+                                           "--reference", reference.string(),
+                                           "--width",     "64",
+                                           "--height",    "36",
+                                           "--frames",    "2",
+                                           "--warmup",    "1"};
+    const Submitted s =
+        submit("submit-sweep.sh", concat({project.string(), (work_ / "sharded").string(), "3"}, options),
+               jobEnv(kLpvExecutable));
     const CommandResult one =
         runLpv(concat(concat({"bench", project.string()}, options), {"--out", (work_ / "single").string()}));
     ASSERT_EQ(one.exitCode, 0) << one.output;
@@ -389,8 +393,9 @@ TEST_F(Cluster, AThreeShardSweepMergesIntoTheOneProcessSweep) {
             if (header[col].ends_with("_ms")) {
                 // Timings differ run to run; the same passes ran and each took time.
                 EXPECT_EQ(got.empty(), want.empty()) << header[col] << ", row " << row;
-                if (!got.empty())
+                if (!got.empty()) {
                     EXPECT_GT(std::stod(got), 0.0) << header[col] << ", row " << row;
+                }
             } else {
                 EXPECT_EQ(got, want) << header[col] << ", row " << row;
             }
@@ -402,20 +407,20 @@ TEST_F(Cluster, AThreeShardSweepMergesIntoTheOneProcessSweep) {
 // node dies: no trap runs) leaves nothing `lpv merge` accepts, the merge job
 // never runs, and the shard run again writes the same pixels.
 TEST_F(Cluster, AKilledShardLeavesNothingTheMergeAcceptsAndItsRerunMatches) {
-    if (!lpvHas({"merge"}))
-        GTEST_SKIP() << "awaits `lpv merge` and `lpv reference --shard I/N` (issue #28 item 1)";
     const fs::path project = newCornellBox();
     // Enough samples that a shard runs for seconds, so the kill lands mid-run.
     const std::vector<std::string> options{"--width", "160", "--height", "90", "--spp", "1024"};
     const fs::path merged = work_ / "merged.exr";
     const std::vector<std::string> env = jobEnv(kLpvExecutable);
-    const Submitted s = submit("submit-reference.sh", concat({project.string(), merged.string(), "4"}, options), env);
+    const Submitted s =
+        submit("submit-reference.sh", concat({project.string(), merged.string(), "4"}, options), env);
     const fs::path shards = s.shardDir;
 
     ASSERT_TRUE(cluster_->waitUntilRunning(s.arrayJob + "_2", 60s)) << describe(cluster_->jobs({s.arrayJob}));
     bool started = false;
-    for (auto until = std::chrono::steady_clock::now() + 30s; !started && std::chrono::steady_clock::now() < until;)
-        if (!(started = processWithArguments({"--shard", "2/4"})))
+    for (auto until = std::chrono::steady_clock::now() + 30s;
+         !started && std::chrono::steady_clock::now() < until;)
+        if (!(started = processWithArguments({{"reference", project.string()}, {"--shard", "2/4"}})))
             std::this_thread::sleep_for(20ms);
     ASSERT_TRUE(started) << "lpv of shard 2 never ran";
     std::this_thread::sleep_for(300ms);
@@ -433,16 +438,19 @@ TEST_F(Cluster, AKilledShardLeavesNothingTheMergeAcceptsAndItsRerunMatches) {
     ASSERT_FALSE(fs::exists(shards / "shard-2-of-4.exr"));
 
     // Neither the three good shards alone nor with anything the kill left is a set.
-    const std::vector<std::string> good{(shards / "shard-0-of-4.exr").string(), (shards / "shard-1-of-4.exr").string(),
+    const std::vector<std::string> good{(shards / "shard-0-of-4.exr").string(),
+                                        (shards / "shard-1-of-4.exr").string(),
                                         (shards / "shard-3-of-4.exr").string()};
     const fs::path probe = work_ / "probe.exr";
     const CommandResult incomplete = runLpv(concat({"merge", probe.string()}, good));
     EXPECT_NE(incomplete.exitCode, 0) << incomplete.output;
-    EXPECT_NE(incomplete.output.find('2'), std::string::npos) << "names the missing shard: " << incomplete.output;
+    EXPECT_NE(incomplete.output.find("2/4"), std::string::npos)
+        << "names the missing shard: " << incomplete.output;
     for (const std::string& left : filesUnder(shards)) {
         if (std::ranges::find(good, (shards / left).string()) != good.end())
             continue;
-        const CommandResult withLeftover = runLpv(concat({"merge", probe.string(), (shards / left).string()}, good));
+        const CommandResult withLeftover =
+            runLpv(concat({"merge", probe.string(), (shards / left).string()}, good));
         EXPECT_NE(withLeftover.exitCode, 0) << left << " completed the set: " << withLeftover.output;
     }
     EXPECT_FALSE(fs::exists(probe));
@@ -450,21 +458,22 @@ TEST_F(Cluster, AKilledShardLeavesNothingTheMergeAcceptsAndItsRerunMatches) {
     // Shard 2 again, as docs/cluster.md says to, then the merge after it.
     const CommandResult again = cluster_->run(
         concat({"sbatch", "--parsable", "--array=2", "--export=ALL,LPV_SHARD_COUNT=4",
-                "--output=" + (work_ / "slurm-%x-%A_%a.out").string(), (kJobFiles / "slurm-reference.sbatch").string(),
-                project.string(), shards.string()},
+                "--output=" + (work_ / "slurm-%x-%A_%a.out").string(),
+                (kJobFiles / "slurm-reference.sbatch").string(), project.string(), shards.string()},
                options),
         {"LPV=" + std::string(kLpvExecutable)}, work_);
     ASSERT_EQ(again.exitCode, 0) << again.output;
     const std::string againId = again.output.substr(0, again.output.find_first_of(";\n"));
-    const CommandResult mergeAgain = cluster_->run(
-        {"sbatch", "--parsable", "--dependency=afterok:" + againId, "--output=" + (work_ / "slurm-%x-%A.out").string(),
-         (kJobFiles / "slurm-reference-merge.sbatch").string(), merged.string(), shards.string(), "4"},
-        {"LPV=" + std::string(kLpvExecutable)}, work_);
+    const CommandResult mergeAgain = cluster_->run({"sbatch", "--parsable", "--dependency=afterok:" + againId,
+                                                    "--output=" + (work_ / "slurm-%x-%A.out").string(),
+                                                    (kJobFiles / "slurm-reference-merge.sbatch").string(),
+                                                    merged.string(), shards.string(), "4"},
+                                                   {"LPV=" + std::string(kLpvExecutable)}, work_);
     ASSERT_EQ(mergeAgain.exitCode, 0) << mergeAgain.output;
     const std::string mergeAgainId = mergeAgain.output.substr(0, mergeAgain.output.find_first_of(";\n"));
     // Meanwhile one process renders shard 2 and the whole image.
-    const CommandResult localShard = runLpv(
-        concat({"reference", project.string(), "-o", (work_ / "shard-2.exr").string(), "--shard", "2/4"}, options));
+    const CommandResult localShard = runLpv(concat(
+        {"reference", project.string(), "-o", (work_ / "shard-2.exr").string(), "--shard", "2/4"}, options));
     ASSERT_EQ(localShard.exitCode, 0) << localShard.output;
     const CommandResult single =
         runLpv(concat({"reference", project.string(), "-o", (work_ / "single.exr").string()}, options));
@@ -472,4 +481,46 @@ TEST_F(Cluster, AKilledShardLeavesNothingTheMergeAcceptsAndItsRerunMatches) {
     expectAllCompleted(waitFor({againId, mergeAgainId}), 2);
     expectSamePixels(work_ / "shard-2.exr", shards / "shard-2-of-4.exr");
     expectSamePixels(work_ / "single.exr", merged);
+}
+
+// The report in pieces through submit-report.sh: coordinator, 2 shards,
+// coordinator, 2 shards, coordinator as a chain of afterok jobs, with the
+// errors one process measures.
+TEST_F(Cluster, AShardedReportRunsAsAChainOfJobsAndMatchesOneProcess) {
+    const std::vector<std::string> options{
+        "--quick", "--scene", "cornell-box", "--question", "steps", "--width",  "48", "--height",
+        "32",      "--spp",   "16",          "--frames",   "1",     "--warmup", "0",  "--radiosity-seconds",
+        "5"};
+    const CommandResult submitted = cluster_->run(
+        concat({(kJobFiles / "submit-report.sh").string(), (work_ / "sharded").string(), "2"}, options),
+        jobEnv(kLpvExecutable), work_);
+    ASSERT_EQ(submitted.exitCode, 0) << submitted.output;
+    const auto jobsAt = submitted.output.find("JOBS=\"");
+    ASSERT_NE(jobsAt, std::string::npos) << submitted.output;
+    std::vector<std::string> jobs;
+    std::istringstream ids(
+        submitted.output.substr(jobsAt + 6, submitted.output.find('"', jobsAt + 6) - jobsAt - 6));
+    for (std::string id; ids >> id;)
+        jobs.push_back(id);
+    ASSERT_EQ(jobs.size(), 5u) << submitted.output;
+    const CommandResult one =
+        runLpv(concat({"bench", "report", "--out", (work_ / "whole").string()}, options));
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    expectAllCompleted(waitFor(jobs, 120s), 1 + 2 + 1 + 2 + 1);
+
+    auto runsOf = [](const fs::path& file) {
+        const auto j = nlohmann::json::parse(readTextFile(file), nullptr, false);
+        return j.is_discarded() ? nlohmann::json() : j["scenes"][0]["runs"];
+    };
+    const auto whole = runsOf(work_ / "whole" / "report.json");
+    const auto sharded = runsOf(work_ / "sharded" / "report.json");
+    ASSERT_EQ(whole.size(), 3u) << "propagationSteps, three values in --quick";
+    ASSERT_EQ(sharded.size(), whole.size());
+    for (std::size_t i = 0; i < whole.size(); ++i) {
+        EXPECT_EQ(sharded[i]["setting"], whole[i]["setting"]);
+        for (const char* error : {"indirectMare", "indirectMeanRatio", "imageMare"})
+            EXPECT_EQ(sharded[i][error], whole[i][error]) << whole[i]["setting"] << " " << error;
+        EXPECT_GT(sharded[i]["totalMs"].get<double>(), 0.0);
+    }
+    EXPECT_TRUE(fs::exists(work_ / "sharded" / "report.md"));
 }

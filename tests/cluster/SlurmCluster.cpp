@@ -102,8 +102,8 @@ std::map<std::string, std::string> parseRecord(const std::string& line) {
 } // namespace
 
 bool isTerminalJobState(const std::string& state) {
-    for (const char* s : {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "PREEMPTED", "BOOT_FAIL",
-                          "DEADLINE", "OUT_OF_MEMORY"})
+    for (const char* s : {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "PREEMPTED",
+                          "BOOT_FAIL", "DEADLINE", "OUT_OF_MEMORY"})
         if (state == s)
             return true;
     return false;
@@ -154,7 +154,9 @@ std::expected<std::unique_ptr<SlurmCluster>, ClusterUnavailable> SlurmCluster::s
 }
 
 std::expected<void, ClusterUnavailable> SlurmCluster::startDaemons() {
-    auto fail = [](std::string message) { return std::unexpected(ClusterUnavailable{false, std::move(message)}); };
+    auto fail = [](std::string message) {
+        return std::unexpected(ClusterUnavailable{false, std::move(message)});
+    };
     for (const char* d : {"state", "spool", "log", "run"})
         fs::create_directories(dir_ / d);
     const fs::path key = dir_ / "munge.key";
@@ -164,8 +166,9 @@ std::expected<void, ClusterUnavailable> SlurmCluster::startDaemons() {
 
     // --force: munged refuses root and a world-writable /tmp above its
     // socket without it.
-    auto munged = Daemon::spawn({findProgram("munged").string(), "--foreground", "--force", "--socket=" + socket.string(),
-                                 "--key-file=" + key.string(), "--pid-file=" + (dir_ / "run" / "munged.pid").string(),
+    auto munged = Daemon::spawn({findProgram("munged").string(), "--foreground", "--force",
+                                 "--socket=" + socket.string(), "--key-file=" + key.string(),
+                                 "--pid-file=" + (dir_ / "run" / "munged.pid").string(),
                                  "--log-file=" + (dir_ / "log" / "munged.log").string(),
                                  "--seed-file=" + (dir_ / "run" / "munged.seed").string(), "--num-threads=2"},
                                 {}, dir_ / "log" / "munged.out");
@@ -223,8 +226,8 @@ std::expected<void, ClusterUnavailable> SlurmCluster::startDaemons() {
     if (!ctld)
         return fail(ctld.error());
     slurmctld_ = std::move(*ctld);
-    auto slurmd = Daemon::spawn({findProgram("slurmd").string(), "-D", "-N", node_, "-f", confPath}, clientEnv(),
-                                dir_ / "log" / "slurmd.out");
+    auto slurmd = Daemon::spawn({findProgram("slurmd").string(), "-D", "-N", node_, "-f", confPath},
+                                clientEnv(), dir_ / "log" / "slurmd.out");
     if (!slurmd)
         return fail(slurmd.error());
     slurmd_ = std::move(*slurmd);
@@ -247,7 +250,9 @@ std::expected<void, ClusterUnavailable> SlurmCluster::startDaemons() {
     }
 }
 
-SlurmCluster::~SlurmCluster() { stop(); }
+SlurmCluster::~SlurmCluster() {
+    stop();
+}
 
 CommandResult SlurmCluster::run(const std::vector<std::string>& argv, std::vector<std::string> env,
                                 const fs::path& cwd) const {
@@ -280,8 +285,8 @@ std::vector<JobRecord> SlurmCluster::jobs(const std::vector<std::string>& ids) c
     return records;
 }
 
-std::expected<std::vector<JobRecord>, std::string> SlurmCluster::waitForJobs(const std::vector<std::string>& ids,
-                                                                             std::chrono::seconds timeout) const {
+std::expected<std::vector<JobRecord>, std::string>
+SlurmCluster::waitForJobs(const std::vector<std::string>& ids, std::chrono::seconds timeout) const {
     const auto until = std::chrono::steady_clock::now() + timeout;
     for (;;) {
         auto records = jobs(ids);
@@ -294,16 +299,18 @@ std::expected<std::vector<JobRecord>, std::string> SlurmCluster::waitForJobs(con
             std::string active;
             for (const auto& r : records)
                 if (!isTerminalJobState(r.state))
-                    active += " " + r.id + ":" + r.state + "(" + (r.fields.contains("Reason") ? r.fields.at("Reason") : "") + ")";
-            return std::unexpected("jobs still active after " + std::to_string(timeout.count()) + " s:" +
-                                   (active.empty() ? std::string(" (no records)") : active));
+                    active += " " + r.id + ":" + r.state + "(" +
+                              (r.fields.contains("Reason") ? r.fields.at("Reason") : "") + ")";
+            return std::unexpected("jobs still active after " + std::to_string(timeout.count()) +
+                                   " s:" + (active.empty() ? std::string(" (no records)") : active));
         }
         std::this_thread::sleep_for(250ms);
     }
 }
 
 bool SlurmCluster::waitUntilRunning(const std::string& id, std::chrono::seconds timeout) const {
-    for (const auto until = std::chrono::steady_clock::now() + timeout; std::chrono::steady_clock::now() < until;) {
+    for (const auto until = std::chrono::steady_clock::now() + timeout;
+         std::chrono::steady_clock::now() < until;) {
         for (const auto& r : jobs({id}))
             if (r.id == id && r.state == "RUNNING")
                 return true;

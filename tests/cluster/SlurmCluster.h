@@ -34,7 +34,7 @@ struct JobRecord {
 };
 
 class SlurmCluster {
-public:
+  public:
     static std::expected<std::unique_ptr<SlurmCluster>, ClusterUnavailable> start();
     ~SlurmCluster();
     SlurmCluster(const SlurmCluster&) = delete;
@@ -67,7 +67,7 @@ public:
     // had to kill beyond the daemons, one line each.
     std::vector<std::string> stop();
 
-private:
+  private:
     SlurmCluster() = default;
     std::expected<void, ClusterUnavailable> startDaemons();
 

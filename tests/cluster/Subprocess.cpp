@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -13,6 +14,7 @@
 #include <poll.h>
 #include <sstream>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -36,9 +38,112 @@ void terminateDaemons() {
             ::kill(pid, SIGTERM);
 }
 
+bool isDaemon(pid_t pid) {
+    for (auto& slot : g_daemons)
+        if (slot.load() == pid)
+            return true;
+    return false;
+}
+
+// What a signal handler may do: raw system calls on fixed buffers, no
+// allocation, no stdio.
+struct ProcStat {
+    pid_t ppid = 0, pgrp = 0, sid = 0;
+};
+
+bool readProcStat(pid_t pid, ProcStat& out) {
+    char path[32] = "/proc/";
+    char digits[16];
+    int n = 0;
+    for (pid_t v = pid; v > 0 && n < 15; v /= 10)
+        digits[n++] = char('0' + v % 10);
+    int at = 6;
+    while (n > 0)
+        path[at++] = digits[--n];
+    for (const char* tail = "/stat"; *tail;)
+        path[at++] = *tail++;
+    path[at] = 0;
+    const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return false;
+    char buf[512];
+    const ssize_t len = ::read(fd, buf, sizeof buf - 1);
+    ::close(fd);
+    if (len <= 0)
+        return false;
+    // "pid (comm) S ppid pgrp session ..."; comm may hold ')' and spaces.
+    ssize_t i = len - 1;
+    while (i > 0 && buf[i] != ')')
+        --i;
+    i += 4; // ") S "
+    pid_t fields[3] = {0, 0, 0};
+    for (int f = 0; f < 3 && i < len; ++f, ++i)
+        for (; i < len && buf[i] >= '0' && buf[i] <= '9'; ++i)
+            fields[f] = fields[f] * 10 + (buf[i] - '0');
+    out = {fields[0], fields[1], fields[2]};
+    return out.ppid > 0;
+}
+
+template <class F> void forEachProcess(F&& visit) {
+    const int fd = ::open("/proc", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0)
+        return;
+    struct Dirent64 {
+        std::uint64_t ino;
+        std::int64_t off;
+        unsigned short reclen;
+        unsigned char type;
+        char name[1];
+    };
+    alignas(8) char buf[8192];
+    for (long n; (n = ::syscall(SYS_getdents64, fd, buf, sizeof buf)) > 0;) {
+        for (long off = 0; off < n;) {
+            const auto* d = reinterpret_cast<const Dirent64*>(buf + off);
+            off += d->reclen;
+            pid_t pid = 0;
+            const char* c = d->name;
+            for (; *c >= '0' && *c <= '9'; ++c)
+                pid = pid * 10 + (*c - '0');
+            if (*c == 0 && pid > 0)
+                visit(pid);
+        }
+    }
+    ::close(fd);
+}
+
+// On SIGTERM or SIGINT the test ends without its teardown: the jobs' steps
+// (slurmstepd in a session of its own, reparented to this process, the
+// subreaper) and their sessions (the job script, lpv) are killed here, as
+// is any command the test ran, since slurmd leaves steps running when it stops.
+void killJobSteps() {
+    const pid_t self = ::getpid();
+    const pid_t ownSession = ::getsid(0);
+    pid_t sessions[64];
+    int sessionCount = 0;
+    forEachProcess([&](pid_t pid) {
+        ProcStat st;
+        if (isDaemon(pid) || !readProcStat(pid, st) || st.ppid != self)
+            return;
+        if (st.sid != ownSession && sessionCount < 64)
+            sessions[sessionCount++] = st.sid;
+        ::kill(st.pgrp == pid && st.sid == ownSession ? -pid : pid, SIGKILL);
+    });
+    if (sessionCount == 0)
+        return;
+    forEachProcess([&](pid_t pid) {
+        ProcStat st;
+        if (pid == self || !readProcStat(pid, st))
+            return;
+        for (int i = 0; i < sessionCount; ++i)
+            if (st.sid == sessions[i])
+                ::kill(pid, SIGKILL);
+    });
+}
+
 void onFatalSignal(int sig) {
+    killJobSteps();
     terminateDaemons();
-    struct sigaction dfl{};
+    struct sigaction dfl {};
     dfl.sa_handler = SIG_DFL;
     ::sigaction(sig, &dfl, nullptr);
     ::raise(sig);
@@ -47,7 +152,7 @@ void onFatalSignal(int sig) {
 void installHandlersOnce() {
     static std::once_flag once;
     std::call_once(once, [] {
-        struct sigaction sa{};
+        struct sigaction sa {};
         sa.sa_handler = onFatalSignal;
         sigemptyset(&sa.sa_mask);
         for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGABRT})
@@ -89,7 +194,8 @@ std::vector<std::string> mergedEnvironment(const std::vector<std::string>& overr
     auto keyOf = [](const std::string& kv) { return kv.substr(0, kv.find('=')); };
     for (char** e = environ; e && *e; ++e) {
         const std::string kv = *e;
-        const bool overridden = std::ranges::any_of(overrides, [&](const std::string& o) { return keyOf(o) == keyOf(kv); });
+        const bool overridden =
+            std::ranges::any_of(overrides, [&](const std::string& o) { return keyOf(o) == keyOf(kv); });
         if (!overridden)
             env.push_back(kv);
     }
@@ -140,7 +246,8 @@ CommandResult runCommand(const std::vector<std::string>& argv, const CommandOpti
     bool timedOut = false;
     std::array<char, 4096> buf{};
     for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
         if (left <= 0ms) {
             timedOut = true;
             ::kill(-pid, SIGKILL);
@@ -245,7 +352,9 @@ Daemon& Daemon::operator=(Daemon&& other) noexcept {
     return *this;
 }
 
-Daemon::~Daemon() { stop(); }
+Daemon::~Daemon() {
+    stop();
+}
 
 bool Daemon::running() {
     if (pid_ <= 0)
@@ -274,14 +383,16 @@ std::string Daemon::stop(std::chrono::milliseconds grace) {
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
-    exitDescription_ = describeStatus(status) + " (did not stop on SIGTERM within " +
-                       std::to_string(grace.count()) + " ms)";
+    exitDescription_ =
+        describeStatus(status) + " (did not stop on SIGTERM within " + std::to_string(grace.count()) + " ms)";
     unregisterDaemon(pid_);
     pid_ = -1;
     return exitDescription_;
 }
 
-void becomeSubreaper() { ::prctl(PR_SET_CHILD_SUBREAPER, 1); }
+void becomeSubreaper() {
+    ::prctl(PR_SET_CHILD_SUBREAPER, 1);
+}
 
 std::vector<std::string> killOrphans(const std::vector<pid_t>& keep, std::chrono::milliseconds timeout) {
     std::vector<std::string> killed;
@@ -346,12 +457,15 @@ std::string readTextFile(const fs::path& file) {
 }
 
 std::string tailOf(const fs::path& file, int lines) {
-    const std::string text = readTextFile(file);
-    std::size_t at = text.size();
-    for (int i = 0; i <= lines && at != std::string::npos && at > 0; ++i)
-        at = text.rfind('\n', at - 1);
-    const std::string tail = at == std::string::npos ? text : text.substr(at + 1);
-    return "--- " + file.string() + " (end) ---\n" + tail;
+    std::vector<std::string> all;
+    std::istringstream in(readTextFile(file));
+    for (std::string line; std::getline(in, line);)
+        all.push_back(line);
+    std::string out = "--- " + file.string() + " (end) ---\n";
+    for (std::size_t i = all.size() > std::size_t(lines) ? all.size() - std::size_t(lines) : 0;
+         i < all.size(); ++i)
+        out += all[i] + "\n";
+    return out;
 }
 
 } // namespace lpv::test

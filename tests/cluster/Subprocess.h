@@ -16,8 +16,8 @@ struct CommandResult {
 };
 
 struct CommandOptions {
-    std::vector<std::string> env;       // "KEY=VALUE" set on top of this process' environment
-    std::filesystem::path cwd;          // empty: this process' working directory
+    std::vector<std::string> env;      // "KEY=VALUE" set on top of this process' environment
+    std::filesystem::path cwd;         // empty: this process' working directory
     std::chrono::seconds timeout{120}; // then the command's process group is killed
 };
 
@@ -30,7 +30,7 @@ CommandResult runCommand(const std::vector<std::string>& argv, const CommandOpti
 // (PR_SET_PDEATHSIG), and from a signal handler if this process is
 // interrupted (SIGINT, SIGTERM, SIGHUP, SIGABRT), so no test leaves one running.
 class Daemon {
-public:
+  public:
     Daemon() = default;
     static std::expected<Daemon, std::string> spawn(const std::vector<std::string>& argv,
                                                     const std::vector<std::string>& env,
@@ -49,7 +49,7 @@ public:
     // SIGTERM, then SIGKILL after `grace`; waits for it. Returns how it ended.
     std::string stop(std::chrono::milliseconds grace = std::chrono::seconds(10));
 
-private:
+  private:
     pid_t pid_ = -1;
     std::string name_;
     std::string exitDescription_;
