@@ -195,9 +195,12 @@ int runReference(Args args) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;
     }
+    std::size_t tracedPixels = 0; // of this shard (all of them unsharded)
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x)
+            tracedPixels += reference::shardOfPixel(x, y, shard.count) == shard.index;
     std::printf("reference: %d spp in %.2f s (%.0f samples/s)\n", image->samplesPerPixel, image->seconds,
-                double(image->samplesPerPixel) * double(image->pixelCount()) /
-                    std::max(image->seconds, 1e-9));
+                double(image->samplesPerPixel) * double(tracedPixels) / std::max(image->seconds, 1e-9));
     std::printf("wrote %s\n", output->c_str());
     if (preview) {
         const std::filesystem::path out(*output);
