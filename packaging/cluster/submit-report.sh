@@ -24,16 +24,12 @@ if [ $# -lt 2 ]; then
   exit 2
 fi
 here=$(dirname "$(realpath "$0")")
+source "$here/submit-common.sh"
 out=$(realpath -m "$1")
 count=$2
 shift 2
-case $count in
-  '' | *[!0-9]* | 0) echo "N must be a positive integer, got '$count'" >&2; exit 2 ;;
-esac
-lpv=${LPV:-lpv}
-case $lpv in */*) lpv=$(realpath -e "$lpv") ;; esac
-export LPV=$lpv
-read -r -a extra <<<"${LPV_SBATCH_ARGS:-}"
+check_count "$count"
+resolve_lpv_and_sbatch_args
 mkdir -p "$out"
 
 jobs=()
@@ -44,7 +40,7 @@ submit() { # [sbatch options...]: one step after the previous one
   fi
   local id
   if ! id=$(sbatch --parsable --export=ALL,LPV_SHARD_COUNT="$count" "${dependency[@]}" "$@" "${extra[@]}" \
-    "$here/slurm-report.sbatch" "$out" "${options[@]}" | cut -d';' -f1); then
+    "$here/slurm-report.sbatch" "$out" "${options[@]}" | jobid); then
     if [ ${#jobs[@]} -gt 0 ]; then scancel "${jobs[@]}" || true; fi
     echo "could not submit step $((${#jobs[@]} + 1)) of 5; cancelled the steps before it" >&2
     exit 1

@@ -24,30 +24,14 @@ if [ $# -lt 3 ]; then
   exit 2
 fi
 here=$(dirname "$(realpath "$0")")
+source "$here/submit-common.sh"
 project=$(realpath -e "$1")
 out=$(realpath -m "$2")
 count=$3
 shift 3
-case $count in
-  '' | *[!0-9]* | 0) echo "N must be a positive integer, got '$count'" >&2; exit 2 ;;
-esac
+check_count "$count"
 shard_dir=$(realpath -m "${LPV_SHARD_DIR:-$out.shards}")
-lpv=${LPV:-lpv}
-case $lpv in */*) lpv=$(realpath -e "$lpv") ;; esac
-export LPV=$lpv
-read -r -a extra <<<"${LPV_SBATCH_ARGS:-}"
+resolve_lpv_and_sbatch_args
 mkdir -p "$shard_dir"
-
-jobid() { cut -d';' -f1; }
-array=$(sbatch --parsable --export=ALL,LPV_SHARD_COUNT="$count" --array=0-$((count - 1)) "${extra[@]}" \
-  "$here/slurm-sweep.sbatch" "$project" "$shard_dir" "$@" | jobid)
-if ! merge=$(sbatch --parsable --export=ALL --dependency=afterok:"$array" --kill-on-invalid-dep=yes "${extra[@]}" \
-  "$here/slurm-sweep-merge.sbatch" "$out" "$shard_dir" "$count" | jobid); then
-  scancel "$array" || true
-  echo "could not submit the merge job; cancelled array job $array" >&2
-  exit 1
-fi
-echo "submitted $count sweep shards as array job $array and the merge into $out as job $merge" >&2
-echo "ARRAY_JOB=$array"
-echo "MERGE_JOB=$merge"
-echo "SHARD_DIR=$shard_dir"
+submit_array_then_merge "sweep shards" "$count" "$out" "$shard_dir" "$here/slurm-sweep.sbatch" "$here/slurm-sweep-merge.sbatch" \
+  "$project" "$@"
