@@ -44,6 +44,11 @@ void Document::reset(scene::Project project, const QString& path, bool modified)
     emit titleChanged();
 }
 
+void Document::setEditorView(const scene::Camera& view) {
+    project_.editorView = view;
+    project_.editorView->name = "Editor view";
+}
+
 scene::Expected<void> Document::saveAs(const QString& path) {
     // Textures are copied into the project's assets folder and the saved copy
     // points there; the document keeps its absolute paths (see reset).

@@ -65,6 +65,9 @@ public:
     void reset(scene::Project project, const QString& path, bool modified = false);
     // Atomic save (scene::saveProject); on success the document is clean and takes `path`.
     scene::Expected<void> saveAs(const QString& path);
+    // The view the next save records (Project::editorView), so that the
+    // project opens where the user left it. Not an edit: no undo, not "modified".
+    void setEditorView(const scene::Camera& view);
 
     // ---- Edits: each pushes one undoable command. ----
     // nullopt resets the key to its default. Consecutive edits of one key

@@ -45,6 +45,13 @@
 namespace lpv::editor {
 namespace {
 
+// File > New: an empty project named "untitled".
+scene::Project untitledProject() {
+    scene::Project p;
+    p.name = "untitled";
+    return p;
+}
+
 constexpr int kMaxRecentFiles = 10;
 const char* kRecentKey = "recentFiles";
 
@@ -94,7 +101,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
-    showProject(scene::Project{"untitled", {}, {}}, {});
+    showProject(untitledProject(), {});
 }
 
 MainWindow::~MainWindow() = default;
@@ -466,7 +473,7 @@ bool MainWindow::confirmDiscardChanges() {
 void MainWindow::newProject() {
     if (!confirmDiscardChanges())
         return;
-    showProject(scene::Project{"untitled", {}, {}}, {});
+    showProject(untitledProject(), {});
 }
 
 void MainWindow::openDialog() {
@@ -496,6 +503,7 @@ bool MainWindow::saveAs() {
 
 bool MainWindow::saveTo(const QString& path, bool interactive) {
     autosave_->discard(); // the autosave of the old path (or of "untitled")
+    document_->setEditorView(viewport_->viewCamera());
     auto saved = document_->saveAs(path);
     if (!saved) {
         const QString message = QString::fromStdString(saved.error().describe());

@@ -71,9 +71,11 @@ Viewport::~Viewport() {
 
 void Viewport::onDocumentChanged(Changes changes) {
     if (changes == Changes(Change::Everything)) {
-        // A new project: start from its first camera, or one that frames the scene.
+        // A new project: start where the editor last saved it, else from its
+        // first camera, else from one that frames the scene.
         const scene::Scene& s = document_->scene();
-        controller_.setCamera(s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front());
+        const auto& saved = document_->project().editorView;
+        controller_.setCamera(saved ? *saved : s.cameras.empty() ? scene::framingCamera(s) : s.cameras.front());
         controller_.setSceneBounds(s.worldBounds());
         emit viewCameraChanged();
     }

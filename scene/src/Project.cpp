@@ -132,7 +132,7 @@ Expected<std::string> buildDocument(const Project& project, const fs::path& file
 
 bool Project::operator==(const Project& other) const {
     return name == other.name && scene == other.scene && parameters == other.parameters &&
-           presets == other.presets;
+           presets == other.presets && editorView == other.editorView;
 }
 
 Expected<Project> loadProject(const fs::path& file, const std::vector<fs::path>& allowPaths) {

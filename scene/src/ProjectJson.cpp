@@ -954,6 +954,13 @@ Expected<ProjectDocument> projectFromJson(const Json& document, const std::strin
     scene.cameraPaths = readArray<CameraPath>(top, "cameraPaths", readCameraPath);
     readParameters(top, out.project.parameters);
     readPresets(top, out.project.presets);
+    // Optional (added with issue #26): the editor's view when last saved.
+    if (const Json* view = top.has("editorView") ? top.get("editorView") : nullptr) {
+        Fields f(r, *view, "editorView");
+        const Camera c = readCamera(f);
+        if (r.ok())
+            out.project.editorView = c;
+    }
     if (r.ok())
         checkParentChains(r, scene.objects);
     if (!r.ok())
@@ -993,6 +1000,8 @@ Json projectToJson(const Project& project, const std::vector<std::string>& asset
         }
         doc["presets"] = std::move(presets);
     }
+    if (project.editorView)
+        doc["editorView"] = toJson(*project.editorView);
     return doc;
 }
 

@@ -322,3 +322,31 @@ TEST(EditorBugs, AnImportedInteriorIsSeenFromInsideAsTheCliSeesIt) {
     EXPECT_TRUE(eye.x > 0.0f && eye.x < 10.0f && eye.y > 0.0f && eye.y < 4.0f && eye.z > 0.0f && eye.z < 6.0f)
         << "the view stands at (" << eye.x << ", " << eye.y << ", " << eye.z << "), outside the hall";
 }
+
+// Bug 6, second half: the editor's camera was not saved with the project, so
+// a reopened project showed its first camera instead of where the user left it.
+TEST(EditorBugs, TheViewIsSavedWithTheProjectAndReopensThere) {
+    Window w;
+    const lpv::scene::Camera first = w.window.viewport()->viewCamera();
+    lpv::scene::Camera moved = first;
+    moved.position += glm::vec3(0.75f, -0.5f, 1.5f);
+    moved.fovY = first.fovY * 0.8f;
+    w.window.viewport()->setViewCamera(moved);
+    QTemporaryDir dir;
+    const QString file = dir.filePath("view.lpvproj");
+    ASSERT_TRUE(w.window.saveTo(file, false));
+    EXPECT_FALSE(w.doc().isModified()) << "the view is not an edit";
+    // Another project in between, then the saved one again.
+    ASSERT_TRUE(w.window.openProject(cornell(), false));
+    EXPECT_EQ(w.window.viewport()->viewCamera().position, first.position);
+    ASSERT_TRUE(w.window.openProject(file, false));
+    const lpv::scene::Camera reopened = w.window.viewport()->viewCamera();
+    EXPECT_EQ(reopened.position, moved.position);
+    EXPECT_EQ(reopened.target, moved.target);
+    EXPECT_EQ(reopened.fovY, moved.fovY);
+    // The scene's own cameras are unchanged: the CLI still renders from the first.
+    auto saved = lpv::scene::loadProject(file.toStdString());
+    ASSERT_TRUE(saved) << saved.error().describe();
+    ASSERT_FALSE(saved->scene.cameras.empty());
+    EXPECT_EQ(saved->scene.cameras.front().position, first.position);
+}

@@ -258,7 +258,9 @@ TEST(EditorGui, CreateDeleteDuplicateAreUndoable) {
 
 TEST(EditorGui, Import4dsThroughTheImportActionIsOneUndoStep) {
     OpenWindow w;
-    w.window.showProject(lpv::scene::Project{"untitled", {}, {}}, {}); // File > New
+    lpv::scene::Project untitled;
+    untitled.name = "untitled";
+    w.window.showProject(untitled, {}); // File > New
     Document& doc = w.doc();
     const std::size_t objects = doc.scene().objects.size();
     w.window.importFile(QString(lpv::test::kSharedScenesDir) + "/4ds/white_box.4ds", false);

@@ -430,3 +430,46 @@ TEST(AtomicFile, AFolderInTheWayFailsAndLeavesNoTemporary) {
     EXPECT_TRUE(listFiles(dir).empty());
     fs::remove_all(dir);
 }
+
+// Issue #26: the editor's view is saved with the project and comes back; a
+// project without one has no field (its bytes are as before), and a broken
+// one is an error at its place.
+TEST_F(ProjectRoundTrip, TheEditorViewRoundTripsAndIsOptional) {
+    Project p = richProject();
+    EXPECT_FALSE(p.editorView);
+    ASSERT_TRUE(saveProject(p, dir_ / "noview.lpvproj"));
+    EXPECT_EQ(readFile(dir_ / "noview.lpvproj").find("editorView"), std::string::npos);
+
+    Camera view;
+    view.name = "Editor view";
+    view.position = {1.25f, 2.5f, -3.75f};
+    view.target = {0.1f, 0.2f, 0.3f};
+    view.fovY = 0.9f;
+    p.editorView = view;
+    ASSERT_TRUE(saveProject(p, dir_ / "view.lpvproj"));
+    auto loaded = loadProject(dir_ / "view.lpvproj");
+    ASSERT_TRUE(loaded) << loaded.error().describe();
+    ASSERT_TRUE(loaded->editorView);
+    EXPECT_EQ(*loaded->editorView, view);
+    EXPECT_EQ(*loaded, p);
+    EXPECT_EQ(loaded->scene.cameras, p.scene.cameras) << "the view is not one of the scene's cameras";
+    Project other = p;
+    other.editorView->position.x += 1.0f;
+    EXPECT_FALSE(other == p);
+
+    std::string text = readFile(dir_ / "view.lpvproj");
+    const auto at = text.find("\"editorView\"");
+    ASSERT_NE(at, std::string::npos);
+    const auto pos = text.find("\"position\"", at);
+    const auto target = text.find("\"target\"", at);
+    ASSERT_NE(pos, std::string::npos);
+    ASSERT_NE(target, std::string::npos);
+    // The view looking at its own position: refused, with the place named.
+    const std::string posValue = text.substr(text.find('[', pos), text.find(']', pos) - text.find('[', pos) + 1);
+    const auto targetOpen = text.find('[', target), targetClose = text.find(']', target);
+    text.replace(targetOpen, targetClose - targetOpen + 1, posValue);
+    std::ofstream(dir_ / "view.lpvproj", std::ios::binary | std::ios::trunc) << text;
+    loaded = loadProject(dir_ / "view.lpvproj");
+    ASSERT_FALSE(loaded);
+    EXPECT_EQ(loaded.error().location, "editorView.target");
+}

@@ -6,6 +6,7 @@
 #include "lpv/scene/Scene.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct Project {
     Scene scene;
     ParameterSet parameters;
     std::vector<ParameterPreset> presets; // in the order the user made them
+    // Where the editor's view was when the project was last saved from it, so
+    // that opening it again shows what the user left. Not one of the scene's
+    // cameras: `lpv render` and the reference never use it.
+    std::optional<Camera> editorView;
     // What loading changed and why, one line each (a texture reference that
     // leads out of the project's folder, see loadProject). Not saved, not
     // compared.
