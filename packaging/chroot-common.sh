@@ -4,7 +4,7 @@
 #
 #   ROOT=...; source packaging/chroot-common.sh
 #   chroot_bootstrap            debootstrap --variant=minbase bookworm "$ROOT" when missing
-#   chroot_mount                proc, sys, dev, dev/pts, dev/shm (unmounted on exit)
+#   chroot_mount                proc, sys (with its cgroup mounts), dev, dev/pts, dev/shm (unmounted on exit)
 #   chroot_bind SRC DEST [ro]   bind-mount a host folder into the chroot (unmounted on exit)
 #   in_chroot CMD...            run CMD in the chroot, printing it first
 
@@ -48,7 +48,9 @@ chroot_mount() {
     mountpoint -q "$ROOT/$m" && continue
     case $m in
       proc) mount -t proc proc "$ROOT/proc" ;;
-      sys) mount -t sysfs sys "$ROOT/sys" ;;
+      # Recursive, so /sys/fs/cgroup comes along as on a booted machine (the
+      # cluster test's slurmd needs it); rslave: unmounting here changes nothing outside.
+      sys) mount --rbind /sys "$ROOT/sys" && mount --make-rslave "$ROOT/sys" ;;
       dev/shm) mkdir -p "$ROOT/dev/shm" && mount -t tmpfs shm "$ROOT/dev/shm" ;;
       *) mount --bind "/$m" "$ROOT/$m" ;;
     esac

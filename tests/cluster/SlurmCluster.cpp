@@ -101,6 +101,19 @@ std::map<std::string, std::string> parseRecord(const std::string& line) {
 
 } // namespace
 
+namespace {
+
+// Whether /proc/self/mounts lists a cgroup or cgroup2 file system under /sys/fs/cgroup.
+bool cgroupFileSystemMounted() {
+    std::ifstream mounts("/proc/self/mounts");
+    for (std::string device, point, type, rest; mounts >> device >> point >> type && std::getline(mounts, rest);)
+        if (point.starts_with("/sys/fs/cgroup") && (type == "cgroup" || type == "cgroup2"))
+            return true;
+    return false;
+}
+
+} // namespace
+
 bool isTerminalJobState(const std::string& state) {
     for (const char* s : {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "PREEMPTED",
                           "BOOT_FAIL", "DEADLINE", "OUT_OF_MEMORY"})
@@ -126,6 +139,14 @@ std::expected<std::unique_ptr<SlurmCluster>, ClusterUnavailable> SlurmCluster::s
         return std::unexpected(ClusterUnavailable{
             true, "a private Slurm needs root here: slurmd starts each job as its submitting user, and "
                   "munged, slurmctld and slurmd run as SlurmUser=root (run the test as root, as CI does)"});
+
+    // Debian 12's slurmd (22.05) loads its cgroup plugin whatever the
+    // ProctrackType and TaskPlugin, and stops without a cgroup file system:
+    // a chroot or a container that mounts none cannot run it.
+    if (!cgroupFileSystemMounted())
+        return std::unexpected(ClusterUnavailable{
+            true, "no cgroup file system is mounted at /sys/fs/cgroup (a chroot or container without one): "
+                  "Debian 12's slurmd cannot start without it"});
 
     std::unique_ptr<SlurmCluster> cluster(new SlurmCluster);
     // Under /tmp, not TMPDIR: munge's socket path must stay short (108 bytes).
