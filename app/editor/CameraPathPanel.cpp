@@ -402,6 +402,7 @@ void CameraPathPanel::exportVideo() {
         return;
     }
     VideoExportDialog dialog(document_, current_, this);
+    connect(&dialog, &VideoExportDialog::exportFinished, this, &CameraPathPanel::videoExportFinished);
     dialog.exec();
 }
 

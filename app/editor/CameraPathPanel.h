@@ -51,6 +51,8 @@ public slots:
 
 signals:
     void currentPathChanged(int index);
+    // A video export ended: its output and the error ("" done, "cancelled").
+    void videoExportFinished(const QString& output, const QString& error);
 
 private:
     void refresh();

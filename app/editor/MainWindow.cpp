@@ -3,6 +3,8 @@
 #include "AboutDialog.h"
 #include "Autosave.h"
 #include "CameraPathPanel.h"
+#include "EventLog.h"
+#include "LogPanel.h"
 #include "EffectsPanel.h"
 #include "ImportJob.h"
 #include "OutlinerPanel.h"
@@ -38,6 +40,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QUndoView>
 #include <QVBoxLayout>
@@ -59,6 +62,12 @@ const char* kRecentKey = "recentFiles";
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Document(this)) {
     setObjectName("mainWindow");
+    log_ = new EventLog(this);
+    // GL messages come on the render thread; the log takes them on this one.
+    renderer::setGlDebugSink([log = log_](bool error, const std::string& message) {
+        log->post(error ? EventLog::Severity::Error : EventLog::Severity::Warning, "OpenGL",
+                  QString::fromStdString(message));
+    });
     viewport_ = new Viewport(document_, this);
     setCentralWidget(viewport_);
     autosave_ = new Autosave(document_, this);
@@ -73,8 +82,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
             total += t.lastMs;
         showFrameStats(total);
     });
-    connect(viewport_, &Viewport::renderFailed, this,
-            [this](const QString& message) { statusBar()->showMessage(tr("Render error: ") + message); });
+    connect(viewport_, &Viewport::renderFailed, this, [this](const QString& message) {
+        statusBar()->showMessage(tr("Render error: ") + message);
+        log_->add(EventLog::Severity::Error, tr("Render"), message);
+    });
     connect(document_, &Document::titleChanged, this, &MainWindow::updateTitle);
     // Texture decoding runs in the background: its state has its own corner of the status bar.
     texturesLabel_ = new QLabel(this);
@@ -85,13 +96,25 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     connect(viewport_, &Viewport::texturesLoaded, this, [this](const QStringList& warnings) {
         texturesLabel_->setText(warnings.isEmpty() ? QString() : tr("%1 textures missing").arg(warnings.size()));
         texturesLabel_->setToolTip(tr("Drawn as a placeholder:\n") + warnings.join("\n"));
+        for (const QString& w : warnings)
+            log_->add(EventLog::Severity::Warning, tr("Textures"), w);
     });
+    // Warnings and errors not yet looked at; a click opens the Log dock.
+    logButton_ = new QToolButton(this);
+    logButton_->setObjectName("logButton");
+    logButton_->setAutoRaise(true);
+    statusBar()->addPermanentWidget(logButton_);
+    connect(logButton_, &QToolButton::clicked, this, &MainWindow::showLog);
+    connect(log_, &EventLog::unseenChanged, this, &MainWindow::updateLogButton);
+    updateLogButton();
     connect(document_, &Document::changed, this, [this](Changes c) {
         if (c & Change::Cameras)
             rebuildCamerasMenu();
     });
-    connect(autosave_, &Autosave::failed, this,
-            [this](const QString& m) { statusBar()->showMessage(tr("Autosave failed: ") + m); });
+    connect(autosave_, &Autosave::failed, this, [this](const QString& m) {
+        statusBar()->showMessage(tr("Autosave failed: ") + m);
+        log_->add(EventLog::Severity::Error, tr("Autosave"), m);
+    });
 
     createActions();
     createDocks();
@@ -102,9 +125,29 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
     showProject(untitledProject(), {});
+    log_->add(EventLog::Severity::Info, "OpenGL",
+              renderer::glDebugOutputRequested()
+                  ? tr("GL debug messages are shown here")
+                  : tr("GL debug messages are off (set LPV_GL_DEBUG=1 to show them here; they slow the GPU down)"));
 }
 
-MainWindow::~MainWindow() = default;
+// Before the children go (the viewport ends its render thread): no GL message may reach a deleted log.
+MainWindow::~MainWindow() { renderer::setGlDebugSink({}); }
+
+void MainWindow::updateLogButton() {
+    const int errors = log_->unseenErrors(), warnings = log_->unseenWarnings();
+    logButton_->setVisible(errors + warnings > 0);
+    logButton_->setText(errors > 0 ? tr("%n error(s)", "", errors) + ", " + tr("%n warning(s)", "", warnings)
+                                   : tr("%n warning(s)", "", warnings));
+    logButton_->setToolTip(tr("Show them in the Log"));
+}
+
+void MainWindow::showLog() {
+    QDockWidget* d = dock("log");
+    d->show();
+    d->raise();
+    log_->markSeen();
+}
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& name, const QString& title, Qt::DockWidgetArea area) {
     auto* dock = new QDockWidget(title, this);
@@ -173,6 +216,24 @@ void MainWindow::createDocks() {
     radiosity_ = new RadiosityPanel(document_, this);
     QDockWidget* radiosityDock = addDock(radiosity_, "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, radiosityDock);
+    connect(radiosity_, &RadiosityPanel::stopped, this,
+            [this](const QString& message) { log_->add(EventLog::Severity::Info, tr("Radiosity"), message); });
+    connect(cameraPaths_, &CameraPathPanel::videoExportFinished, this, [this](const QString& output, const QString& error) {
+        if (error.isEmpty())
+            log_->add(EventLog::Severity::Info, tr("Video export"), tr("wrote %1").arg(output));
+        else if (error == "cancelled")
+            log_->add(EventLog::Severity::Info, tr("Video export"), tr("cancelled: %1").arg(output));
+        else
+            log_->add(EventLog::Severity::Error, tr("Video export"), output + ": " + error);
+    });
+    logPanel_ = new LogPanel(log_, this);
+    QDockWidget* logDock = addDock(logPanel_, "log", tr("Log"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(profilerDock, logDock);
+    // Shown is seen: the count in the status bar starts again.
+    connect(logDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            log_->markSeen();
+    });
     profilerDock->raise();
 
     effects_ = new EffectsPanel(document_, viewport_, this);
@@ -418,6 +479,7 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
         const QString message = QString::fromStdString(loaded.error().describe());
         lastOpenError_ = message;
         statusBar()->showMessage(message);
+        log_->add(EventLog::Severity::Error, tr("Open"), message);
         if (interactive)
             QMessageBox::critical(this, tr("Cannot open project"), message);
         return false;
@@ -426,6 +488,9 @@ bool MainWindow::openProject(const QString& path, bool interactive) {
     const std::vector<std::string> warnings = loaded->loadWarnings;
     showProject(std::move(*loaded), path);
     addRecentFile(path);
+    log_->add(EventLog::Severity::Info, tr("Open"), tr("opened %1").arg(path));
+    for (const std::string& w : warnings)
+        log_->add(EventLog::Severity::Warning, tr("Open"), QString::fromStdString(w));
     if (!warnings.empty()) {
         // Texture references led out of the project's folder: say so where
         // the user looks, and in the dialog when a person opened it.
@@ -508,12 +573,14 @@ bool MainWindow::saveTo(const QString& path, bool interactive) {
     if (!saved) {
         const QString message = QString::fromStdString(saved.error().describe());
         statusBar()->showMessage(tr("Not saved: ") + message);
+        log_->add(EventLog::Severity::Error, tr("Save"), message);
         if (interactive)
             QMessageBox::critical(this, tr("Cannot save project"), message + tr("\nThe previous file is unchanged."));
         return false;
     }
     addRecentFile(path);
     statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    log_->add(EventLog::Severity::Info, tr("Save"), tr("saved %1").arg(path));
     return true;
 }
 
@@ -668,11 +735,13 @@ void MainWindow::importFile(const QString& path, bool interactive) {
     connect(progress, &QProgressDialog::canceled, this, [this, job, finish, path] {
         job->cancel();
         statusBar()->showMessage(tr("Import of %1 cancelled; the project is unchanged").arg(path), 8000);
+        log_->add(EventLog::Severity::Info, tr("Import"), tr("%1: cancelled; the project is unchanged").arg(path));
         finish();
     });
     connect(job, &ImportJob::failed, this, [this, finish, interactive](const QString& message) {
         finish();
         statusBar()->showMessage(tr("Import failed: ") + message);
+        log_->add(EventLog::Severity::Error, tr("Import"), message);
         if (interactive)
             QMessageBox::critical(this, tr("Import failed"), message);
     });
@@ -704,6 +773,9 @@ void MainWindow::importFile(const QString& path, bool interactive) {
                                              .arg(st.texturesMissing)
                                              .arg(result->warnings.size())
                                              .arg(st.seconds, 0, 'f', 2));
+                log_->add(EventLog::Severity::Info, tr("Import"), statusBar()->currentMessage());
+                for (const std::string& w : result->warnings)
+                    log_->add(EventLog::Severity::Warning, tr("Import"), QString::fromStdString(w));
             });
     job->start();
 }

@@ -10,6 +10,7 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QToolButton;
 class QUndoView;
 
 namespace lpv::editor {
@@ -17,6 +18,8 @@ namespace lpv::editor {
 class Autosave;
 class CameraPathPanel;
 class EffectsPanel;
+class EventLog;
+class LogPanel;
 class RadiosityPanel;
 class OutlinerPanel;
 class ParameterInspector;
@@ -66,6 +69,11 @@ public:
     ProfilerPanel* profiler() const { return profiler_; }
     CameraPathPanel* cameraPaths() const { return cameraPaths_; }
     VisualizerPanel* visualizers() const { return visualizers_; }
+    // The session's log (open, save, import, textures, GL messages, solves,
+    // exports) and its dock; the status bar's "N warnings" opens the dock.
+    EventLog* eventLog() const { return log_; }
+    LogPanel* logPanel() const { return logPanel_; }
+    QToolButton* logButton() const { return logButton_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -101,6 +109,8 @@ private:
     void rebuildRecentMenu();
     void rebuildCamerasMenu();
     void showFrameStats(double gpuMs);
+    void updateLogButton();
+    void showLog();
     bool chooseSplit();
     void updateSplit();
 
@@ -119,6 +129,9 @@ private:
     ProfilerPanel* profiler_ = nullptr;
     CameraPathPanel* cameraPaths_ = nullptr;
     Autosave* autosave_ = nullptr;
+    EventLog* log_ = nullptr;
+    LogPanel* logPanel_ = nullptr;
+    QToolButton* logButton_ = nullptr;
     QUndoView* undoView_ = nullptr;
     QLabel* frameLabel_ = nullptr;
     QLabel* memoryLabel_ = nullptr;

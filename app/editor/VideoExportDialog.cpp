@@ -138,6 +138,7 @@ QString VideoExportDialog::run() {
     loop.exec();
     worker->wait();
     delete worker;
+    emit exportFinished(output_->text(), *result);
     return *result;
 }
 

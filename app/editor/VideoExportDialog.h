@@ -35,6 +35,10 @@ public:
     // Tests: cancel once this many frames are done (0 = never).
     void setCancelAfterFramesForTests(int frames) { cancelAfterFrames_ = frames; }
 
+signals:
+    // After every run(): the output file or folder and run()'s result.
+    void exportFinished(const QString& output, const QString& error);
+
 private:
     Document* document_;
     int pathIndex_;

@@ -3,7 +3,6 @@
 // docs/portability.md.
 #include "lpv/renderer/GlContext.h"
 
-#include "GlDebug.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>

@@ -1,26 +1,49 @@
 // The platform-independent part of lpv/renderer/GlContext.h: what the current
 // context is, and GL debug output. Works on any context (headless or Qt's).
-#include "GlDebug.h"
 #include "lpv/renderer/GlContext.h"
 
 #include <epoxy/gl.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <string_view>
 
 namespace lpv::renderer {
 
 namespace {
 
+std::mutex& sinkMutex() {
+    static std::mutex m;
+    return m;
+}
+
+GlDebugSink& sink() {
+    static GlDebugSink s;
+    return s;
+}
+
 void GLAPIENTRY printDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
                                   const GLchar* message, const void*) {
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION)
         return;
-    std::fprintf(stderr, "GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "warning", message);
+    const bool error = type == GL_DEBUG_TYPE_ERROR;
+    {
+        std::lock_guard lock(sinkMutex());
+        if (sink()) {
+            sink()(error, message);
+            return;
+        }
+    }
+    std::fprintf(stderr, "GL %s: %s\n", error ? "error" : "warning", message);
 }
 
 } // namespace
+
+void setGlDebugSink(GlDebugSink newSink) {
+    std::lock_guard lock(sinkMutex());
+    sink() = std::move(newSink);
+}
 
 bool glDebugOutputRequested() {
 #ifndef NDEBUG

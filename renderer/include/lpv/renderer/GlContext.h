@@ -4,6 +4,7 @@
 // in it as in the editor's QOpenGLWidget.
 #include "lpv/scene/Error.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,8 +51,18 @@ struct GpuMemoryInfo {
 };
 std::optional<GpuMemoryInfo> queryGpuMemory();
 
-// Routes GL debug messages (errors and performance warnings) to stderr.
-// On in debug builds, or when LPV_GL_DEBUG=1; needs a debug context to see everything.
+// Routes GL debug messages (errors and performance warnings) to stderr, or
+// to the sink set with setGlDebugSink. On in debug builds, or when
+// LPV_GL_DEBUG=1; needs a debug context to see everything.
 void installDebugOutputIfRequested();
+// Whether GL debug output is on in this process (debug build or LPV_GL_DEBUG=1).
+bool glDebugOutputRequested();
+
+// Where GL debug messages go instead of stderr (the editor's log); empty
+// restores stderr. Called on the thread whose context reports the message
+// (a render thread), under a lock that setGlDebugSink also takes: a sink
+// must be quick and must not call setGlDebugSink itself.
+using GlDebugSink = std::function<void(bool error, const std::string& message)>;
+void setGlDebugSink(GlDebugSink sink);
 
 } // namespace lpv::renderer
