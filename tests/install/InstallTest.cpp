@@ -92,6 +92,23 @@ TEST_F(Installed, LaysOutProgramsAndTheSampleProject) {
     EXPECT_GE(files, 2) << "the project file and its mesh assets";
 }
 
+// Issue #28: the cluster job files come with the package, the scripts runnable.
+TEST_F(Installed, LaysOutTheClusterJobFiles) {
+    const fs::path source = fs::path(lpv::test::kSourceDir) / "packaging/cluster";
+    const fs::path installed = prefix / "share/lpvstudio/cluster";
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(source)) {
+        const fs::path copy = installed / entry.path().filename();
+        ASSERT_TRUE(fs::is_regular_file(copy)) << copy;
+        EXPECT_EQ(readFile(copy), readFile(entry.path())) << copy;
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".sh" || ext == ".sbatch")
+            EXPECT_NE(fs::status(copy).permissions() & fs::perms::owner_exec, fs::perms::none) << copy;
+        ++files;
+    }
+    EXPECT_GE(files, 10) << "submit wrappers, batch scripts and manifests";
+}
+
 TEST_F(Installed, LpvReportsItsVersion) {
     const RunResult r = run(quoted(prefix / "bin/lpv") + " --version");
     EXPECT_EQ(r.exitCode, 0) << r.output;
