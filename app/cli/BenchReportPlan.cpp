@@ -49,7 +49,6 @@ const std::vector<SceneSpec> kScenes = {{"cornell-box", "", 4096},
                                         {"sibenik", "sibenik/sibenik.obj", 4096},
                                         {"sponza", "sponza/sponza.obj", 2048}};
 
-
 bool ReportOptions::wantsScene(const std::string& name) const {
     return scenes.empty() || std::ranges::find(scenes, name) != scenes.end();
 }
@@ -58,7 +57,9 @@ bool ReportOptions::wantsQuestion(const std::string& name) const {
     return questions.empty() || std::ranges::find(questions, name) != questions.end();
 }
 
-int ReportOptions::sppFor(const SceneSpec& spec) const { return spp ? *spp : (quick ? 256 : spec.defaultSpp); }
+int ReportOptions::sppFor(const SceneSpec& spec) const {
+    return spp ? *spp : (quick ? 256 : spec.defaultSpp);
+}
 
 fs::path projectFileOf(const SceneSpec& spec, const ReportOptions& options) {
     return options.outDir / spec.name / (spec.name + ".lpvproj");
@@ -100,8 +101,8 @@ std::optional<ScenePlan> planScene(const SceneSpec& spec, const ReportOptions& o
         // reference that traces sky light exactly when that LPV injects it.
         if (q.name == "bounces") {
             for (const std::string& k : splitValues(sweep))
-                plan.sweeps.push_back(
-                    {q.name, "lpv.bounces=" + k, plan.dir / q.name / k, referenceIndex(std::atoi(k.c_str()), "")});
+                plan.sweeps.push_back({q.name, "lpv.bounces=" + k, plan.dir / q.name / k,
+                                       referenceIndex(std::atoi(k.c_str()), "")});
         } else if (q.name == "sky") {
             for (const std::string& v : splitValues(sweep))
                 plan.sweeps.push_back({q.name, "effects.skyInjection=" + v, plan.dir / q.name / v,
@@ -113,20 +114,38 @@ std::optional<ScenePlan> planScene(const SceneSpec& spec, const ReportOptions& o
     return plan;
 }
 
-std::vector<std::string> referenceArgs(const ScenePlan& plan, const PlannedReference& ref, const fs::path& out,
-                                       const ReportOptions& options) {
-    std::vector<std::string> args{plan.project.string(), "-o", out.string(), "--width",
-                                  std::to_string(options.width), "--height", std::to_string(options.height),
-                                  "--spp", std::to_string(plan.spp), "--bounces", std::to_string(ref.bounces)};
+std::vector<std::string> referenceArgs(const ScenePlan& plan, const PlannedReference& ref,
+                                       const fs::path& out, const ReportOptions& options) {
+    std::vector<std::string> args{plan.project.string(),
+                                  "-o",
+                                  out.string(),
+                                  "--width",
+                                  std::to_string(options.width),
+                                  "--height",
+                                  std::to_string(options.height),
+                                  "--spp",
+                                  std::to_string(plan.spp),
+                                  "--bounces",
+                                  std::to_string(ref.bounces)};
     if (!ref.sky.empty())
         args.insert(args.end(), {"--set", "effects.skyInjection=" + ref.sky});
     return args;
 }
 
-std::vector<std::string> sweepArgs(const ScenePlan& plan, const PlannedSweep& sweep, const ReportOptions& options) {
-    return {plan.project.string(), "--sweep", sweep.sweep, "--reference",
-            plan.references[sweep.reference].file.string(), "--width", std::to_string(options.width), "--height",
-            std::to_string(options.height), "--frames", std::to_string(options.frames), "--warmup",
+std::vector<std::string> sweepArgs(const ScenePlan& plan, const PlannedSweep& sweep,
+                                   const ReportOptions& options) {
+    return {plan.project.string(),
+            "--sweep",
+            sweep.sweep,
+            "--reference",
+            plan.references[sweep.reference].file.string(),
+            "--width",
+            std::to_string(options.width),
+            "--height",
+            std::to_string(options.height),
+            "--frames",
+            std::to_string(options.frames),
+            "--warmup",
             std::to_string(options.warmup)};
 }
 
@@ -139,7 +158,6 @@ int call(const char* name, int (*command)(Args), std::vector<std::string> args) 
     return command(Args(std::move(args)));
 }
 
-
 std::vector<std::string> splitValues(const std::string& sweep) {
     std::vector<std::string> out;
     std::string values = sweep.substr(sweep.find('=') + 1);
@@ -148,7 +166,6 @@ std::vector<std::string> splitValues(const std::string& sweep) {
         out.push_back(v);
     return out;
 }
-
 
 bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::path& project) {
     std::error_code ec;
@@ -169,7 +186,6 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
 }
 
-
 bool referenceMatches(const fs::path& file, int width, int height, int bounces, int spp) {
     if (!fs::exists(file))
         return false;
@@ -179,7 +195,6 @@ bool referenceMatches(const fs::path& file, int width, int height, int bounces, 
     const auto it = ref->attributes.find("lpv:bounces");
     return bounces == 0 || (it != ref->attributes.end() && it->second == std::to_string(bounces));
 }
-
 
 bool sweepDoneAlready(const fs::path& file, const ScenePlan& plan, const PlannedSweep& sweep,
                       const ReportOptions& options) {
@@ -195,7 +210,8 @@ bool sweepDoneAlready(const fs::path& file, const ScenePlan& plan, const Planned
     for (const std::string& part :
          {"lpv bench " + plan.project.string() + " ", "--sweep " + sweep.sweep + " ",
           "--reference " + reference.string() + " ", "--width " + std::to_string(options.width) + " ",
-          "--height " + std::to_string(options.height) + " ", "--frames " + std::to_string(options.frames) + " ",
+          "--height " + std::to_string(options.height) + " ",
+          "--frames " + std::to_string(options.frames) + " ",
           "--warmup " + std::to_string(options.warmup) + " "})
         if (command.find(part) == std::string::npos)
             return false;

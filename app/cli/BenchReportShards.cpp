@@ -117,8 +117,10 @@ int runReportShard(const ReportOptions& o, const reference::ShardSpec& shard) {
                 return kFailure;
         }
     if (ran == 0) {
-        std::printf("\nnothing left for the shards: every sweep is merged; the coordinator writes the report:\n"
-                    "  %s --merge-shards %d\n", reportCommand(o).c_str(), shard.count);
+        std::printf(
+            "\nnothing left for the shards: every sweep is merged; the coordinator writes the report:\n"
+            "  %s --merge-shards %d\n",
+            reportCommand(o).c_str(), shard.count);
         return kOk;
     }
     printNext(o, shard.count, "every shard runs its part of the sweeps");
@@ -142,8 +144,9 @@ int runReportCoordinator(const ReportOptions& o, int shardCount) {
     }
     if (made) {
         std::printf("\nprojects made.");
-        printNext(o, shardCount, "the " + std::to_string(shardCount) + " shards (" + reportCommand(o) +
-                                     " --shard I/" + std::to_string(shardCount) + ")");
+        printNext(o, shardCount,
+                  "the " + std::to_string(shardCount) + " shards (" + reportCommand(o) + " --shard I/" +
+                      std::to_string(shardCount) + ")");
         return kOk;
     }
     const auto plans = planAll(o, shardCount);

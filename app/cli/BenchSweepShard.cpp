@@ -23,14 +23,21 @@ namespace {
 constexpr const char* kFormat = "lpvstudio-sweep-shard";
 constexpr int kVersion = 1;
 
-std::string runImageName(int index) { return "run-" + std::to_string(index) + ".exr"; }
+std::string runImageName(int index) {
+    return "run-" + std::to_string(index) + ".exr";
+}
 
 Json metricsToJson(const reference::ErrorMetrics& m) {
     // nlohmann writes doubles so that they read back to the same bits: the
     // merged sweep's error columns are those of an unsharded run, exactly.
-    return {{"pixels", m.pixels},       {"relMse", m.relMse},       {"mare", m.mare},
-            {"ssim", m.ssim},           {"meanTest", m.meanTest},   {"meanReference", m.meanReference},
-            {"noiseRelMse", m.noiseRelMse}, {"noiseMare", m.noiseMare}};
+    return {{"pixels", m.pixels},
+            {"relMse", m.relMse},
+            {"mare", m.mare},
+            {"ssim", m.ssim},
+            {"meanTest", m.meanTest},
+            {"meanReference", m.meanReference},
+            {"noiseRelMse", m.noiseRelMse},
+            {"noiseMare", m.noiseMare}};
 }
 
 reference::ErrorMetrics metricsFromJson(const Json& j) {
@@ -68,7 +75,8 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
     try {
         auto spec = reference::parseShard(j.at("shard").get<std::string>());
         if (!spec)
-            return scene::makeError(scene::ErrorCode::InvalidValue, file.string(), "shard", spec.error().message);
+            return scene::makeError(scene::ErrorCode::InvalidValue, file.string(), "shard",
+                                    spec.error().message);
         s.shard = *spec;
         s.combinations = j.at("combinations").get<int>();
         s.command = j.at("command").get<std::string>();
@@ -96,12 +104,14 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
             if (!pixels)
                 return std::unexpected(pixels.error());
             if (pixels->width != s.width || pixels->height != s.height || pixels->names.size() != 3)
-                return scene::makeError(scene::ErrorCode::InvalidValue, (dir / runImageName(index)).string(), "",
+                return scene::makeError(scene::ErrorCode::InvalidValue, (dir / runImageName(index)).string(),
+                                        "",
                                         "not this shard's " + std::to_string(s.width) + "x" +
                                             std::to_string(s.height) + " RGB image");
             run.indirectPixels.resize(pixels->pixels.size() / 3);
             for (std::size_t i = 0; i < run.indirectPixels.size(); ++i)
-                run.indirectPixels[i] = {pixels->pixels[3 * i], pixels->pixels[3 * i + 1], pixels->pixels[3 * i + 2]};
+                run.indirectPixels[i] = {pixels->pixels[3 * i], pixels->pixels[3 * i + 1],
+                                         pixels->pixels[3 * i + 2]};
             s.indices.push_back(index);
             s.runs.push_back(std::move(run));
         }
@@ -134,8 +144,12 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
             settings.push_back({key, value});
         Json passes = Json::array();
         for (const auto& p : r.passes)
-            passes.push_back({{"pass", p.pass}, {"medianMs", p.medianMs}, {"minMs", p.minMs},
-                              {"maxMs", p.maxMs}, {"lastMs", p.lastMs}, {"frames", p.samples}});
+            passes.push_back({{"pass", p.pass},
+                              {"medianMs", p.medianMs},
+                              {"minMs", p.minMs},
+                              {"maxMs", p.maxMs},
+                              {"lastMs", p.lastMs},
+                              {"frames", p.samples}});
         runs.push_back({{"index", index},
                         {"settings", settings},
                         {"bounces", r.bounces},
@@ -154,7 +168,9 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
                  {"width", shard.width},
                  {"height", shard.height},
                  {"reference",
-                  {{"file", shard.referenceFile}, {"absolute", shard.referenceAbsolute}, {"hash", shard.referenceHash}}},
+                  {{"file", shard.referenceFile},
+                   {"absolute", shard.referenceAbsolute},
+                   {"hash", shard.referenceHash}}},
                  {"runs", runs}};
     return writeReportFiles({{(dir / "shard.json").string(), j.dump(1) + "\n"}});
 }
@@ -237,9 +253,9 @@ int benchMerge(Args args) {
         if (!byIndex[std::size_t(i)])
             missing += (missing.empty() ? "" : ", ") + reference::formatShard({i, first.shard.count});
     if (!missing.empty())
-        return refuse("lpv bench merge", "incomplete set: missing shard" +
-                                             std::string(missing.find(',') != std::string::npos ? "s " : " ") +
-                                             missing);
+        return refuse("lpv bench merge",
+                      "incomplete set: missing shard" +
+                          std::string(missing.find(',') != std::string::npos ? "s " : " ") + missing);
 
     // The reference: for the crops and the report's header; it must be the one measured against.
     fs::path refFile = referenceOverride ? fs::path(*referenceOverride) : fs::path(first.referenceAbsolute);
@@ -247,8 +263,7 @@ int benchMerge(Args args) {
         refFile = first.referenceFile;
     if (fileContentHash(refFile) != first.referenceHash)
         return refuse(refFile.string(), "not the reference the shards were measured against (content hash " +
-                                            first.referenceHash +
-                                            "); give that file with --reference");
+                                            first.referenceHash + "); give that file with --reference");
     auto loaded = readReferenceExr(refFile);
     if (!loaded) {
         std::cerr << "lpv: " << loaded.error().describe() << "\n";

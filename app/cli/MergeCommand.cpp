@@ -66,8 +66,8 @@ int runMerge(Args args) {
         return kFailure;
     }
     std::printf("merged %zu shards: %dx%d, %d spp, %.2f s of tracing in all\nwrote %s\n", pieces.size(),
-                merged->image.width, merged->image.height, merged->image.samplesPerPixel, merged->image.seconds,
-                output.string().c_str());
+                merged->image.width, merged->image.height, merged->image.samplesPerPixel,
+                merged->image.seconds, output.string().c_str());
     return kOk;
 }
 

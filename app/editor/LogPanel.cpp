@@ -44,7 +44,9 @@ LogPanel::LogPanel(EventLog* log, QWidget* parent) : QWidget(parent), log_(log) 
     rebuild();
 }
 
-void LogPanel::setMinimumSeverity(int index) { filter_->setCurrentIndex(index); }
+void LogPanel::setMinimumSeverity(int index) {
+    filter_->setCurrentIndex(index);
+}
 
 bool LogPanel::shown(const EventLog::Entry& entry) const {
     return int(entry.severity) >= filter_->currentIndex();
@@ -55,8 +57,8 @@ void LogPanel::append(const EventLog::Entry& entry) {
         return;
     const int row = table_->rowCount();
     table_->insertRow(row);
-    const QStringList cells{entry.time.toString("HH:mm:ss.zzz"), EventLog::toString(entry.severity), entry.source,
-                            entry.text};
+    const QStringList cells{entry.time.toString("HH:mm:ss.zzz"), EventLog::toString(entry.severity),
+                            entry.source, entry.text};
     for (int c = 0; c < cells.size(); ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         if (entry.severity == EventLog::Severity::Error)

@@ -99,6 +99,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
         for (const QString& w : warnings)
             log_->add(EventLog::Severity::Warning, tr("Textures"), w);
     });
+    referenceLabel_ = new QLabel(this);
+    referenceLabel_->setObjectName("referenceLabel");
+    statusBar()->addPermanentWidget(referenceLabel_);
+    connect(viewport_, &Viewport::referenceProgress, this, [this](int spp, double noise, double seconds) {
+        referenceLabel_->setText(spp == 0 ? QString()
+                                          : tr("Reference: %1 spp, noise %2%, %3 s")
+                                                .arg(spp)
+                                                .arg(100.0 * noise, 0, 'f', 1)
+                                                .arg(seconds, 0, 'f', 1));
+        referenceLabel_->setToolTip(tr("gi.method = reference: the CPU path tracer's image of this view, at half "
+                                       "its size; samples add up while nothing changes. Noise = the MARE its "
+                                       "own variance implies."));
+    });
     // Warnings and errors not yet looked at; a click opens the Log dock.
     logButton_ = new QToolButton(this);
     logButton_->setObjectName("logButton");

@@ -56,6 +56,17 @@ Viewport::Viewport(Document* document, QWidget* parent) : QWidget(parent), docum
     flyTimer_.setInterval(16);
     connect(&flyTimer_, &QTimer::timeout, this, &Viewport::flyStep);
     connect(document_, &Document::changed, this, &Viewport::onDocumentChanged);
+    referenceTimer_.setSingleShot(true);
+    referenceTimer_.setInterval(150);
+    connect(&referenceTimer_, &QTimer::timeout, this, &Viewport::restartReference);
+    connect(this, &Viewport::viewCameraChanged, this, [this] { scheduleReference(false); });
+    connect(&reference_, &LiveReference::passDone, this,
+            [this](const QImage& image, int spp, double noise, double seconds) {
+                referenceImage_ = image;
+                emit referenceProgress(spp, noise, seconds);
+                update();
+            });
+    connect(&reference_, &LiveReference::failed, this, [this](const QString& m) { emit renderFailed(m); });
     connect(document_, &Document::selectionChanged, this, [this] { update(); });
     onDocumentChanged(Change::Everything);
 }
@@ -80,7 +91,42 @@ void Viewport::onDocumentChanged(Changes changes) {
         emit viewCameraChanged();
     }
     pending_ |= changes;
+    scheduleReference(changes & ~Changes(Change::Parameters | Change::Presets));
     update();
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    scheduleReference(false);
+}
+
+bool Viewport::showsReference() const { return document_->parameters().getEnum("gi.method") == "reference"; }
+
+void Viewport::scheduleReference(bool sceneChanged) {
+    referenceSceneChanged_ = referenceSceneChanged_ || sceneChanged;
+    if (!showsReference()) {
+        if (reference_.running() || !referenceImage_.isNull()) {
+            reference_.stop();
+            referenceImage_ = {};
+            referenceSceneChanged_ = true;
+            emit referenceProgress(0, 0.0, 0.0);
+        }
+        return;
+    }
+    reference_.invalidate(); // what it traces now is of the old view
+    referenceTimer_.start();
+}
+
+void Viewport::restartReference() {
+    if (!showsReference())
+        return;
+    // Half the view's size: four times the samples per second, and the noise
+    // it shows is still the noise of what is traced.
+    const int w = std::max(1, width() / 2), h = std::max(1, height() / 2);
+    reference_.restart(document_->scene(), document_->parameters(), controller_.camera(), w, h,
+                       document_->projectDir(),
+                       referenceSceneChanged_);
+    referenceSceneChanged_ = false;
 }
 
 void Viewport::renderAgain() {
@@ -283,6 +329,11 @@ void Viewport::paintEvent(QPaintEvent*) {
     } else {
         painter.setRenderHint(QPainter::SmoothPixmapTransform, shownImage_.size() != size());
         painter.drawImage(QRectF(0, 0, width(), height()), shownImage_);
+    }
+    // gi.method = reference: the path tracer's image over the (direct-only) frame once it has one.
+    if (showsReference() && !referenceImage_.isNull()) {
+        painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+        painter.drawImage(QRectF(0, 0, width(), height()), referenceImage_);
     }
     drawOverlay(painter);
 }

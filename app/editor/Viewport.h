@@ -15,6 +15,7 @@
 #include "CameraController.h"
 #include "Document.h"
 #include "FrameWorker.h"
+#include "LiveReference.h"
 #include "TransformGizmo.h"
 #include "VisualizerOverlay.h"
 
@@ -112,9 +113,14 @@ signals:
     void texturesLoaded(const QStringList& warnings);
     // After a frame rendered while a visualizer request is active: what it read back.
     void visualizerFrame(std::shared_ptr<const lpv::editor::VisualizerFrame> frame);
+    // gi.method = reference: after every pass of the live path-traced view
+    // (samples per pixel, its noise MARE 0..1, seconds since it restarted);
+    // spp 0 when it stopped.
+    void referenceProgress(int samplesPerPixel, double noiseMare, double seconds);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -141,10 +147,19 @@ private:
     std::optional<glm::vec3> selectionPivot() const;
     int renderWidth() const;
     int renderHeight() const;
+    // gi.method = reference: (re)starts the live path tracer soon (changes
+    // during a drag are gathered), or stops it when gi.method is anything else.
+    void scheduleReference(bool sceneChanged);
+    void restartReference();
+    bool showsReference() const;
 
     Document* document_;
     FrameWorker* worker_ = nullptr;
     QImage shownImage_;       // the last finished frame
+    LiveReference reference_;
+    QImage referenceImage_;   // the live reference's last pass (gi.method = reference)
+    QTimer referenceTimer_;   // gathers changes before a restart
+    bool referenceSceneChanged_ = true;
     std::optional<renderer::GpuMemoryInfo> gpuMemory_;
     quint64 shownSerial_ = 0; // the request it includes
     bool lastFrameFailed_ = false;

@@ -253,7 +253,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     return out;
 }
 
-ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
+ReferenceImage PathTracer::render(const ProgressCallback& progress, const PassImageCallback& passImage) const {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     ReferenceImage result;
@@ -270,6 +270,19 @@ ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
         settings_.threads > 0 ? settings_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     const int target = std::max(1, settings_.samplesPerPixel);
 
+    // The means and variances of `passes` passes into `result`.
+    auto fillFromState = [&](int passes) {
+        for (std::size_t i = 0; i < state.size(); ++i) {
+            result.image[i] = state[i].image.mean;
+            result.indirectOne[i] = state[i].one.mean;
+            result.indirectMulti[i] = state[i].multi.mean;
+            result.imageVariance[i] = state[i].image.varianceOfMean(passes);
+            result.indirectOneVariance[i] = state[i].one.varianceOfMean(passes);
+            result.indirectMultiVariance[i] = state[i].multi.varianceOfMean(passes);
+        }
+        result.samplesPerPixel = passes;
+        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    };
     int done = 0;
     double lastPass = 0.0;
     while (done < target) {
@@ -303,20 +316,15 @@ ReferenceImage PathTracer::render(const ProgressCallback& progress) const {
         pool.clear(); // joins
         ++done;
         lastPass = std::chrono::duration<double>(Clock::now() - passStart).count();
+        if (passImage) {
+            fillFromState(done);
+            passImage(result);
+        }
         if (progress &&
             !progress({done, target, std::chrono::duration<double>(Clock::now() - start).count()}))
             break;
     }
-    for (std::size_t i = 0; i < state.size(); ++i) {
-        result.image[i] = state[i].image.mean;
-        result.indirectOne[i] = state[i].one.mean;
-        result.indirectMulti[i] = state[i].multi.mean;
-        result.imageVariance[i] = state[i].image.varianceOfMean(done);
-        result.indirectOneVariance[i] = state[i].one.varianceOfMean(done);
-        result.indirectMultiVariance[i] = state[i].multi.varianceOfMean(done);
-    }
-    result.samplesPerPixel = done;
-    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    fillFromState(done);
     return result;
 }
 

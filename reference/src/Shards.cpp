@@ -25,10 +25,12 @@ scene::Expected<ShardSpec> parseShard(std::string_view text) {
     if (slash == std::string_view::npos || !parseInt(text.substr(0, slash), s.index) ||
         !parseInt(text.substr(slash + 1), s.count))
         return scene::makeError(scene::ErrorCode::InvalidValue, "", "--shard",
-                                "'" + std::string(text) + "' is not I/N (e.g. 0/4: the first of four shards)");
+                                "'" + std::string(text) +
+                                    "' is not I/N (e.g. 0/4: the first of four shards)");
     if (s.count < 1 || s.index < 0 || s.index >= s.count)
         return scene::makeError(scene::ErrorCode::OutOfRange, "", "--shard",
-                                "'" + std::string(text) + "': need N >= 1 and 0 <= I < N (shards count from 0)");
+                                "'" + std::string(text) +
+                                    "': need N >= 1 and 0 <= I < N (shards count from 0)");
     return s;
 }
 
@@ -45,9 +47,9 @@ bool shardOwnsTile(const ShardSpec& shard, int tileX, int tileY) {
 }
 
 const std::vector<std::string>& shardMatchKeys() {
-    static const std::vector<std::string> keys{
-        "lpv:projectHash", "lpv:parametersHash", "lpv:camera",       "lpv:spp",
-        "lpv:bounces",     "lpv:skyLight",       "lpv:emissiveLight", "lpv:shardTile"};
+    static const std::vector<std::string> keys{"lpv:projectHash",   "lpv:parametersHash", "lpv:camera",
+                                               "lpv:spp",           "lpv:bounces",        "lpv:skyLight",
+                                               "lpv:emissiveLight", "lpv:shardTile"};
     return keys;
 }
 

@@ -30,7 +30,7 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
     plan = {};
     const scene::ParameterSet& params = frame.params;
     if (!giMethodRuns(params)) {
-        plan.lpvOffReason = "gi.method is off: direct light only";
+        plan.lpvOffReason = giMethodOffReason(params) + ": direct light only";
         return {};
     }
     plan.sun = findSun(frame.scene) >= 0;

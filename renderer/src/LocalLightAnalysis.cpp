@@ -31,7 +31,7 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
         names + " injected through " + std::to_string(params.getInt("lpv.localRsmSize")) + "^2 RSM face" +
         (lights == 1 && scene.lights[std::size_t(injected[0])].type == scene::LightType::Spot ? "" : "s");
     if (!giMethodRuns(params)) {
-        d.reason = "gi.method is off";
+        d.reason = giMethodOffReason(params);
     } else if (d.setting == "off") {
         d.reason = "forced off by lpv.localLights";
     } else if (lights == 0) {
@@ -54,7 +54,7 @@ EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::P
     d.setting = params.getEnum(d.parameter);
     const bool emissive = lpvref::sceneHasEmissiveSurface(scene);
     if (!giMethodRuns(params)) {
-        d.reason = "gi.method is off";
+        d.reason = giMethodOffReason(params);
     } else if (d.setting == "off") {
         d.reason = "forced off by lpv.emissive";
     } else if (!emissive) {

@@ -89,7 +89,11 @@ SceneTraits analyseSceneTraits(const scene::Scene& s) {
     return t;
 }
 
-bool giMethodRuns(const scene::ParameterSet& params) { return params.getEnum("gi.method") != "off"; }
+bool giMethodRuns(const scene::ParameterSet& params) { return params.getEnum("gi.method") == "lpv"; }
+
+std::string giMethodOffReason(const scene::ParameterSet& params) {
+    return "gi.method is " + params.getEnum("gi.method");
+}
 
 std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTraits& t, const scene::ParameterSet& params,
                                           const scene::Camera* camera, float aspect) {
@@ -104,7 +108,7 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     const EffectDecision emissive = decideEmissiveInjection(s, params);
     lpv.wanted = giMethodRuns(params) && (t.hasDirectionalLight || local.wanted || emissive.wanted) &&
                  params.getFloat("lpv.intensity") > 0.0f;
-    lpv.reason = !giMethodRuns(params)                  ? "gi.method is off: direct light only"
+    lpv.reason = !giMethodRuns(params)                  ? giMethodOffReason(params) + ": direct light only"
                  : params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
                  : t.hasDirectionalLight ? "a directional light lights the scene: its RSM is injected"
                  : local.wanted          ? "spot, point or area lights light the scene: their RSMs are injected"

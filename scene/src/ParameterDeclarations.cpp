@@ -42,9 +42,11 @@ constexpr Pass kLpvAll = P::EmissiveVpls | P::SkyHeight | P::LpvInjection | P::S
 std::vector<ParameterInfo> declareParameters() {
     return {
         // --- Global illumination ---
-        choice("gi.method", "lpv", {"off", "lpv"}, "GI",
+        choice("gi.method", "lpv", {"off", "lpv", "reference"}, "GI",
                "How indirect light is made: off = direct light only (no RSM, LPV, sky, subsurface or glossy "
-               "pass runs or holds GPU memory); lpv = cascaded light propagation volumes",
+               "pass runs or holds GPU memory); lpv = cascaded light propagation volumes; reference = the "
+               "editor shows the CPU path tracer's progressive image of the view (the rasteriser draws "
+               "direct light only, as with off)",
                P::Rsm | P::LocalRsm | kLpvAll | P::GlossyReflections),
         // --- LPV ---
         choice("lpv.variant", "computeGather", {"computeGather", "computeScatter", "rasterGather", "rasterScatter"},

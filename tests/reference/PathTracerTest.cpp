@@ -245,3 +245,23 @@ TEST(EmbreeScene, LeavesOutNonFiniteTriangles) {
 }
 
 } // namespace
+
+// The live view (issue #26): the image after pass k is the image of a render
+// with k samples per pixel, bit for bit.
+TEST(PathTracer, EachPassImageIsTheRenderOfThatManySamples) {
+    scene::Project cornell = scene::makeCornellBoxProject();
+    auto embree = reference::EmbreeScene::build(cornell.scene, {});
+    ASSERT_TRUE(embree);
+    const auto& camera = cornell.scene.cameras.front();
+    std::vector<reference::ReferenceImage> passes;
+    const auto full = reference::PathTracer(*embree, cornell.scene, camera, small(3, 2))
+                          .render({}, [&](const reference::ReferenceImage& image) { passes.push_back(image); });
+    ASSERT_EQ(passes.size(), 3u);
+    for (int k = 1; k <= 3; ++k) {
+        const auto direct = reference::PathTracer(*embree, cornell.scene, camera, small(k, 2)).render();
+        EXPECT_EQ(passes[std::size_t(k - 1)].samplesPerPixel, k);
+        EXPECT_EQ(passes[std::size_t(k - 1)].image, direct.image) << k;
+        EXPECT_EQ(passes[std::size_t(k - 1)].indirectMultiVariance, direct.indirectMultiVariance) << k;
+    }
+    EXPECT_EQ(passes.back().image, full.image);
+}

@@ -43,6 +43,9 @@ struct TraceProgress {
 
 // Called after every progressive pass; return false to stop early.
 using ProgressCallback = std::function<bool(const TraceProgress&)>;
+// Called after every pass, before the progress callback, with the image of
+// the passes so far (what render() would return if it stopped there): a live view.
+using PassImageCallback = std::function<void(const ReferenceImage&)>;
 
 // One sample of one pixel: what every estimator adds up (exposed for tests).
 struct PixelSample {
@@ -57,7 +60,7 @@ class PathTracer {
     PathTracer(const EmbreeScene& embree, const scene::Scene& scene, const scene::Camera& camera,
                PathTracerSettings settings);
 
-    ReferenceImage render(const ProgressCallback& progress = {}) const;
+    ReferenceImage render(const ProgressCallback& progress = {}, const PassImageCallback& passImage = {}) const;
 
     // Sample `sampleIndex` of pixel (x, y) (rows from the top); deterministic.
     PixelSample samplePixel(int x, int y, int sampleIndex) const;

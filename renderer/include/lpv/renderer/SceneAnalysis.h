@@ -41,8 +41,10 @@ inline constexpr float kOpenSkyThreshold = 0.05f;
 
 SceneTraits analyseSceneTraits(const scene::Scene& scene);
 
-// gi.method selects an indirect-light method (not "off"): the indirect passes may run.
+// gi.method is lpv: the indirect passes may run (off and reference draw direct light only).
 bool giMethodRuns(const scene::ParameterSet& params);
+// Why they do not: "gi.method is off", "gi.method is reference".
+std::string giMethodOffReason(const scene::ParameterSet& params);
 
 // The first directional light (the sun, as the RSM picks it), or null.
 const scene::Light* sunOf(const scene::Scene& scene);

@@ -1,0 +1,55 @@
+#pragma once
+// gi.method = reference in the editor (issue #26 item 2): the CPU path tracer
+// (reference/PathTracer.h, Embree, worker threads) renders the current view
+// progressively on its own thread; samples accumulate while the view and the
+// scene stay still, and any change restarts it. Each pass sends the image so
+// far (tonemapped for display), its sample count and its own noise level
+// (the MARE its variance implies, as `lpv compare` reports it).
+#include "lpv/scene/Camera.h"
+#include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Scene.h"
+
+#include <QImage>
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+#include <thread>
+
+namespace lpv::editor {
+
+class LiveReference : public QObject {
+    Q_OBJECT
+  public:
+    explicit LiveReference(QObject* parent = nullptr);
+    ~LiveReference() override;
+
+    // Starts again from 0 samples with this view (the traced image is
+    // `width` x `height`). `sceneChanged` = false keeps the last scene's
+    // Embree scene and textures (only the view moved).
+    void restart(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera& camera,
+                 int width, int height, const QString& projectDir, bool sceneChanged);
+    // Passes of the current run are no longer sent (a restart is coming).
+    void invalidate() { ++generation_; }
+    // Stops tracing (gi.method left reference) and frees the scene.
+    void stop();
+    bool running() const { return worker_.joinable(); }
+
+  signals:
+    // After every pass of the current restart: the display image, samples per
+    // pixel, the noise MARE of the image (0..1) and the seconds traced.
+    void passDone(const QImage& image, int samplesPerPixel, double noiseMare, double seconds);
+    // The scene could not be traced (e.g. no geometry Embree accepts).
+    void failed(const QString& message);
+
+  private:
+    struct Prepared; // Embree scene and textures, kept while only the view moves
+    void join();
+
+    std::thread worker_;
+    std::atomic<bool> cancel_{false};
+    std::shared_ptr<Prepared> prepared_;
+    unsigned generation_ = 0; // passes of an older restart are dropped
+};
+
+} // namespace lpv::editor

@@ -1,0 +1,64 @@
+// gi.method = reference in the editor (issue #26 item 2): the view shows the
+// path tracer's image, its samples add up while nothing changes, a camera
+// move starts it again, and leaving reference stops it.
+#include "Autosave.h"
+#include "Document.h"
+#include "MainWindow.h"
+#include "TestPaths.h"
+#include "Viewport.h"
+
+#include <QLabel>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace lpv::editor;
+
+namespace {
+QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+} // namespace
+
+TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
+    QTemporaryDir autosaveDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    MainWindow window;
+    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    ASSERT_TRUE(window.openProject(cornell(), false));
+    window.resize(800, 600);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    Viewport* vp = window.viewport();
+    std::vector<int> spp;
+    QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { spp.push_back(s); });
+
+    window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("reference")));
+    QTRY_VERIFY_WITH_TIMEOUT(!spp.empty() && spp.back() >= 3, 60000);
+    for (std::size_t i = 1; i < spp.size(); ++i)
+        EXPECT_EQ(spp[i], spp[i - 1] + 1) << "one pass at a time, none lost";
+    EXPECT_TRUE(window.referenceLabel()->text().contains("spp")) << window.referenceLabel()->text().toStdString();
+    // The view shows it: the Cornell box is lit, not black.
+    const QImage shown = vp->grab().toImage();
+    double sum = 0.0;
+    for (int y = 0; y < shown.height(); y += 8)
+        for (int x = 0; x < shown.width(); x += 8)
+            sum += qGray(shown.pixel(x, y));
+    EXPECT_GT(sum / double((shown.height() / 8) * (shown.width() / 8)), 20.0);
+
+    // A camera move starts again from one sample.
+    lpv::scene::Camera moved = vp->viewCamera();
+    moved.position += glm::vec3(0.3f, 0.1f, 0.2f);
+    spp.clear();
+    vp->setViewCamera(moved);
+    QTRY_VERIFY_WITH_TIMEOUT(!spp.empty(), 60000);
+    EXPECT_EQ(spp.front(), 1);
+
+    // Another method stops it and clears the status bar.
+    window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("lpv")));
+    QTRY_VERIFY_WITH_TIMEOUT(window.referenceLabel()->text().isEmpty(), 10000);
+    spp.clear();
+    QTest::qWait(1500);
+    EXPECT_TRUE(spp.empty()) << "no pass after it stopped";
+}
