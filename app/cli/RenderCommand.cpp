@@ -188,6 +188,9 @@ int runRender(Args args) {
         std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
                     setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
         std::printf("%s\n", setup->renderer->lpvNote().c_str());
+        if (setup->project.parameters.getEnum("gi.method") == "reference")
+            std::printf("note: gi.method = reference is the editor's live path-traced view; this image has direct "
+                        "light only. The path-traced image of a view: lpv reference PROJECT -o REF.exr --preview\n");
         {
             const auto& p = setup->project.parameters;
             const double scale = setup->renderer->displayExposure(p);

@@ -140,3 +140,17 @@ TEST(Cli, ATextureNameTooLongToLookUpIsAMissingTexture) {
         << render.output;
     std::filesystem::remove_all(dir);
 }
+
+// gi.method = reference is the editor's live path tracer: `lpv render` draws
+// direct light only with it, and says so and where the path-traced image is.
+TEST(Cli, RenderWithTheReferenceMethodSaysItDrawsDirectLightOnly) {
+    const std::string out = (std::filesystem::temp_directory_path() /
+                             ("lpv-cli-reference-method-" + std::to_string(::getpid()) + ".png"))
+                                .string();
+    const RunResult r =
+        runLpv("render " + cornellProject() + " -o '" + out + "' --width 64 --height 48 --set gi.method=reference");
+    std::filesystem::remove(out);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("LPV: off (gi.method is reference: direct light only)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("lpv reference PROJECT"), std::string::npos) << r.output;
+}
