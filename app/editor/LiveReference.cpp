@@ -75,7 +75,8 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
                             bool sceneChanged) {
     join();
     const unsigned generation = ++generation_;
-    if (sceneChanged)
+    // A scene whose Embree build failed is built again (and fails again, saying so).
+    if (sceneChanged || (prepared_ && !prepared_->embree))
         prepared_.reset();
     reference::PathTracerSettings settings;
     settings.width = std::max(1, width);

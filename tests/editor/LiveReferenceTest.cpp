@@ -62,3 +62,31 @@ TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
     QTest::qWait(1500);
     EXPECT_TRUE(spp.empty()) << "no pass after it stopped";
 }
+
+// An empty project (nothing to see) neither crashes the live reference nor
+// leaves it stuck: it traces, and moves restart it.
+TEST(LiveReference, AnEmptyProjectAndMovesDoNotBreakIt) {
+    QTemporaryDir autosaveDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    MainWindow window;
+    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    lpv::scene::Project empty;
+    empty.name = "untitled";
+    window.showProject(empty, {});
+    window.resize(640, 480);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    Viewport* vp = window.viewport();
+    int passes = 0, failures = 0;
+    QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { passes += s > 0; });
+    QObject::connect(vp, &Viewport::renderFailed, [&](const QString&) { ++failures; });
+    window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("reference")));
+    QTRY_VERIFY_WITH_TIMEOUT(passes > 0 || failures > 0, 30000);
+    for (int i = 0; i < 3; ++i) {
+        lpv::scene::Camera moved = vp->viewCamera();
+        moved.position += glm::vec3(0.5f, 0.0f, 0.0f);
+        const int before = passes + failures;
+        vp->setViewCamera(moved);
+        QTRY_VERIFY_WITH_TIMEOUT(passes + failures > before, 30000);
+    }
+}
