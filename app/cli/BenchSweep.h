@@ -37,8 +37,4 @@ bool writeSweepOutputs(const std::filesystem::path& outDir, const std::vector<Sw
                        int height, const std::string& command, const std::string& machine,
                        const reference::ReferenceImage& ref, const std::string& note = "");
 
-// The lowercase hex XXH3 of a file's bytes ("" if it cannot be read): ties a
-// sweep's shards to the one reference file they were measured against.
-std::string fileContentHash(const std::filesystem::path& file);
-
 } // namespace lpv::cli

@@ -276,9 +276,13 @@ int benchSweep(Args args) {
         command += " --reference " + *referenceFile;
     const std::string machine = describeMachine(gl.renderer, gl.version);
     if (!shard.whole()) {
+        const auto referenceHash = fileContentHash(*referenceFile);
+        if (!referenceHash) {
+            std::cerr << "lpv: " << referenceHash.error().describe() << "\n";
+            return kFailure;
+        }
         SweepShard out{shard, int(combinations.size()), command, machine, *width, *height, *referenceFile,
-                       fs::absolute(*referenceFile).string(), fileContentHash(*referenceFile), runIndices,
-                       std::move(runs)};
+                       fs::absolute(*referenceFile).string(), *referenceHash, runIndices, std::move(runs)};
         if (!writeSweepShard(outDir, out))
             return kFailure;
         std::printf("shard %s: %zu of %zu combinations; join the shards with `lpv bench merge`\n",

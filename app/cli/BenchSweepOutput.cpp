@@ -5,8 +5,7 @@
 #include "ReferenceFile.h"
 
 #include "lpv/importers/ImageIO.h"
-#include "lpv/scene/FileRead.h"
-#include "lpv/scene/MeshAsset.h"
+#include "lpv/reference/Preview.h"
 
 #include <algorithm>
 #include <charconv>
@@ -25,7 +24,7 @@ namespace {
 // A centre crop of an irradiance image; one key gives every crop the same exposure.
 scene::Image8 crop(const std::vector<glm::vec3>& pixels, int width, int height, float key) {
     const int w = std::min(width, 200), h = std::min(height, 150);
-    return previewImage(pixels, width, (width - w) / 2, (height - h) / 2, w, h, key);
+    return reference::previewImage(pixels, width, (width - w) / 2, (height - h) / 2, w, h, key);
 }
 
 double numeric(const std::string& value, std::size_t index) {
@@ -247,7 +246,7 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
     // The crops show the layer the runs are measured against (the first run's bounce count).
     const std::vector<glm::vec3>& shownLayer =
         runs.empty() || runs.front().bounces == 1 ? ref.indirectOne : ref.indirectMulti;
-    const float key = meanLuminance(shownLayer, ref.coverage);
+    const float key = reference::meanLuminance(shownLayer, ref.coverage);
     std::vector<std::pair<std::string, scene::Image8>> crops{
         {"reference, " + std::to_string(runs.empty() ? 1 : runs.front().bounces) + " bounce",
          crop(shownLayer, ref.width, ref.height, key)}};
@@ -262,15 +261,6 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
     return writeReportFiles({{csv, sweepCsv(runs, keys, passes)},
                              {json, sweepJson(runs, command, machine, ref)},
                              {md, sweepMarkdown(runs, front, command, machine, note, ref, plots)}});
-}
-
-std::string fileContentHash(const fs::path& file) {
-    auto bytes = scene::readFileBytes(file);
-    if (!bytes)
-        return "";
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(scene::contentHash64(*bytes)));
-    return buf;
 }
 
 } // namespace lpv::cli

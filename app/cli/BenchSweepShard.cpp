@@ -248,20 +248,17 @@ int benchMerge(Args args) {
                                       std::to_string(expected.size()) + " combinations");
         machines.insert(s.machine);
     }
-    std::string missing;
-    for (int i = 0; i < first.shard.count; ++i)
-        if (!byIndex[std::size_t(i)])
-            missing += (missing.empty() ? "" : ", ") + reference::formatShard({i, first.shard.count});
-    if (!missing.empty())
-        return refuse("lpv bench merge",
-                      "incomplete set: missing shard" +
-                          std::string(missing.find(',') != std::string::npos ? "s " : " ") + missing);
+    std::vector<bool> present(static_cast<std::size_t>(first.shard.count));
+    for (std::size_t i = 0; i < present.size(); ++i)
+        present[i] = byIndex[i] != nullptr;
+    if (const std::string missing = reference::describeMissingShards(present); !missing.empty())
+        return refuse("lpv bench merge", "incomplete set: " + missing);
 
     // The reference: for the crops and the report's header; it must be the one measured against.
     fs::path refFile = referenceOverride ? fs::path(*referenceOverride) : fs::path(first.referenceAbsolute);
     if (!referenceOverride && !fs::exists(refFile))
         refFile = first.referenceFile;
-    if (fileContentHash(refFile) != first.referenceHash)
+    if (const auto hash = fileContentHash(refFile); !hash || *hash != first.referenceHash)
         return refuse(refFile.string(), "not the reference the shards were measured against (content hash " +
                                             first.referenceHash + "); give that file with --reference");
     auto loaded = readReferenceExr(refFile);

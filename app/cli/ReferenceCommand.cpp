@@ -9,6 +9,7 @@
 #include "lpv/importers/ImageIO.h"
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/reference/PathTracer.h"
+#include "lpv/reference/Preview.h"
 
 #include <cstdio>
 #include <iostream>
@@ -166,7 +167,7 @@ int runReference(Args args) {
     const auto camera = pickCamera(project->scene, cameraName, pos.front());
     if (!camera)
         return kFailure;
-    const auto projectHash = projectContentHash(pos.front());
+    const auto projectHash = fileContentHash(pos.front());
     if (!projectHash) {
         std::cerr << "lpv: " << projectHash.error().describe() << "\n";
         return kFailure;
@@ -208,9 +209,9 @@ int runReference(Args args) {
              {std::pair{"-image.png", &image->image}, std::pair{"-indirect.png", &image->indirectMulti}}) {
             std::filesystem::path png = out;
             png.replace_filename(out.stem().string() + suffix);
-            const float key = meanLuminance(*pixels, image->coverage);
+            const float key = reference::meanLuminance(*pixels, image->coverage);
             if (auto ok = importers::writeImage(
-                    png, previewImage(*pixels, image->width, 0, 0, image->width, image->height, key));
+                    png, reference::previewImage(*pixels, image->width, 0, 0, image->width, image->height, key));
                 !ok) {
                 std::cerr << "lpv: " << ok.error().describe() << "\n";
                 return kFailure;

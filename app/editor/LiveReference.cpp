@@ -4,6 +4,7 @@
 #include "lpv/reference/EmbreeScene.h"
 #include "lpv/reference/Metrics.h"
 #include "lpv/reference/PathTracer.h"
+#include "lpv/reference/Preview.h"
 #include "lpv/renderer/ReferenceLights.h"
 #include "lpv/renderer/SceneAnalysis.h"
 
@@ -23,30 +24,11 @@ struct LiveReference::Prepared {
 
 namespace {
 
-// x / (x + key) per channel, gamma 2.2, key = the image's mean luminance: the
-// mapping of `lpv reference --preview`, so a dark interior and a sunlit
-// court both show.
+// As `lpv reference --preview` shows it (reference/Preview.h).
 QImage displayImage(const reference::ReferenceImage& r) {
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < r.image.size(); ++i)
-        if (r.coverage[i] > 0.5f) {
-            sum += reference::luminance(r.image[i]);
-            ++n;
-        }
-    const float key = float(std::max(n ? sum / double(n) : 0.0, 1e-6));
-    QImage out(r.width, r.height, QImage::Format_RGB888);
-    for (int y = 0; y < r.height; ++y) {
-        uchar* line = out.scanLine(y);
-        for (int x = 0; x < r.width; ++x) {
-            const glm::vec3 c = r.image[std::size_t(y) * std::size_t(r.width) + std::size_t(x)];
-            for (int k = 0; k < 3; ++k) {
-                const float v = std::isfinite(c[k]) ? std::max(c[k], 0.0f) : 0.0f;
-                line[3 * x + k] = uchar(std::lround(255.0f * std::pow(v / (v + key), 1.0f / 2.2f)));
-            }
-        }
-    }
-    return out;
+    const scene::Image8 rgba = reference::previewImage(r.image, r.width, 0, 0, r.width, r.height,
+                                                       reference::meanLuminance(r.image, r.coverage));
+    return QImage(rgba.pixels.data(), rgba.width, rgba.height, rgba.width * 4, QImage::Format_RGBA8888).copy();
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "lpv/reference/Shards.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 
@@ -38,12 +39,26 @@ std::string formatShard(const ShardSpec& shard) {
     return std::to_string(shard.index) + "/" + std::to_string(shard.count);
 }
 
+int shardOfTile(int tileX, int tileY, int shardCount) { return (tileX + tileY) % shardCount; }
+
 int shardOfPixel(int x, int y, int shardCount) {
-    return (x / kShardTileSize + y / kShardTileSize) % shardCount;
+    return shardOfTile(x / kShardTileSize, y / kShardTileSize, shardCount);
 }
 
 bool shardOwnsTile(const ShardSpec& shard, int tileX, int tileY) {
-    return (tileX + tileY) % shard.count == shard.index;
+    return shardOfTile(tileX, tileY, shard.count) == shard.index;
+}
+
+std::string describeMissingShards(const std::vector<bool>& present) {
+    const int count = int(present.size());
+    std::string list;
+    int missing = 0;
+    for (int i = 0; i < count; ++i)
+        if (!present[std::size_t(i)]) {
+            list += (list.empty() ? "" : ", ") + formatShard({i, count});
+            ++missing;
+        }
+    return missing == 0 ? "" : (missing > 1 ? "missing shards " : "missing shard ") + list;
 }
 
 const std::vector<std::string>& shardMatchKeys() {
@@ -94,17 +109,13 @@ scene::Expected<MergedShards> mergeShards(const std::vector<ShardPiece>& pieces)
                                     "shard " + it->second + " is given twice (also " + slot->source + ")");
         slot = &p;
     }
-    std::string missing;
-    int missingCount = 0;
+    std::vector<bool> present(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i)
-        if (!byIndex[std::size_t(i)]) {
-            missing += (missing.empty() ? "" : ", ") + formatShard({i, count});
-            ++missingCount;
-        }
-    if (missingCount > 0)
+        present[std::size_t(i)] = byIndex[std::size_t(i)] != nullptr;
+    if (const std::string missing = describeMissingShards(present); !missing.empty())
         return scene::makeError(scene::ErrorCode::MissingField, "lpv merge", "shards",
-                                "incomplete set: missing shard" + std::string(missingCount > 1 ? "s " : " ") +
-                                    missing + " (" + std::to_string(count - missingCount) + " of " +
+                                "incomplete set: " + missing + " (" +
+                                    std::to_string(std::ranges::count(present, true)) + " of " +
                                     std::to_string(count) + " given)");
 
     MergedShards out;

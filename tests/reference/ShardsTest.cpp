@@ -129,6 +129,8 @@ TEST(Shards, AnIncompleteSetNamesTheMissingShards) {
     ASSERT_FALSE(merged);
     EXPECT_NE(merged.error().message.find("missing shards 1/5, 3/5"), std::string::npos)
         << merged.error().message;
+    EXPECT_EQ(reference::describeMissingShards({true, false, true}), "missing shard 1/3");
+    EXPECT_EQ(reference::describeMissingShards({true, true}), "");
 }
 
 TEST(Shards, ADuplicateOrAMixedSetIsRefused) {

@@ -32,7 +32,9 @@ struct ShardSpec {
 scene::Expected<ShardSpec> parseShard(std::string_view text);
 std::string formatShard(const ShardSpec& shard); // "I/N"
 
-// The shard (0..count-1) that traces the tile holding pixel (x, y).
+// The shard (0..count-1) that traces tile (tileX, tileY): (tileX + tileY) mod count.
+int shardOfTile(int tileX, int tileY, int shardCount);
+// The shard that traces the tile holding pixel (x, y).
 int shardOfPixel(int x, int y, int shardCount);
 // Whether `shard` traces tile (tileX, tileY).
 bool shardOwnsTile(const ShardSpec& shard, int tileX, int tileY);
@@ -44,6 +46,10 @@ struct ShardPiece {
     ReferenceImage image;
     std::map<std::string, std::string> attributes;
 };
+
+// "missing shard 1/4" or "missing shards 1/5, 3/5": the indices whose
+// `present` is false, out of present.size(); "" when none is missing.
+std::string describeMissingShards(const std::vector<bool>& present);
 
 // Header keys every shard of one set must agree on: what was traced, how,
 // and with which cutting.
