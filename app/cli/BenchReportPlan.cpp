@@ -186,14 +186,18 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
 }
 
+bool referenceMatches(const LoadedReference& ref, int width, int height, int bounces, int spp) {
+    if (ref.image.width != width || ref.image.height != height || ref.image.samplesPerPixel < spp)
+        return false;
+    const auto it = ref.attributes.find("lpv:bounces");
+    return bounces == 0 || (it != ref.attributes.end() && it->second == std::to_string(bounces));
+}
+
 bool referenceMatches(const fs::path& file, int width, int height, int bounces, int spp) {
     if (!fs::exists(file))
         return false;
-    auto ref = readReferenceExr(file);
-    if (!ref || ref->image.width != width || ref->image.height != height || ref->image.samplesPerPixel < spp)
-        return false;
-    const auto it = ref->attributes.find("lpv:bounces");
-    return bounces == 0 || (it != ref->attributes.end() && it->second == std::to_string(bounces));
+    const auto ref = readReferenceExr(file);
+    return ref && referenceMatches(*ref, width, height, bounces, spp);
 }
 
 bool sweepDoneAlready(const fs::path& file, const ScenePlan& plan, const PlannedSweep& sweep,

@@ -6,6 +6,7 @@
 // (BenchAccuracyReport.cpp); on a cluster, shards and a coordinator run it in
 // pieces (BenchReportShards.cpp, docs/cluster.md).
 #include "Cli.h"
+#include "ReferenceFile.h"
 
 #include "lpv/reference/Shards.h"
 #include "lpv/scene/ParameterRegistry.h"
@@ -91,6 +92,7 @@ bool makeProject(const SceneSpec& spec, const std::filesystem::path& scenesDir,
                  const std::filesystem::path& project);
 // A reference traced earlier with the same size and bounce count and at least `spp` is reused.
 bool referenceMatches(const std::filesystem::path& file, int width, int height, int bounces = 0, int spp = 0);
+bool referenceMatches(const LoadedReference& ref, int width, int height, int bounces, int spp);
 // --resume: whether `file` was written by the very sweep the report would run
 // now (its recorded command holds the project, the swept values, the
 // reference, the size, frames and warm-up) after the reference was traced.

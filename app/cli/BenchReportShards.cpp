@@ -39,10 +39,10 @@ fs::path sweepShardDir(const PlannedSweep& sweep, const reference::ShardSpec& sh
 // Whether `file` is this shard of a reference of this size, bounce count and sample count.
 bool referenceShardDone(const fs::path& file, const reference::ShardSpec& shard, const PlannedReference& ref,
                         const ScenePlan& plan, const ReportOptions& o) {
-    if (!referenceMatches(file, o.width, o.height, ref.bounces, plan.spp))
+    if (!fs::exists(file))
         return false;
-    auto loaded = readReferenceExr(file);
-    if (!loaded)
+    const auto loaded = readReferenceExr(file); // read once: the size, bounces and spp, then the shard
+    if (!loaded || !referenceMatches(*loaded, o.width, o.height, ref.bounces, plan.spp))
         return false;
     auto it = loaded->attributes.find("lpv:shard");
     return it != loaded->attributes.end() && it->second == reference::formatShard(shard);

@@ -98,10 +98,12 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
         tracer.render([this](const reference::TraceProgress&) { return !cancel_; },
                       [this, generation](const reference::ReferenceImage& image) {
                           // Its own noise: the MARE a noiseless copy of itself would show.
+                          reference::MetricOptions noSsim;
+                          noSsim.ssim = false;
                           const reference::ErrorMetrics noise =
                               reference::compareImages({image.width, image.height, &image.image},
                                                        {image.width, image.height, &image.image},
-                                                       &image.imageVariance, &image.coverage);
+                                                       &image.imageVariance, &image.coverage, noSsim);
                           const QImage shown = displayImage(image);
                           const int spp = image.samplesPerPixel;
                           const double seconds = image.seconds;

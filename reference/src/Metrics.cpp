@@ -132,7 +132,8 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
     m.mare /= count;
     m.noiseRelMse /= count;
     m.noiseMare /= count;
-    m.ssim = ssimLuminance(yt, yr, reference.width, reference.height, mask);
+    if (options.ssim)
+        m.ssim = ssimLuminance(yt, yr, reference.width, reference.height, mask);
     return m;
 }
 

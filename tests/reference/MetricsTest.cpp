@@ -24,6 +24,25 @@ TEST(Metrics, IdenticalImagesHaveNoError) {
     EXPECT_NEAR(m.ssim, 1.0, 1e-12);
 }
 
+// Without SSIM (the editor's live reference asks only its noise) the other
+// figures are the same and ssim stays 1.
+TEST(Metrics, SsimCanBeLeftOutAndTheRestIsUnchanged) {
+    auto ref = constant(16, 16, 2.0f), test = ref;
+    for (std::size_t i = 0; i < ref.size(); ++i)
+        test[i] *= 1.0f + 0.3f * float(i % 5);
+    std::vector<glm::vec3> variance(ref.size(), glm::vec3(0.04f));
+    MetricOptions noSsim;
+    noSsim.ssim = false;
+    const ErrorMetrics with = compareImages({16, 16, &test}, {16, 16, &ref}, &variance, nullptr);
+    const ErrorMetrics without = compareImages({16, 16, &test}, {16, 16, &ref}, &variance, nullptr, noSsim);
+    EXPECT_LT(with.ssim, 0.99);
+    EXPECT_EQ(without.ssim, 1.0);
+    EXPECT_EQ(without.mare, with.mare);
+    EXPECT_EQ(without.relMse, with.relMse);
+    EXPECT_EQ(without.noiseMare, with.noiseMare);
+    EXPECT_GT(without.noiseMare, 0.0);
+}
+
 TEST(Metrics, UniformScaleErrorHasClosedForm) {
     // t = (1 + k) r on a constant r: relMSE = k^2 r^2 / (r^2 + eps^2), MARE = k r / (r + eps), eps = 0.01 r.
     const float r = 3.0f, k = 0.2f;

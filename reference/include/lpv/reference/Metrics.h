@@ -21,6 +21,9 @@ struct MetricOptions {
     // Added to the reference in the denominators, as a fraction of the mean
     // reference luminance, so near-black pixels do not dominate.
     float epsilonFraction = 0.01f;
+    // SSIM blurs five images: off where only the other figures are wanted
+    // (the editor's live reference asks its own noise every pass); ssim stays 1.
+    bool ssim = true;
 };
 
 struct ErrorMetrics {
