@@ -8,7 +8,7 @@
 #include "Cli.h"
 #include "ReferenceFile.h"
 #include "RenderSetup.h"
-#include "SetSweep.h"
+#include "lpv/bench/Settings.h"
 
 #include "lpv/reference/Flicker.h"
 #include "lpv/reference/Metrics.h"

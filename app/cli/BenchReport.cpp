@@ -1,7 +1,7 @@
 #include "BenchReport.h"
 
-#include "CpuModel.h"
 
+#include "lpv/bench/SweepOutput.h"
 #include "lpv/scene/Project.h"
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 #include <iostream>
 #include <cstdio>
 #include <sstream>
-#include <thread>
 
 namespace lpv::cli {
 
@@ -41,11 +40,6 @@ std::string csvField(const std::string& s) {
 }
 
 } // namespace
-
-std::string describeMachine(const std::string& glRenderer, const std::string& glVersion) {
-    return cpuModel() + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores | " + glRenderer + " | " +
-           glVersion;
-}
 
 std::string benchCsv(const std::vector<BenchRun>& runs) {
     std::ostringstream out;
@@ -112,6 +106,19 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
         }
         std::printf("wrote %s\n", file->c_str());
     }
+    return true;
+}
+
+bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
+                     const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
+                     const std::string& note) {
+    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note);
+    if (!written) {
+        std::cerr << "lpv: " << written.error().describe() << "\n";
+        return false;
+    }
+    for (const auto& file : *written)
+        std::printf("wrote %s\n", file.string().c_str());
     return true;
 }
 

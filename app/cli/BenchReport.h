@@ -2,10 +2,13 @@
 // The tables `lpv bench render` writes: per combination of swept settings,
 // each pass's median/min/max GPU time, as CSV and as Markdown headed by the
 // machine it ran on.
-#include "SetSweep.h"
+#include "lpv/bench/Machine.h"
+#include "lpv/bench/Settings.h"
+#include "lpv/bench/Sweep.h"
 
 #include "lpv/renderer/GpuTimer.h"
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,13 +16,20 @@
 
 namespace lpv::cli {
 
+// The benchmark library's types by their short names, as the commands use them.
+using bench::Setting;
+using bench::SetPlan;
+using bench::planSettings;
+using bench::checkCombinations;
+using bench::combinationSuffix;
+using bench::SweepRun;
+using bench::sweepLabel;
+using bench::describeMachine;
+
 struct BenchRun {
     std::vector<Setting> settings; // the swept values of this run ({} when nothing is swept)
     std::vector<renderer::PassTiming> passes;
 };
-
-// "CPU model, N cores | GL renderer | GL version" of this machine and context.
-std::string describeMachine(const std::string& glRenderer, const std::string& glVersion);
 
 // One row per (run, pass): the swept keys as columns, then pass, median_ms, min_ms, max_ms, frames.
 std::string benchCsv(const std::vector<BenchRun>& runs);
@@ -31,6 +41,12 @@ std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& 
 // Writes each (file, text) whose file is given, atomically, and says so; on
 // failure prints the error and returns false.
 bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, std::string>>& reports);
+
+// A sweep's files (bench/SweepOutput.h), each named on stdout as written;
+// on failure prints the error and returns false.
+bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
+                     const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
+                     const std::string& note = "");
 
 // A whole number >= minimum (command-line counts), or nullopt.
 std::optional<int> parseCount(const std::string& text, int minimum);

@@ -3,13 +3,14 @@
 // measured against the path-traced reference (indirect irradiance and final
 // image); written as CSV, JSON, a Markdown report and PNG plots.
 #include "BenchReport.h"
-#include "BenchSweep.h"
+#include "lpv/bench/Sweep.h"
+#include "lpv/bench/SweepOutput.h"
 #include "BenchSweepShard.h"
 #include "Cli.h"
 #include "ReferenceFile.h"
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
-#include "SetSweep.h"
+#include "lpv/bench/Settings.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/reference/Metrics.h"
@@ -60,17 +61,6 @@ marked) and crops.png (reference and each setting's indirect light).
                         joins into the files above (docs/cluster.md)
 )";
 }
-
-namespace {
-
-std::vector<glm::vec3> readRgb(const std::vector<float>& rgba) {
-    std::vector<glm::vec3> out(rgba.size() / 4);
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
-    return out;
-}
-
-} // namespace
 
 int benchSweep(Args args) {
     RenderRequest request;
@@ -141,28 +131,32 @@ int benchSweep(Args args) {
         request.sets.push_back(key + "=" + value);
     request.projectFile = pos.front();
     int exitCode = kOk;
-    auto setup = prepareRender(request, "bench", exitCode);
-    if (!setup)
+    auto loadedProject = loadProjectWithSets(request.projectFile, request.sets, "bench", exitCode);
+    if (!loadedProject)
         return exitCode;
-    if (auto error = checkCombinations(plan, setup->project.parameters, "--sweep"))
+    const scene::Project project = std::move(*loadedProject);
+    if (auto error = checkCombinations(plan, project.parameters, "--sweep"))
         return usageError(*error, "bench");
+    const auto camera = pickCamera(project.scene, request.cameraName, request.projectFile);
+    if (!camera)
+        return kFailure;
 
     // Like for like (issue #22): a run with lpv.bounces = k is measured against
     // the reference's k-bounce layer: indirect1 for k = 1, the multi-bounce
     // layer when the reference was traced with --bounces k.
+    bench::SweepSpec spec;
+    spec.project = project;
+    spec.projectDir = fs::absolute(request.projectFile).parent_path();
+    spec.camera = *camera;
+    spec.width = *width;
+    spec.height = *height;
+    spec.frames = *frames;
+    spec.warmup = *warmup;
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
-    const scene::ParameterSet base = setup->project.parameters;
-    auto bouncesOf = [&](const std::vector<Setting>& combination) {
-        scene::ParameterSet p = base;
-        for (const auto& [key, value] : combination)
-            (void)p.setFromText(key, value, "--sweep");
-        return p.getInt("lpv.bounces");
-    };
     int maxBounces = 1;
     for (const auto& c : combinations)
-        maxBounces = std::max(maxBounces, bouncesOf(c));
-    int refBounces = 0; // 0: unknown (a reference file without lpv:bounces)
+        maxBounces = std::max(maxBounces, bench::bouncesOf(project.parameters, c));
     reference::ReferenceImage ref;
     if (referenceFile) {
         auto loaded = readReferenceExr(*referenceFile);
@@ -174,36 +168,31 @@ int benchSweep(Args args) {
         if (auto it = loaded->attributes.find("lpv:seconds"); it != loaded->attributes.end())
             ref.seconds = std::atof(it->second.c_str());
         if (auto it = loaded->attributes.find("lpv:bounces"); it != loaded->attributes.end())
-            refBounces = std::atoi(it->second.c_str());
+            spec.referenceBounces = std::atoi(it->second.c_str());
         if (ref.width != *width || ref.height != *height) {
             std::cerr << "lpv: " << *referenceFile << " is " << ref.width << "x" << ref.height
                       << "; give the same --width and --height\n";
             return kFailure;
         }
-        for (const auto& c : combinations)
-            if (const int k = bouncesOf(c); k > 1 && k != refBounces)
-                return usageError("lpv.bounces=" + std::to_string(k) + " is measured against a reference with " +
-                                      std::to_string(k) + " bounces, and " + *referenceFile + " has " +
-                                      (refBounces > 0 ? std::to_string(refBounces) : "an unrecorded number of") +
-                                      " (trace one with `lpv reference --bounces " + std::to_string(k) +
-                                      "`, one reference per lpv.bounces value, as `lpv bench report` does)",
-                                  "bench");
     } else {
-        // Traced here with as many bounces as the most any run has.
-        scene::Project traceProject = setup->project;
-        (void)traceProject.parameters.setFromText("reference.bounces", std::to_string(maxBounces), "bench");
-        auto traced =
-            traceReference(traceProject, request.projectFile, setup->camera, {*width, *height, 0, true, {}});
-        if (!traced)
-            return kFailure;
-        ref = std::move(traced->image);
-        refBounces = traced->bounces;
+        // Traced here with as many bounces as the most any run has; sweeping
+        // lpv.bounces over more than one value above 1 needs one reference each.
         for (const auto& c : combinations)
-            if (const int k = bouncesOf(c); k > 1 && k != refBounces)
+            if (const int k = bench::bouncesOf(project.parameters, c); k > 1 && k != maxBounces)
                 return usageError("sweeping lpv.bounces over more than one value above 1 needs one reference per "
                                   "value: trace each with `lpv reference --bounces K` and sweep with --reference",
                                   "bench");
+        scene::Project traceProject = project;
+        (void)traceProject.parameters.setFromText("reference.bounces", std::to_string(maxBounces), "bench");
+        auto traced = traceReference(traceProject, request.projectFile, *camera, {*width, *height, 0, true, {}});
+        if (!traced)
+            return kFailure;
+        ref = std::move(traced->image);
+        spec.referenceBounces = traced->bounces;
     }
+    spec.combinations = combinations;
+    if (auto problem = bench::checkSweep(spec, referenceFile.value_or("the traced reference")))
+        return usageError(*problem, "bench");
     std::error_code ec;
     fs::create_directories(outDir, ec);
     if (ec) {
@@ -213,58 +202,33 @@ int benchSweep(Args args) {
 
     if (!shard.whole())
         fs::remove(outDir / "shard.json", ec); // a rerun into the folder of a killed one starts unfinished
-    std::vector<SweepRun> runs;
     std::vector<int> runIndices;
-    for (std::size_t index = 0; index < combinations.size(); ++index) {
-        if (!shardRunsCombination(shard, int(index)))
-            continue;
-        const auto& combination = combinations[index];
-        runIndices.push_back(int(index));
-        SweepRun run;
-        run.settings = combination;
-        setup->project.parameters = base;
-        for (const auto& [key, value] : combination)
-            (void)setup->project.parameters.setFromText(key, value, "--sweep");
-        (void)setup->project.parameters.setFromText("output.view", "final", "bench");
-        std::printf("\n== %s\n", sweepLabel(combination).c_str());
-        if (*warmup > 0 && !renderFrames(*setup, *width, *height, *warmup))
-            return kFailure;
-        setup->renderer->timer().clearHistory();
-        if (!renderFrames(*setup, *width, *height, *frames))
-            return kFailure;
-        run.passes = setup->renderer->timer().table();
-        std::erase_if(run.passes, [](const renderer::PassTiming& t) { return t.samples == 0; });
-        for (const auto& p : run.passes)
-            run.totalMs += p.medianMs;
-        // The measured frame must follow a frame of the same settings: the
-        // camera's geometry volume reads the previous frame's G-buffer, so
-        // the first frame of a combination depends on what ran before it
-        // (in a shard, another combination than in one process).
-        if (*warmup == 0 && *frames == 1 && !renderFrames(*setup, *width, *height, 1))
-            return kFailure;
-        const auto image = readRgb(setup->renderer->readHdr());
-        // The indirect view: the LPV irradiance at the same pixels, no albedo, no tonemap.
-        (void)setup->project.parameters.setFromText("output.view", "indirect", "bench");
-        if (!renderFrames(*setup, *width, *height, 1))
-            return kFailure;
-        run.indirectPixels = readRgb(setup->renderer->readHdr());
-        auto measure = [&](const std::vector<glm::vec3>& test, const std::vector<glm::vec3>& r,
-                           const std::vector<glm::vec3>& var) {
-            return reference::compareImages({*width, *height, &test}, {ref.width, ref.height, &r}, &var,
-                                            &ref.coverage);
-        };
-        run.bounces = setup->project.parameters.getInt("lpv.bounces");
-        run.indirect = run.bounces == 1 ? measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance)
-                                        : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
-        run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
-        run.image = measure(image, ref.image, ref.imageVariance);
+    spec.combinations.clear();
+    for (std::size_t index = 0; index < combinations.size(); ++index)
+        if (shardRunsCombination(shard, int(index))) {
+            runIndices.push_back(int(index));
+            spec.combinations.push_back(combinations[index]);
+        }
+    bench::SweepCallbacks callbacks;
+    callbacks.progress = [](const bench::SweepProgress& p) {
+        if (p.done < p.total)
+            std::printf("\n== %s\n", p.label.c_str());
+        return true;
+    };
+    callbacks.runDone = [](const SweepRun& run) {
         std::printf("%s", renderer::formatTimingTable(run.passes).c_str());
         std::printf("indirect: %s\nimage:    %s\n", reference::describe(run.indirect).c_str(),
                     reference::describe(run.image).c_str());
-        runs.push_back(std::move(run));
+    };
+    callbacks.warning = [](const std::string& w) { std::cerr << "lpv: warning: " << w << "\n"; };
+    auto swept = bench::runSweep(spec, ref, callbacks);
+    if (!swept) {
+        std::cerr << "lpv: " << swept.error().describe() << "\n";
+        return kFailure;
     }
+    std::vector<SweepRun> runs = std::move(swept->runs);
 
-    const renderer::GlInfo& gl = setup->context->info();
+    const renderer::GlInfo& gl = swept->gl;
     std::string command = "lpv bench " + request.projectFile + " --width " + std::to_string(*width) +
                           " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
                           " --warmup " + std::to_string(*warmup);
@@ -289,7 +253,7 @@ int benchSweep(Args args) {
                     reference::formatShard(shard).c_str(), out.runs.size(), combinations.size());
         return kOk;
     }
-    if (!writeSweepOutputs(outDir, runs, *width, *height, command, machine, ref))
+    if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref))
         return kFailure;
     return kOk;
 }

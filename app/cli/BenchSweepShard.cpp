@@ -3,6 +3,7 @@
 #include "BenchReport.h"
 #include "ReferenceFile.h"
 
+#include "lpv/bench/SweepRunJson.h"
 #include "lpv/importers/ImageIO.h"
 #include "lpv/scene/Project.h"
 
@@ -25,32 +26,6 @@ constexpr int kVersion = 1;
 
 std::string runImageName(int index) {
     return "run-" + std::to_string(index) + ".exr";
-}
-
-Json metricsToJson(const reference::ErrorMetrics& m) {
-    // nlohmann writes doubles so that they read back to the same bits: the
-    // merged sweep's error columns are those of an unsharded run, exactly.
-    return {{"pixels", m.pixels},
-            {"relMse", m.relMse},
-            {"mare", m.mare},
-            {"ssim", m.ssim},
-            {"meanTest", m.meanTest},
-            {"meanReference", m.meanReference},
-            {"noiseRelMse", m.noiseRelMse},
-            {"noiseMare", m.noiseMare}};
-}
-
-reference::ErrorMetrics metricsFromJson(const Json& j) {
-    reference::ErrorMetrics m;
-    m.pixels = j.at("pixels").get<std::size_t>();
-    m.relMse = j.at("relMse").get<double>();
-    m.mare = j.at("mare").get<double>();
-    m.ssim = j.at("ssim").get<double>();
-    m.meanTest = j.at("meanTest").get<double>();
-    m.meanReference = j.at("meanReference").get<double>();
-    m.noiseRelMse = j.at("noiseRelMse").get<double>();
-    m.noiseMare = j.at("noiseMare").get<double>();
-    return m;
 }
 
 // Reads DIR/shard.json and its run images; the error names the file.
@@ -87,18 +62,7 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
         s.referenceAbsolute = j.at("reference").at("absolute").get<std::string>();
         s.referenceHash = j.at("reference").at("hash").get<std::string>();
         for (const Json& r : j.at("runs")) {
-            SweepRun run;
-            for (const Json& kv : r.at("settings"))
-                run.settings.emplace_back(kv.at(0).get<std::string>(), kv.at(1).get<std::string>());
-            run.bounces = r.at("bounces").get<int>();
-            run.totalMs = r.at("totalMs").get<double>();
-            for (const Json& p : r.at("passes"))
-                run.passes.push_back({p.at("pass").get<std::string>(), p.at("medianMs").get<double>(),
-                                      p.at("minMs").get<double>(), p.at("maxMs").get<double>(),
-                                      p.at("lastMs").get<double>(), p.at("frames").get<std::size_t>()});
-            run.indirect = metricsFromJson(r.at("indirect"));
-            run.indirectOne = metricsFromJson(r.at("indirectOneBounce"));
-            run.image = metricsFromJson(r.at("image"));
+            SweepRun run = bench::sweepRunFromJson(r);
             const int index = r.at("index").get<int>();
             auto pixels = importers::readImageChannels(dir / runImageName(index));
             if (!pixels)
@@ -139,25 +103,9 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";
             return false;
         }
-        Json settings = Json::array();
-        for (const auto& [key, value] : r.settings)
-            settings.push_back({key, value});
-        Json passes = Json::array();
-        for (const auto& p : r.passes)
-            passes.push_back({{"pass", p.pass},
-                              {"medianMs", p.medianMs},
-                              {"minMs", p.minMs},
-                              {"maxMs", p.maxMs},
-                              {"lastMs", p.lastMs},
-                              {"frames", p.samples}});
-        runs.push_back({{"index", index},
-                        {"settings", settings},
-                        {"bounces", r.bounces},
-                        {"totalMs", r.totalMs},
-                        {"passes", passes},
-                        {"indirect", metricsToJson(r.indirect)},
-                        {"indirectOneBounce", metricsToJson(r.indirectOne)},
-                        {"image", metricsToJson(r.image)}});
+        Json run = bench::sweepRunToJson(r);
+        run["index"] = index;
+        runs.push_back(std::move(run));
     }
     const Json j{{"format", kFormat},
                  {"version", kVersion},
@@ -286,7 +234,7 @@ int benchMerge(Args args) {
     fs::create_directories(outDir, ec);
     if (ec)
         return refuse(outDir.string(), "cannot create the folder: " + ec.message());
-    if (!writeSweepOutputs(outDir, runs, first.width, first.height, first.command, first.machine, ref, note))
+    if (!writeSweepFiles(outDir, runs, first.width, first.height, first.command, first.machine, ref, note))
         return kFailure;
     std::printf("merged %d shards: %d runs\n", first.shard.count, first.combinations);
     return kOk;

@@ -5,7 +5,7 @@
 // errors, numbers kept exactly) and DIR/run-K.exr (run K's indirect light,
 // for the crops); `lpv bench merge OUT SHARD_DIR...` checks the shards
 // belong together and writes the files one unsharded sweep would.
-#include "BenchSweep.h"
+#include "BenchReport.h"
 #include "Cli.h"
 
 #include "lpv/reference/Shards.h"

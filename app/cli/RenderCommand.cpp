@@ -3,7 +3,7 @@
 #include "lpv/importers/ImageIO.h"
 #include "DebugDump.h"
 #include "RenderSetup.h"
-#include "SetSweep.h"
+#include "lpv/bench/Settings.h"
 
 #include <filesystem>
 
@@ -16,6 +16,8 @@
 #include <iostream>
 
 namespace lpv::cli {
+
+using bench::Setting;
 
 void printRenderHelp() {
     std::cout << R"(Usage: lpv render PROJECT.lpvproj -o OUT.png [options]
@@ -133,7 +135,7 @@ int runRender(Args args) {
         return usageError("--dump needs a list such as rsm,shadowMaps", "render");
 
     std::string planError;
-    const SetPlan plan = planSettings(request.sets, planError);
+    const bench::SetPlan plan = bench::planSettings(request.sets, planError);
     if (!planError.empty())
         return usageError(planError, "render");
     request.sets.clear();
@@ -145,7 +147,7 @@ int runRender(Args args) {
     if (!setup)
         return exitCode;
     // Every swept value is checked against the registry before anything renders.
-    if (auto error = checkCombinations(plan, setup->project.parameters, "--set"))
+    if (auto error = bench::checkCombinations(plan, setup->project.parameters, "--set"))
         return usageError(*error, "render");
 
     const std::vector<std::vector<Setting>> runs =
@@ -160,8 +162,8 @@ int runRender(Args args) {
             (void)setup->project.parameters.setFromText(key, value, "--set");
         std::filesystem::path out = *output;
         if (!combination.empty()) {
-            out.replace_filename(out.stem().string() + combinationSuffix(combination) + out.extension().string());
-            std::printf("\n== %s\n", combinationSuffix(combination).substr(1).c_str());
+            out.replace_filename(out.stem().string() + bench::combinationSuffix(combination) + out.extension().string());
+            std::printf("\n== %s\n", bench::combinationSuffix(combination).substr(1).c_str());
         }
         if (explain) {
             std::printf("scene analysis (%d%% of %d sky probes open):\n",

@@ -1,6 +1,6 @@
-#include "SetSweep.h"
+#include "lpv/bench/Settings.h"
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 namespace {
 
@@ -74,4 +74,4 @@ std::optional<std::string> checkCombinations(const SetPlan& plan, const scene::P
     return std::nullopt;
 }
 
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -1,5 +1,5 @@
 #pragma once
-// The PNG plots of `lpv bench PROJECT --sweep`, drawn with OpenImageIO's
+// The PNG plots of a sweep (`lpv bench PROJECT --sweep`, the report), drawn with OpenImageIO's
 // ImageBufAlgo (lines, boxes, text in DejaVu Sans where installed; without the
 // font the plots have no labels and the Markdown report still names them).
 #include "lpv/scene/Image.h"
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 struct PlotSeries {
     std::string name;
@@ -31,7 +31,4 @@ scene::Image8 scatterPlot(const std::string& title, const std::string& xLabel, c
 // Images (RGBA8, same size) side by side in rows of `perRow`, each with its caption below.
 scene::Image8 contactSheet(const std::vector<std::pair<std::string, scene::Image8>>& images, int perRow);
 
-// Which points no other dominates (x and y lower or equal, one lower; y within 0.1% counts as equal).
-std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points);
-
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -3,8 +3,8 @@
 // "unknown CPU". Platform file: CpuModel.cpp asks each OS its own way.
 #include <string>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 std::string cpuModel();
 
-} // namespace lpv::cli
+} // namespace lpv::bench

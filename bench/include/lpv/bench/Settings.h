@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 using Setting = std::pair<std::string, std::string>; // key, value as text
 
@@ -31,4 +31,4 @@ std::optional<std::string> checkCombinations(const SetPlan& plan, const scene::P
 // File-name suffix for one combination: "-lpv.propagationSteps-2" per setting.
 std::string combinationSuffix(const std::vector<Setting>& combination);
 
-} // namespace lpv::cli
+} // namespace lpv::bench

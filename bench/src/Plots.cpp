@@ -1,4 +1,5 @@
-#include "BenchPlots.h"
+#include "lpv/bench/Plots.h"
+#include "lpv/bench/Pareto.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -9,7 +10,7 @@
 #include <filesystem>
 #include <limits>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 namespace {
 
@@ -114,22 +115,6 @@ scene::Image8 toImage8(const OIIO::ImageBuf& img) {
 
 } // namespace
 
-std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points) {
-    // Errors within 0.1% of each other are a tie: the LPV variants give the
-    // same image up to float rounding, and the faster one should win.
-    auto lessOrTie = [](double a, double b) { return a <= b + 1e-3 * std::max(std::abs(a), std::abs(b)); };
-    std::vector<bool> front(points.size(), true);
-    for (std::size_t i = 0; i < points.size(); ++i)
-        for (std::size_t j = 0; j < points.size() && front[i]; ++j) {
-            const auto& [xi, yi] = points[i];
-            const auto& [xj, yj] = points[j];
-            const bool tieY = lessOrTie(yj, yi) && lessOrTie(yi, yj);
-            if (j != i && xj <= xi && lessOrTie(yj, yi) && (xj < xi || (yj < yi && !tieY)))
-                front[i] = false;
-        }
-    return front;
-}
-
 scene::Image8 linePlot(const std::string& title, const std::string& xLabel, const std::string& yLabel,
                        const std::vector<PlotSeries>& series) {
     std::vector<std::pair<double, double>> all;
@@ -203,4 +188,4 @@ scene::Image8 contactSheet(const std::vector<std::pair<std::string, scene::Image
     return toImage8(sheet);
 }
 
-} // namespace lpv::cli
+} // namespace lpv::bench

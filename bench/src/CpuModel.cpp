@@ -12,7 +12,7 @@
 #include <fstream>
 #endif
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 std::string cpuModel() {
 #if defined(_WIN32)
@@ -39,4 +39,4 @@ std::string cpuModel() {
     return "unknown CPU";
 }
 
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -1,19 +1,18 @@
-#include "BenchSweep.h"
+#include "lpv/bench/SweepOutput.h"
 
-#include "BenchPlots.h"
-#include "BenchReport.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/Pareto.h"
+#include "lpv/bench/Plots.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/reference/Preview.h"
+#include "lpv/scene/Project.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <iostream>
 #include <sstream>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 namespace fs = std::filesystem;
 
@@ -177,9 +176,11 @@ std::string sweepLabel(const std::vector<Setting>& settings) {
     return s.empty() ? "defaults" : s;
 }
 
-bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
-                       const std::string& command, const std::string& machine,
-                       const reference::ReferenceImage& ref, const std::string& note) {
+scene::Expected<std::vector<fs::path>> writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs,
+                                                         int width, int height, const std::string& command,
+                                                         const std::string& machine,
+                                                         const reference::ReferenceImage& ref,
+                                                         const std::string& note) {
     // Columns and series: every swept key, every pass any run timed.
     std::vector<std::string> keys, passes;
     for (const SweepRun& r : runs)
@@ -192,15 +193,17 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
                 passes.push_back(p.pass);
 
     std::vector<std::string> plots;
+    std::vector<fs::path> written;
+    std::optional<scene::Error> failure;
     auto writePng = [&](const std::string& name, const scene::Image8& img) {
         if (img.pixels.empty())
             return true;
         if (auto ok = importers::writeImage(outDir / name, img); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            failure = ok.error();
             return false;
         }
         plots.push_back(name);
-        std::printf("wrote %s\n", (outDir / name).string().c_str());
+        written.push_back(outDir / name);
         return true;
     };
     for (const std::string& key : keys) {
@@ -231,7 +234,7 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
         }
         if (!writePng("time-" + key + ".png",
                       linePlot("GPU time per pass against " + key, key, "median ms", series)))
-            return false;
+            return std::unexpected(*failure);
     }
     std::vector<std::pair<double, double>> costError;
     for (const SweepRun& r : runs)
@@ -242,7 +245,7 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
         points.push_back({runs[i].totalMs, 100.0 * runs[i].indirect.mare, sweepLabel(runs[i].settings), front[i]});
     if (!writePng("error-time.png", scatterPlot("Indirect light error against GPU time",
                                                 "total GPU ms per frame", "indirect MARE %", points)))
-        return false;
+        return std::unexpected(*failure);
     // The crops show the layer the runs are measured against (the first run's bounce count).
     const std::vector<glm::vec3>& shownLayer =
         runs.empty() || runs.front().bounces == 1 ? ref.indirectOne : ref.indirectMulti;
@@ -253,14 +256,18 @@ bool writeSweepOutputs(const fs::path& outDir, const std::vector<SweepRun>& runs
     for (const SweepRun& r : runs)
         crops.emplace_back(sweepLabel(r.settings), crop(r.indirectPixels, width, height, key));
     if (!writePng("crops.png", contactSheet(crops, 4)))
-        return false;
+        return std::unexpected(*failure);
 
-    const std::optional<std::string> csv = (outDir / "sweep.csv").string(),
-                                     json = (outDir / "sweep.json").string(),
-                                     md = (outDir / "sweep.md").string();
-    return writeReportFiles({{csv, sweepCsv(runs, keys, passes)},
-                             {json, sweepJson(runs, command, machine, ref)},
-                             {md, sweepMarkdown(runs, front, command, machine, note, ref, plots)}});
+    const std::pair<const char*, std::string> texts[] = {
+        {"sweep.csv", sweepCsv(runs, keys, passes)},
+        {"sweep.json", sweepJson(runs, command, machine, ref)},
+        {"sweep.md", sweepMarkdown(runs, front, command, machine, note, ref, plots)}};
+    for (const auto& [name, text] : texts) {
+        if (auto ok = scene::writeFileAtomically(outDir / name, text); !ok)
+            return std::unexpected(ok.error());
+        written.push_back(outDir / name);
+    }
+    return written;
 }
 
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -1,0 +1,16 @@
+#pragma once
+// A sweep run's figures as JSON (settings, timings, error metrics; not its
+// pixels), written so that doubles read back to the same bits: a sweep's
+// shards (app/cli/BenchSweepShard.cpp) merge to the figures of one process,
+// and the editor's saved sweeps reload as they were measured.
+#include "lpv/bench/Sweep.h"
+
+#include <nlohmann/json.hpp>
+
+namespace lpv::bench {
+
+nlohmann::json sweepRunToJson(const SweepRun& run);
+// Throws nlohmann::json::exception on a missing or mistyped field.
+SweepRun sweepRunFromJson(const nlohmann::json& j);
+
+} // namespace lpv::bench

@@ -1,0 +1,138 @@
+#include "lpv/bench/Sweep.h"
+
+#include "lpv/importers/SceneTextures.h"
+#include "lpv/renderer/ForwardRenderer.h"
+
+#include <algorithm>
+
+namespace lpv::bench {
+
+namespace {
+
+std::vector<glm::vec3> rgbOf(const std::vector<float>& rgba) {
+    std::vector<glm::vec3> out(rgba.size() / 4);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
+    return out;
+}
+
+// One sweep's GL state: the context, the renderer with the scene uploaded.
+struct SweepRenderer {
+    renderer::HeadlessContext context;
+    renderer::ForwardRenderer renderer;
+
+    scene::Expected<void> frames(const SweepSpec& spec, const scene::ParameterSet& parameters, int count) {
+        for (int f = 0; f < count; ++f)
+            if (auto ok = renderer.render(spec.project.scene, parameters, spec.camera, spec.width, spec.height); !ok)
+                return std::unexpected(ok.error());
+        renderer.timer().resolveAll();
+        return {};
+    }
+};
+
+} // namespace
+
+int bouncesOf(const scene::ParameterSet& base, const std::vector<Setting>& combination) {
+    scene::ParameterSet p = base;
+    for (const auto& [key, value] : combination)
+        (void)p.setFromText(key, value, "--sweep");
+    return p.getInt("lpv.bounces");
+}
+
+std::optional<std::string> checkSweep(const SweepSpec& spec, const std::string& referenceName) {
+    SetPlan plan;
+    plan.combinations = spec.combinations;
+    if (auto error = checkCombinations(plan, spec.project.parameters, "--sweep"))
+        return error;
+    const std::vector<std::vector<Setting>> all =
+        spec.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : spec.combinations;
+    for (const auto& c : all)
+        if (const int k = bouncesOf(spec.project.parameters, c); k > 1 && k != spec.referenceBounces)
+            return "lpv.bounces=" + std::to_string(k) + " is measured against a reference with " +
+                   std::to_string(k) + " bounces, and " + referenceName + " has " +
+                   (spec.referenceBounces > 0 ? std::to_string(spec.referenceBounces) : "an unrecorded number of") +
+                   " (trace one with `lpv reference --bounces " + std::to_string(k) +
+                   "`, one reference per lpv.bounces value, as `lpv bench report` does)";
+    return std::nullopt;
+}
+
+scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::ReferenceImage& ref,
+                                      const SweepCallbacks& callbacks) {
+    if (ref.width != spec.width || ref.height != spec.height)
+        return scene::makeError(scene::ErrorCode::InvalidValue, "", "reference",
+                                "the reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
+                                    " and the sweep renders " + std::to_string(spec.width) + "x" +
+                                    std::to_string(spec.height) + ": give the same size");
+    auto context = renderer::HeadlessContext::create();
+    if (!context)
+        return std::unexpected(context.error());
+    auto forward = renderer::ForwardRenderer::create();
+    if (!forward)
+        return std::unexpected(forward.error());
+    SweepRenderer gl{std::move(*context), std::move(*forward)};
+    const auto textures = importers::loadSceneTextures(spec.project.scene, spec.projectDir);
+    for (const std::string& w : textures.warnings)
+        if (callbacks.warning)
+            callbacks.warning(w);
+    gl.renderer.setScene(spec.project.scene, textures.images);
+
+    const std::vector<std::vector<Setting>> combinations =
+        spec.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : spec.combinations;
+    SweepResult result;
+    result.gl = gl.context.info();
+    const int total = int(combinations.size());
+    for (int index = 0; index < total; ++index) {
+        const auto& combination = combinations[std::size_t(index)];
+        if (callbacks.progress && !callbacks.progress({index, total, sweepLabel(combination)}))
+            return scene::makeError(scene::ErrorCode::Cancelled, "", "",
+                                    "stopped after " + std::to_string(index) + " of " + std::to_string(total) +
+                                        " settings");
+        SweepRun run;
+        run.settings = combination;
+        scene::ParameterSet parameters = spec.project.parameters;
+        for (const auto& [key, value] : combination)
+            (void)parameters.setFromText(key, value, "--sweep");
+        (void)parameters.setFromText("output.view", "final", "sweep");
+        if (spec.warmup > 0)
+            if (auto ok = gl.frames(spec, parameters, spec.warmup); !ok)
+                return std::unexpected(ok.error());
+        gl.renderer.timer().clearHistory();
+        if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
+            return std::unexpected(ok.error());
+        run.passes = gl.renderer.timer().table();
+        std::erase_if(run.passes, [](const renderer::PassTiming& t) { return t.samples == 0; });
+        for (const auto& p : run.passes)
+            run.totalMs += p.medianMs;
+        // The measured frame must follow a frame of the same settings: the
+        // camera's geometry volume reads the previous frame's G-buffer, so
+        // the first frame of a combination depends on what ran before it
+        // (in a shard, another combination than in one process).
+        if (spec.warmup == 0 && spec.frames == 1)
+            if (auto ok = gl.frames(spec, parameters, 1); !ok)
+                return std::unexpected(ok.error());
+        const auto image = rgbOf(gl.renderer.readHdr());
+        // The indirect view: the LPV irradiance at the same pixels, no albedo, no tonemap.
+        (void)parameters.setFromText("output.view", "indirect", "sweep");
+        if (auto ok = gl.frames(spec, parameters, 1); !ok)
+            return std::unexpected(ok.error());
+        run.indirectPixels = rgbOf(gl.renderer.readHdr());
+        auto measure = [&](const std::vector<glm::vec3>& test, const std::vector<glm::vec3>& r,
+                           const std::vector<glm::vec3>& var) {
+            return reference::compareImages({spec.width, spec.height, &test}, {ref.width, ref.height, &r}, &var,
+                                            &ref.coverage);
+        };
+        run.bounces = parameters.getInt("lpv.bounces");
+        run.indirect = run.bounces == 1 ? measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance)
+                                        : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
+        run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
+        run.image = measure(image, ref.image, ref.imageVariance);
+        if (callbacks.runDone)
+            callbacks.runDone(run);
+        result.runs.push_back(std::move(run));
+    }
+    if (callbacks.progress)
+        (void)callbacks.progress({total, total, ""});
+    return result;
+}
+
+} // namespace lpv::bench

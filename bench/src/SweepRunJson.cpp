@@ -1,0 +1,73 @@
+#include "lpv/bench/SweepRunJson.h"
+
+namespace lpv::bench {
+
+using Json = nlohmann::json;
+
+namespace {
+
+Json metricsToJson(const reference::ErrorMetrics& m) {
+    // nlohmann writes doubles so that they read back to the same bits.
+    return {{"pixels", m.pixels},
+            {"relMse", m.relMse},
+            {"mare", m.mare},
+            {"ssim", m.ssim},
+            {"meanTest", m.meanTest},
+            {"meanReference", m.meanReference},
+            {"noiseRelMse", m.noiseRelMse},
+            {"noiseMare", m.noiseMare}};
+}
+
+reference::ErrorMetrics metricsFromJson(const Json& j) {
+    reference::ErrorMetrics m;
+    m.pixels = j.at("pixels").get<std::size_t>();
+    m.relMse = j.at("relMse").get<double>();
+    m.mare = j.at("mare").get<double>();
+    m.ssim = j.at("ssim").get<double>();
+    m.meanTest = j.at("meanTest").get<double>();
+    m.meanReference = j.at("meanReference").get<double>();
+    m.noiseRelMse = j.at("noiseRelMse").get<double>();
+    m.noiseMare = j.at("noiseMare").get<double>();
+    return m;
+}
+
+} // namespace
+
+Json sweepRunToJson(const SweepRun& r) {
+    Json settings = Json::array();
+    for (const auto& [key, value] : r.settings)
+        settings.push_back({key, value});
+    Json passes = Json::array();
+    for (const auto& p : r.passes)
+        passes.push_back({{"pass", p.pass},
+                          {"medianMs", p.medianMs},
+                          {"minMs", p.minMs},
+                          {"maxMs", p.maxMs},
+                          {"lastMs", p.lastMs},
+                          {"frames", p.samples}});
+    return {{"settings", settings},
+            {"bounces", r.bounces},
+            {"totalMs", r.totalMs},
+            {"passes", passes},
+            {"indirect", metricsToJson(r.indirect)},
+            {"indirectOneBounce", metricsToJson(r.indirectOne)},
+            {"image", metricsToJson(r.image)}};
+}
+
+SweepRun sweepRunFromJson(const Json& r) {
+    SweepRun run;
+    for (const Json& kv : r.at("settings"))
+        run.settings.emplace_back(kv.at(0).get<std::string>(), kv.at(1).get<std::string>());
+    run.bounces = r.at("bounces").get<int>();
+    run.totalMs = r.at("totalMs").get<double>();
+    for (const Json& p : r.at("passes"))
+        run.passes.push_back({p.at("pass").get<std::string>(), p.at("medianMs").get<double>(),
+                              p.at("minMs").get<double>(), p.at("maxMs").get<double>(),
+                              p.at("lastMs").get<double>(), p.at("frames").get<std::size_t>()});
+    run.indirect = metricsFromJson(r.at("indirect"));
+    run.indirectOne = metricsFromJson(r.at("indirectOneBounce"));
+    run.image = metricsFromJson(r.at("image"));
+    return run;
+}
+
+} // namespace lpv::bench
