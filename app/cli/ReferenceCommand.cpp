@@ -7,7 +7,6 @@
 #include "RenderSetup.h"
 
 #include "lpv/importers/ImageIO.h"
-#include "lpv/importers/SceneTextures.h"
 #include "lpv/reference/PathTracer.h"
 #include "lpv/reference/Preview.h"
 
@@ -58,55 +57,39 @@ Both choices and their reasons are printed.
 )";
 }
 
-std::optional<TracedReference> traceReference(const scene::Project& project,
-                                                        const std::filesystem::path& projectFile,
-                                                        const scene::Camera& camera,
-                                                        const ReferenceRequest& request) {
-    const auto textures =
-        importers::loadSceneTextures(project.scene, std::filesystem::absolute(projectFile).parent_path());
-    for (const std::string& w : textures.warnings)
-        std::cerr << "lpv: warning: " << w << "\n";
-    auto embree = reference::EmbreeScene::build(project.scene, textures.images);
-    if (!embree) {
-        std::cerr << "lpv: " << embree.error().describe() << "\n";
+std::optional<TracedReference> traceReference(const scene::Project& project, const std::filesystem::path& projectFile,
+                                              const scene::Camera& camera, const ReferenceRequest& request) {
+    bench::ReferenceCallbacks callbacks;
+    callbacks.warning = [](const std::string& w) { std::cerr << "lpv: warning: " << w << "\n"; };
+    double lastPrinted = -1.0;
+    if (request.printProgress) {
+        callbacks.started = [](const bench::ReferencePlan& plan) {
+            const reference::PathTracerSettings& s = plan.settings;
+            std::printf("reference: %zu triangles, %dx%d%s, up to %d spp, %d bounces%s\n", plan.triangles, s.width,
+                        s.height, s.shard.whole() ? "" : (", shard " + reference::formatShard(s.shard)).c_str(),
+                        s.samplesPerPixel, s.bounces,
+                        s.maxSeconds > 0.0 ? (", at most " + std::to_string(s.maxSeconds) + " s").c_str() : "");
+            std::printf("reference: sky light %s (%s)\nreference: emissive surfaces %s (%s)\n",
+                        plan.lights.sky ? "on" : "off", plan.lights.skyReason.c_str(),
+                        plan.lights.emissive ? "on" : "off", plan.lights.emissiveReason.c_str());
+        };
+        callbacks.progress = [&lastPrinted](const reference::TraceProgress& p) {
+            // About once a second, and the last pass: enough to see it move, not a flood in a log.
+            if (p.seconds - lastPrinted >= 1.0 || p.samplesDone == p.samplesTarget) {
+                lastPrinted = p.seconds;
+                std::printf("reference: %d/%d spp, %.1f s\n", p.samplesDone, p.samplesTarget, p.seconds);
+                std::fflush(stdout);
+            }
+            return true;
+        };
+    }
+    auto traced = bench::traceReference(project, std::filesystem::absolute(projectFile).parent_path(), camera,
+                                        {request.width, request.height, request.threads, request.shard}, callbacks);
+    if (!traced) {
+        std::cerr << "lpv: " << traced.error().describe() << "\n";
         return std::nullopt;
     }
-    reference::PathTracerSettings settings;
-    settings.width = request.width;
-    settings.height = request.height;
-    settings.threads = request.threads;
-    settings.shard = request.shard;
-    settings.samplesPerPixel = project.parameters.getInt("reference.samplesPerPixel");
-    settings.bounces = project.parameters.getInt("reference.bounces");
-    settings.maxSeconds = project.parameters.getFloat("reference.maxSeconds");
-    const renderer::ReferenceLights lights = renderer::decideReferenceLights(
-        project.scene, renderer::analyseSceneTraits(project.scene), project.parameters);
-    settings.skyLight = lights.sky;
-    settings.emissiveLight = lights.emissive;
-    if (request.printProgress) {
-        std::printf("reference: %zu triangles, %dx%d%s, up to %d spp, %d bounces%s\n", embree->triangleCount(),
-                    settings.width, settings.height,
-                    settings.shard.whole() ? "" : (", shard " + reference::formatShard(settings.shard)).c_str(),
-                    settings.samplesPerPixel, settings.bounces,
-                    settings.maxSeconds > 0.0
-                        ? (", at most " + std::to_string(settings.maxSeconds) + " s").c_str()
-                        : "");
-        std::printf("reference: sky light %s (%s)\nreference: emissive surfaces %s (%s)\n",
-                    lights.sky ? "on" : "off", lights.skyReason.c_str(), lights.emissive ? "on" : "off",
-                    lights.emissiveReason.c_str());
-    }
-    const reference::PathTracer tracer(*embree, project.scene, camera, settings);
-    double lastPrinted = -1.0;
-    auto image = tracer.render([&](const reference::TraceProgress& p) {
-        // About once a second, and the last pass: enough to see it move, not a flood in a log.
-        if (request.printProgress && (p.seconds - lastPrinted >= 1.0 || p.samplesDone == p.samplesTarget)) {
-            lastPrinted = p.seconds;
-            std::printf("reference: %d/%d spp, %.1f s\n", p.samplesDone, p.samplesTarget, p.seconds);
-            std::fflush(stdout);
-        }
-        return true;
-    });
-    return TracedReference{std::move(image), lights, settings.bounces};
+    return std::move(*traced);
 }
 
 int runReference(Args args) {

@@ -1,6 +1,7 @@
 #pragma once
 // Tracing the reference of a loaded project, shared by `lpv reference` and
 // `lpv bench PROJECT --sweep` (which traces one when not given a file).
+#include "lpv/bench/Reference.h"
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/reference/Shards.h"
 #include "lpv/renderer/ReferenceLights.h"
@@ -19,16 +20,11 @@ struct ReferenceRequest {
     reference::ShardSpec shard; // trace only these tiles (`lpv reference --shard`)
 };
 
-struct TracedReference {
-    reference::ReferenceImage image;
-    renderer::ReferenceLights lights; // whether the sky and emissive surfaces lit it, and why
-    int bounces = 0;
-};
+using bench::TracedReference;
 
-// Settings come from the project's parameters (reference.samplesPerPixel,
-// reference.bounces, reference.maxSeconds, reference.skyLight and
-// reference.emissiveLight, whose `auto` follows what the LPV injects). Textures
-// are loaded relative to `projectFile`; a missing one is a warning, as in `lpv render`.
+// bench::traceReference (bench/Reference.h) with what it traces, its progress
+// and its warnings printed; textures are loaded relative to `projectFile`.
+// nullopt (the error printed) when the scene cannot be traced.
 std::optional<TracedReference> traceReference(const scene::Project& project,
                                                         const std::filesystem::path& projectFile,
                                                         const scene::Camera& camera,

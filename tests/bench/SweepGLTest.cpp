@@ -1,0 +1,144 @@
+// The sweep runner called in process (issue #26 item 1): the built-in Cornell
+// box, a small traced reference, two settings; then cancel and the files.
+#include "lpv/bench/Reference.h"
+#include "lpv/bench/Sweep.h"
+#include "lpv/bench/SweepOutput.h"
+#include "lpv/scene/CornellBox.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace lpv;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kWidth = 64, kHeight = 36;
+
+struct CornellSweep {
+    bench::SweepSpec spec;
+    reference::ReferenceImage reference;
+};
+
+// One reference for the file: tracing is the slow part.
+const CornellSweep& cornell() {
+    static const CornellSweep sweep = [] {
+        CornellSweep s;
+        s.spec.project = scene::makeCornellBoxProject();
+        s.spec.projectDir = fs::temp_directory_path();
+        s.spec.camera = s.spec.project.scene.cameras.front();
+        s.spec.width = kWidth;
+        s.spec.height = kHeight;
+        s.spec.frames = 1;
+        s.spec.warmup = 1;
+        (void)s.spec.project.parameters.setFromText("lpv.reuse", "false", "test");
+        scene::Project traced = s.spec.project;
+        (void)traced.parameters.setFromText("reference.samplesPerPixel", "32", "test");
+        auto ref = bench::traceReference(traced, s.spec.projectDir, s.spec.camera, {kWidth, kHeight, 0, {}});
+        if (ref) {
+            s.reference = std::move(ref->image);
+            s.spec.referenceBounces = ref->bounces;
+        }
+        return s;
+    }();
+    return sweep;
+}
+
+} // namespace
+
+TEST(SweepGL, EachSettingIsTimedAndMeasuredAgainstTheReference) {
+    const CornellSweep& c = cornell();
+    ASSERT_EQ(c.reference.width, kWidth) << "the reference did not trace";
+    bench::SweepSpec spec = c.spec;
+    spec.combinations = {{{"lpv.propagationSteps", "0"}}, {{"lpv.propagationSteps", "8"}}};
+    ASSERT_FALSE(bench::checkSweep(spec, "ref").has_value());
+    std::vector<std::string> labels;
+    int finished = 0;
+    bench::SweepCallbacks callbacks;
+    callbacks.progress = [&](const bench::SweepProgress& p) {
+        labels.push_back(p.label);
+        EXPECT_EQ(p.total, 2);
+        return true;
+    };
+    callbacks.runDone = [&](const bench::SweepRun&) { ++finished; };
+    auto result = bench::runSweep(spec, c.reference, callbacks);
+    ASSERT_TRUE(result.has_value()) << result.error().describe();
+    ASSERT_EQ(result->runs.size(), 2u);
+    EXPECT_EQ(finished, 2);
+    EXPECT_EQ(labels, (std::vector<std::string>{"propagationSteps=0", "propagationSteps=8", ""}));
+    EXPECT_FALSE(result->gl.renderer.empty());
+    for (const bench::SweepRun& run : result->runs) {
+        EXPECT_GT(run.totalMs, 0.0);
+        EXPECT_FALSE(run.passes.empty());
+        EXPECT_TRUE(std::isfinite(run.indirect.mare));
+        EXPECT_GT(run.indirect.pixels, std::size_t(kWidth * kHeight / 2)); // the box fills most of the view
+        EXPECT_EQ(run.indirectPixels.size(), std::size_t(kWidth * kHeight));
+        EXPECT_GT(run.indirect.meanReference, 0.0);
+    }
+    // Propagation carries the injected light into the room: more steps, more indirect light.
+    EXPECT_GT(result->runs[1].indirect.meanTest, 1.2 * result->runs[0].indirect.meanTest);
+}
+
+TEST(SweepGL, StoppingFromTheProgressCallbackEndsAfterTheRunInFlight) {
+    const CornellSweep& c = cornell();
+    ASSERT_EQ(c.reference.width, kWidth);
+    bench::SweepSpec spec = c.spec;
+    spec.combinations = {{{"lpv.gridSize", "16"}}, {{"lpv.gridSize", "32"}}, {{"lpv.gridSize", "64"}}};
+    int finished = 0;
+    bench::SweepCallbacks callbacks;
+    callbacks.progress = [](const bench::SweepProgress& p) { return p.done < 1; };
+    callbacks.runDone = [&](const bench::SweepRun&) { ++finished; };
+    auto result = bench::runSweep(spec, c.reference, callbacks);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, scene::ErrorCode::Cancelled);
+    EXPECT_EQ(finished, 1);
+}
+
+TEST(SweepGL, ARunOfMoreBouncesThanTheReferenceIsRefusedBeforeRendering) {
+    const CornellSweep& c = cornell();
+    bench::SweepSpec spec = c.spec;
+    spec.combinations = {{{"lpv.bounces", "3"}}};
+    const auto problem = bench::checkSweep(spec, "ref.exr");
+    ASSERT_TRUE(problem.has_value());
+    EXPECT_NE(problem->find("lpv.bounces=3"), std::string::npos) << *problem;
+    EXPECT_NE(problem->find("ref.exr"), std::string::npos) << *problem;
+    spec.combinations = {{{"lpv.propagationSteps", "-4"}}};
+    EXPECT_TRUE(bench::checkSweep(spec, "ref.exr").has_value()) << "a value the registry refuses";
+}
+
+TEST(SweepGL, AReferenceOfAnotherSizeIsAnErrorNotAWrongMeasurement) {
+    const CornellSweep& c = cornell();
+    bench::SweepSpec spec = c.spec;
+    spec.width = kWidth * 2;
+    auto result = bench::runSweep(spec, c.reference);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_NE(result.error().message.find("64x36"), std::string::npos) << result.error().message;
+}
+
+TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
+    const CornellSweep& c = cornell();
+    ASSERT_EQ(c.reference.width, kWidth);
+    bench::SweepSpec spec = c.spec;
+    spec.combinations = {{{"lpv.occlusion", "false"}}, {{"lpv.occlusion", "true"}}};
+    auto result = bench::runSweep(spec, c.reference);
+    ASSERT_TRUE(result.has_value()) << result.error().describe();
+    const fs::path dir = fs::temp_directory_path() / ("lpv-bench-files-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    auto written = bench::writeSweepOutputs(dir, result->runs, kWidth, kHeight, "test", "machine", c.reference);
+    ASSERT_TRUE(written.has_value()) << written.error().describe();
+    for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "crops.png"})
+        EXPECT_TRUE(fs::exists(dir / name)) << name;
+    std::ifstream in(dir / "sweep.json");
+    const auto json = nlohmann::json::parse(in);
+    ASSERT_EQ(json.at("runs").size(), 2u);
+    EXPECT_EQ(json.at("runs")[1].at("settings").at("lpv.occlusion"), "true");
+    // sweep.json prints six significant digits (the shards keep exact ones: SweepRunJson).
+    EXPECT_NEAR(json.at("runs")[0].at("totalMs").get<double>(), result->runs[0].totalMs,
+                1e-5 * result->runs[0].totalMs);
+    fs::remove_all(dir);
+}
