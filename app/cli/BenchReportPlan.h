@@ -8,6 +8,7 @@
 #include "Cli.h"
 #include "ReferenceFile.h"
 
+#include "lpv/bench/Questions.h"
 #include "lpv/reference/Shards.h"
 #include "lpv/scene/ParameterRegistry.h"
 
@@ -18,12 +19,8 @@
 
 namespace lpv::cli::report {
 
-struct Question {
-    std::string name;
-    std::string sweep;      // full report
-    std::string quickSweep; // --quick; empty = left out
-};
-extern const std::vector<Question> kQuestions;
+using bench::Question;
+extern const std::vector<Question>& kQuestions;
 
 struct SceneSpec {
     std::string name;

@@ -1,0 +1,29 @@
+#include "lpv/bench/Questions.h"
+
+namespace lpv::bench {
+
+const std::vector<Question>& reportQuestions() {
+    static const std::vector<Question> questions = {
+        {"steps", "lpv.propagationSteps=0,1,2,4,8,16,32,64", "lpv.propagationSteps=0,4,16"},
+        {"grid", "lpv.gridSize=16,32,64", "lpv.gridSize=16,32"},
+        {"cascades", "lpv.cascades=1,2,3,4", ""},
+        {"rsm", "rsm.tileSize=64,128,256,512,1024", ""},
+        {"variant", "lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter", ""},
+        {"occlusion", "lpv.occlusion=false,true", "lpv.occlusion=false,true"},
+        {"directed", "lpv.directedPropagation=off,on", ""},
+        {"sky", "effects.skyInjection=off,on", ""},
+        {"subsurface", "effects.subsurface=off,on", ""},
+        {"glossy", "effects.glossyReflections=off,on", ""},
+        {"bounces", "lpv.bounces=1,2,3", ""},
+        {"viewShift", "lpv.viewShift=0,0.5,0.75,1", ""},
+        {"damping", "lpv.bleedingDamping=0,1,2,4", ""},
+        {"offset", "lpv.injectionOffset=0,0.5,1,2", ""},
+        {"firstStep", "lpv.occlusionFirstStep=true,false", ""},
+        {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
+        {"lookupOffset", "lpv.lookupOffset=0,0.5,1", ""},
+        {"visibility", "lpv.visibilityLookup=false,true", ""},
+    };
+    return questions;
+}
+
+} // namespace lpv::bench
