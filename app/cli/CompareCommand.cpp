@@ -97,8 +97,8 @@ int compareDisplayImages(const std::string& testFile, const std::string& refFile
     if (json)
         std::printf("{\"pixels\": %zu, \"flip\": %.6f, \"ppd\": %.4f}\n", r.error.size(), r.mean, ppd);
     else
-        std::printf("%s vs %s (%dx%d, %.1f pixels per degree)\nFLIP %.6f\n", testFile.c_str(), refFile.c_str(),
-                    r.width, r.height, ppd, r.mean);
+        std::printf("%s vs %s (%dx%d, %.1f pixels per degree)\nFLIP %.6f\n", testFile.c_str(),
+                    refFile.c_str(), r.width, r.height, ppd, r.mean);
     return kOk;
 }
 
@@ -126,8 +126,9 @@ int runCompare(Args args) {
             return usageError("--ppd must be a number of pixels per degree above 0", "compare");
     }
     if (isExr(pos[0]) != isExr(pos[1]))
-        return usageError("compare two EXR images (renderer and reference) or two display images, not one of each",
-                          "compare");
+        return usageError(
+            "compare two EXR images (renderer and reference) or two display images, not one of each",
+            "compare");
     if (!isExr(pos[0])) {
         if (layerText)
             return usageError("--layer needs a reference EXR", "compare");
@@ -165,8 +166,9 @@ int runCompare(Args args) {
     reference::AccuracyOptions options;
     options.pixelsPerDegree = ppd;
     options.keepFlipMap = flipMap.has_value();
-    const reference::Accuracy a = reference::measureAccuracy(
-        {test->width, test->height, &test->pixels}, {r.width, r.height, &pixels}, &variance, &r.coverage, options);
+    const reference::Accuracy a =
+        reference::measureAccuracy({test->width, test->height, &test->pixels}, {r.width, r.height, &pixels},
+                                   &variance, &r.coverage, options);
     if (flipMap && !writeFlipMap(*flipMap, a.flipMap))
         return kFailure;
     const reference::ErrorMetrics& m = a.metrics;
@@ -183,8 +185,9 @@ int runCompare(Args args) {
         std::printf("%s vs %s (layer %s, %zu pixels, reference %d spp)\n", pos[0].c_str(), pos[1].c_str(),
                     layer.c_str(), m.pixels, r.samplesPerPixel);
         std::printf("%s\n", reference::describe(m).c_str());
-        std::printf("SSIM noise %.3f; FLIP %.4f (noise %.4f%s, %.1f pixels per degree, display mapping key %.4g)\n",
-                    a.noiseSsim, a.flip, a.noiseFlip, a.flipBelowNoise() ? ", below noise" : "", ppd, a.key);
+        std::printf(
+            "SSIM noise %.3f; FLIP %.4f (noise %.4f%s, %.1f pixels per degree, display mapping key %.4g)\n",
+            a.noiseSsim, a.flip, a.noiseFlip, a.flipBelowNoise() ? ", below noise" : "", ppd, a.key);
     }
     return kOk;
 }

@@ -102,6 +102,13 @@ TEST_F(ReferenceCommand, ComparesTheLpvIndirectViewWithTheReference) {
         jsonNumber(compared.output, "meanTest") / jsonNumber(compared.output, "meanReference");
     EXPECT_GT(ratio, 0.6) << compared.output;
     EXPECT_LT(ratio, 1.6) << compared.output;
+    // FLIP on the two images as displayed (one exposure), and the figure the
+    // reference's 8-spp noise alone gives.
+    const double flip = jsonNumber(compared.output, "flip");
+    EXPECT_GT(flip, 0.0) << compared.output;
+    EXPECT_LT(flip, 1.0) << compared.output;
+    EXPECT_GT(jsonNumber(compared.output, "noiseFlip"), 0.0) << compared.output;
+    EXPECT_LT(jsonNumber(compared.output, "noiseSsim"), 1.0) << compared.output;
 }
 
 TEST_F(ReferenceCommand, RefusesImagesOfAnotherSize) {
@@ -345,4 +352,37 @@ TEST_F(ReferenceCommand, ASweepInShardsMergesIntoTheSameErrorsAndABadSetIsRefuse
     r = runLpv("bench '" + project_ + "' --sweep lpv.propagationSteps=0,4 --width 40 --height 30 --shard 0/2");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("--shard needs --reference"), std::string::npos) << r.output;
+}
+
+// Two display images (the FLIP authors' published pairs are PNGs): FLIP
+// alone, over every pixel. Green against blue is the largest difference
+// FLIP knows (1); an image against itself 0; the heat map has the image's size.
+TEST(CompareDisplayImages, ReportsFlipOfTwoPngs) {
+    const fs::path dir = fs::temp_directory_path() / ("lpv-compare-png-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    auto solid = [&](const char* name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+        lpv::importers::Image8 image{16, 12, 3, {}};
+        for (int i = 0; i < 16 * 12; ++i)
+            image.pixels.insert(image.pixels.end(), {r, g, b});
+        EXPECT_TRUE(lpv::importers::writeImage(dir / name, image));
+        return "'" + (dir / name).string() + "'";
+    };
+    const std::string green = solid("green.png", 0, 255, 0), blue = solid("blue.png", 0, 0, 255);
+    const RunResult far = runLpv("compare " + green + " " + blue + " --json --flip-map '" +
+                                 (dir / "map.png").string() + "'");
+    ASSERT_EQ(far.exitCode, 0) << far.output;
+    EXPECT_NEAR(jsonNumber(far.output, "flip"), 1.0, 1e-3) << far.output;
+    const auto map = lpv::importers::readImage8(dir / "map.png");
+    ASSERT_TRUE(map) << map.error().describe();
+    EXPECT_EQ(map->width, 16);
+    EXPECT_EQ(map->height, 12);
+    const RunResult same = runLpv("compare " + green + " " + green);
+    ASSERT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("FLIP 0.000000"), std::string::npos) << same.output;
+    EXPECT_EQ(runLpv("compare " + green + " " + blue + " --ppd 0").exitCode, 2);
+    EXPECT_EQ(runLpv("compare " + green + " " + blue + " --layer image").exitCode, 2);
+    const RunResult mixed = runLpv("compare " + green + " '" + (dir / "x.exr").string() + "'");
+    EXPECT_EQ(mixed.exitCode, 2) << mixed.output;
+    EXPECT_NE(mixed.output.find("two EXR images"), std::string::npos) << mixed.output;
+    fs::remove_all(dir);
 }
