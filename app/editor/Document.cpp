@@ -66,6 +66,7 @@ scene::Expected<void> Document::saveAs(const QString& path) {
     recoveredUnsaved_ = false;
     undoStack_->setClean();
     emit titleChanged();
+    emit projectSaved(path);
     return {};
 }
 

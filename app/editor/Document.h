@@ -103,6 +103,8 @@ signals:
     void selectionChanged(const lpv::editor::Selection& selection);
     // The file path or the modified state changed (window title).
     void titleChanged();
+    // A save to `path` succeeded (what is kept beside the project saves too).
+    void projectSaved(const QString& path);
 
 private:
     scene::Project project_;

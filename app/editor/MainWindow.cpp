@@ -4,6 +4,7 @@
 #include "Autosave.h"
 #include "CameraPathPanel.h"
 #include "EventLog.h"
+#include "SweepPanel.h"
 #include "LogPanel.h"
 #include "EffectsPanel.h"
 #include "ImportJob.h"
@@ -238,6 +239,12 @@ void MainWindow::createDocks() {
             log_->add(EventLog::Severity::Info, tr("Video export"), tr("cancelled: %1").arg(output));
         else
             log_->add(EventLog::Severity::Error, tr("Video export"), output + ": " + error);
+    });
+    sweeps_ = new SweepPanel(document_, [this] { return viewport_->viewCamera(); }, this);
+    QDockWidget* sweepsDock = addDock(sweeps_, "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(profilerDock, sweepsDock);
+    connect(sweeps_, &SweepPanel::logMessage, this, [this](const QString& message, bool warning) {
+        log_->add(warning ? EventLog::Severity::Warning : EventLog::Severity::Info, tr("Sweep"), message);
     });
     logPanel_ = new LogPanel(log_, this);
     QDockWidget* logDock = addDock(logPanel_, "log", tr("Log"), Qt::BottomDockWidgetArea);

@@ -19,6 +19,7 @@ class Autosave;
 class CameraPathPanel;
 class EffectsPanel;
 class EventLog;
+class SweepPanel;
 class LogPanel;
 class RadiosityPanel;
 class OutlinerPanel;
@@ -61,6 +62,7 @@ public:
     OutlinerPanel* outliner() const { return outliner_; }
     EffectsPanel* effects() const { return effects_; }
     RadiosityPanel* radiosity() const { return radiosity_; }
+    SweepPanel* sweeps() const { return sweeps_; }
     PropertyPanel* properties() const { return properties_; }
     ParameterInspector* inspector() const { return inspector_; }
     PresetBar* presetBar() const { return presetBar_; }
@@ -122,6 +124,7 @@ private:
     OutlinerPanel* outliner_ = nullptr;
     EffectsPanel* effects_ = nullptr;
     RadiosityPanel* radiosity_ = nullptr;
+    SweepPanel* sweeps_ = nullptr;
     PropertyPanel* properties_ = nullptr;
     ParameterInspector* inspector_ = nullptr;
     PresetBar* presetBar_ = nullptr;

@@ -1,0 +1,127 @@
+#pragma once
+// The Sweeps dock (issue #26 item 4): what accuracy costs in time, in the
+// editor. The user picks parameters and values (by default the questions of
+// `lpv bench report`, each varied alone around the current settings), runs
+// them in the background with progress, time left and Stop, and sees each
+// setting's indirect-light error against its GPU time, with the Pareto front
+// and the current setting marked. Hovering a point shows its settings and
+// its indirect light beside the reference's; clicking applies its settings as
+// one undoable edit; "Cheapest within" selects the fastest setting under an
+// error bound. The last sweep is saved beside the project
+// (`Name.assets/sweep.json`) and shown again when it is opened.
+#include "SweepJob.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <functional>
+
+class QChart;
+class QChartView;
+class QDoubleSpinBox;
+class QLabel;
+class QLineSeries;
+class QProgressBar;
+class QPushButton;
+class QScatterSeries;
+class QSpinBox;
+class QTableWidget;
+class QValueAxis;
+
+namespace lpv::editor {
+
+class Document;
+
+class SweepPanel : public QWidget {
+    Q_OBJECT
+public:
+    // `currentView` gives the camera the sweep measures (the viewport's).
+    SweepPanel(Document* document, std::function<scene::Camera()> currentView, QWidget* parent = nullptr);
+    ~SweepPanel() override;
+
+    // The combinations the question table asks for: {} (the current
+    // settings) first, then each checked row's values alone, without those
+    // that equal the current settings. nullopt and `error` on a bad row.
+    std::optional<std::vector<std::vector<bench::Setting>>> plannedCombinations(QString& error) const;
+    void startSweep();
+    void stopSweep();
+    bool sweepRunning() const;
+
+    // The sweep shown (finished or loaded), or null.
+    const bench::SavedSweep* sweep() const { return sweep_.get(); }
+    // What a click on run `index`'s point does: its settings become the
+    // document's, as one undoable edit.
+    void applyRun(int index);
+    // What hovering run `index`'s point shows (-1 clears it).
+    void showRun(int index);
+    // Selects the fastest run whose indirect MARE is at most `maxErrorPercent`;
+    // returns its index, or -1 (and says so) when none is.
+    int selectCheapestWithin(double maxErrorPercent);
+    int selectedRun() const { return selected_; }
+    // Runs whose settings are the document's current ones (marked in the plot).
+    std::vector<int> currentRuns() const;
+    // Runs on the Pareto front of time against error.
+    std::vector<bool> front() const;
+
+    // Test access.
+    QTableWidget* questionTable() const { return questions_; }
+    QChartView* chartView() const { return chartView_; }
+    QLabel* detailText() const { return detailText_; }
+    QLabel* detailImage() const { return detailImage_; }
+    QString statusText() const;
+    void setSweepSize(int width, int height, int frames, int warmup, int referenceSpp);
+
+signals:
+    void sweepFinished();
+    // A line for the Log dock (saved, failed, stopped).
+    void logMessage(const QString& text, bool warning);
+
+private:
+    void buildQuestions();
+    void rebuildChart();
+    void onRunFinished(int index, const bench::SweepRun& run, const QImage& preview);
+    void onFinished(std::shared_ptr<const bench::SavedSweep> sweep);
+    void onFailed(const QString& message, bool cancelled);
+    void onDocumentChanged(bool newProject);
+    void saveBesideProject(const QString& projectPath);
+    void loadBesideProject();
+    int runAt(const QPointF& point) const;
+
+    Document* document_;
+    std::function<scene::Camera()> currentView_;
+    SweepJob job_;
+    std::shared_ptr<const bench::SavedSweep> sweep_;
+    // While a sweep runs: the runs so far (indices into its combinations).
+    std::vector<std::vector<bench::Setting>> runningCombinations_;
+    std::vector<std::optional<bench::SweepRun>> partialRuns_;
+    std::vector<QImage> previews_;
+    QImage referencePreview_;
+    int selected_ = -1;
+
+    QTableWidget* questions_ = nullptr;
+    QSpinBox* width_ = nullptr;
+    QSpinBox* height_ = nullptr;
+    QSpinBox* frames_ = nullptr;
+    QSpinBox* warmup_ = nullptr;
+    QSpinBox* spp_ = nullptr;
+    QPushButton* run_ = nullptr;
+    QPushButton* stop_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QLabel* status_ = nullptr;
+    QDoubleSpinBox* maxError_ = nullptr;
+    QChart* chart_ = nullptr;
+    QChartView* chartView_ = nullptr;
+    QScatterSeries* allPoints_ = nullptr;
+    QScatterSeries* frontPoints_ = nullptr;
+    QLineSeries* frontLine_ = nullptr;
+    QScatterSeries* currentPoints_ = nullptr;
+    QScatterSeries* selectedPoint_ = nullptr;
+    QLineSeries* noiseLine_ = nullptr;
+    QValueAxis* axisX_ = nullptr;
+    QValueAxis* axisY_ = nullptr;
+    QLabel* detailText_ = nullptr;
+    QLabel* detailImage_ = nullptr;
+};
+
+} // namespace lpv::editor
