@@ -171,7 +171,11 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
             if (on)
                 showRun(runAt(p));
         });
-        connect(s, &QScatterSeries::clicked, this, [this](const QPointF& p) { applyRun(runAt(p)); });
+        // Applying rebuilds the series; not inside the series' own mouse event.
+        connect(s, &QScatterSeries::clicked, this, [this](const QPointF& p) {
+            const int index = runAt(p);
+            QMetaObject::invokeMethod(this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
+        });
     }
     chartView_ = new QChartView(chart_, split);
     chartView_->setRenderHint(QPainter::Antialiasing);

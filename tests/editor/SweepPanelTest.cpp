@@ -1,0 +1,196 @@
+// The Sweeps dock (issue #26 item 4) in the real window: a small sweep of
+// the Cornell box runs in the background, its points are plotted with the
+// front and the current setting, hovering a point shows it, clicking it
+// applies its settings as one undo step, the cheapest setting under a bound
+// is selected, Stop stops, and the sweep is saved with the project and read
+// back when it is opened again.
+#include "Autosave.h"
+#include "Document.h"
+#include "MainWindow.h"
+#include "SweepPanel.h"
+#include "TestPaths.h"
+#include "Viewport.h"
+
+#include "lpv/bench/SavedSweep.h"
+
+#include <QChart>
+#include <QApplication>
+#include <QChartView>
+#include <QDockWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QLabel>
+#include <QMessageBox>
+#include <QScatterSeries>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace lpv::editor;
+
+namespace {
+
+QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+
+// Only the row named `name` checked, with `values`.
+void askOnly(QTableWidget* table, const QString& name, const QString& values) {
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const bool it = table->item(row, 0)->text() == name;
+        table->item(row, 0)->setCheckState(it ? Qt::Checked : Qt::Unchecked);
+        if (it)
+            table->item(row, 1)->setText(values);
+    }
+}
+
+int steps(const Document* doc) { return doc->parameters().getInt("lpv.propagationSteps"); }
+
+} // namespace
+
+TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
+    QTemporaryDir autosaveDir, projectDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    MainWindow window;
+    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    ASSERT_TRUE(window.openProject(cornell(), false));
+    const QString saved = projectDir.filePath("room.lpvproj");
+    ASSERT_TRUE(window.saveTo(saved, false));
+    window.resize(1200, 900);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    SweepPanel* panel = window.sweeps();
+    ASSERT_NE(panel, nullptr);
+    Document* doc = window.document();
+    const int currentSteps = steps(doc);
+    ASSERT_NE(currentSteps, 0);
+
+    // A bad row is refused with its name, and nothing starts.
+    askOnly(panel->questionTable(), "steps", "lpv.propagationSteps=0,many");
+    QString error;
+    EXPECT_FALSE(panel->plannedCombinations(error).has_value());
+    EXPECT_TRUE(error.contains("steps")) << error.toStdString();
+
+    // The current settings first; the current value is not run twice.
+    askOnly(panel->questionTable(), "steps", QString("lpv.propagationSteps=0,%1,2").arg(currentSteps));
+    auto planned = panel->plannedCombinations(error);
+    ASSERT_TRUE(planned.has_value()) << error.toStdString();
+    ASSERT_EQ(planned->size(), 3u);
+    EXPECT_TRUE(planned->front().empty());
+
+    panel->setSweepSize(64, 36, 1, 1, 16);
+    std::vector<QString> texts;
+    QObject::connect(panel->findChild<QProgressBar*>(), &QProgressBar::valueChanged, [&](int) {
+        texts.push_back(panel->statusText());
+    });
+    QSignalSpy finished(panel, &SweepPanel::sweepFinished);
+    panel->startSweep();
+    EXPECT_TRUE(panel->sweepRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 180000);
+    ASSERT_NE(panel->sweep(), nullptr) << panel->statusText().toStdString();
+    const lpv::bench::SavedSweep& sweep = *panel->sweep();
+    ASSERT_EQ(sweep.runs.size(), 3u);
+    EXPECT_TRUE(std::ranges::any_of(texts, [](const QString& t) { return t.contains("Reference"); }));
+    EXPECT_TRUE(std::ranges::any_of(texts, [](const QString& t) { return t.contains("left"); }))
+        << "an estimate of the time left once a setting has run";
+    for (const auto& run : sweep.runs) {
+        EXPECT_GT(run.totalMs, 0.0);
+        EXPECT_GT(run.indirect.pixels, 0u);
+    }
+    EXPECT_EQ(panel->currentRuns(), std::vector<int>{0});
+
+    // Every run is a point; the front is a subset with the fastest run on it.
+    int points = 0;
+    for (auto* s : panel->chartView()->chart()->series())
+        if (auto* scatter = qobject_cast<QScatterSeries*>(s); scatter && (scatter->name() == "settings" ||
+                                                                         scatter->name() == "on the front"))
+            points += scatter->count();
+    EXPECT_EQ(points, 3);
+    const std::vector<bool> front = panel->front();
+    std::size_t fastest = 0;
+    for (std::size_t i = 1; i < sweep.runs.size(); ++i)
+        if (sweep.runs[i].totalMs < sweep.runs[fastest].totalMs)
+            fastest = i;
+    EXPECT_TRUE(front[fastest]);
+
+    // Hover the steps=0 point with the mouse: its settings and images show.
+    QChart* chart = panel->chartView()->chart();
+    QScatterSeries* anySeries = nullptr;
+    for (auto* s : chart->series())
+        if (auto* scatter = qobject_cast<QScatterSeries*>(s); scatter && scatter->name() == "settings")
+            anySeries = scatter;
+    ASSERT_NE(anySeries, nullptr);
+    window.dock("sweeps")->show();
+    window.dock("sweeps")->raise();
+    QApplication::processEvents();
+    const QPointF value(sweep.runs[1].totalMs, 100.0 * sweep.runs[1].indirect.mare);
+    const QPoint at = panel->chartView()->mapFromScene(chart->mapToPosition(value, anySeries));
+    QTest::mouseMove(panel->chartView()->viewport(), at);
+    QTRY_VERIFY_WITH_TIMEOUT(panel->detailText()->text().contains("propagationSteps=0"), 5000);
+    EXPECT_FALSE(panel->detailImage()->pixmap().isNull());
+
+    // A click applies it as one undo step.
+    const int undoBefore = doc->undoStack()->count();
+    QTest::mouseClick(panel->chartView()->viewport(), Qt::LeftButton, {}, at);
+    QTRY_COMPARE_WITH_TIMEOUT(steps(doc), 0, 5000);
+    EXPECT_EQ(doc->undoStack()->count(), undoBefore + 1);
+    EXPECT_EQ(panel->currentRuns(), std::vector<int>{1}) << "the current mark follows the parameters";
+    doc->undoStack()->undo();
+    EXPECT_EQ(steps(doc), currentSteps);
+
+    // The cheapest under a bound every run meets is the fastest; under none, nothing.
+    EXPECT_EQ(panel->selectCheapestWithin(1e5), int(fastest));
+    EXPECT_EQ(panel->selectCheapestWithin(1e-6), -1);
+
+    // Saved with the project, and read back when it is opened again.
+    ASSERT_TRUE(window.saveTo(saved, false));
+    const auto file = lpv::bench::savedSweepFileOf(saved.toStdString());
+    ASSERT_TRUE(std::filesystem::exists(file));
+    ASSERT_TRUE(window.openProject(cornell(), false));
+    EXPECT_EQ(panel->sweep(), nullptr) << "another project has no sweep";
+    ASSERT_TRUE(window.openProject(saved, false));
+    ASSERT_NE(panel->sweep(), nullptr);
+    ASSERT_EQ(panel->sweep()->runs.size(), 3u);
+    EXPECT_DOUBLE_EQ(panel->sweep()->runs[2].indirect.mare, sweep.runs[2].indirect.mare);
+    panel->showRun(2);
+    EXPECT_FALSE(panel->detailImage()->pixmap().isNull()) << "the previews are saved too";
+}
+
+TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
+    QTemporaryDir autosaveDir;
+    Autosave::setRootForTests(autosaveDir.path());
+    MainWindow window;
+    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    ASSERT_TRUE(window.openProject(cornell(), false));
+    SweepPanel* panel = window.sweeps();
+    askOnly(panel->questionTable(), "grid", "lpv.gridSize=8,16,24,48,64");
+    panel->setSweepSize(64, 36, 2, 1, 8);
+    QSignalSpy finished(panel, &SweepPanel::sweepFinished);
+    QSignalSpy logged(panel, &SweepPanel::logMessage);
+    panel->startSweep();
+    // Stop once the reference is traced and settings are running.
+    QTRY_VERIFY_WITH_TIMEOUT(panel->statusText().startsWith("Setting"), 120000);
+    panel->stopSweep();
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 120000);
+    EXPECT_FALSE(panel->sweepRunning());
+    EXPECT_EQ(panel->sweep(), nullptr);
+    EXPECT_TRUE(panel->statusText().startsWith("Stopped")) << panel->statusText().toStdString();
+    ASSERT_FALSE(logged.isEmpty());
+    EXPECT_FALSE(logged.last().at(1).toBool()) << "a stop the user asked for is not a warning";
+    EXPECT_TRUE(panel->findChild<QPushButton*>("sweepRun")->isEnabled());
+}
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    // Keep the user's settings (layout, recent files) out of the test and vice versa.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName("LPV Studio tests");
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
