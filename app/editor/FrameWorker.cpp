@@ -53,6 +53,28 @@ std::vector<renderer::PassTiming> timingsOfThisFrame(std::vector<renderer::PassT
     return table;
 }
 
+// The frame's HDR image as the Accuracy dock measures it (RGBA floats to RGB).
+std::shared_ptr<const HdrFrame> readHdrFrame(const renderer::ForwardRenderer& renderer,
+                                             const FrameRequest& request,
+                                             const std::vector<renderer::PassTiming>& timings) {
+    const std::vector<float> rgba = renderer.readHdr();
+    auto frame = std::make_shared<HdrFrame>();
+    frame->width = renderer.width();
+    frame->height = renderer.height();
+    const std::size_t n = std::size_t(frame->width) * std::size_t(frame->height);
+    if (rgba.size() < n * 4)
+        return nullptr;
+    frame->pixels.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        frame->pixels[i] = {rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]};
+    frame->camera = request.camera;
+    frame->giMethod = request.parameters.getEnum("gi.method");
+    frame->outputView = request.parameters.getEnum("output.view");
+    for (const renderer::PassTiming& t : timings)
+        frame->gpuMs += t.lastMs;
+    return frame;
+}
+
 } // namespace
 
 FrameWorker::FrameWorker(QObject* parent) : QObject(parent), thread_([this] { run(); }) {}
@@ -217,6 +239,8 @@ void FrameWorker::run() {
         }
         result->gpuMemory = gpuMemory;
         result->lpvNote = QString::fromStdString(renderer->lpvNote());
+        if (result->error.isEmpty() && request.readHdr && !request.split)
+            result->hdr = readHdrFrame(*renderer, request, result->timings);
         if (result->error.isEmpty() && request.visualizers.active()) {
             auto frame = std::make_shared<VisualizerFrame>();
             frame->cascades = renderer->lpvCascadeFrames();

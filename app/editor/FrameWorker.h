@@ -42,6 +42,22 @@ struct FrameRequest {
     int width = 1;
     int height = 1;
     VisualizerRequest visualizers;
+    // The Accuracy dock's opt-in: read the frame's linear HDR image back
+    // (a GPU stall and a copy that normal frames do not pay). Not with a split.
+    bool readHdr = false;
+};
+
+// The linear HDR image of a frame (before exposure and tonemapping, what
+// `lpv render` writes to EXR) and what it was rendered with, so it is
+// compared with a reference of the same view.
+struct HdrFrame {
+    scene::Camera camera;
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec3> pixels; // rows top to bottom
+    std::string giMethod;          // gi.method of the frame
+    std::string outputView;        // output.view: final, indirect or direct
+    double gpuMs = 0.0;            // the frame's GPU time: the sum of its passes' times
 };
 
 struct FrameResult {
@@ -52,6 +68,7 @@ struct FrameResult {
     QString error; // empty when the frame rendered
     std::optional<renderer::GpuMemoryInfo> gpuMemory; // as the driver reports it, if it does
     std::shared_ptr<const VisualizerFrame> visualizers; // when the request asked for any
+    std::shared_ptr<const HdrFrame> hdr;                // when the request asked for it
 };
 
 class FrameWorker : public QObject {

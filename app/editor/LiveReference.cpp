@@ -107,11 +107,17 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
                           const QImage shown = displayImage(image);
                           const int spp = image.samplesPerPixel;
                           const double seconds = image.seconds;
+                          std::shared_ptr<const reference::ReferenceImage> copy;
+                          if (sendImages_)
+                              copy = std::make_shared<const reference::ReferenceImage>(image);
                           QMetaObject::invokeMethod(
                               this,
-                              [this, generation, shown, spp, noise, seconds] {
-                                  if (generation == generation_)
-                                      emit passDone(shown, spp, noise.noiseMare, seconds);
+                              [this, generation, shown, spp, noise, seconds, copy] {
+                                  if (generation != generation_)
+                                      return;
+                                  emit passDone(shown, spp, noise.noiseMare, seconds);
+                                  if (copy)
+                                      emit imageDone(copy);
                               },
                               Qt::QueuedConnection);
                       });

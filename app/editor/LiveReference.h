@@ -5,6 +5,7 @@
 // scene stay still, and any change restarts it. Each pass sends the image so
 // far (tonemapped for display), its sample count and its own noise level
 // (the MARE its variance implies, as `lpv compare` reports it).
+#include "lpv/reference/ReferenceImage.h"
 #include "lpv/scene/Camera.h"
 #include "lpv/scene/ParameterRegistry.h"
 #include "lpv/scene/Scene.h"
@@ -34,11 +35,16 @@ class LiveReference : public QObject {
     // Stops tracing (gi.method left reference) and frees the scene.
     void stop();
     bool running() const { return worker_.joinable(); }
+    // Also send each pass's linear image with its variance and coverage
+    // (imageDone): the Accuracy dock measures against it. Off by default.
+    void setSendImages(bool on) { sendImages_ = on; }
 
   signals:
     // After every pass of the current restart: the display image, samples per
     // pixel, the noise MARE of the image (0..1) and the seconds traced.
     void passDone(const QImage& image, int samplesPerPixel, double noiseMare, double seconds);
+    // With setSendImages: the same pass as traced (right after passDone).
+    void imageDone(std::shared_ptr<const lpv::reference::ReferenceImage> image);
     // The scene could not be traced (e.g. no geometry Embree accepts).
     void failed(const QString& message);
 
@@ -50,6 +56,7 @@ class LiveReference : public QObject {
     std::atomic<bool> cancel_{false};
     std::shared_ptr<Prepared> prepared_;
     unsigned generation_ = 0; // passes of an older restart are dropped
+    std::atomic<bool> sendImages_{false};
 };
 
 } // namespace lpv::editor

@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "AboutDialog.h"
+#include "AccuracyPanel.h"
 #include "Autosave.h"
 #include "CameraPathPanel.h"
 #include "EventLog.h"
@@ -246,6 +247,9 @@ void MainWindow::createDocks() {
     connect(sweeps_, &SweepPanel::logMessage, this, [this](const QString& message, bool warning) {
         log_->add(warning ? EventLog::Severity::Warning : EventLog::Severity::Info, tr("Sweep"), message);
     });
+    // The frame's error against a reference of the same view, next to its GPU time (issue #26 item 3).
+    accuracy_ = new AccuracyPanel(document_, viewport_, this);
+    tabifyDockWidget(profilerDock, addDock(accuracy_, "accuracy", tr("Accuracy"), Qt::BottomDockWidgetArea));
     logPanel_ = new LogPanel(log_, this);
     QDockWidget* logDock = addDock(logPanel_, "log", tr("Log"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, logDock);

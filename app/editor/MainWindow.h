@@ -15,6 +15,7 @@ class QUndoView;
 
 namespace lpv::editor {
 
+class AccuracyPanel;
 class Autosave;
 class CameraPathPanel;
 class EffectsPanel;
@@ -63,6 +64,7 @@ public:
     EffectsPanel* effects() const { return effects_; }
     RadiosityPanel* radiosity() const { return radiosity_; }
     SweepPanel* sweeps() const { return sweeps_; }
+    AccuracyPanel* accuracy() const { return accuracy_; }
     PropertyPanel* properties() const { return properties_; }
     ParameterInspector* inspector() const { return inspector_; }
     PresetBar* presetBar() const { return presetBar_; }
@@ -125,6 +127,7 @@ private:
     EffectsPanel* effects_ = nullptr;
     RadiosityPanel* radiosity_ = nullptr;
     SweepPanel* sweeps_ = nullptr;
+    AccuracyPanel* accuracy_ = nullptr;
     PropertyPanel* properties_ = nullptr;
     ParameterInspector* inspector_ = nullptr;
     PresetBar* presetBar_ = nullptr;

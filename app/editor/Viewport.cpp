@@ -254,7 +254,7 @@ void Viewport::requestFrameIfChanged() {
     const bool texturesArrived = !texturesToSend_.empty();
     if (requested_ && pending_ == Changes() && !texturesArrived && !requested_->resend &&
         requested_->camera == camera && requested_->parameters == params && requested_->split == split_ &&
-        requested_->width == w && requested_->height == h)
+        requested_->width == w && requested_->height == h && requested_->readHdr == hdrReadback_)
         return;
     prepareSceneChanges();
     FrameRequest request;
@@ -285,8 +285,9 @@ void Viewport::requestFrameIfChanged() {
     request.width = w;
     request.height = h;
     request.visualizers = vizRequest_;
+    request.readHdr = hdrReadback_;
     pending_ = {};
-    requested_ = Requested{camera, params, split_, w, h};
+    requested_ = Requested{camera, params, split_, w, h, hdrReadback_};
     worker_->submit(std::move(request));
 }
 
@@ -312,6 +313,8 @@ void Viewport::onFrameReady(const std::shared_ptr<const FrameResult>& result) {
         emit visualizerFrame(vizFrame_);
     }
     emit frameRendered(result->timings);
+    if (result->hdr && hdrReadback_)
+        emit hdrFrameRendered(result->hdr);
     if (result->lpvNote != lastNote_) {
         lastNote_ = result->lpvNote;
         emit lpvNoteChanged(lastNote_);
@@ -334,6 +337,16 @@ void Viewport::paintEvent(QPaintEvent*) {
     if (showsReference() && !referenceImage_.isNull()) {
         painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
         painter.drawImage(QRectF(0, 0, width(), height()), referenceImage_);
+    }
+    if (comparisonSplitShown())
+        drawComparisonSplit(painter);
+    if (!errorOverlay_.isNull()) {
+        // Mostly opaque: the magma scale reads true, and the scene's edges
+        // still show through enough to tell where the error is.
+        painter.setOpacity(0.85);
+        painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
+        painter.drawImage(QRectF(0, 0, width(), height()), errorOverlay_);
+        painter.setOpacity(1.0);
     }
     drawOverlay(painter);
 }
@@ -395,7 +408,16 @@ void Viewport::drawOverlay(QPainter& painter) {
     }
     drawPath(painter);
     drawVisualizerOverlay(painter, vizRequest_, vizFrame_.get(), camera, QSizeF(width(), height()));
-    if (split_) {
+    if (comparisonSplitShown()) {
+        painter.setPen(QPen(Qt::white, 2));
+        painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
+        painter.setPen(Qt::white);
+        const std::string method = document_->parameters().getEnum("gi.method");
+        painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft,
+                         method == "lpv" ? tr("LPV") : QString::fromStdString(method));
+        painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft,
+                         tr("Reference"));
+    } else if (split_) {
         painter.setPen(QPen(Qt::white, 2));
         painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
         painter.setPen(Qt::white);
@@ -411,6 +433,36 @@ void Viewport::setVisualizerRequest(const VisualizerRequest& request) {
     if (requested_)
         requested_->resend = true; // the next frame reads back what is asked now
     update();
+}
+
+void Viewport::setHdrReadback(bool on) {
+    if (hdrReadback_ == on)
+        return;
+    hdrReadback_ = on;
+    update(); // the next request asks for it (or stops asking)
+}
+
+void Viewport::setErrorOverlay(const QImage& heatMap) {
+    errorOverlay_ = heatMap;
+    update();
+}
+
+void Viewport::setComparisonSplit(const QImage& left, const QImage& right) {
+    comparisonLeft_ = left;
+    comparisonRight_ = right;
+    update();
+}
+
+void Viewport::drawComparisonSplit(QPainter& painter) {
+    // Each half from its own image, the same pixels of the view: the left
+    // half of the LPV frame, the right half of the reference.
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    const double half = width() / 2.0;
+    const QRectF leftSource(0, 0, comparisonLeft_.width() / 2.0, comparisonLeft_.height());
+    const QRectF rightSource(comparisonRight_.width() / 2.0, 0, comparisonRight_.width() / 2.0,
+                             comparisonRight_.height());
+    painter.drawImage(QRectF(0, 0, half, height()), comparisonLeft_, leftSource);
+    painter.drawImage(QRectF(half, 0, width() - half, height()), comparisonRight_, rightSource);
 }
 
 void Viewport::setShownPath(int index) {

@@ -101,7 +101,22 @@ public:
     void setVisualizerRequest(const VisualizerRequest& request);
     const VisualizerRequest& visualizerRequest() const { return vizRequest_; }
 
-signals:
+    // The Accuracy dock (issue #26): while on, every frame also reads back
+    // its linear HDR image (hdrFrameRendered); off, frames pay nothing for it.
+    void setHdrReadback(bool on);
+    bool hdrReadback() const { return hdrReadback_; }
+    // The FLIP heat map drawn over the frame (a null image: none).
+    void setErrorOverlay(const QImage& heatMap);
+    bool errorOverlayShown() const { return !errorOverlay_.isNull(); }
+    // LPV | reference: the left half of `left` beside the right half of
+    // `right` (both the view's images as the Accuracy dock compares them)
+    // instead of the frame; null images: the frame as usual.
+    void setComparisonSplit(const QImage& left, const QImage& right);
+    bool comparisonSplitShown() const { return !comparisonLeft_.isNull() && !comparisonRight_.isNull(); }
+    // The size frames render at (the widget's pixels times the resolution scale).
+    QSize renderSize() const { return {renderWidth(), renderHeight()}; }
+
+  signals:
     // After every frame: the renderer's timing table (for the status bar and the profiler).
     void frameRendered(const std::vector<lpv::renderer::PassTiming>& timings);
     // What the LPV did in the last frame and why (the renderer's note), when it changes.
@@ -117,8 +132,10 @@ signals:
     // (samples per pixel, its noise MARE 0..1, seconds since it restarted);
     // spp 0 when it stopped.
     void referenceProgress(int samplesPerPixel, double noiseMare, double seconds);
+    // While setHdrReadback is on: each frame's HDR image, camera and GPU time.
+    void hdrFrameRendered(std::shared_ptr<const lpv::editor::HdrFrame> frame);
 
-protected:
+  protected:
     void paintEvent(QPaintEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
@@ -169,6 +186,7 @@ private:
         scene::ParameterSet parameters;
         std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split;
         int width = 0, height = 0;
+        bool readHdr = false;
         bool resend = false; // the next paint sends a request even if nothing above changed
     };
     std::optional<Requested> requested_;
@@ -200,6 +218,11 @@ private:
     QSet<int> heldKeys_;
     QTimer flyTimer_;
     QElapsedTimer flyClock_;
+
+    bool hdrReadback_ = false;
+    QImage errorOverlay_;
+    QImage comparisonLeft_, comparisonRight_;
+    void drawComparisonSplit(QPainter& painter);
 
     VisualizerRequest vizRequest_;
     std::shared_ptr<const VisualizerFrame> vizFrame_; // the last read-back, for the probe overlay
