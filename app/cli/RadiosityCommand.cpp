@@ -197,21 +197,16 @@ int runRadiosity(Args args) {
     std::printf("GL: %s | %s\n", context->info().renderer.c_str(), context->info().version.c_str());
 
     const auto textures = importers::loadSceneTextures(project->scene, projectFile.parent_path());
-    const std::filesystem::path savedFile = radiosity::solutionPath(projectFile);
     std::optional<radiosity::StoredSolution> saved;
-    if (!restart && std::filesystem::exists(savedFile)) {
-        auto loaded = radiosity::loadSolution(savedFile, project->scene.materials.size(),
-                                              project->scene.objects.size());
-        if (loaded)
-            saved = std::move(*loaded);
-        else
-            std::printf("ignoring the saved solution: %s\n", loaded.error().describe().c_str());
+    if (!restart) {
+        std::string ignored;
+        saved = radiosity::loadSavedSolution(project->scene, projectFile, &ignored);
+        if (!ignored.empty())
+            std::printf("ignoring the saved solution: %s\n", ignored.c_str());
     }
     const float maxPatchArea = params.getFloat("radiosity.maxPatchArea");
     const auto meshStart = std::chrono::steady_clock::now();
-    auto created = radiosity::RadiositySession::create(project->scene, textures.images, maxPatchArea,
-                                                       std::size_t(params.getInt("radiosity.maxPatches")),
-                                                       std::move(saved));
+    auto created = radiosity::RadiositySession::create(project->scene, params, textures.images, std::move(saved));
     if (!created) {
         std::cerr << "lpv: " << projectFile.string() << ": " << created.error().describe() << "\n";
         return kFailure;

@@ -121,20 +121,10 @@ void RadiosityPanel::start() {
         }
         const scene::ParameterSet& p = project.parameters;
         const auto textures = importers::loadSceneTextures(project.scene, projectDir);
-        std::optional<radiosity::StoredSolution> saved;
-        if (!projectFile.empty()) {
-            const auto file = radiosity::solutionPath(projectFile);
-            if (std::filesystem::exists(file))
-                if (auto loaded = radiosity::loadSolution(file, project.scene.materials.size(),
-                                                          project.scene.objects.size()))
-                    saved = std::move(*loaded);
-        }
+        std::optional<radiosity::StoredSolution> saved = radiosity::loadSavedSolution(project.scene, projectFile);
         if (!saved && memory->has_value())
             saved = **memory;
-        auto created = radiosity::RadiositySession::create(project.scene, textures.images,
-                                                           p.getFloat("radiosity.maxPatchArea"),
-                                                           std::size_t(p.getInt("radiosity.maxPatches")),
-                                                           std::move(saved));
+        auto created = radiosity::RadiositySession::create(project.scene, p, textures.images, std::move(saved));
         if (!created) { // nothing emits, or too many patches: say so, save nothing
             QMetaObject::invokeMethod(this, "onStopped", Qt::QueuedConnection,
                                       Q_ARG(QString, QString::fromStdString(created.error().describe())),

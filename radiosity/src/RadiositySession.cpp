@@ -44,6 +44,29 @@ scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& s
     return RadiositySession(scene, textures, maxPatchArea, std::move(saved));
 }
 
+scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
+                                                           const scene::ParameterSet& parameters,
+                                                           const scene::TextureImages& textures,
+                                                           std::optional<StoredSolution> saved) {
+    return create(scene, textures, parameters.getFloat("radiosity.maxPatchArea"),
+                  std::size_t(parameters.getInt("radiosity.maxPatches")), std::move(saved));
+}
+
+std::optional<StoredSolution> loadSavedSolution(const scene::Scene& scene, const std::filesystem::path& projectFile,
+                                                std::string* ignored) {
+    const auto file = solutionPath(projectFile);
+    std::error_code ec;
+    if (projectFile.empty() || !std::filesystem::exists(file, ec))
+        return std::nullopt;
+    auto loaded = loadSolution(file, scene.materials.size(), scene.objects.size());
+    if (!loaded) {
+        if (ignored)
+            *ignored = loaded.error().describe();
+        return std::nullopt;
+    }
+    return std::move(*loaded);
+}
+
 RadiositySession::RadiositySession(const scene::Scene& scene, const scene::TextureImages& textures,
                                    float maxPatchArea, std::optional<StoredSolution> saved)
     : maxPatchArea_(maxPatchArea) {

@@ -8,6 +8,9 @@
 #include "lpv/scene/Image.h"
 #include "lpv/scene/Scene.h"
 
+#include "lpv/scene/ParameterRegistry.h"
+
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +27,12 @@ class RadiositySession {
     // million patch Sponza is refused before it allocates).
     static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::TextureImages& textures,
                                                     float maxPatchArea, std::size_t maxPatches,
+                                                    std::optional<StoredSolution> saved = std::nullopt);
+
+    // The same with the project's radiosity.maxPatchArea and
+    // radiosity.maxPatches: what `lpv radiosity` and the editor's dock run.
+    static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::ParameterSet& parameters,
+                                                    const scene::TextureImages& textures,
                                                     std::optional<StoredSolution> saved = std::nullopt);
 
     // `saved` (from loadSolution) is resumed if its scene signature matches
@@ -54,5 +63,11 @@ class RadiositySession {
     bool resumed_ = false;
     std::string note_;
 };
+
+// The solution saved beside `projectFile` (solutionPath), if one is there and
+// loads; a damaged one is ignored and `ignored` (may be null) says why, so a
+// solve starts over instead of failing.
+std::optional<StoredSolution> loadSavedSolution(const scene::Scene& scene, const std::filesystem::path& projectFile,
+                                                std::string* ignored = nullptr);
 
 } // namespace lpv::radiosity
