@@ -13,6 +13,7 @@
 #include "Cli.h"
 #include "ReferenceFile.h"
 
+#include "lpv/bench/Report.h"
 #include "lpv/reference/Metrics.h"
 #include "lpv/scene/Project.h"
 
@@ -32,6 +33,9 @@ namespace lpv::cli {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using namespace report;
+using bench::RadiosityPoint;
+using bench::ReportRun;
+using bench::SceneReport;
 
 void printBenchAccuracyReportHelp() {
     std::cout << R"(
@@ -106,39 +110,6 @@ On a cluster (docs/cluster.md, packaging/cluster/), in pieces that share DIR:
 
 namespace {
 
-// One render of a sweep, as its sweep.json gives it.
-struct ReportRun {
-    std::string question;
-    std::string setting; // "key=value"
-    bool projectSettings = false;
-    double totalMs = 0.0;
-    double indirectMare = 0.0;
-    double indirectMeanRatio = 0.0; // the LPV's mean indirect irradiance over the reference's
-    double noiseMare = 0.0;
-    double imageMare = 0.0;
-};
-
-struct RadiosityPoint {
-    double seconds = 0.0; // cumulative wall time of the solve runs
-    reference::ErrorMetrics image;
-};
-
-struct SceneReport {
-    std::string name;
-    std::string projectFile;
-    std::string referenceNote;
-    std::vector<ReportRun> runs;
-    std::vector<std::string> failures;
-    std::vector<RadiosityPoint> radiosity;
-    std::string radiosityNote;
-};
-
-std::string percent(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * v);
-    return buf;
-}
-
 std::string fixed(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -156,37 +127,6 @@ std::string describeReference(const fs::path& file) {
     return std::to_string(ref->image.width) + "x" + std::to_string(ref->image.height) + ", " +
            std::to_string(ref->image.samplesPerPixel) + " spp in " +
            fixed(std::atof(attr("lpv:seconds").c_str()), 1) + " s";
-}
-
-// The runs of one sweep.json; `current` holds the project's own parameters to
-// recognise the run that changes nothing.
-std::vector<ReportRun> readSweep(const fs::path& file, const std::string& question,
-                                 const scene::ParameterSet& current) {
-    std::vector<ReportRun> out;
-    std::ifstream in(file);
-    const Json j = Json::parse(in, nullptr, false);
-    if (j.is_discarded() || !j.contains("runs"))
-        return out;
-    for (const Json& r : j["runs"]) {
-        ReportRun run;
-        run.question = question;
-        run.projectSettings = true;
-        for (const auto& [key, value] : r["settings"].items()) {
-            run.setting += (run.setting.empty() ? "" : " ") + key + "=" + value.get<std::string>();
-            scene::ParameterSet changed = current;
-            if (!changed.setFromText(key, value.get<std::string>()) ||
-                !(changed.get(key) == current.get(key)))
-                run.projectSettings = false;
-        }
-        run.totalMs = r.value("totalMs", 0.0);
-        run.indirectMare = r["indirect"].value("mare", 0.0);
-        const double meanReference = r["indirect"].value("meanReference", 0.0);
-        run.indirectMeanRatio = meanReference > 0.0 ? r["indirect"].value("meanTest", 0.0) / meanReference : 0.0;
-        run.noiseMare = r["indirect"].value("noiseMare", 0.0);
-        run.imageMare = r["image"].value("mare", 0.0);
-        out.push_back(run);
-    }
-    return out;
 }
 
 bool hasEmissiveMaterial(const scene::Project& p) {
@@ -218,11 +158,14 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         return;
     }
     const fs::path ref = dir / "reference-emissive.exr";
-    if (!referenceMatches(ref, width, height) &&
-        call("reference", runReference,
-             {emissiveProject.string(), "-o", ref.string(), "--width", std::to_string(width), "--height",
-              std::to_string(height), "--spp", std::to_string(spp), "--set",
-              "reference.emissiveLight=true"}) != kOk) {
+    ReferenceCommand emissive;
+    emissive.projectFile = emissiveProject.string();
+    emissive.output = ref.string();
+    emissive.width = width;
+    emissive.height = height;
+    emissive.spp = std::to_string(spp);
+    emissive.sets = {"reference.emissiveLight=true"};
+    if (!referenceMatches(ref, width, height) && runEchoed(emissive) != kOk) {
         report.radiosityNote = "the emissive-light reference failed";
         return;
     }
@@ -270,127 +213,6 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         std::printf("radiosity after %.0f s of solving: %s\n", solved,
                     reference::describe(report.radiosity.back().image).c_str());
     }
-}
-
-// The lowest error among the settings whose mean is within 0.8-1.25x of the
-// reference's (issue #24's band): a setting that shows almost no light can
-// have a low MARE where the reference is dark.
-const ReportRun* lowestInBand(const std::vector<ReportRun>& runs) {
-    const ReportRun* best = nullptr;
-    for (const ReportRun& r : runs)
-        if (r.indirectMeanRatio >= 0.8 && r.indirectMeanRatio <= 1.25 &&
-            (!best || r.indirectMare < best->indirectMare))
-            best = &r;
-    return best;
-}
-
-const ReportRun* cheapestBelow(const std::vector<ReportRun>& runs, double target) {
-    const ReportRun* best = nullptr;
-    for (const ReportRun& r : runs)
-        if (r.indirectMare <= target && (!best || r.totalMs < best->totalMs))
-            best = &r;
-    return best;
-}
-
-std::string runCell(const ReportRun* r) {
-    if (!r)
-        return "none of the sweeps";
-    return "`" + r->setting + "`: " + fixed(r->totalMs, 1) + " ms, " + percent(r->indirectMare) + ", mean " +
-           fixed(r->indirectMeanRatio, 2) + "x";
-}
-
-std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::string& command,
-                           const std::string& machine) {
-    std::ostringstream out;
-    out << "# LPV Studio: what accuracy costs in time\n\n`" << command << "`\n\nMachine: " << machine
-        << "\n\nTime: the sum of the per-pass GPU medians of a frame (timer queries). Error: mean absolute "
-           "relative error (MARE) of the LPV's indirect irradiance against the path-traced indirect "
-           "irradiance at the same pixels, background masked, like for like: the reference's light reflected as "
-           "many times as the LPV's `lpv.bounces`, from the same lights (the sky and emissive surfaces where the "
-           "LPV injects them). Mean: the LPV's mean indirect irradiance over the reference's. Each question "
-           "varies one key around the project's settings.\n\n";
-    out << "| scene | project settings | cheapest at <= 10% | cheapest at <= 5% | lowest error found | lowest "
-           "error with the mean within 0.8-1.25x |\n"
-           "|---|---|---|---|---|---|\n";
-    for (const SceneReport& s : scenes) {
-        const ReportRun* base = nullptr;
-        const ReportRun* lowest = nullptr;
-        for (const ReportRun& r : s.runs) {
-            if (r.projectSettings && !base)
-                base = &r;
-            if (!lowest || r.indirectMare < lowest->indirectMare)
-                lowest = &r;
-        }
-        out << "| " << s.name << " | "
-            << (base ? fixed(base->totalMs, 1) + " ms, " + percent(base->indirectMare) + ", mean " +
-                           fixed(base->indirectMeanRatio, 2) + "x"
-                     : "-")
-            << " | "
-            << runCell(cheapestBelow(s.runs, 0.10)) << " | " << runCell(cheapestBelow(s.runs, 0.05)) << " | "
-            << runCell(lowest) << " | " << runCell(lowestInBand(s.runs)) << " |\n";
-    }
-    for (const SceneReport& s : scenes) {
-        out << "\n## " << s.name << "\n\nReference: " << s.referenceNote;
-        if (!s.runs.empty())
-            out << "; its own noise on the indirect light: MARE " << percent(s.runs.front().noiseMare);
-        out << ".\n\n| question | setting | GPU ms | indirect MARE | indirect mean (LPV / reference) | image "
-               "MARE |\n|---|---|---:|---:|---:|---:|\n";
-        for (const ReportRun& r : s.runs)
-            out << "| " << r.question << " | `" << r.setting << "`" << (r.projectSettings ? " (project)" : "")
-                << " | " << fixed(r.totalMs, 2) << " | " << percent(r.indirectMare) << " | "
-                << fixed(r.indirectMeanRatio, 2) << "x | " << percent(r.imageMare) << " |\n";
-        std::vector<std::string> questions;
-        for (const ReportRun& r : s.runs)
-            if (std::ranges::find(questions, r.question) == questions.end())
-                questions.push_back(r.question);
-        out << "\nPlots:";
-        for (const std::string& q : questions)
-            if (q == "bounces" || q == "sky") { // one sweep per value, in QUESTION/VALUE/
-                for (const ReportRun& r : s.runs)
-                    if (r.question == q && r.setting.find('=') != std::string::npos)
-                        out << " [" << r.setting << "](" << s.name << "/" << q << "/"
-                            << r.setting.substr(r.setting.find('=') + 1) << "/sweep.md)";
-            } else {
-                out << " [" << q << "](" << s.name << "/" << q << "/sweep.md)";
-            }
-        out << "\n\n### Radiosity against solve time\n\n" << s.radiosityNote << "\n\n";
-        if (!s.radiosity.empty()) {
-            out << "| solve wall time | image MARE | image relMSE | image SSIM |\n|---:|---:|---:|---:|\n";
-            for (const RadiosityPoint& p : s.radiosity)
-                out << "| " << fixed(p.seconds, 0) << " s | " << percent(p.image.mare)
-                    << (p.image.mareBelowNoise() ? " (below noise)" : "") << " | " << fixed(p.image.relMse, 4)
-                    << " | " << fixed(p.image.ssim, 3) << " |\n";
-        }
-        for (const std::string& f : s.failures)
-            out << "\n**Failed:** " << f << "\n";
-    }
-    return out.str();
-}
-
-std::string reportJson(const std::vector<SceneReport>& scenes, const std::string& command,
-                       const std::string& machine) {
-    Json j{{"command", command}, {"machine", machine}, {"scenes", Json::array()}};
-    for (const SceneReport& s : scenes) {
-        Json scene{{"name", s.name},
-                   {"reference", s.referenceNote},
-                   {"runs", Json::array()},
-                   {"radiosity", Json::array()},
-                   {"failures", s.failures}};
-        for (const ReportRun& r : s.runs)
-            scene["runs"].push_back({{"question", r.question},
-                                     {"setting", r.setting},
-                                     {"projectSettings", r.projectSettings},
-                                     {"totalMs", r.totalMs},
-                                     {"indirectMare", r.indirectMare},
-                                     {"indirectMeanRatio", r.indirectMeanRatio},
-                                     {"noiseMare", r.noiseMare},
-                                     {"imageMare", r.imageMare}});
-        for (const RadiosityPoint& p : s.radiosity)
-            scene["radiosity"].push_back(
-                {{"seconds", p.seconds}, {"imageMare", p.image.mare}, {"imageRelMse", p.image.relMse}});
-        j["scenes"].push_back(scene);
-    }
-    return j.dump(2) + "\n";
 }
 
 } // namespace
@@ -499,7 +321,7 @@ int runWholeReport(const ReportOptions& o) {
                     std::printf("reusing %s (delete it to trace again)\n", ref.file.string().c_str());
                     traced[i] = 1;
                 } else {
-                    traced[i] = call("reference", runReference, referenceArgs(*plan, ref, ref.file, o)) == kOk;
+                    traced[i] = runEchoed(referenceCommandOf(*plan, ref, ref.file, o)) == kOk;
                 }
             }
             return traced[i] == 1;
@@ -514,19 +336,21 @@ int runWholeReport(const ReportOptions& o) {
                                std::to_string(plan->projectBounces) + " bounce" +
                                (plan->projectBounces == 1 ? "" : "s");
         for (const PlannedSweep& sweep : plan->sweeps) {
-            std::vector<std::string> args = sweepArgs(*plan, sweep, o);
-            args.insert(args.end(), {"--out", sweep.dir.string()});
-            if (referenceThere(sweep.reference) && o.resume &&
-                sweepDoneAlready(sweep.dir / "sweep.json", *plan, sweep, o)) {
+            const bool resumed = referenceThere(sweep.reference) && o.resume &&
+                                 sweepDoneAlready(sweep.dir / "sweep.json", *plan, sweep, o);
+            std::vector<SweepRun> runs;
+            if (resumed) {
                 std::printf("reusing %s (--resume: made by the same sweep command)\n",
                             (sweep.dir / "sweep.json").string().c_str());
-            } else if (!referenceThere(sweep.reference) || call("bench", benchSweep, args) != kOk) {
+            } else if (!referenceThere(sweep.reference) || runEchoed(sweepCommandOf(*plan, sweep, o), &runs) != kOk) {
                 report.failures.push_back("sweep " + sweep.question + " (" + sweep.sweep + ")");
                 status = kFailure;
                 continue;
             }
-            auto runs = readSweep(sweep.dir / "sweep.json", sweep.question, plan->current);
-            report.runs.insert(report.runs.end(), runs.begin(), runs.end());
+            const auto rows = resumed ? bench::reportRunsFromSweepJson(sweep.dir / "sweep.json", sweep.question,
+                                                                       plan->current)
+                                      : bench::reportRunsOf(sweep.question, runs, plan->current);
+            report.runs.insert(report.runs.end(), rows.begin(), rows.end());
             if (machine.empty()) {
                 std::ifstream in(sweep.dir / "sweep.json");
                 const Json j = Json::parse(in, nullptr, false);
@@ -544,7 +368,7 @@ int runWholeReport(const ReportOptions& o) {
     const std::optional<std::string> md = (o.outDir / "report.md").string(),
                                      json = (o.outDir / "report.json").string();
     if (!writeReportFiles(
-            {{md, reportMarkdown(reports, command, machine)}, {json, reportJson(reports, command, machine)}}))
+            {{md, bench::reportMarkdown(reports, command, machine)}, {json, bench::reportJson(reports, command, machine)}}))
         return kFailure;
     return status;
 }

@@ -95,39 +95,54 @@ std::optional<ScenePlan> planScene(const SceneSpec& spec, const ReportOptions& o
     return plan;
 }
 
-std::vector<std::string> referenceArgs(const ScenePlan& plan, const PlannedReference& ref,
-                                       const fs::path& out, const ReportOptions& options) {
-    std::vector<std::string> args{plan.project.string(),
-                                  "-o",
-                                  out.string(),
-                                  "--width",
-                                  std::to_string(options.width),
-                                  "--height",
-                                  std::to_string(options.height),
-                                  "--spp",
-                                  std::to_string(plan.spp),
-                                  "--bounces",
-                                  std::to_string(ref.bounces)};
+ReferenceCommand referenceCommandOf(const ScenePlan& plan, const PlannedReference& ref, const fs::path& out,
+                                    const ReportOptions& options) {
+    ReferenceCommand c;
+    c.projectFile = plan.project.string();
+    c.output = out.string();
+    c.width = options.width;
+    c.height = options.height;
+    c.spp = std::to_string(plan.spp);
+    c.bounces = std::to_string(ref.bounces);
     if (!ref.sky.empty())
-        args.insert(args.end(), {"--set", "effects.skyInjection=" + ref.sky});
-    return args;
+        c.sets.push_back("effects.skyInjection=" + ref.sky);
+    return c;
 }
 
-std::vector<std::string> sweepArgs(const ScenePlan& plan, const PlannedSweep& sweep,
-                                   const ReportOptions& options) {
-    return {plan.project.string(),
-            "--sweep",
-            sweep.sweep,
-            "--reference",
-            plan.references[sweep.reference].file.string(),
-            "--width",
-            std::to_string(options.width),
-            "--height",
-            std::to_string(options.height),
-            "--frames",
-            std::to_string(options.frames),
-            "--warmup",
-            std::to_string(options.warmup)};
+SweepCommand sweepCommandOf(const ScenePlan& plan, const PlannedSweep& sweep, const ReportOptions& options) {
+    SweepCommand c;
+    c.projectFile = plan.project.string();
+    c.sweeps = {sweep.sweep};
+    c.referenceFile = plan.references[sweep.reference].file.string();
+    c.outDir = sweep.dir;
+    c.width = options.width;
+    c.height = options.height;
+    c.frames = options.frames;
+    c.warmup = options.warmup;
+    return c;
+}
+
+int runEchoed(const ReferenceCommand& c) {
+    std::printf("\n$ lpv reference %s -o %s --width %d --height %d --spp %s --bounces %s", c.projectFile.c_str(),
+                c.output.c_str(), c.width, c.height, c.spp.value_or("-").c_str(), c.bounces.value_or("-").c_str());
+    for (const std::string& set : c.sets)
+        std::printf(" --set %s", set.c_str());
+    if (!c.shard.whole())
+        std::printf(" --shard %s", reference::formatShard(c.shard).c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+    return runReferenceCommand(c);
+}
+
+int runEchoed(const SweepCommand& c, std::vector<SweepRun>* runs) {
+    std::printf("\n$ lpv bench %s --sweep %s --reference %s --width %d --height %d --frames %d --warmup %d --out %s",
+                c.projectFile.c_str(), c.sweeps.front().c_str(), c.referenceFile.value_or("-").c_str(), c.width,
+                c.height, c.frames, c.warmup, c.outDir.string().c_str());
+    if (!c.shard.whole())
+        std::printf(" --shard %s", reference::formatShard(c.shard).c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+    return runSweepCommand(c, runs);
 }
 
 int call(const char* name, int (*command)(Args), std::vector<std::string> args) {

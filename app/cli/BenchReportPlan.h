@@ -6,7 +6,9 @@
 // (BenchAccuracyReport.cpp); on a cluster, shards and a coordinator run it in
 // pieces (BenchReportShards.cpp, docs/cluster.md).
 #include "Cli.h"
+#include "BenchSweepCommand.h"
 #include "ReferenceFile.h"
+#include "ReferenceTrace.h"
 
 #include "lpv/bench/Questions.h"
 #include "lpv/reference/Shards.h"
@@ -74,11 +76,15 @@ std::filesystem::path projectFileOf(const SceneSpec& spec, const ReportOptions& 
 // The plan of one scene; its project must exist (its lpv.bounces decides the references).
 std::optional<ScenePlan> planScene(const SceneSpec& spec, const ReportOptions& options);
 
-// The arguments of `lpv reference` tracing `ref` into `out`, and of `lpv
-// bench --sweep` for `sweep` (without --out).
-std::vector<std::string> referenceArgs(const ScenePlan& plan, const PlannedReference& ref,
-                                       const std::filesystem::path& out, const ReportOptions& options);
-std::vector<std::string> sweepArgs(const ScenePlan& plan, const PlannedSweep& sweep, const ReportOptions& options);
+// `lpv reference` tracing `ref` into `out`, and `lpv bench --sweep` for
+// `sweep` into its folder, as the report runs them (in this process, options
+// in hand, the runs returned in memory).
+ReferenceCommand referenceCommandOf(const ScenePlan& plan, const PlannedReference& ref,
+                                    const std::filesystem::path& out, const ReportOptions& options);
+SweepCommand sweepCommandOf(const ScenePlan& plan, const PlannedSweep& sweep, const ReportOptions& options);
+// Each echoed as a user would type it, then run.
+int runEchoed(const ReferenceCommand& command);
+int runEchoed(const SweepCommand& command, std::vector<SweepRun>* runs = nullptr);
 
 // Runs one `lpv` command in this process, echoing it as a user would type it.
 int call(const char* name, int (*command)(Args), std::vector<std::string> args);

@@ -86,7 +86,6 @@ int runReportShard(const ReportOptions& o, const reference::ShardSpec& shard) {
     const auto plans = planAll(o, shard.count);
     if (!plans)
         return kFailure;
-    const std::string shardText = reference::formatShard(shard);
     if (anyReferenceMissing(*plans, o)) {
         for (const ScenePlan& plan : *plans)
             for (const PlannedReference& ref : plan.references) {
@@ -97,9 +96,9 @@ int runReportShard(const ReportOptions& o, const reference::ShardSpec& shard) {
                     std::printf("reusing %s (this shard traced it already)\n", out.string().c_str());
                     continue;
                 }
-                std::vector<std::string> args = referenceArgs(plan, ref, out, o);
-                args.insert(args.end(), {"--shard", shardText});
-                if (call("reference", runReference, args) != kOk)
+                ReferenceCommand command = referenceCommandOf(plan, ref, out, o);
+                command.shard = shard;
+                if (runEchoed(command) != kOk)
                     return kFailure;
             }
         printNext(o, shard.count, "every shard traces its tiles of the references");
@@ -111,9 +110,10 @@ int runReportShard(const ReportOptions& o, const reference::ShardSpec& shard) {
             if (sweepDoneAlready(sweep.dir / "sweep.json", plan, sweep, o))
                 continue; // merged already
             ++ran;
-            std::vector<std::string> args = sweepArgs(plan, sweep, o);
-            args.insert(args.end(), {"--out", sweepShardDir(sweep, shard).string(), "--shard", shardText});
-            if (call("bench", benchSweep, args) != kOk)
+            SweepCommand command = sweepCommandOf(plan, sweep, o);
+            command.outDir = sweepShardDir(sweep, shard);
+            command.shard = shard;
+            if (runEchoed(command) != kOk)
                 return kFailure;
         }
     if (ran == 0) {

@@ -3,6 +3,7 @@
 // measured against the path-traced reference (indirect irradiance and final
 // image); written as CSV, JSON, a Markdown report and PNG plots.
 #include "BenchReport.h"
+#include "BenchSweepCommand.h"
 #include "lpv/bench/Sweep.h"
 #include "lpv/bench/SweepOutput.h"
 #include "BenchSweepShard.h"
@@ -63,18 +64,18 @@ marked) and crops.png (reference and each setting's indirect light).
 }
 
 int benchSweep(Args args) {
-    RenderRequest request;
-    request.cameraName = args.option("--camera");
-    std::vector<std::string> sets = args.options("--set");
-    const std::vector<std::string> sweeps = args.options("--sweep");
-    const auto referenceFile = args.option("--reference");
-    const fs::path outDir = args.option("--out").value_or("bench-sweep");
+    SweepCommand c;
+    c.cameraName = args.option("--camera");
+    c.sets = args.options("--set");
+    c.sweeps = args.options("--sweep");
+    c.referenceFile = args.option("--reference");
+    c.outDir = args.option("--out").value_or("bench-sweep");
     const auto width = parseCount(args.option("--width").value_or("320"), 1);
     const auto height = parseCount(args.option("--height").value_or("180"), 1);
     const auto frames = parseCount(args.option("--frames").value_or("20"), 1);
     const auto warmup = parseCount(args.option("--warmup").value_or("3"), 0);
-    const auto spp = args.option("--spp");
-    const auto seconds = args.option("--max-seconds");
+    c.spp = args.option("--spp");
+    c.seconds = args.option("--max-seconds");
     const auto shardText = args.option("--shard");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "bench");
@@ -86,20 +87,38 @@ int benchSweep(Args args) {
     if (!width || !height || !frames || !warmup)
         return usageError("--width, --height and --frames must be positive integers, --warmup zero or more",
                           "bench");
-    if (sweeps.empty())
+    if (c.sweeps.empty())
         return usageError("give at least one --sweep KEY=V1,V2,...", "bench");
-    reference::ShardSpec shard;
     if (shardText) {
         auto parsed = reference::parseShard(*shardText);
         if (!parsed)
             return usageError(parsed.error().message, "bench");
-        shard = *parsed;
+        c.shard = *parsed;
         // Every shard must be measured against one and the same reference.
-        if (!referenceFile)
+        if (!c.referenceFile)
             return usageError("--shard needs --reference REF.exr: every shard is measured against the one "
                               "reference (trace it first, sharded too: `lpv reference --shard`, `lpv merge`)",
                               "bench");
     }
+    c.projectFile = pos.front();
+    c.width = *width;
+    c.height = *height;
+    c.frames = *frames;
+    c.warmup = *warmup;
+    return runSweepCommand(c);
+}
+
+int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
+    RenderRequest request;
+    request.cameraName = c.cameraName;
+    const std::vector<std::string>& sets = c.sets;
+    const std::vector<std::string>& sweeps = c.sweeps;
+    const std::optional<std::string>& referenceFile = c.referenceFile;
+    const fs::path& outDir = c.outDir;
+    const std::optional<int> width = c.width, height = c.height, frames = c.frames, warmup = c.warmup;
+    const std::optional<std::string>& spp = c.spp;
+    const std::optional<std::string>& seconds = c.seconds;
+    const reference::ShardSpec& shard = c.shard;
     std::vector<std::string> all = sets;
     all.insert(all.end(), sweeps.begin(), sweeps.end());
     if (spp)
@@ -129,7 +148,7 @@ int benchSweep(Args args) {
     request.sets.push_back("lpv.reuse=false");
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
-    request.projectFile = pos.front();
+    request.projectFile = c.projectFile;
     int exitCode = kOk;
     auto loadedProject = loadProjectWithSets(request.projectFile, request.sets, "bench", exitCode);
     if (!loadedProject)
@@ -255,6 +274,8 @@ int benchSweep(Args args) {
     }
     if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref))
         return kFailure;
+    if (runsOut)
+        *runsOut = std::move(runs);
     return kOk;
 }
 

@@ -93,19 +93,20 @@ std::optional<TracedReference> traceReference(const scene::Project& project, con
 }
 
 int runReference(Args args) {
+    ReferenceCommand c;
     auto output = args.option("--output");
     if (auto o = args.option("-o"))
         output = o;
     const auto widthText = args.option("--width");
     const auto heightText = args.option("--height");
     const auto threadsText = args.option("--threads");
-    const auto spp = args.option("--spp");
-    const auto seconds = args.option("--max-seconds");
-    const auto bounces = args.option("--bounces");
-    const auto cameraName = args.option("--camera");
+    c.spp = args.option("--spp");
+    c.seconds = args.option("--max-seconds");
+    c.bounces = args.option("--bounces");
+    c.cameraName = args.option("--camera");
     const auto shardText = args.option("--shard");
-    const bool preview = args.flag("--preview");
-    std::vector<std::string> sets = args.options("--set");
+    c.preview = args.flag("--preview");
+    c.sets = args.options("--set");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "reference");
     if (auto unknown = args.unknownOption())
@@ -124,13 +125,31 @@ int runReference(Args args) {
         return usageError("--width and --height must be positive integers", "reference");
     if (!threads)
         return usageError("--threads must be a whole number", "reference");
-    reference::ShardSpec shard;
     if (shardText) {
         auto parsed = reference::parseShard(*shardText);
         if (!parsed)
             return usageError(parsed.error().message, "reference");
-        shard = *parsed;
+        c.shard = *parsed;
     }
+    c.projectFile = pos.front();
+    c.output = *output;
+    c.width = *width;
+    c.height = *height;
+    c.threads = *threads;
+    return runReferenceCommand(c);
+}
+
+int runReferenceCommand(const ReferenceCommand& c) {
+    std::vector<std::string> sets = c.sets;
+    const auto& spp = c.spp;
+    const auto& seconds = c.seconds;
+    const auto& bounces = c.bounces;
+    const auto& shard = c.shard;
+    const std::vector<std::string> pos{c.projectFile};
+    const std::optional<std::string> output = c.output;
+    const std::optional<int> width = c.width, height = c.height, threads = c.threads;
+    const bool preview = c.preview;
+    const auto& cameraName = c.cameraName;
     // The flags are shorthands for registry parameters: one place checks their ranges.
     if (spp)
         sets.push_back("reference.samplesPerPixel=" + *spp);

@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace lpv::cli {
 
@@ -29,5 +31,18 @@ std::optional<TracedReference> traceReference(const scene::Project& project,
                                                         const std::filesystem::path& projectFile,
                                                         const scene::Camera& camera,
                                                         const ReferenceRequest& request);
+
+// `lpv reference` as a function of its options (what `lpv bench report` runs):
+// traces, writes the EXR with the settings in its header, prints as the command.
+struct ReferenceCommand {
+    std::string projectFile;
+    std::string output; // .exr
+    int width = 320, height = 180, threads = 0;
+    std::optional<std::string> spp, seconds, bounces, cameraName;
+    std::vector<std::string> sets; // KEY=VALUE
+    reference::ShardSpec shard;
+    bool preview = false;
+};
+int runReferenceCommand(const ReferenceCommand& command);
 
 } // namespace lpv::cli

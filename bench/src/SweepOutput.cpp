@@ -7,6 +7,8 @@
 #include "lpv/reference/Preview.h"
 #include "lpv/scene/Project.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -38,21 +40,14 @@ double numeric(const std::string& value, std::size_t index) {
     return double(index); // enum values: their position in the sweep
 }
 
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s)
-        out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-    return out + "\"";
-}
 
-std::string metricsJson(const reference::ErrorMetrics& m) {
-    char buf[256];
-    std::snprintf(
-        buf, sizeof buf,
-        "{\"relMse\": %.6g, \"noiseRelMse\": %.6g, \"mare\": %.6g, \"noiseMare\": %.6g, \"ssim\": %.6g, "
-        "\"meanTest\": %.6g, \"meanReference\": %.6g}",
-        m.relMse, m.noiseRelMse, m.mare, m.noiseMare, m.ssim, m.meanTest, m.meanReference);
-    return buf;
+// Doubles written as nlohmann writes them, the shortest text that reads back
+// to the same bits: a report read from sweep.json (--resume, a merged
+// shard) has the figures of the sweep that wrote it, exactly.
+nlohmann::ordered_json metricsJson(const reference::ErrorMetrics& m) {
+    return {{"relMse", m.relMse},     {"noiseRelMse", m.noiseRelMse},     {"mare", m.mare},
+            {"noiseMare", m.noiseMare}, {"ssim", m.ssim},                 {"meanTest", m.meanTest},
+            {"meanReference", m.meanReference}};
 }
 
 std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::string>& keys,
@@ -87,27 +82,31 @@ std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::s
 
 std::string sweepJson(const std::vector<SweepRun>& runs, const std::string& command,
                       const std::string& machine, const reference::ReferenceImage& ref) {
-    std::ostringstream out;
-    out << "{\n  \"command\": " << jsonString(command) << ",\n  \"machine\": " << jsonString(machine)
-        << ",\n  \"reference\": {\"width\": " << ref.width << ", \"height\": " << ref.height
-        << ", \"spp\": " << ref.samplesPerPixel << "},\n  \"runs\": [\n";
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        const SweepRun& r = runs[i];
-        out << "    {\"settings\": {";
-        for (std::size_t k = 0; k < r.settings.size(); ++k)
-            out << (k ? ", " : "") << jsonString(r.settings[k].first) << ": "
-                << jsonString(r.settings[k].second);
-        out << "}, \"bounces\": " << r.bounces << ", \"totalMs\": " << r.totalMs << ", \"passes\": [";
-        for (std::size_t p = 0; p < r.passes.size(); ++p)
-            out << (p ? ", " : "") << "{\"pass\": " << jsonString(r.passes[p].pass)
-                << ", \"medianMs\": " << r.passes[p].medianMs << ", \"minMs\": " << r.passes[p].minMs
-                << ", \"maxMs\": " << r.passes[p].maxMs << ", \"frames\": " << r.passes[p].samples << "}";
-        out << "],\n     \"indirect\": " << metricsJson(r.indirect)
-            << ", \"indirectOneBounce\": " << metricsJson(r.indirectOne)
-            << ", \"image\": " << metricsJson(r.image) << "}" << (i + 1 < runs.size() ? "," : "") << "\n";
+    using Json = nlohmann::ordered_json;
+    Json j{{"command", command},
+           {"machine", machine},
+           {"reference", {{"width", ref.width}, {"height", ref.height}, {"spp", ref.samplesPerPixel}}},
+           {"runs", Json::array()}};
+    for (const SweepRun& r : runs) {
+        Json settings = Json::object();
+        for (const auto& [key, value] : r.settings)
+            settings[key] = value;
+        Json passes = Json::array();
+        for (const auto& p : r.passes)
+            passes.push_back({{"pass", p.pass},
+                              {"medianMs", p.medianMs},
+                              {"minMs", p.minMs},
+                              {"maxMs", p.maxMs},
+                              {"frames", p.samples}});
+        j["runs"].push_back({{"settings", settings},
+                             {"bounces", r.bounces},
+                             {"totalMs", r.totalMs},
+                             {"passes", passes},
+                             {"indirect", metricsJson(r.indirect)},
+                             {"indirectOneBounce", metricsJson(r.indirectOne)},
+                             {"image", metricsJson(r.image)}});
     }
-    out << "  ]\n}\n";
-    return out.str();
+    return j.dump(2) + "\n";
 }
 
 std::string percent(double v) {

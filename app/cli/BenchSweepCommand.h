@@ -1,0 +1,32 @@
+#pragma once
+// `lpv bench PROJECT --sweep` as a function of its options, so that `lpv
+// bench report` runs its sweeps with the options in hand and gets the runs
+// back in memory instead of building an argument list and reading sweep.json.
+#include "BenchReport.h"
+
+#include "lpv/reference/Shards.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::cli {
+
+struct SweepCommand {
+    std::string projectFile;
+    std::optional<std::string> cameraName;
+    std::vector<std::string> sets;   // KEY=VALUE (a list sweeps the key too)
+    std::vector<std::string> sweeps; // KEY=V1,V2,...
+    std::optional<std::string> referenceFile; // else one is traced (spp, seconds)
+    std::filesystem::path outDir = "bench-sweep";
+    int width = 320, height = 180, frames = 20, warmup = 3;
+    std::optional<std::string> spp, seconds;
+    reference::ShardSpec shard;
+};
+
+// Prints what `lpv bench --sweep` prints and writes its files (or the shard's);
+// returns its exit code and, on success, the runs in `runsOut` (may be null).
+int runSweepCommand(const SweepCommand& command, std::vector<SweepRun>* runsOut = nullptr);
+
+} // namespace lpv::cli
