@@ -180,23 +180,21 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
     bool restart = true;
     for (double target = 5.0; solved < maxSeconds - 1e-6; target = std::min(2.0 * target, maxSeconds)) {
         const fs::path image = dir / ("radiosity-" + fixed(target, 0) + "s.exr");
-        std::vector<std::string> args{emissiveProject.string(),
-                                      "--max-seconds",
-                                      fixed(target - solved, 2),
-                                      "--residual",
-                                      "0.0001",
-                                      "--image",
-                                      image.string(),
-                                      "--width",
-                                      std::to_string(width),
-                                      "--height",
-                                      std::to_string(height),
-                                      "--progress-interval",
-                                      "10"};
-        if (restart)
-            args.push_back("--restart");
+        RadiosityCommand solve;
+        solve.projectFile = emissiveProject.string();
+        solve.maxSeconds = target - solved;
+        solve.residual = 0.0001;
+        solve.imageFile = image.string();
+        solve.width = width;
+        solve.height = height;
+        solve.progressInterval = 10.0;
+        solve.restart = restart;
         restart = false;
-        if (call("radiosity", runRadiosity, args) != kOk) {
+        std::printf("\n$ lpv radiosity %s --max-seconds %.2f --residual 0.0001 --image %s --width %d --height %d "
+                    "--progress-interval 10%s\n",
+                    solve.projectFile.c_str(), solve.maxSeconds, image.string().c_str(), width, height,
+                    solve.restart ? " --restart" : "");
+        if (runRadiosityCommand(solve) != kOk) {
             report.failures.push_back("radiosity run to " + fixed(target, 0) + " s");
             return;
         }

@@ -174,8 +174,8 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
     int maxBounces = 1;
-    for (const auto& c : combinations)
-        maxBounces = std::max(maxBounces, bench::bouncesOf(project.parameters, c));
+    for (const auto& combination : combinations)
+        maxBounces = std::max(maxBounces, bench::bouncesOf(project.parameters, combination));
     reference::ReferenceImage ref;
     if (referenceFile) {
         auto loaded = readReferenceExr(*referenceFile);
@@ -196,8 +196,8 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     } else {
         // Traced here with as many bounces as the most any run has; sweeping
         // lpv.bounces over more than one value above 1 needs one reference each.
-        for (const auto& c : combinations)
-            if (const int k = bench::bouncesOf(project.parameters, c); k > 1 && k != maxBounces)
+        for (const auto& combination : combinations)
+            if (const int k = bench::bouncesOf(project.parameters, combination); k > 1 && k != maxBounces)
                 return usageError("sweeping lpv.bounces over more than one value above 1 needs one reference per "
                                   "value: trace each with `lpv reference --bounces K` and sweep with --reference",
                                   "bench");

@@ -44,6 +44,20 @@ int runVersion(); // `lpv --version`, in VersionCommand.cpp
 int runVideo(Args args);
 int runPath(Args args);
 int runRadiosity(Args args); // `lpv radiosity`, in RadiosityCommand.cpp
+// `lpv radiosity` as a function of its options (what `lpv bench report` runs).
+struct RadiosityCommand {
+    std::string projectFile;
+    std::optional<std::string> output, imageFile, cameraName, hemicubeFile;
+    std::optional<double> residual; // else radiosity.convergenceThreshold
+    std::optional<double> refine;
+    double maxSeconds = 0.0;        // 0: no limit
+    double progressInterval = 1.0;
+    int width = 800, height = 600;
+    std::string view = "radiosity"; // radiosity, ambient, unshot, shot
+    bool restart = false, wireframe = false, useCpu = false;
+    std::vector<std::string> sets;
+};
+int runRadiosityCommand(const RadiosityCommand& command);
 int runReference(Args args); // `lpv reference`, in ReferenceCommand.cpp
 int runCompare(Args args);   // `lpv compare`, in CompareCommand.cpp
 int runMerge(Args args);     // `lpv merge`, in MergeCommand.cpp

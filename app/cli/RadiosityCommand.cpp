@@ -127,23 +127,24 @@ struct Milestones {
 } // namespace
 
 int runRadiosity(Args args) {
-    auto output = args.option("--output");
+    RadiosityCommand c;
+    c.output = args.option("--output");
     if (auto o = args.option("-o"))
-        output = o;
+        c.output = o;
     const auto residualText = args.option("--residual");
     const auto secondsText = args.option("--max-seconds");
     const auto refineText = args.option("--refine");
-    const auto imageFile = args.option("--image");
+    c.imageFile = args.option("--image");
     const auto viewText = args.option("--view");
-    const auto cameraName = args.option("--camera");
+    c.cameraName = args.option("--camera");
     const auto widthText = args.option("--width");
     const auto heightText = args.option("--height");
-    const auto hemicubeFile = args.option("--hemicube-image");
+    c.hemicubeFile = args.option("--hemicube-image");
     const auto intervalText = args.option("--progress-interval");
-    const bool restart = args.flag("--restart");
-    const bool wireframe = args.flag("--wireframe");
-    const bool useCpu = args.flag("--cpu");
-    const auto sets = args.options("--set");
+    c.restart = args.flag("--restart");
+    c.wireframe = args.flag("--wireframe");
+    c.useCpu = args.flag("--cpu");
+    c.sets = args.options("--set");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "radiosity");
     if (auto unknown = args.unknownOption())
@@ -158,35 +159,53 @@ int runRadiosity(Args args) {
     if (!maxSeconds || !interval || !width || !height || *width < 1 || *height < 1)
         return usageError("--max-seconds, --progress-interval, --width and --height must be positive numbers",
                           "radiosity");
-    const std::string view = viewText.value_or("radiosity");
-    if (view != "radiosity" && view != "ambient" && view != "unshot" && view != "shot")
+    c.view = viewText.value_or("radiosity");
+    if (c.view != "radiosity" && c.view != "ambient" && c.view != "unshot" && c.view != "shot")
         return usageError("--view must be radiosity, ambient, unshot or shot", "radiosity");
-    std::optional<double> refine;
-    if (refineText && !(refine = parseNumber(*refineText)))
+    if (refineText && !(c.refine = parseNumber(*refineText)))
         return usageError("--refine needs a positive number", "radiosity");
+    if (residualText) {
+        const auto r = parseNumber(*residualText);
+        if (!r || *r <= 0.0 || *r > 1.0)
+            return usageError("--residual must be in (0, 1]", "radiosity");
+        c.residual = *r;
+    }
+    c.projectFile = pos.front();
+    c.maxSeconds = *maxSeconds;
+    c.progressInterval = *interval;
+    c.width = int(*width);
+    c.height = int(*height);
+    return runRadiosityCommand(c);
+}
 
+int runRadiosityCommand(const RadiosityCommand& c) {
+    const auto& output = c.output;
+    const auto& imageFile = c.imageFile;
+    const auto& cameraName = c.cameraName;
+    const auto& hemicubeFile = c.hemicubeFile;
+    const auto& sets = c.sets;
+    const std::string& view = c.view;
+    const std::optional<double>& refine = c.refine;
+    const bool restart = c.restart, wireframe = c.wireframe, useCpu = c.useCpu;
+    const std::optional<double> maxSeconds = c.maxSeconds, interval = c.progressInterval, width = c.width,
+                                height = c.height;
+    const std::vector<std::string> pos{c.projectFile};
     const std::filesystem::path projectFile = pos.front();
     int exitCode = kFailure;
     auto project = loadProjectWithSets(projectFile.string(), sets, "radiosity", exitCode);
     if (!project)
         return exitCode;
     const scene::ParameterSet& params = project->parameters;
-    double residualTarget = params.getFloat("radiosity.convergenceThreshold");
-    if (residualText) {
-        const auto r = parseNumber(*residualText);
-        if (!r || *r <= 0.0 || *r > 1.0)
-            return usageError("--residual must be in (0, 1]", "radiosity");
-        residualTarget = *r;
-    }
+    const double residualTarget = c.residual.value_or(params.getFloat("radiosity.convergenceThreshold"));
     scene::Camera camera = project->scene.cameras.empty() ? scene::framingCamera(project->scene)
                                                           : project->scene.cameras.front();
     if (cameraName) {
-        const scene::Camera* c = project->scene.findCamera(*cameraName);
-        if (!c) {
+        const scene::Camera* named = project->scene.findCamera(*cameraName);
+        if (!named) {
             std::cerr << "lpv: " << projectFile.string() << ": no camera named '" << *cameraName << "'\n";
             return kFailure;
         }
-        camera = *c;
+        camera = *named;
     }
 
     auto context = renderer::HeadlessContext::create();
