@@ -42,18 +42,8 @@ void SweepJob::post(std::function<void()> onGui) {
 void SweepJob::run(SweepJobSpec spec) {
     auto saved = std::make_shared<bench::SavedSweep>();
     saved->base = bench::settingsOf(spec.project.parameters); // the user's: what a click applies
-    bench::MeasuredSweepSpec measured;
-    measured.project = std::move(spec.project);
-    measured.projectDir = spec.projectDir;
-    measured.camera = spec.camera;
-    measured.combinations = spec.combinations;
-    measured.width = spec.width;
-    measured.height = spec.height;
-    measured.frames = spec.frames;
-    measured.warmup = spec.warmup;
-    measured.referenceSpp = spec.referenceSpp;
     // Timings of every pass every frame, not of the first frame's volumes again.
-    (void)measured.project.parameters.setFromText("lpv.reuse", "false", "sweep");
+    (void)spec.project.parameters.setFromText("lpv.reuse", "false", "sweep");
 
     saved->width = spec.width;
     saved->height = spec.height;
@@ -80,7 +70,7 @@ void SweepJob::run(SweepJobSpec spec) {
         saved->previews[std::size_t(index)] = preview;
         post([this, index, kept, image = toQImage(preview)] { emit runFinished(index, kept, image); });
     };
-    auto result = bench::measureSweep(measured, callbacks);
+    auto result = bench::measureSweep(spec, callbacks);
     running_ = false;
     if (!result) {
         const bool cancelled = result.error().code == scene::ErrorCode::Cancelled;

@@ -5,6 +5,7 @@
 // and per choice of lights the reference must trace to be like for like),
 // times and measures every setting, and reports progress with an estimate of
 // the time left. Results arrive on the GUI thread, one run at a time.
+#include "lpv/bench/MeasuredSweep.h"
 #include "lpv/bench/SavedSweep.h"
 
 #include <QImage>
@@ -18,17 +19,9 @@
 
 namespace lpv::editor {
 
-struct SweepJobSpec {
-    scene::Project project;             // the document's, with its parameters (the base)
-    std::filesystem::path projectDir;   // textures are read relative to it
-    scene::Camera camera;               // the view to measure
-    std::vector<std::vector<bench::Setting>> combinations; // {} = the current settings
-    int width = 160;
-    int height = 90;
-    int frames = 3;
-    int warmup = 1;
-    int referenceSpp = 512;
-};
+// What to sweep: the document's project (its parameters are the base), the
+// view, the combinations ({} = the current settings), size, frames, spp.
+using SweepJobSpec = bench::MeasuredSweepSpec;
 
 class SweepJob : public QObject {
     Q_OBJECT

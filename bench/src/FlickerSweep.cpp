@@ -1,5 +1,7 @@
 #include "lpv/bench/FlickerSweep.h"
 
+#include "Pixels.h"
+
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/reference/Flicker.h"
 #include "lpv/reference/Metrics.h"
@@ -15,13 +17,6 @@
 namespace lpv::bench {
 
 namespace {
-
-std::vector<glm::vec3> rgbOf(const std::vector<float>& rgba) {
-    std::vector<glm::vec3> out(rgba.size() / 4);
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
-    return out;
-}
 
 // Directional lights turned by `degrees` about +y, from their directions in `lights`.
 std::vector<scene::Light> turnedSun(const std::vector<scene::Light>& lights, float degrees) {

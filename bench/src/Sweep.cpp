@@ -1,5 +1,7 @@
 #include "lpv/bench/Sweep.h"
 
+#include "Pixels.h"
+
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/ForwardRenderer.h"
 
@@ -8,13 +10,6 @@
 namespace lpv::bench {
 
 namespace {
-
-std::vector<glm::vec3> rgbOf(const std::vector<float>& rgba) {
-    std::vector<glm::vec3> out(rgba.size() / 4);
-    for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
-    return out;
-}
 
 // One sweep's GL state: the context, the renderer with the scene uploaded.
 struct SweepRenderer {
