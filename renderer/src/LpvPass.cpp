@@ -49,6 +49,7 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     LpvSettings s;
     s.gridSize = params.getInt("lpv.gridSize");
     s.propagationSteps = params.getInt("lpv.propagationSteps");
+    s.stepsByCellSize = params.getEnum("lpv.cascadeSteps") == "byCellSize";
     s.injectionOffset = float(params.getFloat("lpv.injectionOffset"));
     s.occlusion = params.getBool("lpv.occlusion");
     s.occludeFirstStep = params.getBool("lpv.occlusionFirstStep");
@@ -542,6 +543,9 @@ void LpvPass::propagate(const LpvSettings& settings) {
     }
     for (int step = 0; step < settings.propagationSteps; ++step) {
         const int read = readIndex_, write = 1 - readIndex_;
+        // The cascades that still propagate are the first `active` (lpv.cascadeSteps);
+        // the others keep their accumulator and are not dispatched.
+        const int active = settings.cascadesAtStep(step, k);
         switch (settings.variant) {
         case LpvVariant::ComputeGather: {
             // The first step reads the injected per-channel volume and writes
@@ -557,7 +561,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
                                GL_RGBA32F);
             // 32 x 8 cells per work group: llvmpipe runs a group per task, and
             // 4x fewer tasks than 8 x 8 measured faster (docs/lpv.md).
-            glDispatchCompute(groups(n, 32), groups(n, 8), GLuint(n * k));
+            glDispatchCompute(groups(n, 32), groups(n, 8), GLuint(n * active));
             glMemoryBarrier(kComputeResults);
             if (capture_ && step + 1 == std::clamp(capture_->step, 0, settings.propagationSteps))
                 deinterleave(write); // the viewer reads the per-channel volume
@@ -570,7 +574,7 @@ void LpvPass::propagate(const LpvSettings& settings) {
             bindStepSources(scatterProgram, read, settings.occludesStep(step));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSumsBinding, volumes_.lpvSums.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
-            glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * k, 4));
+            glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * active, 4));
             {
                 // The next step's scale is recorded into the other slot, cleared first.
                 const GLuint zero = 0;
@@ -590,12 +594,12 @@ void LpvPass::propagate(const LpvSettings& settings) {
             setCascadeUniforms(rasterProgram);
             bindStepSources(rasterProgram, read, settings.occludesStep(step));
             if (settings.variant == LpvVariant::RasterGather) {
-                glDrawArraysInstanced(GL_TRIANGLES, 0, 3, n * k);
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 3, n * active);
             } else {
                 const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
                 for (GLint b = 0; b < 3; ++b)
                     glClearNamedFramebufferfv(fbo, GL_COLOR, b, zero);
-                glDrawArrays(GL_POINTS, 0, n * n * n * k * 6);
+                glDrawArrays(GL_POINTS, 0, n * n * n * active * 6);
             }
             break;
         }

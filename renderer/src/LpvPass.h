@@ -22,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <algorithm>
 #include <vector>
 
 namespace lpv::renderer {
@@ -34,6 +35,9 @@ const char* lpvVariantName(LpvVariant variant);
 struct LpvSettings {
     int gridSize = 32;
     int propagationSteps = 8;
+    // lpv.cascadeSteps = byCellSize: cascade k runs propagationSteps >> k steps
+    // (at least 1): cells twice as large carry light twice as far per step.
+    bool stepsByCellSize = false;
     float injectionOffset = 1.0f; // cells
     bool occlusion = true;
     // lpv.occlusionFirstStep: false = the first step ignores the GV (no
@@ -70,6 +74,21 @@ struct LpvSettings {
     bool visibilityRuns() const { return visibility && geometryVolumeRuns(); }
     // Whether propagation step `step` reads the GV (lpv.occlusionFirstStep).
     bool occludesStep(int step) const { return occlusion && (step > 0 || occludeFirstStep); }
+
+    // The steps cascade `cascade` propagates.
+    int stepsFor(int cascade) const {
+        if (!stepsByCellSize || propagationSteps == 0)
+            return propagationSteps;
+        return std::max(1, propagationSteps >> std::min(cascade, 30));
+    }
+    // How many cascades, from the finest, still propagate at `step` (never
+    // more coarse than fine: stepsFor does not grow with the cascade).
+    int cascadesAtStep(int step, int cascades) const {
+        int active = 0;
+        while (active < cascades && step < stepsFor(active))
+            ++active;
+        return active;
+    }
 
     static LpvSettings fromParameters(const scene::ParameterSet& params);
 };

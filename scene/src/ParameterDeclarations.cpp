@@ -59,6 +59,11 @@ std::vector<ParameterInfo> declareParameters() {
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
                 "Propagation iterations per cascade; light travels one cell per step",
                P::LpvPropagation | P::LpvBounces | P::Shading),
+        choice("lpv.cascadeSteps", "same", {"same", "byCellSize"}, "LPV",
+               "same: every cascade runs lpv.propagationSteps; byCellSize: each coarser cascade half as many as "
+               "the one inside it (at least 1), so light travels the same distance in every cascade for half "
+               "the propagation work",
+               P::LpvPropagation | P::LpvBounces | P::Shading),
         real("lpv.injectionOffset", 1.0, 0.0, 4.0, "cells", "LPV",
              "VPLs are moved this far along their normal before injection to avoid self-illumination",
                P::LpvInjection | P::LpvPropagation | P::LpvBounces | P::Shading),

@@ -492,3 +492,67 @@ TEST_F(LpvGLTest, InterleavedVolumesOnlyWhileTheComputeGatherRunsAndCapturesUnpa
     runGpu(s, rsm, LpvVariant::ComputeScatter, 6, true);
     EXPECT_EQ(pass_->allocatedBytes(), withoutInterleaved) << "freed when another variant runs";
 }
+
+// lpv.cascadeSteps = byCellSize (issue #25): cascade k propagates steps >> k
+// steps; every variant agrees with the CPU reference run for that many steps
+// on each cascade, and cascades that stopped keep their accumulator.
+TEST_F(LpvGLTest, CoarserCascadesRunFewerStepsAndMatchTheReference) {
+    const int n = 8;
+    const int steps = 6; // cascades run 6, 3, 1
+    std::vector<LpvCase> cases;
+    std::vector<std::vector<Texel>> tiles;
+    for (int k = 0; k < 3; ++k) {
+        const float cell = 0.25f * float(1 << k);
+        LpvCase s{{glm::vec3(-0.5f * cell * float(n)), cell, n}, 0.002f * float(1 << (2 * k))};
+        tiles.push_back(wallScene(s.grid, 120, 2.0f, unsigned(7 + k)));
+        cases.push_back(s);
+    }
+    std::size_t most = 0;
+    for (const auto& t : tiles)
+        most = std::max(most, t.size());
+    FakeRsm rsm(int(std::ceil(std::sqrt(double(most)))), tiles);
+    for (LpvVariant variant : kVariants) {
+        LpvSettings settings;
+        settings.gridSize = n;
+        settings.propagationSteps = steps;
+        settings.stepsByCellSize = true;
+        settings.occlusion = true;
+        settings.gvFromCamera = false;
+        settings.variant = variant;
+        settings.requestedCascades = 3;
+        settings.rsmCascades = 3;
+        ASSERT_EQ(settings.stepsFor(0), 6);
+        ASSERT_EQ(settings.stepsFor(1), 3);
+        ASSERT_EQ(settings.stepsFor(2), 1);
+        LpvRsmInput input;
+        for (const LpvCase& s : cases) {
+            input.cascades.push_back(LpvCascade{s.grid.origin, s.grid.cellSize, s.grid.n});
+            input.texelArea.push_back(s.texelArea);
+        }
+        input.tileSize = rsm.tileSize;
+        input.position = rsm.position.id();
+        input.normal = rsm.normal.id();
+        input.flux = rsm.flux.id();
+        input.towardSun = cases[0].towardSun;
+        timer_.beginFrame();
+        auto ok = pass_->run(settings, input, nullptr, timer_);
+        ASSERT_TRUE(ok.has_value()) << ok.error().describe();
+        for (int k = 0; k < 3; ++k) {
+            const ref::ShGrid expected = referenceAccumulator(cases[std::size_t(k)], tiles[std::size_t(k)],
+                                                              settings.stepsFor(k), true);
+            const Difference d = compare(expected, pass_->readAccumulator(k));
+            std::cout << "[ figures ] " << lpvVariantName(variant) << " cascade " << k << ", "
+                      << settings.stepsFor(k) << " steps: max |GPU - CPU| = " << d.maxAbs << " of max "
+                      << d.maxValue << " (relative " << d.relative() << ")\n";
+            EXPECT_GT(d.maxValue, 0.01f);
+            EXPECT_LT(d.relative(), 2e-5f) << lpvVariantName(variant) << " cascade " << k;
+            // Not the full step count: the coarse cascades' light differs from 6 steps' by far more.
+            if (k > 0) {
+                const Difference full = compare(referenceAccumulator(cases[std::size_t(k)], tiles[std::size_t(k)],
+                                                                     steps, true),
+                                                pass_->readAccumulator(k));
+                EXPECT_GT(full.relative(), 1e-3f) << "cascade " << k << " ran all the steps";
+            }
+        }
+    }
+}
