@@ -26,6 +26,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDialog>
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
@@ -244,6 +245,19 @@ void MainWindow::createDocks() {
     sweeps_ = new SweepPanel(document_, [this] { return viewport_->viewCamera(); }, this);
     QDockWidget* sweepsDock = addDock(sweeps_, "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, sweepsDock);
+    // Timings on llvmpipe are only the settings' own when nothing else renders.
+    connect(sweeps_, &SweepPanel::timingChanged, this, [this](bool timing) {
+        viewport_->setFramesPaused(timing, tr("a sweep is timing (Sweeps dock)"));
+        if (accuracy_ && timing && accuracy_->traceBox()->isChecked()) {
+            accuracy_->traceBox()->setChecked(false);
+            resumeAccuracyTrace_ = true;
+        } else if (accuracy_ && !timing && resumeAccuracyTrace_) {
+            accuracy_->traceBox()->setChecked(true);
+            resumeAccuracyTrace_ = false;
+        }
+        if (accuracy_)
+            accuracy_->traceBox()->setEnabled(!timing);
+    });
     connect(sweeps_, &SweepPanel::logMessage, this, [this](const QString& message, bool warning) {
         log_->add(warning ? EventLog::Severity::Warning : EventLog::Severity::Info, tr("Sweep"), message);
     });

@@ -127,6 +127,7 @@ private:
     EffectsPanel* effects_ = nullptr;
     RadiosityPanel* radiosity_ = nullptr;
     SweepPanel* sweeps_ = nullptr;
+    bool resumeAccuracyTrace_ = false; // the Accuracy trace was on when a sweep started
     AccuracyPanel* accuracy_ = nullptr;
     PropertyPanel* properties_ = nullptr;
     ParameterInspector* inspector_ = nullptr;

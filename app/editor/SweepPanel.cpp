@@ -327,6 +327,7 @@ void SweepPanel::startSweep() {
     run_->setEnabled(false);
     stop_->setEnabled(true);
     progress_->setValue(0);
+    emit timingChanged(true);
     status_->setText(tr("Starting: %1 settings").arg(runningCombinations_.size()));
 }
 
@@ -353,6 +354,7 @@ void SweepPanel::onFinished(std::shared_ptr<const bench::SavedSweep> sweep) {
     referencePreview_ = toQImage(sweep_->referencePreview);
     run_->setEnabled(true);
     stop_->setEnabled(false);
+    emit timingChanged(false);
     rebuildChart();
     const QString path = document_->path();
     if (!path.isEmpty())
@@ -368,6 +370,7 @@ void SweepPanel::onFinished(std::shared_ptr<const bench::SavedSweep> sweep) {
 void SweepPanel::onFailed(const QString& message, bool cancelled) {
     run_->setEnabled(true);
     stop_->setEnabled(false);
+    emit timingChanged(false);
     status_->setText(message);
     emit logMessage(tr("Sweep: %1").arg(message), !cancelled);
     emit sweepFinished();

@@ -74,6 +74,9 @@ public:
 
 signals:
     void sweepFinished();
+    // A sweep started (true) or ended (false): while it times, other
+    // rendering should wait (MainWindow pauses the view and the Accuracy trace).
+    void timingChanged(bool timing);
     // A line for the Log dock (saved, failed, stopped).
     void logMessage(const QString& text, bool warning);
 

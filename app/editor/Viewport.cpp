@@ -118,7 +118,7 @@ void Viewport::scheduleReference(bool sceneChanged) {
 }
 
 void Viewport::restartReference() {
-    if (!showsReference())
+    if (!showsReference() || paused_)
         return;
     // Half the view's size: four times the samples per second, and the noise
     // it shows is still the noise of what is traced.
@@ -237,7 +237,21 @@ void Viewport::prepareSceneChanges() {
         requestMissingTextures();
 }
 
+void Viewport::setFramesPaused(bool paused, const QString& why) {
+    if (paused_ == paused)
+        return;
+    paused_ = paused;
+    pausedWhy_ = why;
+    if (paused)
+        reference_.stop();
+    else
+        scheduleReference(true);
+    update();
+}
+
 void Viewport::requestFrameIfChanged() {
+    if (paused_)
+        return; // the state is compared again when the pause ends
     if (!worker_) {
         // Started with the first frame a shown view asks for: a window that
         // is never shown (a test, a screenshot of a dock) compiles no shaders.
@@ -360,6 +374,13 @@ std::optional<glm::vec3> Viewport::selectionPivot() const {
 }
 
 void Viewport::drawOverlay(QPainter& painter) {
+    if (paused_) {
+        const QString text = tr("Paused: %1").arg(pausedWhy_);
+        const QRectF box(8, height() - 32, painter.fontMetrics().horizontalAdvance(text) + 16, 24);
+        painter.fillRect(box, QColor(0, 0, 0, 160));
+        painter.setPen(Qt::white);
+        painter.drawText(box, Qt::AlignCenter, text);
+    }
     painter.setRenderHint(QPainter::Antialiasing);
     const scene::Scene& s = document_->scene();
     const Selection& sel = document_->selection();

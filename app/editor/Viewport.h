@@ -101,6 +101,13 @@ public:
     void setVisualizerRequest(const VisualizerRequest& request);
     const VisualizerRequest& visualizerRequest() const { return vizRequest_; }
 
+    // While a sweep times its settings (the Sweeps dock), the view asks for
+    // no frame and its live reference stops: on llvmpipe they would share the
+    // cores with the sweep and its timings would not be the settings' own.
+    // The last frame stays shown with `why` over it; resuming renders again.
+    void setFramesPaused(bool paused, const QString& why = {});
+    bool framesPaused() const { return paused_; }
+
     // The Accuracy dock (issue #26): while on, every frame also reads back
     // its linear HDR image (hdrFrameRendered); off, frames pay nothing for it.
     void setHdrReadback(bool on);
@@ -220,6 +227,8 @@ private:
     QElapsedTimer flyClock_;
 
     bool hdrReadback_ = false;
+    bool paused_ = false;
+    QString pausedWhy_;
     QImage errorOverlay_;
     QImage comparisonLeft_, comparisonRight_;
     void drawComparisonSplit(QPainter& painter);

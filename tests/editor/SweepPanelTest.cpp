@@ -7,6 +7,7 @@
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
+#include "AccuracyPanel.h"
 #include "SweepPanel.h"
 #include "TestPaths.h"
 #include "Viewport.h"
@@ -15,6 +16,7 @@
 
 #include <QChart>
 #include <QApplication>
+#include <QCheckBox>
 #include <QChartView>
 #include <QDockWidget>
 #include <QProgressBar>
@@ -91,7 +93,9 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     QSignalSpy finished(panel, &SweepPanel::sweepFinished);
     panel->startSweep();
     EXPECT_TRUE(panel->sweepRunning());
+    EXPECT_TRUE(window.viewport()->framesPaused()) << "the view waits while the sweep times";
     QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 180000);
+    EXPECT_FALSE(window.viewport()->framesPaused());
     ASSERT_NE(panel->sweep(), nullptr) << panel->statusText().toStdString();
     const lpv::bench::SavedSweep& sweep = *panel->sweep();
     ASSERT_EQ(sweep.runs.size(), 3u);
@@ -172,7 +176,12 @@ TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
     panel->setSweepSize(64, 36, 2, 1, 8);
     QSignalSpy finished(panel, &SweepPanel::sweepFinished);
     QSignalSpy logged(panel, &SweepPanel::logMessage);
+    // The Accuracy dock's trace pauses while the sweep times, and comes back after.
+    QCheckBox* trace = window.accuracy()->traceBox();
+    trace->setChecked(true);
     panel->startSweep();
+    EXPECT_FALSE(trace->isChecked());
+    EXPECT_FALSE(trace->isEnabled());
     // Stop once the reference is traced and settings are running.
     QTRY_VERIFY_WITH_TIMEOUT(panel->statusText().startsWith("Setting"), 120000);
     panel->stopSweep();
@@ -183,6 +192,10 @@ TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
     ASSERT_FALSE(logged.isEmpty());
     EXPECT_FALSE(logged.last().at(1).toBool()) << "a stop the user asked for is not a warning";
     EXPECT_TRUE(panel->findChild<QPushButton*>("sweepRun")->isEnabled());
+    EXPECT_TRUE(trace->isChecked());
+    EXPECT_TRUE(trace->isEnabled());
+    EXPECT_FALSE(window.viewport()->framesPaused());
+    trace->setChecked(false);
 }
 
 int main(int argc, char** argv) {
