@@ -25,7 +25,9 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "brdf.glsl"
 #include "material.glsl"
 #include "shadow_sampling.glsl"
+#ifdef LPV_AREA_LIGHTS
 #include "area_light.glsl"
+#endif
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
@@ -62,6 +64,7 @@ void main() {
         vec3 l;
         vec3 irradianceColor;
         float dist = 1.0;
+#ifdef LPV_AREA_LIGHTS
         if (uLightType[i] == LIGHT_AREA) {
             // Exact diffuse irradiance of the polygon and the specular lobe by LTC (area_light.glsl).
             vec3 lightNormal = normalize(uLightDirection[i]);
@@ -79,6 +82,10 @@ void main() {
                         uLightRadiantColor[i] * visibility;
             continue;
         }
+#else
+        if (uLightType[i] == LIGHT_AREA)
+            continue; // this variant is used only for scenes without area lights
+#endif
         if (uLightType[i] == LIGHT_DIRECTIONAL) {
             l = -normalize(uLightDirection[i]);
             irradianceColor = uLightRadiantColor[i];

@@ -37,11 +37,17 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     std::vector<std::string> defines;
     if (!r.impl_->subsurfaceSampler)
         defines.push_back("LPV_NO_SUBSURFACE_SAMPLER 1");
-    auto forward = r.impl_->programs.get({{"forward.vert", "forward.frag"}, defines});
-    if (!forward) return std::unexpected(forward.error());
-    defines.push_back("LPV_AFTER_DEPTH_PREPASS 1");
-    auto forwardAfterPrepass = r.impl_->programs.get({{"forward.vert", "forward.frag"}, defines});
-    if (!forwardAfterPrepass) return std::unexpected(forwardAfterPrepass.error());
+    for (int area = 0; area < 2; ++area)
+        for (int afterPrepass = 0; afterPrepass < 2; ++afterPrepass) {
+            std::vector<std::string> variant = defines;
+            if (area)
+                variant.push_back("LPV_AREA_LIGHTS 1");
+            if (afterPrepass)
+                variant.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+            auto program = r.impl_->programs.get({{"forward.vert", "forward.frag"}, variant});
+            if (!program) return std::unexpected(program.error());
+            r.impl_->forwardPrograms[area][afterPrepass] = *program;
+        }
     auto prepass = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {}});
     if (!prepass) return std::unexpected(prepass.error());
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
@@ -59,8 +65,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     r.impl_->lpv.emplace(std::move(*lpv));
     r.impl_->shadows.emplace(std::move(*shadows));
     r.impl_->rsm.emplace(std::move(*rsm));
-    r.impl_->forwardProgram = *forward;
-    r.impl_->forwardAfterPrepassProgram = *forwardAfterPrepass;
     r.impl_->depthPrepassProgram = *prepass;
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();

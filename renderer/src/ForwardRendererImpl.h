@@ -54,8 +54,11 @@ inline EffectDecision skippedBecause(std::string why) {
 struct ForwardRenderer::Impl {
     // The forward and tonemap programs, built at create(); their uniform locations looked up once.
     ProgramCache programs;
-    const CachedProgram* forwardProgram = nullptr;
-    const CachedProgram* forwardAfterPrepassProgram = nullptr; // depth tested before shading
+    // forward.frag in four variants: [area lights][after the depth pre-pass].
+    // The area-light code (polygon clipping, LTC) is compiled only into the
+    // variant for scenes that have area lights: on llvmpipe its mere presence
+    // made every pixel's shading 1.5-1.9x slower (docs/renderer.md).
+    const CachedProgram* forwardPrograms[2][2] = {};
     const CachedProgram* depthPrepassProgram = nullptr;
     const CachedProgram* tonemapProgram = nullptr;
     std::optional<ShadowPass> shadows;

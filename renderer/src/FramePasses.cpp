@@ -250,7 +250,10 @@ void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
 void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPrepass) {
     const FrameContext& frame = ctx.frame;
     // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
-    const CachedProgram& shader = afterPrepass ? *forwardAfterPrepassProgram : *forwardProgram;
+    const bool areaLights = std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) {
+        return l.type == scene::LightType::Area;
+    });
+    const CachedProgram& shader = *forwardPrograms[areaLights ? 1 : 0][afterPrepass ? 1 : 0];
     const GLuint fp = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
