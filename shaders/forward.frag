@@ -1,4 +1,8 @@
 #version 450 core
+// Variants (ForwardRenderer::Impl::forwardVariant): LPV_AREA_LIGHTS compiles
+// the area-light code in; LPV_NO_VISIBILITY, LPV_NO_GLOSSY and
+// LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
+// code that is compiled in but never taken still slows every pixel.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
@@ -84,7 +88,7 @@ void main() {
         }
 #else
         if (uLightType[i] == LIGHT_AREA)
-            continue; // this variant is used only for scenes without area lights
+            continue; // this variant shades scenes without area lights
 #endif
         if (uLightType[i] == LIGHT_DIRECTIONAL) {
             l = -normalize(uLightDirection[i]);
@@ -123,14 +127,18 @@ void main() {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
         radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
         // Subsurface LPV: light that crossed a translucent material leaves through its other side.
+#ifndef LPV_NO_SUBSURFACE_LOOKUP
         if (uTranslucency > 0.0)
             radiance += diffuseAlbedo / PI * lpvSubsurfaceIrradiance(vWorldPos, n) * uTranslucency;
+#endif
     }
+#ifndef LPV_NO_GLOSSY
     // Glossy reflections: the LPV ray-marched along the reflection vector (lpv_glossy.glsl).
     if (uOutputView == 0 && lpvGlossyRuns(uGlossiness)) {
         vec3 f0 = uShadingModel == 1 ? mix(vec3(0.04), s.albedo, s.metallic) : max(s.specular, vec3(0.04));
         radiance += lpvGlossyReflection(vWorldPos, n, v, f0, uGlossiness) * s.occlusion;
     }
+#endif
     if (uShadowCascadeTint != 0 && uSunShadowLight >= 0) {
         const vec3 tints[6] = vec3[6](vec3(1.0, 0.35, 0.35), vec3(0.35, 0.86, 0.35), vec3(0.35, 0.6, 1.0),
                                       vec3(1.0, 0.82, 0.24), vec3(0.86, 0.35, 1.0), vec3(0.31, 0.9, 0.9));

@@ -92,8 +92,10 @@ vec3 lpvIrradianceRaw(int k, vec3 x, vec3 n) {
     // trilinear filter takes half its taps from cells behind the surface
     // (outside the room, inside the wall). lpvref::irradianceAt's twin.
     x += n * (uLpvLookupOffset * uLpvCellSize[k]);
+#ifndef LPV_NO_VISIBILITY // forward.frag's variant for frames without the moments
     if (uLpvVisibility != 0)
         return lpvIrradianceVisible(k, x, n);
+#endif
     float grid = float(uLpvGridSize);
     vec3 u = clamp((x - uLpvOrigin[k]) / uLpvCellSize[k], vec3(0.5), vec3(grid - 0.5));
     // Cascades are stacked along z: clamping keeps the filter inside cascade k.

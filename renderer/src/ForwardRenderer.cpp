@@ -37,17 +37,16 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     std::vector<std::string> defines;
     if (!r.impl_->subsurfaceSampler)
         defines.push_back("LPV_NO_SUBSURFACE_SAMPLER 1");
-    for (int area = 0; area < 2; ++area)
-        for (int afterPrepass = 0; afterPrepass < 2; ++afterPrepass) {
-            std::vector<std::string> variant = defines;
-            if (area)
-                variant.push_back("LPV_AREA_LIGHTS 1");
-            if (afterPrepass)
-                variant.push_back("LPV_AFTER_DEPTH_PREPASS 1");
-            auto program = r.impl_->programs.get({{"forward.vert", "forward.frag"}, variant});
-            if (!program) return std::unexpected(program.error());
-            r.impl_->forwardPrograms[area][afterPrepass] = *program;
-        }
+    r.impl_->forwardDefines = defines;
+    for (int afterPrepass = 0; afterPrepass < 2; ++afterPrepass) {
+        std::vector<std::string> full = defines;
+        full.push_back("LPV_AREA_LIGHTS 1");
+        if (afterPrepass)
+            full.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+        auto program = r.impl_->programs.get({{"forward.vert", "forward.frag"}, full});
+        if (!program) return std::unexpected(program.error());
+        r.impl_->forwardFull[afterPrepass] = *program;
+    }
     auto prepass = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {}});
     if (!prepass) return std::unexpected(prepass.error());
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});

@@ -54,11 +54,14 @@ inline EffectDecision skippedBecause(std::string why) {
 struct ForwardRenderer::Impl {
     // The forward and tonemap programs, built at create(); their uniform locations looked up once.
     ProgramCache programs;
-    // forward.frag in four variants: [area lights][after the depth pre-pass].
-    // The area-light code (polygon clipping, LTC) is compiled only into the
-    // variant for scenes that have area lights: on llvmpipe its mere presence
-    // made every pixel's shading 1.5-1.9x slower (docs/renderer.md).
-    const CachedProgram* forwardPrograms[2][2] = {};
+    // forward.frag with every feature, with and without the depth pre-pass:
+    // built at create() so a renderer that exists can shade. Frames use the
+    // variant with only the features they need (forwardVariant): on llvmpipe
+    // code that is compiled in but not taken still slows every pixel
+    // (docs/renderer.md).
+    const CachedProgram* forwardFull[2] = {};
+    std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
+    const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup);
     const CachedProgram* depthPrepassProgram = nullptr;
     const CachedProgram* tonemapProgram = nullptr;
     std::optional<ShadowPass> shadows;

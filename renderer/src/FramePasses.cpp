@@ -247,13 +247,30 @@ void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy,
+                                                           bool subsurfaceLookup) {
+    ProgramVariant variant{{"forward.vert", "forward.frag"}, forwardDefines};
+    if (std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) { return l.type == scene::LightType::Area; }))
+        variant.defines.push_back("LPV_AREA_LIGHTS 1");
+    if (!lpv->visibilityBound())
+        variant.defines.push_back("LPV_NO_VISIBILITY 1");
+    if (!glossy)
+        variant.defines.push_back("LPV_NO_GLOSSY 1");
+    if (!subsurfaceLookup)
+        variant.defines.push_back("LPV_NO_SUBSURFACE_LOOKUP 1");
+    if (afterPrepass)
+        variant.defines.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+    // Built on first use (a few hundred ms on llvmpipe); the full shader,
+    // built at create(), shades the same image should a variant not build.
+    auto program = programs.get(variant);
+    return program ? **program : *forwardFull[afterPrepass ? 1 : 0];
+}
+
 void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPrepass) {
     const FrameContext& frame = ctx.frame;
     // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
-    const bool areaLights = std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) {
-        return l.type == scene::LightType::Area;
-    });
-    const CachedProgram& shader = *forwardPrograms[areaLights ? 1 : 0][afterPrepass ? 1 : 0];
+    const CachedProgram& shader =
+        forwardVariant(frame, afterPrepass, glossyRuns, subsurface && lpv->active());
     const GLuint fp = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);

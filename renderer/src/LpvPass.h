@@ -169,6 +169,8 @@ class LpvPass {
     void reuse();
 
     bool active() const { return active_; }
+    // Whether shading reads the visibility moments this frame (bindForShading sets uLpvVisibility).
+    bool visibilityBound() const { return active_ && visibilityActive_ && visibilityReady_; }
     // One line: what ran and why (or why not), e.g. for `lpv render`.
     const std::string& note() const { return note_; }
 
