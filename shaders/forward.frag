@@ -1,7 +1,7 @@
 #version 450 core
 // Variants (ForwardRenderer::Impl::forwardVariant): LPV_AREA_LIGHTS compiles
-// the area-light code in; LPV_NO_VISIBILITY, LPV_NO_GLOSSY and
-// LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
+// the area-light code in; LPV_NO_LOCAL_SHADOWS, LPV_NO_VISIBILITY,
+// LPV_NO_GLOSSY and LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
 // code that is compiled in but never taken still slows every pixel.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),

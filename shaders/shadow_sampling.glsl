@@ -221,9 +221,11 @@ float shadowVisibility(int lightIndex, vec3 worldPos, vec3 n, vec3 toLight, floa
         return sunVisibility(worldPos, n, toLight);
     if (lightIndex < 0 || lightIndex >= MAX_LIGHTS)
         return 1.0;
+#ifndef LPV_NO_LOCAL_SHADOWS // forward.frag's variant for scenes whose local lights cast none
     if (uSpotShadowLayer[lightIndex] >= 0)
         return spotVisibility(uSpotShadowLayer[lightIndex], worldPos, n, toLight);
     if (uPointShadowLayer[lightIndex] >= 0)
         return pointVisibility(uPointShadowLayer[lightIndex], worldPos, n, toLight);
+#endif
     return 1.0;
 }

@@ -252,6 +252,8 @@ const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& f
     ProgramVariant variant{{"forward.vert", "forward.frag"}, forwardDefines};
     if (std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) { return l.type == scene::LightType::Area; }))
         variant.defines.push_back("LPV_AREA_LIGHTS 1");
+    if (!shadows->hasLocalShadows())
+        variant.defines.push_back("LPV_NO_LOCAL_SHADOWS 1");
     if (!lpv->visibilityBound())
         variant.defines.push_back("LPV_NO_VISIBILITY 1");
     if (!glossy)

@@ -50,6 +50,10 @@ public:
                                    : spotMap_.texture ? spotMap_.texture.id() : pointMap_.texture.id();
     }
 
+    // Whether the last render() gave any spot or point light a shadow map
+    // (shading leaves their sampling code out otherwise: LPV_NO_LOCAL_SHADOWS).
+    bool hasLocalShadows() const { return !lights_.spots.empty() || !lights_.points.empty(); }
+
     // The sun's cascades of the last frame (empty without a shadowed sun).
     const std::vector<ShadowCascade>& cascades() const { return cascades_; }
 
