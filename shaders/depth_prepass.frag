@@ -10,6 +10,8 @@ in vec4 vTangent;
 in vec2 vUv;
 
 void main() {
+#ifndef PREPASS_OPAQUE // opaque materials use the variant that never discards: early depth tests
     if (materialCutOut(vUv))
         discard;
+#endif
 }

@@ -49,6 +49,9 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     }
     auto prepass = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {}});
     if (!prepass) return std::unexpected(prepass.error());
+    auto prepassOpaque = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {"PREPASS_OPAQUE 1"}});
+    if (!prepassOpaque) return std::unexpected(prepassOpaque.error());
+    r.impl_->depthPrepassOpaqueProgram = *prepassOpaque;
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
     if (!tonemap) return std::unexpected(tonemap.error());
     auto rsm = RsmPass::create();

@@ -62,7 +62,8 @@ struct ForwardRenderer::Impl {
     const CachedProgram* forwardFull[2] = {};
     std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
     const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup);
-    const CachedProgram* depthPrepassProgram = nullptr;
+    const CachedProgram* depthPrepassProgram = nullptr;       // cuts alpha-masked holes
+    const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
     const CachedProgram* tonemapProgram = nullptr;
     std::optional<ShadowPass> shadows;
     std::optional<RsmPass> rsm;

@@ -227,8 +227,6 @@ void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
 
 void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
     const FrameContext& frame = ctx.frame;
-    const CachedProgram& shader = *depthPrepassProgram;
-    const GLuint program = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
     glEnable(GL_DEPTH_TEST);
@@ -237,13 +235,22 @@ void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
     glDisable(GL_CULL_FACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glClear(GL_DEPTH_BUFFER_BIT);
-    glUseProgram(program);
-    glProgramUniformMatrix4fv(program, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-    // Opaque and masked surfaces only: blended ones neither hide nor write depth.
+    // Opaque and masked surfaces only: blended ones neither hide nor write
+    // depth. Opaque ones through the program that never discards, so their
+    // depth is tested early (on llvmpipe a discard defers it).
     const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    const auto firstBlended = std::ranges::find_if(items, [](const DrawItem* d) { return d->bucket == DrawBucket::Blended; });
-    const std::vector<const DrawItem*> solid(items.begin(), firstBlended);
-    sceneGpu->draw(program, solid, [&](std::uint32_t m) { materialGpu->bind(program, m, MaterialBindMode::Coverage); });
+    std::vector<const DrawItem*> opaque, masked;
+    for (const DrawItem* d : items)
+        if (d->bucket != DrawBucket::Blended)
+            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    for (const auto& [shader, list] : {std::pair{depthPrepassOpaqueProgram, &opaque}, std::pair{depthPrepassProgram, &masked}}) {
+        if (list->empty())
+            continue;
+        const GLuint program = shader->id();
+        glUseProgram(program);
+        glProgramUniformMatrix4fv(program, shader->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        sceneGpu->draw(program, *list, [&](std::uint32_t m) { materialGpu->bind(program, m, MaterialBindMode::Coverage); });
+    }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 

@@ -18,6 +18,16 @@ using scene::makeError;
 
 namespace {
 
+// Opaque draw items, then the alpha-masked and blended ones, which must cut
+// holes: the opaque ones go through a program that never discards.
+std::pair<std::vector<const DrawItem*>, std::vector<const DrawItem*>> splitOpaque(
+    const std::vector<const DrawItem*>& items) {
+    std::pair<std::vector<const DrawItem*>, std::vector<const DrawItem*>> out;
+    for (const DrawItem* d : items)
+        (d->bucket == DrawBucket::Opaque ? out.first : out.second).push_back(d);
+    return out;
+}
+
 // The geometry shader's invocation count: one layer per invocation.
 constexpr int kMaxLayersPerPass = 8;
 
@@ -84,14 +94,19 @@ scene::Expected<ShadowPass> ShadowPass::create() {
     return pass;
 }
 
-scene::Expected<GLuint> ShadowPass::programFor(bool distance, int layers) {
+scene::Expected<GLuint> ShadowPass::programFor(bool distance, int layers, bool opaque) {
     if (layers < 1 || layers > kMaxLayersPerPass)
         return makeError(ErrorCode::OutOfRange, "render", "shadow layers",
                          std::to_string(layers) + " is outside 1.." + std::to_string(kMaxLayersPerPass));
-    Program& program = (distance ? distancePrograms_ : depthPrograms_)[std::size_t(layers - 1)];
+    opaque = opaque && !distance; // distance maps write gl_FragDepth: no early test to keep
+    Program& program =
+        (distance ? distancePrograms_ : opaque ? opaqueDepthPrograms_ : depthPrograms_)[std::size_t(layers - 1)];
     if (!program) {
+        std::vector<std::string> defines{"SHADOW_LAYERS " + std::to_string(layers)};
+        if (opaque)
+            defines.push_back("SHADOW_OPAQUE 1");
         auto built = buildEmbeddedProgram({"shadow.vert", "shadow.geom", distance ? "shadow_distance.frag" : "shadow.frag"},
-                                          {"SHADOW_LAYERS " + std::to_string(layers)});
+                                          defines);
         if (!built)
             return std::unexpected(built.error());
         program = std::move(*built);
@@ -149,14 +164,19 @@ void ShadowPass::drawLayers(GLuint p, const SceneGpu& geometry, const MaterialGp
 
 scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
                                                        std::uint64_t contentKey) {
-    if (!perCascadeProgram_) {
-        auto built = buildEmbeddedProgram({"shadow.vert", "shadow.frag"}, {"SHADOW_NO_GEOMETRY_SHADER 1"});
+    for (bool opaque : {false, true}) {
+        Program& program = opaque ? perCascadeOpaqueProgram_ : perCascadeProgram_;
+        if (program)
+            continue;
+        std::vector<std::string> defines{"SHADOW_NO_GEOMETRY_SHADER 1"};
+        if (opaque)
+            defines.push_back("SHADOW_OPAQUE 1");
+        auto built = buildEmbeddedProgram({"shadow.vert", "shadow.frag"}, defines);
         if (!built)
             return std::unexpected(built.error());
-        perCascadeProgram_ = std::move(*built);
+        program = std::move(*built);
     }
-    const GLuint p = perCascadeProgram_.id();
-    glUseProgram(p);
+    const GLuint masked = perCascadeProgram_.id(), opaque = perCascadeOpaqueProgram_.id();
     const GLuint fbo = cascadeMap_.fbo.id(), map = cascadeMap_.texture.id();
     // A cascade whose snapped matrix did not move keeps its layer while the
     // scene, the lights and the map are the same: far cascades mostly stay
@@ -174,9 +194,15 @@ scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry,
         // Each cascade culls with its own volume and draws only what it holds.
         glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, map, 0, GLint(k));
         glClear(GL_DEPTH_BUFFER_BIT);
-        glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(cascades_[k].viewProj));
         const auto items = buildDrawList(geometry.draws(), cascades_[k].viewProj, glm::vec3(0.0f));
-        geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
+        const auto [solid, cut] = splitOpaque(items);
+        for (const auto& [p, list] : {std::pair{opaque, &solid}, std::pair{masked, &cut}}) {
+            if (list->empty())
+                continue;
+            glUseProgram(p);
+            glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(cascades_[k].viewProj));
+            geometry.draw(p, *list, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
+        }
     }
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, map, 0); // layered again
     return {};
@@ -249,8 +275,9 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
             auto program = programFor(false, int(cascades_.size()));
             if (!program)
                 return std::unexpected(program.error());
-            const GLuint p = *program;
-            glUseProgram(p);
+            auto opaqueProgram = programFor(false, int(cascades_.size()), true);
+            if (!opaqueProgram)
+                return std::unexpected(opaqueProgram.error());
             glClear(GL_DEPTH_BUFFER_BIT);
             // Cull once against the box around all cascades; shadow.geom drops
             // triangles outside each cascade.
@@ -259,7 +286,13 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
             std::vector<glm::mat4> matrices;
             for (const ShadowCascade& c : cascades_)
                 matrices.push_back(c.viewProj);
-            drawLayers(p, geometry, materials, items, matrices.data(), int(matrices.size()), 0);
+            const auto [solid, cut] = splitOpaque(items);
+            for (const auto& [p, list] : {std::pair{*opaqueProgram, &solid}, std::pair{*program, &cut}}) {
+                if (list->empty())
+                    continue;
+                glUseProgram(p);
+                drawLayers(p, geometry, materials, *list, matrices.data(), int(matrices.size()), 0);
+            }
         }
         glDisable(GL_POLYGON_OFFSET_FILL);
     }

@@ -79,15 +79,17 @@ private:
 
     // The program for `layers` layers per draw (built on first use):
     // shadow.vert + shadow.geom + shadow.frag (depth) or shadow_distance.frag.
-    scene::Expected<GLuint> programFor(bool distance, int layers);
+    scene::Expected<GLuint> programFor(bool distance, int layers, bool opaque = false);
     // shadow.cascadeDraws = perCascade: one draw list and one depth-only draw per cascade, no geometry shader.
     scene::Expected<void> drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
                                                std::uint64_t contentKey);
-    Program perCascadeProgram_;
+    Program perCascadeProgram_;       // cuts alpha-masked holes (discard)
+    Program perCascadeOpaqueProgram_; // opaque materials: never discards, so depth is tested early
     std::vector<std::uint64_t> cascadeKeys_; // per layer: what it holds (0: nothing known)
     GLuint cascadeMapId_ = 0;
     int cascadesDrawn_ = 0;
     std::array<Program, 8> depthPrograms_;
+    std::array<Program, 8> opaqueDepthPrograms_; // SHADOW_OPAQUE: for the opaque draws
     std::array<Program, 8> distancePrograms_;
 
     ShadowLightSelection lights_;
