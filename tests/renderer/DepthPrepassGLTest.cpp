@@ -16,9 +16,9 @@ namespace {
 
 class DepthPrepassGLTest : public GlTest {};
 
-std::vector<float> renderCornell(bool prepass, renderer::PassStatus* prepassStatus) {
-    scene::Project project = scene::makeCornellBoxProject();
-    EXPECT_TRUE(project.parameters.set("output.depthPrepass", prepass).has_value());
+// Two frames of `project` from its first camera at 160x120; the second's HDR
+// image, and the depth pre-pass's status in it when `prepassStatus` is given.
+std::vector<float> renderTwice(const scene::Project& project, renderer::PassStatus* prepassStatus = nullptr) {
     auto r = renderer::ForwardRenderer::create();
     EXPECT_TRUE(r.has_value()) << r.error().describe();
     if (!r)
@@ -28,9 +28,17 @@ std::vector<float> renderCornell(bool prepass, renderer::PassStatus* prepassStat
         auto ok = r->render(project.scene, project.parameters, project.scene.cameras.front(), 160, 120);
         EXPECT_TRUE(ok.has_value()) << ok.error().describe();
     }
-    const auto* report = r->graphReport().find("depthPrepass");
-    *prepassStatus = report ? report->status : renderer::PassStatus::Culled;
+    if (prepassStatus) {
+        const auto* report = r->graphReport().find("depthPrepass");
+        *prepassStatus = report ? report->status : renderer::PassStatus::Culled;
+    }
     return r->readHdr();
+}
+
+std::vector<float> renderCornell(bool prepass, renderer::PassStatus* prepassStatus) {
+    scene::Project project = scene::makeCornellBoxProject();
+    EXPECT_TRUE(project.parameters.set("output.depthPrepass", prepass).has_value());
+    return renderTwice(project, prepassStatus);
 }
 
 TEST_F(DepthPrepassGLTest, TheImageIsTheOnePassImage) {
@@ -80,16 +88,7 @@ std::vector<float> renderSpotCornell(bool zeroAreaLight) {
         area.name = "dark area light";
         project.scene.lights.push_back(area);
     }
-    auto r = renderer::ForwardRenderer::create();
-    EXPECT_TRUE(r.has_value()) << r.error().describe();
-    if (!r)
-        return {};
-    r->setScene(project.scene);
-    for (int i = 0; i < 2; ++i) {
-        auto ok = r->render(project.scene, project.parameters, project.scene.cameras.front(), 160, 120);
-        EXPECT_TRUE(ok.has_value()) << ok.error().describe();
-    }
-    return r->readHdr();
+    return renderTwice(project);
 }
 
 } // namespace
