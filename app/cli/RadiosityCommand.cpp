@@ -8,6 +8,7 @@
 #include "lpv/radiosity/RadiositySession.h"
 #include "lpv/radiosity/SolveLoop.h"
 #include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/FormFactorSources.h"
 #include "lpv/renderer/GpuHemicube.h"
 #include "lpv/renderer/RadiosityView.h"
 #include "lpv/scene/FramingCamera.h"
@@ -28,12 +29,16 @@ namespace lpv::cli {
 void printRadiosityHelp() {
     std::cout << R"(Usage: lpv radiosity PROJECT.lpvproj [options]
 
-Solves the project's diffuse light by progressive refinement: the patches
-with the most unshot energy shoot it, a batch at a time, through hemicubes
-rendered on the GPU (EGL: the GPU where present, Mesa llvmpipe otherwise).
-Emissive materials are the light sources. Prints progress (shots, residual =
-unshot / emitted energy, shooters per second) and the time each residual
-decade was first reached. The solution (patches and radiosity, with a
+Solves the project's diffuse light by progressive refinement. Every light
+shoots: the sun, spot, point and area lights deliver their direct light to
+the patches first (with shadows, radiosity.lightSamples points per patch),
+and emissive surfaces shoot their own light. Then the patches with the most
+unshot energy shoot it, a batch at a time, found by ray casting on the CPU
+(radiosity.formFactors=raycast, Embree) or by hemicubes rendered on the GPU
+(hemicube; EGL: the GPU where present, Mesa llvmpipe otherwise). Prints
+progress (shots, residual = unshot / emitted energy, shooters per second) and
+the time each residual decade was first reached. `lpv render --set
+gi.method=radiosity` shows the solution as the indirect light. The solution (patches and radiosity, with a
 checksum) goes into PROJECT.assets/radiosity.lpvrad, or into OUT's assets
 with -o; running again resumes an unfinished solve. Ctrl+C pauses: the
 solution so far is saved.
@@ -46,6 +51,7 @@ solution so far is saved.
                         from a neighbour's by more than T (relative, e.g. 0.3),
                         then solve on to the residual again
   --set KEY=VALUE       Override a registry parameter (radiosity.maxPatchArea,
+                        radiosity.formFactors, radiosity.shooterSamples, radiosity.lightSamples,
                         radiosity.hemicubeResolution, radiosity.shootersPerBatch, ...)
   --image FILE          Also render the solution to an image (camera: --camera or the first);
                         FILE.exr keeps linear radiance, to measure with `lpv compare`
@@ -55,7 +61,8 @@ solution so far is saved.
   --wireframe           Draw the patch edges over the image
   --camera NAME         Camera for --image
   --width N, --height N Size of --image (default 800x600)
-  --hemicube-image FILE Write the first shooter's hemicube of the last batch (patch IDs as colours)
+  --hemicube-image FILE Write the first shooter's hemicube of the last batch (patch IDs as
+                        colours; radiosity.formFactors=hemicube only)
   --cpu                 Use the CPU reference form factors instead of the GPU (small scenes only)
   --progress-interval S Seconds between progress lines (default 1)
 )";
@@ -238,8 +245,10 @@ int runRadiosityCommand(const RadiosityCommand& c) {
     if (!session.note().empty())
         std::printf("%s\n", session.note().c_str());
 
-    const int resolution = params.getInt("radiosity.hemicubeResolution");
-    const int batch = params.getInt("radiosity.shootersPerBatch");
+    if (session.directLightSeconds() > 0.0)
+        std::printf("lights: direct light at %d points per patch in %.2f s (the first shots)\n",
+                    params.getInt("radiosity.lightSamples"), session.directLightSeconds());
+    const std::string kind = useCpu ? "cpu-reference" : params.getEnum("radiosity.formFactors");
     std::unique_ptr<radiosity::FormFactorSource> formFactors;
     renderer::GpuHemicube* gpu = nullptr;
     auto makeSource = [&]() -> bool {
@@ -247,29 +256,25 @@ int runRadiosityCommand(const RadiosityCommand& c) {
             formFactors = std::make_unique<radiosity::CpuFormFactors>(session.mesh());
             return true;
         }
-        auto h = renderer::GpuHemicube::create(session.mesh(), resolution, batch);
-        if (!h) {
-            std::cerr << "lpv: " << h.error().describe() << "\n";
+        auto made = renderer::makeFormFactorSource(kind, session.mesh(), project->scene, textures.images, params);
+        if (!made) {
+            std::cerr << "lpv: " << made.error().describe() << "\n";
             return false;
         }
-        gpu = h->get();
-        formFactors = std::move(*h);
+        formFactors = std::move(*made);
+        gpu = dynamic_cast<renderer::GpuHemicube*>(formFactors.get());
         return true;
     };
     if (!makeSource())
         return kFailure;
-    if (useCpu)
-        std::printf("form factors: %s, %d shooters per batch, target residual %g\n", formFactors->name(),
-                    batch, residualTarget);
-    else
-        std::printf("form factors: %s, hemicube %d px, %d shooters per batch, target residual %g\n",
-                    formFactors->name(), gpu->resolution(), gpu->preferredBatch(), residualTarget);
+    std::printf("form factors: %s, target residual %g\n", renderer::describeFormFactorSource(*formFactors).c_str(),
+                residualTarget);
 
     Milestones milestones;
     radiosity::SolveOptions options;
     options.residualTarget = residualTarget;
     options.maxSeconds = *maxSeconds;
-    options.shootersPerBatch = useCpu ? batch : gpu->preferredBatch();
+    options.shootersPerBatch = useCpu ? params.getInt("radiosity.shootersPerBatch") : formFactors->preferredBatch();
     options.progressInterval = 0.0; // every batch: milestones are checked here, lines printed at `interval`
     options.cancel = &gInterrupted;
     auto lastLine = std::chrono::steady_clock::now();
@@ -353,6 +358,8 @@ int runRadiosityCommand(const RadiosityCommand& c) {
     }
     std::printf("wrote %s\n", solutionFile.string().c_str());
 
+    if (hemicubeFile && !gpu)
+        std::fprintf(stderr, "lpv: --hemicube-image needs radiosity.formFactors=hemicube; no image written\n");
     if (hemicubeFile && gpu) {
         const auto ids = gpu->readHemicube(0);
         if (!ids.empty()) {

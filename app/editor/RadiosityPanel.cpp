@@ -6,7 +6,7 @@
 #include "lpv/radiosity/RadiositySession.h"
 #include "lpv/radiosity/SolveLoop.h"
 #include "lpv/renderer/GlContext.h"
-#include "lpv/renderer/GpuHemicube.h"
+#include "lpv/renderer/FormFactorSources.h"
 #include "lpv/renderer/RadiosityView.h"
 #include "lpv/scene/FramingCamera.h"
 
@@ -48,7 +48,8 @@ RadiosityPanel::RadiosityPanel(Document* document, QWidget* parent)
     row->addWidget(progress_, 1);
     layout->addLayout(row);
     status_ =
-        new QLabel(tr("Emissive materials are the light sources. Run solves with GPU hemicubes."), this);
+        new QLabel(tr("Every light shoots: the lights' direct light first, then emissive surfaces and what they light "
+                   "(radiosity.formFactors: CPU ray casting or GPU hemicubes)."), this);
     status_->setWordWrap(true);
     layout->addWidget(status_);
 
@@ -124,7 +125,8 @@ void RadiosityPanel::start() {
         std::optional<radiosity::StoredSolution> saved = radiosity::loadSavedSolution(project.scene, projectFile);
         if (!saved && memory->has_value())
             saved = **memory;
-        auto created = radiosity::RadiositySession::create(project.scene, p, textures.images, std::move(saved));
+        auto created =
+            radiosity::RadiositySession::create(project.scene, p, textures.images, std::move(saved), cancel.get());
         if (!created) { // nothing emits, or too many patches: say so, save nothing
             QMetaObject::invokeMethod(this, "onStopped", Qt::QueuedConnection,
                                       Q_ARG(QString, QString::fromStdString(created.error().describe())),
@@ -132,17 +134,17 @@ void RadiosityPanel::start() {
             return;
         }
         radiosity::RadiositySession& session = *created;
-        auto hemicube = renderer::GpuHemicube::create(
-            session.mesh(), p.getInt("radiosity.hemicubeResolution"), p.getInt("radiosity.shootersPerBatch"));
-        if (!hemicube) {
+        auto formFactors = renderer::makeFormFactorSource(p.getEnum("radiosity.formFactors"), session.mesh(),
+                                                          project.scene, textures.images, p);
+        if (!formFactors) {
             QMetaObject::invokeMethod(this, "onStopped", Qt::QueuedConnection,
-                                      Q_ARG(QString, QString::fromStdString(hemicube.error().describe())),
+                                      Q_ARG(QString, QString::fromStdString(formFactors.error().describe())),
                                       Q_ARG(QImage, QImage()));
             return;
         }
         radiosity::SolveOptions options;
         options.residualTarget = p.getFloat("radiosity.convergenceThreshold");
-        options.shootersPerBatch = (*hemicube)->preferredBatch();
+        options.shootersPerBatch = (*formFactors)->preferredBatch();
         options.progressInterval = 0.25;
         options.cancel = cancel.get();
         options.progress = [this](const radiosity::SolveProgress& s) {
@@ -150,7 +152,7 @@ void RadiosityPanel::start() {
                                       Q_ARG(qulonglong, s.shots), Q_ARG(double, s.seconds),
                                       Q_ARG(double, s.shootersPerSecond), Q_ARG(qulonglong, s.patches));
         };
-        const auto reason = radiosity::solve(session.solver(), **hemicube, options);
+        const auto reason = radiosity::solve(session.solver(), **formFactors, options);
         if (!reason) {
             message = QString::fromStdString(reason.error().describe());
         } else {

@@ -16,12 +16,39 @@ ProgressiveSolver::ProgressiveSolver(const PatchMesh& mesh, SurfaceProperties su
     : mesh_(mesh), surfaces_(std::move(surfaces)) {
     state_.radiosity = surfaces_.emission;
     state_.unshot = surfaces_.emission;
+    state_.incident.assign(mesh_.size(), glm::vec3(0.0f));
+    state_.direct.assign(mesh_.size(), glm::vec3(0.0f));
     for (std::size_t i = 0; i < mesh_.size(); ++i)
         state_.balance.emitted += glm::dvec3(surfaces_.emission[i]) * double(mesh_.patches[i].area);
 }
 
+scene::Expected<void> ProgressiveSolver::addDirectLight(std::vector<glm::vec3> direct) {
+    if (direct.size() != mesh_.size())
+        return scene::makeError(scene::ErrorCode::InvalidValue, "", "radiosity",
+                                "direct light for " + std::to_string(direct.size()) + " patches, the mesh has " +
+                                    std::to_string(mesh_.size()));
+    for (std::size_t i = 0; i < mesh_.size(); ++i) {
+        const glm::dvec3 rho(surfaces_.reflectance[i]);
+        const double area = mesh_.patches[i].area;
+        // Take back what an earlier call added, then add the new light.
+        const glm::dvec3 change = glm::dvec3(direct[i]) - glm::dvec3(state_.direct[i]);
+        const glm::vec3 reflected(rho * change);
+        state_.radiosity[i] = glm::max(state_.radiosity[i] + reflected, glm::vec3(0.0f));
+        state_.unshot[i] = glm::max(state_.unshot[i] + reflected, glm::vec3(0.0f));
+        state_.balance.emitted += change * area;
+        state_.balance.absorbed += change * (glm::dvec3(1.0) - rho) * area;
+    }
+    state_.direct = std::move(direct);
+    return {};
+}
+
 scene::Expected<void> ProgressiveSolver::restore(SolverState state) {
-    if (state.radiosity.size() != mesh_.size() || state.unshot.size() != mesh_.size())
+    if (state.incident.empty())
+        state.incident.assign(state.radiosity.size(), glm::vec3(0.0f));
+    if (state.direct.empty())
+        state.direct.assign(state.radiosity.size(), glm::vec3(0.0f));
+    if (state.radiosity.size() != mesh_.size() || state.unshot.size() != mesh_.size() ||
+        state.incident.size() != mesh_.size() || state.direct.size() != mesh_.size())
         return scene::makeError(scene::ErrorCode::InvalidValue, "", "radiosity",
                                 "the saved solution has " + std::to_string(state.radiosity.size()) +
                                     " patches, the mesh " + std::to_string(mesh_.size()));
@@ -84,7 +111,9 @@ scene::Expected<int> ProgressiveSolver::step(FormFactorSource& formFactors, int 
             seen += f;
             const glm::dvec3 received = power * double(f);
             const glm::dvec3 rho(surfaces_.reflectance[j]);
-            const glm::vec3 gained(received * rho / double(mesh_.patches[j].area));
+            const glm::dvec3 arrived = received / double(mesh_.patches[j].area);
+            const glm::vec3 gained(arrived * rho);
+            state_.incident[j] += glm::vec3(arrived);
             state_.radiosity[j] += gained;
             state_.unshot[j] += gained;
             absorbed += received * (glm::dvec3(1.0) - rho);
@@ -137,9 +166,13 @@ SolverState refineState(const SolverState& state, const std::vector<std::uint32_
     SolverState out = state;
     out.radiosity.clear();
     out.unshot.clear();
+    out.incident.clear();
+    out.direct.clear();
     for (std::uint32_t parent : parentOf) {
         out.radiosity.push_back(state.radiosity[parent]);
         out.unshot.push_back(state.unshot[parent]);
+        out.incident.push_back(state.incident.empty() ? glm::vec3(0.0f) : state.incident[parent]);
+        out.direct.push_back(state.direct.empty() ? glm::vec3(0.0f) : state.direct[parent]);
     }
     return out;
 }

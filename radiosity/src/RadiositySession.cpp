@@ -1,12 +1,23 @@
 #include "lpv/radiosity/RadiositySession.h"
 
+#include "lpv/radiosity/DirectLight.h"
 #include "lpv/radiosity/SurfaceProperties.h"
+#include "lpv/scene/AreaLight.h"
 
+#include <chrono>
 #include <cstdio>
 
 namespace lpv::radiosity {
 
 namespace {
+
+// Whether a light could deliver anything (shadows and facing aside).
+bool anyLightShines(const scene::Scene& scene) {
+    for (const scene::Light& l : scene.lights)
+        if (l.intensity > 0.0f && glm::any(glm::greaterThan(l.color, glm::vec3(0.0f))))
+            return true;
+    return false;
+}
 
 // Whether a visible object's mesh uses a material that emits (its emissive
 // colour times its texture's average has a positive channel).
@@ -26,30 +37,61 @@ bool anythingEmits(const scene::Scene& scene, const scene::TextureImages& textur
 } // namespace
 
 scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
+                                                           const scene::TextureImages& textures,
+                                                           const SessionOptions& options,
+                                                           std::optional<StoredSolution> saved) {
+    const bool lights = anyLightShines(scene);
+    if (!lights && !anythingEmits(scene, textures))
+        return scene::makeError(scene::ErrorCode::InvalidValue, "radiosity", "lights",
+                                "nothing in the scene shoots light: it has no light with a positive intensity "
+                                "and no emissive surface, so the solve would end at once with a black "
+                                "solution; nothing was solved or written");
+    const std::size_t patches = countPatches(scene, {options.maxPatchArea});
+    if (patches > options.maxPatches)
+        return scene::makeError(scene::ErrorCode::OutOfRange, "radiosity", "radiosity.maxPatches",
+                                "the scene would mesh into " + std::to_string(patches) +
+                                    " patches at radiosity.maxPatchArea = " + std::to_string(options.maxPatchArea) +
+                                    " m^2, over radiosity.maxPatches = " + std::to_string(options.maxPatches) +
+                                    "; raise radiosity.maxPatchArea or radiosity.maxPatches");
+    RadiositySession session(scene, textures, options.maxPatchArea, std::move(saved));
+    if (session.resumed() || !lights)
+        return session;
+    const auto start = std::chrono::steady_clock::now();
+    auto direct = directLight(session.mesh(), scene, textures, options.lightSamples, options.cancel);
+    if (!direct)
+        return std::unexpected(direct.error());
+    if (auto added = session.solver().addDirectLight(std::move(*direct)); !added)
+        return std::unexpected(added.error());
+    session.directLightSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const glm::dvec3 power = session.solver().unshotPower();
+    if (!(power.x + power.y + power.z > 0.0))
+        return scene::makeError(scene::ErrorCode::InvalidValue, "radiosity", "lights",
+                                "nothing shoots: the lights reach no patch (all shadowed, facing away or out of "
+                                "range) and no surface emits; nothing was solved or written");
+    return session;
+}
+
+scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
                                                            const scene::TextureImages& textures, float maxPatchArea,
                                                            std::size_t maxPatches,
                                                            std::optional<StoredSolution> saved) {
-    if (!anythingEmits(scene, textures))
-        return scene::makeError(scene::ErrorCode::InvalidValue, "radiosity", "materials",
-                                "nothing in the scene emits light: radiosity shoots from emissive surfaces "
-                                "only (give a material an emissive colour), so the solve would end at once "
-                                "with a black solution; nothing was solved or written");
-    const std::size_t patches = countPatches(scene, {maxPatchArea});
-    if (patches > maxPatches)
-        return scene::makeError(scene::ErrorCode::OutOfRange, "radiosity", "radiosity.maxPatches",
-                                "the scene would mesh into " + std::to_string(patches) +
-                                    " patches at radiosity.maxPatchArea = " + std::to_string(maxPatchArea) +
-                                    " m^2, over radiosity.maxPatches = " + std::to_string(maxPatches) +
-                                    "; raise radiosity.maxPatchArea or radiosity.maxPatches");
-    return RadiositySession(scene, textures, maxPatchArea, std::move(saved));
+    SessionOptions options;
+    options.maxPatchArea = maxPatchArea;
+    options.maxPatches = maxPatches;
+    return create(scene, textures, options, std::move(saved));
 }
 
 scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
                                                            const scene::ParameterSet& parameters,
                                                            const scene::TextureImages& textures,
-                                                           std::optional<StoredSolution> saved) {
-    return create(scene, textures, parameters.getFloat("radiosity.maxPatchArea"),
-                  std::size_t(parameters.getInt("radiosity.maxPatches")), std::move(saved));
+                                                           std::optional<StoredSolution> saved,
+                                                           const std::atomic<bool>* cancel) {
+    SessionOptions options;
+    options.maxPatchArea = parameters.getFloat("radiosity.maxPatchArea");
+    options.maxPatches = std::size_t(parameters.getInt("radiosity.maxPatches"));
+    options.lightSamples = parameters.getInt("radiosity.lightSamples");
+    options.cancel = cancel;
+    return create(scene, textures, options, std::move(saved));
 }
 
 std::optional<StoredSolution> loadSavedSolution(const scene::Scene& scene, const std::filesystem::path& projectFile,
@@ -72,7 +114,7 @@ RadiositySession::RadiositySession(const scene::Scene& scene, const scene::Textu
     : maxPatchArea_(maxPatchArea) {
     auto fresh = std::make_unique<PatchMesh>(buildPatchMesh(scene, {maxPatchArea}));
     const SurfaceProperties freshSurfaces = surfaceProperties(*fresh, scene, textures);
-    signature_ = sceneSignature(*fresh, freshSurfaces);
+    signature_ = sceneSignature(*fresh, freshSurfaces, scene.lights);
     if (saved && saved->sceneSignature == signature_) {
         mesh_ = std::make_unique<PatchMesh>(std::move(saved->mesh));
         solver_ = std::make_unique<ProgressiveSolver>(*mesh_, surfaceProperties(*mesh_, scene, textures));

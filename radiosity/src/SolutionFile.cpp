@@ -61,8 +61,29 @@ bool finite(const glm::vec3& v) {
 
 } // namespace
 
-std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties& surfaces) {
+std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties& surfaces,
+                             std::span<const scene::Light> lights) {
     Writer w;
+    // Every light shoots (its direct light is the first bounce): moving,
+    // dimming or recolouring one changes the solution.
+    for (const scene::Light& l : lights) {
+        w.put(std::uint32_t(l.type));
+        w.putVec3(l.color);
+        w.put(l.intensity);
+        w.putVec3(l.position);
+        w.putVec3(l.direction);
+        w.put(l.range);
+        w.put(l.innerConeAngle);
+        w.put(l.outerConeAngle);
+        w.put(std::uint8_t(l.castShadows));
+        w.put(std::uint32_t(l.shape));
+        w.put(l.size.x);
+        w.put(l.size.y);
+        w.put(l.radius);
+        w.putVec3(l.tangent);
+        w.put(std::uint8_t(l.twoSided));
+        w.put(std::uint32_t(l.unit));
+    }
     for (std::size_t i = 0; i < unrefined.size(); ++i) {
         const Patch& p = unrefined.patches[i];
         w.put(p.cornerCount);
@@ -94,6 +115,8 @@ std::string encodeSolution(const StoredSolution& s) {
     for (std::size_t i = 0; i < s.mesh.size(); ++i) {
         payload.putVec3(s.state.radiosity[i]);
         payload.putVec3(s.state.unshot[i]);
+        payload.putVec3(s.state.incident.empty() ? glm::vec3(0.0f) : s.state.incident[i]);
+        payload.putVec3(s.state.direct.empty() ? glm::vec3(0.0f) : s.state.direct[i]);
     }
     payload.put(s.state.shots);
     payload.put(s.state.batches);
@@ -141,6 +164,11 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
         return makeError(ErrorCode::NewerVersion, fileName, at(8),
                          "version " + std::to_string(version) + " is newer than this program's " +
                              std::to_string(kSolutionVersion));
+    if (version < kSolutionVersion)
+        return makeError(ErrorCode::InvalidValue, fileName, at(8),
+                         "version " + std::to_string(version) +
+                             " was saved before the lights shot and keeps no incident light; solve again "
+                             "(lpv radiosity PROJECT --restart)");
     if (bytes.size() - kHeaderSize != payloadSize)
         return makeError(ErrorCode::Truncated, fileName, at(bytes.size()),
                          "the header announces " + std::to_string(payloadSize) +
@@ -153,7 +181,7 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     // the payload cannot hold is refused before anything is allocated for it
     // (a valid checksum over 465 KB once announced 0x9C09C09 patches).
     constexpr std::uint64_t kBytesPerPatch = sizeof(Patch::cornerCount) + 4 * (3 + 2) * sizeof(float) +
-                                             sizeof(Patch::material) + sizeof(Patch::object) + 2 * 3 * sizeof(float);
+                                             sizeof(Patch::material) + sizeof(Patch::object) + 4 * 3 * sizeof(float);
     if (std::uint64_t{patchCount} * kBytesPerPatch > payload.size())
         return makeError(ErrorCode::Truncated, fileName, at(12),
                          "the header announces " + std::to_string(patchCount) + " patches; the " +
@@ -203,15 +231,21 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     }
     s.state.radiosity.resize(patchCount);
     s.state.unshot.resize(patchCount);
+    s.state.incident.resize(patchCount);
+    s.state.direct.resize(patchCount);
     for (std::uint32_t i = 0; i < patchCount; ++i) {
         const std::size_t start = r.offset();
-        if (!r.getVec3(s.state.radiosity[i]) || !r.getVec3(s.state.unshot[i]))
+        glm::vec3& radiosity = s.state.radiosity[i];
+        glm::vec3& unshot = s.state.unshot[i];
+        glm::vec3& incident = s.state.incident[i];
+        glm::vec3& direct = s.state.direct[i];
+        if (!r.getVec3(radiosity) || !r.getVec3(unshot) || !r.getVec3(incident) || !r.getVec3(direct))
             return makeError(ErrorCode::Truncated, fileName, at(r.offset()),
                              "radiosity of patch " + std::to_string(i) + " is cut off");
-        if (!finite(s.state.radiosity[i]) || !finite(s.state.unshot[i]))
+        if (!finite(radiosity) || !finite(unshot) || !finite(incident) || !finite(direct))
             return makeError(ErrorCode::NonFinite, fileName, at(start),
                              "radiosity of patch " + std::to_string(i) + " is not finite");
-        const glm::vec3 least = glm::min(s.state.radiosity[i], s.state.unshot[i]);
+        const glm::vec3 least = glm::min(glm::min(radiosity, unshot), glm::min(incident, direct));
         if (std::min({least.x, least.y, least.z}) < 0.0f)
             return makeError(ErrorCode::OutOfRange, fileName, at(start),
                              "radiosity of patch " + std::to_string(i) + " is negative: light is never below 0");

@@ -1,5 +1,7 @@
 #include "lpv/radiosity/SurfaceProperties.h"
 
+#include "lpv/scene/AreaLight.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -66,7 +68,11 @@ SurfaceProperties surfaceProperties(const PatchMesh& mesh, const scene::Scene& s
     for (const Patch& p : mesh.patches) {
         const bool known = p.material < reflect.size();
         out.reflectance.push_back(known ? reflect[p.material] : glm::vec3(0.5f));
-        out.emission.push_back(known ? emit[p.material] : glm::vec3(0.0f));
+        // A lamp's visible surface (the Cornell light quad) is its area light,
+        // which shoots as a light: emitting here too would count it twice, as
+        // the LPV's emissive VPLs and the reference's emitters also avoid.
+        const bool lamp = scene::liesOnAnAreaLight(scene.lights, p.corners[0], p.corners[1], p.corners[2]);
+        out.emission.push_back(known && !lamp ? emit[p.material] : glm::vec3(0.0f));
     }
     return out;
 }

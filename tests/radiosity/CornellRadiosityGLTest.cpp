@@ -28,6 +28,14 @@ scene::Expected<radiosity::StopReason> solveTo(radiosity::RadiositySession& sess
     return radiosity::solve(session.solver(), **h, options);
 }
 
+// A fresh solve as `lpv radiosity` starts it: the area light's direct light
+// is the first shot (the ceiling quad is that light's surface and emits nothing).
+radiosity::RadiositySession freshSession(const scene::Scene& scene) {
+    auto created = radiosity::RadiositySession::create(scene, {}, kPatchArea, 1000000);
+    EXPECT_TRUE(created.has_value()) << created.error().describe();
+    return std::move(*created);
+}
+
 // Mean red/green ratio of the floor patches (white material) nearer the red
 // wall (x > 2.78) and nearer the green wall.
 std::pair<double, double> floorRedGreenRatios(const radiosity::RadiositySession& session,
@@ -50,7 +58,7 @@ class CornellRadiosityGLTest : public GlTest {};
 
 TEST_F(CornellRadiosityGLTest, RedAndGreenWallsBleedOntoTheFloor) {
     const auto project = scene::makeCornellBoxProject();
-    radiosity::RadiositySession session(project.scene, {}, kPatchArea);
+    radiosity::RadiositySession session = freshSession(project.scene);
     ASSERT_FALSE(session.resumed());
     const auto reason = solveTo(session, 0.05);
     ASSERT_TRUE(reason.has_value()) << reason.error().describe();
@@ -68,7 +76,7 @@ TEST_F(CornellRadiosityGLTest, SolutionIsSavedReloadedAndResumes) {
     std::filesystem::remove_all(dir);
     const auto file = radiosity::solutionPath(dir / "cornell.lpvproj");
 
-    radiosity::RadiositySession first(project.scene, {}, kPatchArea);
+    radiosity::RadiositySession first = freshSession(project.scene);
     ASSERT_TRUE(solveTo(first, 0.3).has_value());
     const auto shots = first.solver().state().shots;
     const double residual = first.solver().residual();
@@ -100,7 +108,7 @@ TEST_F(CornellRadiosityGLTest, SolutionIsSavedReloadedAndResumes) {
 
 TEST_F(CornellRadiosityGLTest, ViewShowsTheSolutionSmoothAndWithWireframe) {
     const auto project = scene::makeCornellBoxProject();
-    radiosity::RadiositySession session(project.scene, {}, kPatchArea);
+    radiosity::RadiositySession session = freshSession(project.scene);
     ASSERT_TRUE(solveTo(session, 0.2).has_value());
     auto view = renderer::RadiosityView::create();
     ASSERT_TRUE(view.has_value()) << view.error().describe();

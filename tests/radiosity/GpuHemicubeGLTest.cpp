@@ -30,26 +30,6 @@ auto gpuCompute(renderer::GpuHemicube& h) {
     };
 }
 
-// A closed unit box with a smaller box floating inside it (faces outward), so
-// the walls hide parts of each other.
-scene::Scene boxWithBlock() {
-    auto s = test::closedBox(glm::vec3(0.6f), glm::vec3(1.0f));
-    const glm::vec3 lo(0.3f, 0.2f, 0.35f), hi(0.6f, 0.5f, 0.65f);
-    test::addQuad(s, {{{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}},
-                  {0, 1, 0}, 0);
-    test::addQuad(s, {{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}}},
-                  {0, -1, 0}, 0);
-    test::addQuad(s, {{{lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}}},
-                  {-1, 0, 0}, 0);
-    test::addQuad(s, {{{hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}}},
-                  {1, 0, 0}, 0);
-    test::addQuad(s, {{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}}},
-                  {0, 0, -1}, 0);
-    test::addQuad(s, {{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}},
-                  {0, 0, 1}, 0);
-    return s;
-}
-
 } // namespace
 
 class GpuHemicubeGLTest : public GlTest {};
@@ -69,7 +49,7 @@ TEST_F(GpuHemicubeGLTest, PerpendicularUnitSquaresMatchTheAnalyticValue) {
 }
 
 TEST_F(GpuHemicubeGLTest, EveryShooterInAClosedBoxSeesExactlyOneHemisphere) {
-    const auto mesh = radiosity::buildPatchMesh(boxWithBlock(), {0.1f});
+    const auto mesh = radiosity::buildPatchMesh(test::boxWithBlock(), {0.1f});
     auto h = hemicube(mesh, 64);
     ASSERT_TRUE(h);
     std::vector<std::uint32_t> shooters;
@@ -86,7 +66,7 @@ TEST_F(GpuHemicubeGLTest, EveryShooterInAClosedBoxSeesExactlyOneHemisphere) {
 }
 
 TEST_F(GpuHemicubeGLTest, AgreesWithTheCpuReferenceOnAnOccludedScene) {
-    const auto mesh = radiosity::buildPatchMesh(boxWithBlock(), {0.1f});
+    const auto mesh = radiosity::buildPatchMesh(test::boxWithBlock(), {0.1f});
     auto h = hemicube(mesh, 128);
     ASSERT_TRUE(h);
     radiosity::CpuFormFactors cpu(mesh);
@@ -109,7 +89,7 @@ TEST_F(GpuHemicubeGLTest, AgreesWithTheCpuReferenceOnAnOccludedScene) {
 }
 
 TEST_F(GpuHemicubeGLTest, BatchesGiveTheSameFactorsAsSingleShooters) {
-    const auto mesh = radiosity::buildPatchMesh(boxWithBlock(), {0.25f});
+    const auto mesh = radiosity::buildPatchMesh(test::boxWithBlock(), {0.25f});
     auto batched = hemicube(mesh, 32, 8);
     auto single = hemicube(mesh, 32, 1);
     ASSERT_TRUE(batched && single);
@@ -144,7 +124,7 @@ TEST_F(GpuHemicubeGLTest, HemicubeImageHoldsPatchIdsOfTheLastBatch) {
 }
 
 TEST_F(GpuHemicubeGLTest, EnergyIsConservedWithGpuFormFactors) {
-    const auto scene = boxWithBlock();
+    const auto scene = test::boxWithBlock();
     const auto mesh = radiosity::buildPatchMesh(scene, {0.1f});
     auto h = hemicube(mesh, 64, 16);
     ASSERT_TRUE(h);

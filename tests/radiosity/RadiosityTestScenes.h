@@ -65,6 +65,26 @@ inline scene::Scene closedBox(const glm::vec3& wallReflectance, const glm::vec3&
     return s;
 }
 
+// A closed unit box with a smaller box floating inside it (faces outward), so
+// the walls hide parts of each other.
+inline scene::Scene boxWithBlock() {
+    auto s = closedBox(glm::vec3(0.6f), glm::vec3(1.0f));
+    const glm::vec3 lo(0.3f, 0.2f, 0.35f), hi(0.6f, 0.5f, 0.65f);
+    addQuad(s, {{{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}},
+                  {0, 1, 0}, 0);
+    addQuad(s, {{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}}},
+                  {0, -1, 0}, 0);
+    addQuad(s, {{{lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {lo.x, lo.y, hi.z}}},
+                  {-1, 0, 0}, 0);
+    addQuad(s, {{{hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z}}},
+                  {1, 0, 0}, 0);
+    addQuad(s, {{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}}},
+                  {0, 0, -1}, 0);
+    addQuad(s, {{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}},
+                  {0, 0, 1}, 0);
+    return s;
+}
+
 // Area-weighted form factor from object `from` to object `to`, out of
 // per-shooter factors for every patch of `from` (rows in patch order).
 template <class ComputeFn>

@@ -30,7 +30,7 @@ radiosity::StoredSolution solvedBox() {
     for (int i = 0; i < 5; ++i)
         EXPECT_TRUE(solver.step(ff, 3).has_value());
     s.state = solver.state();
-    s.sceneSignature = radiosity::sceneSignature(s.mesh, surfaces);
+    s.sceneSignature = radiosity::sceneSignature(s.mesh, surfaces, {});
     s.maxPatchArea = 0.25f;
     return s;
 }
@@ -123,7 +123,7 @@ TEST(SolutionFile, ImpossibleCountsVersionsAndValuesAreRefused) {
         EXPECT_EQ(e.code, scene::ErrorCode::Truncated);
         EXPECT_EQ(e.describe(), "box.lpvrad: byte offset 12: the header announces " + std::to_string(count) +
                                     " patches; the " + std::to_string(payload) + "-byte payload holds at most " +
-                                    std::to_string(payload / 113));
+                                    std::to_string(payload / 137));
     }
     EXPECT_EQ(decodeFails(edited(bytes, 8, std::uint32_t{0})).describe(),
               "box.lpvrad: byte offset 8: version 0 does not exist (versions start at 1)");
@@ -134,9 +134,9 @@ TEST(SolutionFile, ImpossibleCountsVersionsAndValuesAreRefused) {
     EXPECT_EQ(nan.location, "byte offset " + std::to_string(bytes.size() - 72));
     EXPECT_EQ(nan.message, "the energy totals (emitted, absorbed, escaped) must be finite and at least 0");
 
-    // Patch 0's radiosity follows every patch record (113 bytes less its 24 of light).
+    // Patch 0's radiosity follows every patch record (137 bytes less its 48 of light).
     const auto box = solvedBox();
-    const std::size_t light = 48 + box.mesh.size() * (113 - 24);
+    const std::size_t light = 48 + box.mesh.size() * (137 - 48);
     const scene::Error negative = decodeFails(edited(bytes, light, -1.0f));
     EXPECT_EQ(negative.code, scene::ErrorCode::OutOfRange);
     EXPECT_EQ(negative.describe(), "box.lpvrad: byte offset " + std::to_string(light) +

@@ -27,6 +27,14 @@ struct EnergyBalance {
 struct SolverState {
     std::vector<glm::vec3> radiosity; // per patch, exitant radiance
     std::vector<glm::vec3> unshot;    // per patch, radiance not yet shot
+    // Per patch, light that arrived through form factors (irradiance / pi,
+    // before reflection): what the renderer shows as radiosity's indirect
+    // light, times each texel's albedo (gi.method = radiosity).
+    std::vector<glm::vec3> incident;
+    // Per patch, the lights' direct light (irradiance / pi) that started the
+    // solve (addDirectLight): the renderer draws it itself, so it is kept
+    // apart from `incident`.
+    std::vector<glm::vec3> direct;
     std::uint64_t shots = 0;
     std::uint64_t batches = 0;
     double seconds = 0.0; // solve time so far, over all sessions
@@ -38,6 +46,14 @@ class ProgressiveSolver {
   public:
     // Radiosity and unshot start at the emission.
     ProgressiveSolver(const PatchMesh& mesh, SurfaceProperties surfaces);
+
+    // The lights' direct light as the first bounce (issue #27 item 2):
+    // `direct` per patch (irradiance / pi, from the scene's sun, spot, point
+    // and area lights with their shadows) is reflected by each patch into
+    // its radiosity and unshot radiance. The power it brings counts as
+    // emitted, its unreflected part as absorbed, so the balance still holds.
+    // Replaces any direct light added before; an error if the sizes differ.
+    scene::Expected<void> addDirectLight(std::vector<glm::vec3> direct);
 
     // Continues from a saved state; an error if it does not fit the mesh.
     scene::Expected<void> restore(SolverState state);

@@ -10,6 +10,7 @@
 
 #include "lpv/scene/ParameterRegistry.h"
 
+#include <atomic>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -17,25 +18,40 @@
 
 namespace lpv::radiosity {
 
+// What RadiositySession::create needs besides the scene.
+struct SessionOptions {
+    float maxPatchArea = 0.05f;        // radiosity.maxPatchArea
+    std::size_t maxPatches = 1000000;  // radiosity.maxPatches
+    int lightSamples = 4;              // radiosity.lightSamples: points per patch for the lights' direct light
+    const std::atomic<bool>* cancel = nullptr; // stops the direct light (an error value)
+};
+
 class RadiositySession {
   public:
-    // The checks a solve needs before it meshes (issue #27 item 6), then the
-    // session: an error value when nothing in the scene emits light (only
-    // emissive surfaces shoot; the solve would "converge" at once to black
-    // and save it), or when the scene would mesh into more than `maxPatches`
-    // patches (radiosity.maxPatches; counted without storing them, so a 1.4
-    // million patch Sponza is refused before it allocates).
+    // The checks a solve needs before it meshes, the mesh, and for a fresh
+    // solve the lights' direct light as the first shots (issue #27 item 2):
+    // an error value when nothing can shoot (no light and no emissive
+    // surface, or lights that reach no patch), or when the scene would mesh
+    // into more than `maxPatches` patches (counted without storing them, so
+    // a 1.4 million patch Sponza is refused before it allocates).
+    static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::TextureImages& textures,
+                                                    const SessionOptions& options,
+                                                    std::optional<StoredSolution> saved = std::nullopt);
+
+    // The same with the default light samples.
     static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::TextureImages& textures,
                                                     float maxPatchArea, std::size_t maxPatches,
                                                     std::optional<StoredSolution> saved = std::nullopt);
 
-    // The same with the project's radiosity.maxPatchArea and
-    // radiosity.maxPatches: what `lpv radiosity` and the editor's dock run.
+    // The same with the project's radiosity.maxPatchArea, radiosity.maxPatches
+    // and radiosity.lightSamples: what `lpv radiosity` and the editor's dock run.
     static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::ParameterSet& parameters,
                                                     const scene::TextureImages& textures,
-                                                    std::optional<StoredSolution> saved = std::nullopt);
+                                                    std::optional<StoredSolution> saved = std::nullopt,
+                                                    const std::atomic<bool>* cancel = nullptr);
 
-    // `saved` (from loadSolution) is resumed if its scene signature matches
+    // The mesh and solver alone, without the lights' direct light (emissive
+    // surfaces shoot; create() adds the lights). `saved` (from loadSolution) is resumed if its scene signature matches
     // the scene meshed with `maxPatchArea`; otherwise the solve starts over and
     // note() says why.
     RadiositySession(const scene::Scene& scene, const scene::TextureImages& textures, float maxPatchArea,
@@ -45,6 +61,8 @@ class RadiositySession {
     ProgressiveSolver& solver() { return *solver_; }
     const ProgressiveSolver& solver() const { return *solver_; }
     bool resumed() const { return resumed_; }
+    // Seconds the lights' direct light took (0 when resumed or without lights).
+    double directLightSeconds() const { return directLightSeconds_; }
     const std::string& note() const { return note_; }
 
     // Splits patches whose radiosity differs from a neighbour's by more than
@@ -61,6 +79,7 @@ class RadiositySession {
     std::uint64_t signature_ = 0;
     float maxPatchArea_ = 0.0f;
     bool resumed_ = false;
+    double directLightSeconds_ = 0.0;
     std::string note_;
 };
 

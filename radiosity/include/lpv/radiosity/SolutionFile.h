@@ -10,12 +10,14 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
 namespace lpv::radiosity {
 
-inline constexpr std::uint32_t kSolutionVersion = 1;
+// 2: per patch also the incident and the lights' direct light (issue #27).
+inline constexpr std::uint32_t kSolutionVersion = 2;
 
 struct StoredSolution {
     PatchMesh mesh; // patches only are stored; adjacency is rebuilt on load
@@ -26,8 +28,9 @@ struct StoredSolution {
 };
 
 // Changes when anything the solution depends on changes: the patches of the
-// unrefined mesh, and every material's reflectance and emission.
-std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties& surfaces);
+// unrefined mesh, every material's reflectance and emission, and the lights.
+std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties& surfaces,
+                             std::span<const scene::Light> lights);
 
 // `<dir>/<stem>.assets/radiosity.lpvrad` for `<dir>/<stem>.lpvproj`.
 std::filesystem::path solutionPath(const std::filesystem::path& projectFile);

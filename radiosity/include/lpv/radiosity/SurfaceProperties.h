@@ -1,7 +1,8 @@
 #pragma once
 // What the solver needs from materials: per patch, the diffuse reflectance
 // (diffuse colour times the average of its texture, in linear RGB) and the
-// emitted radiance (emissive colour times its texture's average).
+// emitted radiance (emissive colour times its texture's average; 0 on an area
+// light's visible surface, which shoots as that light).
 #include "lpv/radiosity/PatchMesh.h"
 #include "lpv/scene/Image.h"
 #include "lpv/scene/Scene.h"
