@@ -3,6 +3,9 @@
 // the area-light code in; LPV_NO_LOCAL_SHADOWS, LPV_NO_VISIBILITY,
 // LPV_NO_GLOSSY and LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
 // code that is compiled in but never taken still slows every pixel.
+// LPV_RADIOSITY (gi.method = radiosity) takes the indirect light from a baked
+// solution drawn at this pixel (radiosity_lookup.glsl) instead of the LPV,
+// whose lookups it leaves out.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
@@ -32,10 +35,14 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #ifdef LPV_AREA_LIGHTS
 #include "area_light.glsl"
 #endif
+#ifdef LPV_RADIOSITY
+#include "radiosity_lookup.glsl"
+#else
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
 #include "lpv_glossy.glsl"
+#endif
 
 uniform int uLightCount;
 uniform int uLightType[MAX_LIGHTS];
@@ -116,12 +123,24 @@ void main() {
         radiance += surfaceBrdf(s, l, v) * irradianceColor * ndotl * visibility;
     }
     if (uOutputView == 1) {
+#ifdef LPV_RADIOSITY
+        vec3 e = PI * radiosityIncident() * s.occlusion;
+#else
         vec3 e = uLpvCascadeCount > 0 ? lpvIrradiance(vWorldPos, n) * s.occlusion : vec3(0.0);
+#endif
         outColor = uAlphaMode == 2 ? vec4(0.0) : vec4(e, 1.0);
         outNormal = vec4(n, 1.0);
         outAlbedo = vec4(s.albedo, 1.0);
         return;
     }
+#ifdef LPV_RADIOSITY
+    // Indirect diffuse light from the baked solution: Lambert's albedo / pi
+    // times the irradiance E, and the solution holds E / pi.
+    if (uOutputView == 0) {
+        vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
+        radiance += diffuseAlbedo * radiosityIncident() * s.occlusion;
+    }
+#else
     // Indirect diffuse light from the LPV; metals have no diffuse part.
     if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
@@ -132,7 +151,8 @@ void main() {
             radiance += diffuseAlbedo / PI * lpvSubsurfaceIrradiance(vWorldPos, n) * uTranslucency;
 #endif
     }
-#ifndef LPV_NO_GLOSSY
+#endif
+#if !defined(LPV_NO_GLOSSY) && !defined(LPV_RADIOSITY)
     // Glossy reflections: the LPV ray-marched along the reflection vector (lpv_glossy.glsl).
     if (uOutputView == 0 && lpvGlossyRuns(uGlossiness)) {
         vec3 f0 = uShadingModel == 1 ? mix(vec3(0.04), s.albedo, s.metallic) : max(s.specular, vec3(0.04));

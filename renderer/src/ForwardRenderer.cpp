@@ -99,6 +99,15 @@ void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::Te
     impl_->sceneGpu->updateDraws(scene); // buckets follow the materials' alpha modes
 }
 
+void ForwardRenderer::setBakedRadiosity(std::shared_ptr<const radiosity::BakedSolution> solution) {
+    if (solution == impl_->baked)
+        return;
+    impl_->baked = std::move(solution);
+    ++impl_->bakedGeneration;
+}
+
+const radiosity::BakedSolution* ForwardRenderer::bakedRadiosity() const { return impl_->baked.get(); }
+
 void ForwardRenderer::setExposureTimeStep(std::optional<double> seconds) { impl_->exposureTimeStep = seconds; }
 void ForwardRenderer::resetExposure() { impl_->exposure->reset(); }
 double ForwardRenderer::displayExposure(const scene::ParameterSet& params) const {

@@ -13,6 +13,7 @@
 #include "LpvSubsurfacePass.h"
 #include "MaterialGpu.h"
 #include "ProgramCache.h"
+#include "RadiosityIndirectPass.h"
 #include "RsmPass.h"
 #include "ShadowPass.h"
 #include "SkyHeightPass.h"
@@ -61,7 +62,8 @@ struct ForwardRenderer::Impl {
     // (docs/renderer.md).
     const CachedProgram* forwardFull[2] = {};
     std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
-    const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup);
+    const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup,
+                                        bool radiosity);
     const CachedProgram* depthPrepassProgram = nullptr;       // cuts alpha-masked holes
     const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
     const CachedProgram* tonemapProgram = nullptr;
@@ -77,6 +79,11 @@ struct ForwardRenderer::Impl {
     std::optional<LpvSubsurfacePass> subsurface;
     std::optional<LocalRsmPass> localRsm;
     std::optional<EmissiveVplBuffer> emissiveVpls;
+    std::optional<RadiosityIndirectPass> radiosityIndirect;
+    // gi.method = radiosity: the solution given (setBakedRadiosity), and a
+    // number that changes with it (part of the pass's reuse key).
+    std::shared_ptr<const radiosity::BakedSolution> baked;
+    std::uint64_t bakedGeneration = 0;
     bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
     // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
     Buffer ltcTable;
@@ -116,6 +123,7 @@ struct ForwardRenderer::Impl {
         std::vector<LpvCascade> cascades;    // the LPV's: min(lpv.cascades, rsm.cascades)
         std::vector<LpvCascade> rsmCascades; // the sun's RSM tiles': rsm.cascades, the LPV's first
         bool cameraGv = false; // the geometry volume reads last frame's camera G-buffer
+        EffectDecision radiosity; // gi.method = radiosity with a solution: the baked indirect light
     } plan;
 
     // FramePasses.cpp
@@ -137,6 +145,8 @@ struct ForwardRenderer::Impl {
     void releaseCulled();
     LpvRsmInput rsmInput(const FrameContext& frame) const;
     std::vector<LpvLocalInput> localInputs() const;
+    // After the depth pre-pass, whose depth it reads (`prepass`), before shading.
+    void declareBakedRadiosity(const FrameContext& frame, bool prepass);
 
     // FrameDumps.cpp
     std::vector<DebugImage> dump(const std::string& name) const;

@@ -108,7 +108,8 @@ const std::vector<std::string>& frameGraphNames() {
                                         "shadowMaps", "rsm.position", "rsm.normal", "rsm.flux",
                                         "localRsm.position", "localRsm.normal", "localRsm.flux", "emissiveVpls",
                                         "skyHeight", "lpv.volumes", "lpv.accumulator", "lpv.geometry",
-                                        "lpv.normals", "subsurface.accumulator", "sunRays.occlusion", "exposure"};
+                                        "lpv.normals", "subsurface.accumulator", "radiosity.incident", "radiosity.depth",
+                                        "sunRays.occlusion", "exposure"};
         for (scene::Pass p : scene::allPasses())
             if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity && p != scene::Pass::Reference &&
                 std::find(all.begin(), all.end(), scene::passName(p)) == all.end())

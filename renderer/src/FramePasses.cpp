@@ -197,6 +197,7 @@ void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
         };
         graph.addPass(std::move(p));
     }
+    declareBakedRadiosity(frame, prepass);
     graph::PassSpec p;
     p.id = Pass::Shading;
     p.decision = runsBecause("the image");
@@ -208,6 +209,8 @@ void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
         p.reads.push_back("lpv.accumulator");
     if (plan.lpvRuns && plan.sss.runs())
         p.reads.push_back("subsurface.accumulator");
+    if (plan.radiosity.runs())
+        p.reads.push_back("radiosity.incident");
     p.writes = {"camera.hdr", "camera.normal", "camera.albedo"};
     if (!prepass)
         p.writes.push_back("camera.depth");
@@ -255,7 +258,7 @@ void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
 }
 
 const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy,
-                                                           bool subsurfaceLookup) {
+                                                           bool subsurfaceLookup, bool radiosity) {
     ProgramVariant variant{{"forward.vert", "forward.frag"}, forwardDefines};
     if (std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) { return l.type == scene::LightType::Area; }))
         variant.defines.push_back("LPV_AREA_LIGHTS 1");
@@ -269,6 +272,9 @@ const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& f
         variant.defines.push_back("LPV_NO_SUBSURFACE_LOOKUP 1");
     if (afterPrepass)
         variant.defines.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+    // The baked solution's light in place of the LPV's (which it compiles out).
+    if (radiosity)
+        variant.defines.push_back("LPV_RADIOSITY 1");
     // Built on first use (a few hundred ms on llvmpipe); the full shader,
     // built at create(), shades the same image should a variant not build.
     auto program = programs.get(variant);
@@ -278,8 +284,9 @@ const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& f
 void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPrepass) {
     const FrameContext& frame = ctx.frame;
     // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
+    const bool radiosity = plan.radiosity.runs();
     const CachedProgram& shader =
-        forwardVariant(frame, afterPrepass, glossyRuns, subsurface && lpv->active());
+        forwardVariant(frame, afterPrepass, glossyRuns, subsurface && lpv->active(), radiosity);
     const GLuint fp = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
@@ -312,6 +319,8 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
     else if (subsurfaceSampler)
         LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
     bindGlossyReflections(shader, frame.params, glossyRuns);
+    if (radiosity)
+        ctx.bindTexture(fp, shader.uniform("uRadiosityIncident"), "radiosity.incident");
     glProgramUniform1i(fp, shader.uniform("uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
     const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
     // Opaque and masked items first; blended ones (sorted last, back to

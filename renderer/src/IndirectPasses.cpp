@@ -1,10 +1,13 @@
 // The indirect light as graph nodes: the sun's RSM, the local lights' RSMs,
 // the emissive VPLs, the sky's height map, the LPV's stages (injection, sky
 // injection, normals, geometry volume, propagation, bounces) and the
-// subsurface LPV. planIndirect() decides what the scene calls for (each
-// decision with its reason); declareIndirect() turns that into passes.
+// subsurface LPV; with gi.method = radiosity instead, a baked solution drawn
+// from the camera. planIndirect() decides what the scene calls for (each
+// decision with its reason); declareIndirect() and declareBakedRadiosity()
+// turn that into passes.
 #include "ForwardRendererImpl.h"
 
+#include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/LocalLightAnalysis.h"
 #include "lpv/renderer/lpv/EmissiveVpls.h"
 
@@ -29,8 +32,15 @@ void importTexture(graph::FrameGraph& g, std::string name, std::function<GLuint(
 scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& frame) {
     plan = {};
     const scene::ParameterSet& params = frame.params;
+    plan.radiosity = decideBakedRadiosity(params, baked ? baked->mesh.size() : 0, baked ? baked->residual : 0.0);
     if (!giMethodRuns(params)) {
-        plan.lpvOffReason = giMethodOffReason(params) + ": direct light only";
+        plan.lpvOffReason = giMethodLpvOffReason(params);
+        if (showsBakedRadiosity(params)) {
+            frameEffects.push_back(plan.radiosity);
+            plan.lpvOffReason = plan.radiosity.runs()
+                                    ? "gi.method is radiosity: the indirect light is " + plan.radiosity.reason
+                                    : "gi.method is radiosity, but " + plan.radiosity.reason;
+        }
         return {};
     }
     plan.sun = findSun(frame.scene) >= 0;
@@ -345,6 +355,47 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
     }
 }
 
+void ForwardRenderer::Impl::declareBakedRadiosity(const FrameContext& frame, bool prepass) {
+    const bool runs = plan.radiosity.runs();
+    graph::PassSpec p;
+    p.id = Pass::RadiosityIndirect;
+    p.decision = plan.radiosity;
+    p.writes = {"radiosity.incident", "radiosity.depth"};
+    if (runs) {
+        // Kept across frames, so a still camera reuses them.
+        for (const auto& [name, format] : {std::pair{"radiosity.incident", GL_RGBA16F},
+                                           std::pair{"radiosity.depth", GL_DEPTH_COMPONENT32F}})
+            graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), frame.width, frame.height},
+                                 graph::Lifetime::History);
+    } else {
+        // Named, so the report and --dump can say why they hold nothing; not allocated.
+        for (const char* name : {"radiosity.incident", "radiosity.depth"})
+            graph.importResource(name, [] { return graph::ImportedView{}; });
+    }
+    if (prepass)
+        p.reads = {"camera.depth"};
+    // radiosity.smoothing is declared as invalidating shading (the radiosity
+    // view's); here the corner values are uploaded from it, so it is part of
+    // what this pass's output is computed from.
+    const bool smooth = frame.params.getBool("radiosity.smoothing");
+    graph::ContentHash h;
+    h.add(sceneGeneration).add(bakedGeneration).add(smooth).add(frame.viewProj).add(frame.camera.position)
+        .add(frame.width).add(frame.height);
+    p.inputsKey = h.value();
+    p.execute = [this, prepass, smooth](graph::PassContext& ctx) -> scene::Expected<void> {
+        if (!radiosityIndirect) {
+            auto created = RadiosityIndirectPass::create();
+            if (!created)
+                return std::unexpected(created.error());
+            radiosityIndirect.emplace(std::move(*created));
+        }
+        radiosityIndirect->upload(*baked, bakedGeneration, ctx.frame.scene, smooth);
+        radiosityIndirect->render(ctx, prepass);
+        return {};
+    };
+    graph.addPass(std::move(p));
+}
+
 void ForwardRenderer::Impl::releaseCulled() {
     if (!graph.produced(Pass::Rsm))
         rsm->release();
@@ -360,6 +411,8 @@ void ForwardRenderer::Impl::releaseCulled() {
         subsurface.reset();
     if (!graph.produced(Pass::SunRays))
         sunRays.reset();
+    if (!graph.produced(Pass::RadiosityIndirect))
+        radiosityIndirect.reset();
     if (!plan.lpvRuns)
         lpv->disable(plan.lpvOffReason);
 }

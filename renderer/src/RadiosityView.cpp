@@ -1,5 +1,6 @@
 #include "lpv/renderer/RadiosityView.h"
 
+#include "PatchVertices.h"
 #include "lpv/radiosity/VertexRadiosity.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
@@ -9,33 +10,6 @@
 #include <cmath>
 
 namespace lpv::renderer {
-namespace {
-
-struct ViewVertex {
-    glm::vec3 position;
-    glm::vec3 radiance;
-};
-
-VertexArray makeVao(const Buffer& buffer) {
-    VertexArray vao = createVertexArray();
-    glVertexArrayVertexBuffer(vao.id(), 0, buffer.id(), 0, sizeof(ViewVertex));
-    glEnableVertexArrayAttrib(vao.id(), 0);
-    glVertexArrayAttribFormat(vao.id(), 0, 3, GL_FLOAT, GL_FALSE, offsetof(ViewVertex, position));
-    glVertexArrayAttribBinding(vao.id(), 0, 0);
-    glEnableVertexArrayAttrib(vao.id(), 1);
-    glVertexArrayAttribFormat(vao.id(), 1, 3, GL_FLOAT, GL_FALSE, offsetof(ViewVertex, radiance));
-    glVertexArrayAttribBinding(vao.id(), 1, 0);
-    return vao;
-}
-
-Buffer upload(const std::vector<ViewVertex>& v) {
-    Buffer b = createBuffer();
-    glNamedBufferStorage(b.id(), GLsizeiptr(std::max<std::size_t>(v.size(), 1) * sizeof(ViewVertex)),
-                         v.empty() ? nullptr : v.data(), 0);
-    return b;
-}
-
-} // namespace
 
 scene::Expected<RadiosityView> RadiosityView::create() {
     auto program = buildEmbeddedProgram({"radiosity_view.vert", "radiosity_view.frag"});
@@ -49,33 +23,14 @@ scene::Expected<RadiosityView> RadiosityView::create() {
 void RadiosityView::setPatches(const radiosity::PatchMesh& mesh, std::span<const glm::vec3> perPatch,
                                bool smooth) {
     const std::vector<glm::vec3> corners = radiosity::cornerValues(mesh, perPatch, smooth);
-    std::vector<ViewVertex> tris, lines;
-    tris.reserve(mesh.size() * 6);
-    lines.reserve(mesh.size() * 8);
-    for (std::size_t i = 0; i < mesh.size(); ++i) {
-        const radiosity::Patch& p = mesh.patches[i];
-        auto vertex = [&](int k) {
-            return ViewVertex{p.corners[std::size_t(k)], corners[4 * i + std::size_t(k)]};
-        };
-        tris.push_back(vertex(0));
-        tris.push_back(vertex(1));
-        tris.push_back(vertex(2));
-        if (p.cornerCount == 4) {
-            tris.push_back(vertex(0));
-            tris.push_back(vertex(2));
-            tris.push_back(vertex(3));
-        }
-        for (int k = 0; k < p.cornerCount; ++k) {
-            lines.push_back(vertex(k));
-            lines.push_back(vertex((k + 1) % p.cornerCount));
-        }
-    }
-    triangles_ = upload(tris);
-    lines_ = upload(lines);
-    triangleVao_ = makeVao(triangles_);
-    lineVao_ = makeVao(lines_);
-    triangleVertices_ = GLsizei(tris.size());
-    lineVertices_ = GLsizei(lines.size());
+    PatchDraw tris = uploadPatchVertices(patchTriangles(mesh, corners));
+    PatchDraw lines = uploadPatchVertices(patchOutlines(mesh, corners));
+    triangles_ = std::move(tris.buffer);
+    triangleVao_ = std::move(tris.vao);
+    triangleVertices_ = tris.vertices;
+    lines_ = std::move(lines.buffer);
+    lineVao_ = std::move(lines.vao);
+    lineVertices_ = lines.vertices;
 }
 
 void RadiosityView::render(const scene::Camera& camera, int width, int height, float exposureEv,

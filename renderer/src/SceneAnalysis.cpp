@@ -95,6 +95,32 @@ std::string giMethodOffReason(const scene::ParameterSet& params) {
     return "gi.method is " + params.getEnum("gi.method");
 }
 
+bool showsBakedRadiosity(const scene::ParameterSet& params) { return params.getEnum("gi.method") == "radiosity"; }
+
+std::string giMethodLpvOffReason(const scene::ParameterSet& params) {
+    if (showsBakedRadiosity(params))
+        return "gi.method is radiosity: the indirect light is a baked solution's";
+    return giMethodOffReason(params) + ": direct light only";
+}
+
+EffectDecision decideBakedRadiosity(const scene::ParameterSet& params, std::size_t patches, double residual) {
+    EffectDecision d;
+    d.effect = "Baked radiosity";
+    d.parameter = "gi.method";
+    d.setting = params.getEnum("gi.method");
+    if (d.setting != "radiosity") {
+        d.reason = giMethodOffReason(params);
+    } else if (patches == 0) {
+        d.reason = "no radiosity solution: run lpv radiosity (direct light only)";
+    } else {
+        char text[128];
+        std::snprintf(text, sizeof text, "a baked solution of %zu patches, residual %.3g", patches, residual);
+        d.wanted = true;
+        d.reason = text;
+    }
+    return d;
+}
+
 std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTraits& t, const scene::ParameterSet& params,
                                           const scene::Camera* camera, float aspect) {
     std::vector<EffectDecision> out;
@@ -108,7 +134,7 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
     const EffectDecision emissive = decideEmissiveInjection(s, params);
     lpv.wanted = giMethodRuns(params) && (t.hasDirectionalLight || local.wanted || emissive.wanted) &&
                  params.getFloat("lpv.intensity") > 0.0f;
-    lpv.reason = !giMethodRuns(params)                  ? giMethodOffReason(params) + ": direct light only"
+    lpv.reason = !giMethodRuns(params)                  ? giMethodLpvOffReason(params)
                  : params.getFloat("lpv.intensity") <= 0.0f ? "lpv.intensity is 0"
                  : t.hasDirectionalLight ? "a directional light lights the scene: its RSM is injected"
                  : local.wanted          ? "spot, point or area lights light the scene: their RSMs are injected"

@@ -42,11 +42,13 @@ constexpr Pass kLpvAll = P::EmissiveVpls | P::SkyHeight | P::LpvInjection | P::S
 std::vector<ParameterInfo> declareParameters() {
     return {
         // --- Global illumination ---
-        choice("gi.method", "lpv", {"off", "lpv", "reference"}, "GI",
+        choice("gi.method", "lpv", {"off", "lpv", "radiosity", "reference"}, "GI",
                "How indirect light is made: off = direct light only (no RSM, LPV, sky, subsurface or glossy "
-               "pass runs or holds GPU memory); lpv = cascaded light propagation volumes; reference = the "
-               "editor shows the CPU path tracer's progressive image of the view (the rasteriser draws "
-               "direct light only, as with off)",
+               "pass runs or holds GPU memory); lpv = cascaded light propagation volumes; radiosity = the "
+               "project's baked radiosity solution (lpv radiosity) as the indirect light, the rasteriser "
+               "drawing the direct light (no LPV pass runs; without a solution that matches the scene, "
+               "direct light only); reference = the editor shows the CPU path tracer's progressive image of "
+               "the view (the rasteriser draws direct light only, as with off)",
                P::Rsm | P::LocalRsm | kLpvAll | P::GlossyReflections),
         // --- LPV ---
         choice("lpv.variant", "computeGather", {"computeGather", "computeScatter", "rasterGather", "rasterScatter"},

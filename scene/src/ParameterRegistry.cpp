@@ -38,6 +38,7 @@ const std::vector<std::pair<Pass, const char*>>& passTable() {
         {Pass::LpvBounces, "lpvBounces"},
         {Pass::Subsurface, "subsurface"},
         {Pass::DepthPrepass, "depthPrepass"},
+        {Pass::RadiosityIndirect, "radiosityIndirect"},
         {Pass::Shading, "shading"},
         {Pass::GlossyReflections, "glossyReflections"},
         {Pass::SunRays, "sunRays"},

@@ -19,6 +19,10 @@
 #include <string>
 #include <vector>
 
+namespace lpv::radiosity {
+struct BakedSolution;
+}
+
 namespace lpv::renderer {
 
 using scene::Expected;
@@ -52,6 +56,13 @@ public:
     // and textures re-uploaded, geometry kept). Both need setScene first.
     void updateObjects(const scene::Scene& scene);
     void updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures = {});
+
+    // gi.method = radiosity: the solution whose indirect light frames show
+    // (radiosity::loadBakedSolution, checked against this scene by its
+    // caller); null: none, and such frames have direct light only. Kept
+    // until replaced; uploaded on the first frame that shows it.
+    void setBakedRadiosity(std::shared_ptr<const radiosity::BakedSolution> solution);
+    const radiosity::BakedSolution* bakedRadiosity() const;
 
     // Renders one frame into the internal HDR and display targets.
     Expected<void> render(const scene::Scene& scene, const scene::ParameterSet& params, const scene::Camera& camera,
@@ -102,7 +113,8 @@ public:
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."
-    // or "LPV: off (gi.method is off: direct light only)".
+    // or "LPV: off (gi.method is off: direct light only)", "LPV: off (gi.method
+    // is radiosity: the indirect light is the baked solution's, 438 patches, ...)".
     std::string lpvNote() const;
     // GPU memory of the subsurface LPV's volumes (0 while it does not run).
     std::size_t subsurfaceAllocatedBytes() const;

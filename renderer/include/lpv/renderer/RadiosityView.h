@@ -3,7 +3,8 @@
 // shot radiance), smoothed to the corners, optionally with Cohen's ambient
 // term and the patch wireframe, tonemapped like the forward renderer (ACES,
 // output.exposure). Used by `lpv radiosity --image` and the tests; the
-// forward renderer does not read baked radiosity yet (docs/radiosity.md).
+// forward renderer shows a solution as its indirect light with gi.method =
+// radiosity (the radiosityIndirect pass, docs/renderer.md).
 #include "lpv/radiosity/PatchMesh.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/scene/Camera.h"

@@ -41,10 +41,22 @@ inline constexpr float kOpenSkyThreshold = 0.05f;
 
 SceneTraits analyseSceneTraits(const scene::Scene& scene);
 
-// gi.method is lpv: the indirect passes may run (off and reference draw direct light only).
+// gi.method is lpv: the indirect passes may run (off and reference draw
+// direct light only, radiosity a baked solution's indirect light).
 bool giMethodRuns(const scene::ParameterSet& params);
-// Why they do not: "gi.method is off", "gi.method is reference".
+// Why they do not: "gi.method is off", "gi.method is radiosity".
 std::string giMethodOffReason(const scene::ParameterSet& params);
+// The same, with what lights the frame instead: "gi.method is off: direct
+// light only", "gi.method is radiosity: the indirect light is a baked solution's".
+std::string giMethodLpvOffReason(const scene::ParameterSet& params);
+
+// gi.method is radiosity: a program loads the project's solution for the renderer.
+bool showsBakedRadiosity(const scene::ParameterSet& params);
+
+// gi.method = radiosity: a baked solution (radiosity::loadBakedSolution) is
+// drawn as the indirect light. The renderer's decision, given the solution
+// it was handed (`patches` 0: none, and the frame has direct light only).
+EffectDecision decideBakedRadiosity(const scene::ParameterSet& params, std::size_t patches, double residual);
 
 // The first directional light (the sun, as the RSM picks it), or null.
 const scene::Light* sunOf(const scene::Scene& scene);

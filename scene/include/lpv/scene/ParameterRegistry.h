@@ -41,6 +41,7 @@ enum class Pass : std::uint32_t {
     LpvBounces = 1u << 17,   // bounces 2.. lpv.bounces
     Exposure = 1u << 18,     // auto exposure's meter
     DepthPrepass = 1u << 19, // the camera's depth before shading
+    RadiosityIndirect = 1u << 20, // a baked radiosity solution drawn from the camera (gi.method = radiosity)
 };
 constexpr Pass operator|(Pass a, Pass b) { return Pass(std::uint32_t(a) | std::uint32_t(b)); }
 constexpr bool any(Pass a, Pass b) { return (std::uint32_t(a) & std::uint32_t(b)) != 0; }
