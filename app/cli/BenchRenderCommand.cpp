@@ -56,6 +56,7 @@ int benchRender(Args args) {
     // volumes (a later --set lpv.reuse=true wins).
     request.sets.insert(request.sets.begin(), "lpv.reuse=false");
     request.projectFile = pos.front();
+    request.bakedRadiosity = sweepShowsBakedRadiosity(plan.combinations);
     int exitCode = kOk;
     auto setup = prepareRender(request, "bench", exitCode);
     if (!setup)

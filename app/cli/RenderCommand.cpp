@@ -39,7 +39,10 @@ one row per frame, then median/min/max over the frames rendered.
                         (see `lpv params` for keys, types and ranges).
                         KEY=V1,V2,... renders one image per value, named
                         OUT-KEY-V.png, and compares their GPU times; several
-                        such keys render every combination
+                        such keys render every combination.
+                        gi.method=radiosity shows the project's radiosity
+                        solution (lpv radiosity) as the indirect light; it
+                        fails when none matches the scene
   --frames N            Frames to render for the timing table (default 5)
   --explain             Before rendering, print the scene analysis: for each
                         effect whether its passes run and why, e.g. that sky
@@ -142,6 +145,7 @@ int runRender(Args args) {
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
     request.projectFile = pos.front();
+    request.bakedRadiosity = sweepShowsBakedRadiosity(plan.combinations);
     int exitCode = kOk;
     auto setup = prepareRender(request, "render", exitCode);
     if (!setup)

@@ -3,6 +3,8 @@
 #include "Cli.h"
 
 #include "lpv/importers/SceneTextures.h"
+#include "lpv/radiosity/BakedSolution.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/FramingCamera.h"
 
 #include <filesystem>
@@ -95,8 +97,26 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
     for (const std::string& w : textures.warnings)
         std::cerr << "lpv: warning: " << w << "\n";
     setup.renderer->setScene(setup.project.scene, textures.images);
+    if (request.bakedRadiosity || renderer::showsBakedRadiosity(setup.project.parameters)) {
+        auto solution = radiosity::loadBakedSolution(setup.project.scene, textures.images, request.projectFile);
+        if (!solution) {
+            std::cerr << "lpv: " << solution.error().describe() << "\n";
+            return std::nullopt;
+        }
+        std::printf("radiosity: %s: %zu patches, residual %.4g, %llu shots\n", solution->file.string().c_str(),
+                    solution->mesh.size(), solution->residual, static_cast<unsigned long long>(solution->shots));
+        setup.renderer->setBakedRadiosity(std::make_shared<const radiosity::BakedSolution>(std::move(*solution)));
+    }
     exitCode = kOk;
     return setup;
+}
+
+bool sweepShowsBakedRadiosity(const std::vector<std::vector<bench::Setting>>& combinations) {
+    for (const auto& combination : combinations)
+        for (const auto& [key, value] : combination)
+            if (key == "gi.method" && value == "radiosity")
+                return true;
+    return false;
 }
 
 bool renderFrames(RenderSetup& setup, int width, int height, int frames) {

@@ -2,6 +2,7 @@
 // What `lpv render` and `lpv bench render` share: load a project, apply
 // --set overrides, pick the camera, open a headless GL context and create
 // the renderer with the scene uploaded.
+#include "lpv/bench/Settings.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/Project.h"
@@ -23,7 +24,13 @@ struct RenderRequest {
     std::string projectFile;
     std::optional<std::string> cameraName;
     std::vector<std::string> sets; // KEY=VALUE
+    // Load the project's radiosity solution even when its gi.method (after
+    // `sets`) is not radiosity: a swept --set shows it in some images.
+    bool bakedRadiosity = false;
 };
+
+// Whether some combination of a sweep sets gi.method = radiosity.
+bool sweepShowsBakedRadiosity(const std::vector<std::vector<bench::Setting>>& combinations);
 
 // The named camera, or the project's first (a framing camera when it has none);
 // an unknown name prints the cameras there are and gives nothing.
@@ -37,7 +44,10 @@ std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile
                                                   const std::string& command, int& exitCode);
 
 // On failure prints the message (naming the file or the option) and returns
-// the exit code in `exitCode`.
+// the exit code in `exitCode`. With gi.method = radiosity (or
+// request.bakedRadiosity) the renderer gets the project's radiosity solution;
+// none saved, a damaged one or one solved for another scene is a failure
+// ("lpv: FILE: why"): the image asked for cannot be made.
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode);
 
 // Renders `frames` frames and resolves every timer query; false (message printed) on error.

@@ -2,6 +2,9 @@
 // through lpv_video, with a progress line.
 #include "Cli.h"
 
+#include "lpv/importers/SceneTextures.h"
+#include "lpv/radiosity/BakedSolution.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Project.h"
 #include "lpv/video/VideoExport.h"
@@ -43,7 +46,9 @@ gives round(D * fps) frames (2 s at 30 fps: 60 frames, 0 .. 1.967 s).
   --fps N               Frames per second (default 30; fractions such as 29.97 work)
   --width N             Frame width in pixels (default 1280)
   --height N            Frame height in pixels (default 720)
-  --set KEY=VALUE       Override a registry parameter; repeatable (`lpv params`)
+  --set KEY=VALUE       Override a registry parameter; repeatable (`lpv params`).
+                        gi.method=radiosity shows the project's radiosity
+                        solution (lpv radiosity); it fails when none matches
   --compare-set KEY=VALUE
                         Side by side: the left half renders with --set, the
                         right half also with these; repeatable. Each half is
@@ -98,6 +103,17 @@ bool splitSettings(const std::vector<std::string>& texts,
         out.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
     }
     return true;
+}
+
+// gi.method = radiosity in the project's parameters as either half overrides them.
+bool showsBakedRadiosity(const scene::Project& project, const video::VideoOptions& options) {
+    auto shows = [&](const std::vector<std::pair<std::string, std::string>>& sets) {
+        scene::ParameterSet params = project.parameters;
+        for (const auto& [key, value] : sets)
+            (void)params.setFromText(key, value, "--set"); // checkVideoOptions found them valid
+        return renderer::showsBakedRadiosity(params);
+    };
+    return shows(options.setA) || (options.setB && shows(*options.setB));
 }
 
 std::string formatSeconds(double s) {
@@ -184,6 +200,17 @@ int runVideo(Args args) {
             return kFailure;
         }
         return usageError(ok.error().describe(), "video");
+    }
+
+    // gi.method = radiosity in either half: the solution must match the scene, as for lpv render.
+    if (showsBakedRadiosity(*project, options)) {
+        const auto textures = importers::loadSceneTextures(project->scene, fs::absolute(pos.front()).parent_path());
+        auto solution = radiosity::loadBakedSolution(project->scene, textures.images, pos.front());
+        if (!solution) {
+            std::cerr << "lpv: " << solution.error().describe() << "\n";
+            return kFailure;
+        }
+        options.bakedRadiosity = std::make_shared<const radiosity::BakedSolution>(std::move(*solution));
     }
 
     const auto format = video::videoOutputFor(options.output);

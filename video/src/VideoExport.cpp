@@ -336,6 +336,7 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
             options.warning(w);
     for (renderer::ForwardRenderer& r : renderers) {
         r.setScene(project.scene, textures.images);
+        r.setBakedRadiosity(options.bakedRadiosity);
         // Auto exposure adapts by one frame's time per frame: the same path gives the same video.
         r.setExposureTimeStep(1.0 / double(options.fps));
     }
