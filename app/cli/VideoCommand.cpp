@@ -2,9 +2,6 @@
 // through lpv_video, with a progress line.
 #include "Cli.h"
 
-#include "lpv/importers/SceneTextures.h"
-#include "lpv/radiosity/BakedSolution.h"
-#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Project.h"
 #include "lpv/video/VideoExport.h"
@@ -105,17 +102,6 @@ bool splitSettings(const std::vector<std::string>& texts,
     return true;
 }
 
-// gi.method = radiosity in the project's parameters as either half overrides them.
-bool showsBakedRadiosity(const scene::Project& project, const video::VideoOptions& options) {
-    auto shows = [&](const std::vector<std::pair<std::string, std::string>>& sets) {
-        scene::ParameterSet params = project.parameters;
-        for (const auto& [key, value] : sets)
-            (void)params.setFromText(key, value, "--set"); // checkVideoOptions found them valid
-        return renderer::showsBakedRadiosity(params);
-    };
-    return shows(options.setA) || (options.setB && shows(*options.setB));
-}
-
 std::string formatSeconds(double s) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, s < 10.0 ? "%.1f" : "%.0f", s);
@@ -186,6 +172,7 @@ int runVideo(Args args) {
     options.labelA = labelA.value_or("");
     options.labelB = labelB.value_or("");
     options.warning = [](const std::string& w) { std::cerr << "lpv: warning: " << w << "\n"; };
+    options.projectFile = pos.front(); // gi.method = radiosity shows the solution saved beside it
 
     const auto project = scene::loadProject(pos.front());
     if (!project) {
@@ -200,17 +187,6 @@ int runVideo(Args args) {
             return kFailure;
         }
         return usageError(ok.error().describe(), "video");
-    }
-
-    // gi.method = radiosity in either half: the solution must match the scene, as for lpv render.
-    if (showsBakedRadiosity(*project, options)) {
-        const auto textures = importers::loadSceneTextures(project->scene, fs::absolute(pos.front()).parent_path());
-        auto solution = radiosity::loadBakedSolution(project->scene, textures.images, pos.front());
-        if (!solution) {
-            std::cerr << "lpv: " << solution.error().describe() << "\n";
-            return kFailure;
-        }
-        options.bakedRadiosity = std::make_shared<const radiosity::BakedSolution>(std::move(*solution));
     }
 
     const auto format = video::videoOutputFor(options.output);

@@ -92,6 +92,7 @@ QString VideoExportDialog::run() {
     options.width = width_->value();
     options.height = height_->value();
     options.fps = fps_->value();
+    options.projectFile = document_->path().toStdString(); // gi.method = radiosity: its saved solution
     // The project's own parameters go in as overrides, so side B can start from the defaults like its preset.
     auto project2 = std::make_shared<scene::Project>(project);
     project2->parameters = {};

@@ -5,7 +5,9 @@
 #include "Mp4Writer.h"
 #include "lpv/importers/ImageIO.h"
 #include "lpv/importers/SceneTextures.h"
+#include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/FramingCamera.h"
@@ -334,9 +336,17 @@ scene::Expected<void> renderVideo(const scene::Project& project, const fs::path&
     if (options.warning)
         for (const std::string& w : textures.warnings)
             options.warning(w);
+    // gi.method = radiosity in either half: the saved solution, checked against this scene.
+    std::shared_ptr<const radiosity::BakedSolution> baked;
+    if (renderer::showsBakedRadiosity(paramsA) || (paramsB && renderer::showsBakedRadiosity(*paramsB))) {
+        auto loaded = radiosity::loadBakedSolution(project.scene, textures.images, options.projectFile);
+        if (!loaded)
+            return std::unexpected(loaded.error());
+        baked = std::make_shared<const radiosity::BakedSolution>(std::move(*loaded));
+    }
     for (renderer::ForwardRenderer& r : renderers) {
         r.setScene(project.scene, textures.images);
-        r.setBakedRadiosity(options.bakedRadiosity);
+        r.setBakedRadiosity(baked);
         // Auto exposure adapts by one frame's time per frame: the same path gives the same video.
         r.setExposureTimeStep(1.0 / double(options.fps));
     }

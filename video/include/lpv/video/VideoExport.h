@@ -9,15 +9,10 @@
 
 #include <filesystem>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-namespace lpv::radiosity {
-struct BakedSolution;
-}
 
 namespace lpv::video {
 
@@ -41,11 +36,11 @@ struct VideoOptions {
     int warmupFrames = 2; // rendered at the first frame's camera and thrown away, so temporal state settles
     // Added: x264 constant rate factor (0 = lossless, 18 = visually lossless, 23 = x264's default).
     int crf = 18;
-    // gi.method = radiosity (in the project's parameters, setA or setB): the
-    // solution whose indirect light those frames show
-    // (radiosity::loadBakedSolution, loaded by the caller: `lpv video` fails
-    // without one, the editor passes its viewport's). Null: direct light only.
-    std::shared_ptr<const radiosity::BakedSolution> bakedRadiosity;
+    // The project's file. With gi.method = radiosity (in setA or setB) the
+    // radiosity solution saved beside it is shown as the indirect light; none
+    // saved, a damaged one or one solved for another scene is an error, as
+    // is an empty path then.
+    std::filesystem::path projectFile;
     // Added: called with each texture that could not be read (it renders as
     // the magenta placeholder). May be empty.
     std::function<void(const std::string&)> warning;
