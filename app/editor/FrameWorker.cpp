@@ -1,7 +1,10 @@
 #include "FrameWorker.h"
 
+#include "BakedRadiosityCache.h"
+
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/SceneAnalysis.h"
 
 #include <QMetaObject>
 
@@ -153,6 +156,7 @@ void FrameWorker::run() {
 
     scene::Scene scene; // the worker's own copy: meshes as last sent, the rest as last sent
     scene::TextureImages textures;
+    BakedRadiosityCache baked;
     bool uploaded = false;
     std::optional<std::chrono::steady_clock::time_point> lastFrame;
     // GPU memory: asked of the driver at most once a second, not every frame.
@@ -196,6 +200,19 @@ void FrameWorker::run() {
                 renderer->updateMaterials(scene, textures);
             if (request.changes & (Change::Transforms | Change::Structure))
                 renderer->updateObjects(scene);
+        }
+        if (request.meshes || request.forgetTextures || !request.newTextures.empty() ||
+            (request.changes & (Change::Transforms | Change::Structure | Change::Geometry | Change::Materials |
+                                Change::Lights)))
+            baked.sceneChanged();
+        const bool showsBaked = renderer::showsBakedRadiosity(request.parameters) ||
+                                (request.split && (renderer::showsBakedRadiosity(request.split->first) ||
+                                                   renderer::showsBakedRadiosity(request.split->second)));
+        if (showsBaked && !request.texturesPending) {
+            renderer->setBakedRadiosity(
+                baked.update(scene, textures, request.parameters, request.projectFile, request.radiosityGeneration));
+            result->radiosityNote = QString::fromStdString(baked.message());
+            result->radiosityFailed = baked.failed();
         }
         renderer->setLpvCapture(request.visualizers.lpv);
         renderer->setShadowCascadeTint(request.visualizers.shadowTint);

@@ -45,6 +45,14 @@ struct FrameRequest {
     // The Accuracy dock's opt-in: read the frame's linear HDR image back
     // (a GPU stall and a copy that normal frames do not pay). Not with a split.
     bool readHdr = false;
+    // gi.method = radiosity: the project file whose saved solution frames
+    // show (empty: unsaved), a number bumped whenever that solution may have
+    // changed (a solve saved it, the project was saved), and whether textures
+    // are still decoding (the solution is checked against the scene's
+    // reflectances, which they are part of: it waits for them).
+    std::string projectFile;
+    quint64 radiosityGeneration = 0;
+    bool texturesPending = false;
 };
 
 // The linear HDR image of a frame (before exposure and tonemapping, what
@@ -65,6 +73,10 @@ struct FrameResult {
     QImage image;       // width x height of the request (RGBA8)
     std::vector<renderer::PassTiming> timings;
     QString lpvNote;
+    // gi.method = radiosity: the solution shown ("FILE: 438 patches, ...") or
+    // why there is none; empty when the frame did not ask for one.
+    QString radiosityNote;
+    bool radiosityFailed = false;
     QString error; // empty when the frame rendered
     std::optional<renderer::GpuMemoryInfo> gpuMemory; // as the driver reports it, if it does
     std::shared_ptr<const VisualizerFrame> visualizers; // when the request asked for any

@@ -85,6 +85,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
             total += t.lastMs;
         showFrameStats(total);
     });
+    connect(viewport_, &Viewport::radiosityNoteChanged, this, [this](const QString& note, bool failed) {
+        if (failed)
+            statusBar()->showMessage(tr("Radiosity: ") + note, 10000);
+        log_->add(failed ? EventLog::Severity::Warning : EventLog::Severity::Info, tr("Radiosity"),
+                  failed ? note : tr("showing %1").arg(note));
+    });
+    connect(document_, &Document::projectSaved, viewport_, &Viewport::reloadBakedRadiosity);
     connect(viewport_, &Viewport::renderFailed, this, [this](const QString& message) {
         statusBar()->showMessage(tr("Render error: ") + message);
         log_->add(EventLog::Severity::Error, tr("Render"), message);
@@ -234,6 +241,8 @@ void MainWindow::createDocks() {
     tabifyDockWidget(profilerDock, radiosityDock);
     connect(radiosity_, &RadiosityPanel::stopped, this,
             [this](const QString& message) { log_->add(EventLog::Severity::Info, tr("Radiosity"), message); });
+    // gi.method = radiosity: a stop saved the solution the viewport shows.
+    connect(radiosity_, &RadiosityPanel::stopped, viewport_, &Viewport::reloadBakedRadiosity);
     connect(cameraPaths_, &CameraPathPanel::videoExportFinished, this, [this](const QString& output, const QString& error) {
         if (error.isEmpty())
             log_->add(EventLog::Severity::Info, tr("Video export"), tr("wrote %1").arg(output));

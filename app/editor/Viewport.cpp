@@ -2,6 +2,7 @@
 
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/FramingCamera.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Picking.h"
@@ -268,7 +269,8 @@ void Viewport::requestFrameIfChanged() {
     const bool texturesArrived = !texturesToSend_.empty();
     if (requested_ && pending_ == Changes() && !texturesArrived && !requested_->resend &&
         requested_->camera == camera && requested_->parameters == params && requested_->split == split_ &&
-        requested_->width == w && requested_->height == h && requested_->readHdr == hdrReadback_)
+        requested_->width == w && requested_->height == h && requested_->readHdr == hdrReadback_ &&
+        (requested_->radiosityGeneration == radiosityGeneration_ || !showsBakedRadiosity()))
         return;
     prepareSceneChanges();
     FrameRequest request;
@@ -300,8 +302,11 @@ void Viewport::requestFrameIfChanged() {
     request.height = h;
     request.visualizers = vizRequest_;
     request.readHdr = hdrReadback_;
+    request.projectFile = document_->path().toStdString();
+    request.radiosityGeneration = radiosityGeneration_;
+    request.texturesPending = textureWorker_ != nullptr;
     pending_ = {};
-    requested_ = Requested{camera, params, split_, w, h, hdrReadback_};
+    requested_ = Requested{camera, params, split_, w, h, hdrReadback_, radiosityGeneration_};
     worker_->submit(std::move(request));
 }
 
@@ -332,6 +337,11 @@ void Viewport::onFrameReady(const std::shared_ptr<const FrameResult>& result) {
     if (result->lpvNote != lastNote_) {
         lastNote_ = result->lpvNote;
         emit lpvNoteChanged(lastNote_);
+    }
+    if (result->radiosityNote != lastRadiosityNote_) {
+        lastRadiosityNote_ = result->radiosityNote;
+        if (!lastRadiosityNote_.isEmpty())
+            emit radiosityNoteChanged(lastRadiosityNote_, result->radiosityFailed);
     }
     update();
 }
@@ -445,6 +455,16 @@ void Viewport::drawOverlay(QPainter& painter) {
         painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "A: " + splitLabels_[0]);
         painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "B: " + splitLabels_[1]);
     }
+}
+
+void Viewport::reloadBakedRadiosity() {
+    ++radiosityGeneration_;
+    update(); // a frame that shows the solution is asked for again
+}
+
+bool Viewport::showsBakedRadiosity() const {
+    return renderer::showsBakedRadiosity(document_->parameters()) ||
+           (split_ && (renderer::showsBakedRadiosity(split_->first) || renderer::showsBakedRadiosity(split_->second)));
 }
 
 void Viewport::setVisualizerRequest(const VisualizerRequest& request) {

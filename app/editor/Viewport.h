@@ -123,11 +123,19 @@ public:
     // The size frames render at (the widget's pixels times the resolution scale).
     QSize renderSize() const { return {renderWidth(), renderHeight()}; }
 
+  public slots:
+    // gi.method = radiosity: the saved solution may have changed (a solve
+    // saved it, the project was saved elsewhere): the next frame loads it again.
+    void reloadBakedRadiosity();
+
   signals:
     // After every frame: the renderer's timing table (for the status bar and the profiler).
     void frameRendered(const std::vector<lpv::renderer::PassTiming>& timings);
     // What the LPV did in the last frame and why (the renderer's note), when it changes.
     void lpvNoteChanged(const QString& note);
+    // gi.method = radiosity: the solution the frames show, or why there is
+    // none (`failed`: they have direct light only), when it changes.
+    void radiosityNoteChanged(const QString& note, bool failed);
     void renderFailed(const QString& message);
     void viewCameraChanged();
     // Background texture decoding started (count of materials) or finished (0, with warnings).
@@ -176,6 +184,8 @@ private:
     void scheduleReference(bool sceneChanged);
     void restartReference();
     bool showsReference() const;
+    // gi.method = radiosity in the view (or a half of the split).
+    bool showsBakedRadiosity() const;
 
     Document* document_;
     FrameWorker* worker_ = nullptr;
@@ -194,6 +204,7 @@ private:
         std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split;
         int width = 0, height = 0;
         bool readHdr = false;
+        quint64 radiosityGeneration = 0;
         bool resend = false; // the next paint sends a request even if nothing above changed
     };
     std::optional<Requested> requested_;
@@ -238,6 +249,8 @@ private:
 
     QString lastError_;
     QString lastNote_;
+    QString lastRadiosityNote_;
+    quint64 radiosityGeneration_ = 0; // bumped by reloadBakedRadiosity
 };
 
 } // namespace lpv::editor
