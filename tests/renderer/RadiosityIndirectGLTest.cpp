@@ -5,6 +5,7 @@
 #include "GlFixture.h"
 
 #include "lpv/radiosity/BakedSolution.h"
+#include "lpv/radiosity/PatchMesh.h"
 #include "lpv/radiosity/RadiositySession.h"
 #include "lpv/radiosity/SolveLoop.h"
 #include "lpv/radiosity/VertexRadiosity.h"
@@ -291,6 +292,81 @@ TEST_F(RadiosityIndirectGLTest, WithoutASolutionTheFrameHasDirectLightOnlyAndSay
     EXPECT_NE(it->reason.find("no radiosity solution: run lpv radiosity"), std::string::npos) << it->reason;
     EXPECT_NE(renderer_->lpvNote().find("no radiosity solution"), std::string::npos) << renderer_->lpvNote();
     EXPECT_EQ(renderer_->graphReport().find("radiosityIndirect")->status, renderer::PassStatus::Culled);
+}
+
+namespace {
+
+// A horizontal quad facing up, x0..x1 by z0..z1 at height y.
+scene::Mesh horizontalQuad(float x0, float x1, float z0, float z1, float y, std::uint32_t material) {
+    scene::Mesh m;
+    m.positions = {{x0, y, z1}, {x1, y, z1}, {x1, y, z0}, {x0, y, z0}};
+    m.normals.assign(4, {0.0f, 1.0f, 0.0f});
+    m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    m.indices = {0, 1, 2, 0, 2, 3};
+    m.submeshes = {{0, 6, material}};
+    return m;
+}
+
+} // namespace
+
+// A patch is a whole quad, but an alpha-masked leaf has holes: after the
+// depth pre-pass the ground seen through them reads the ground's light, not
+// the leaf's (the solution is made by hand: green on the ground, red on the leaf).
+TEST_F(RadiosityIndirectGLTest, TheGroundSeenThroughAMaskedLeafReadsItsOwnLight) {
+    scene::Scene s;
+    scene::Material white, leaves;
+    white.diffuseColor = leaves.diffuseColor = glm::vec3(1.0f);
+    leaves.alphaMode = scene::AlphaMode::Mask;
+    leaves.alphaTexture = "checker.png";
+    s.materials = {white, leaves};
+    s.meshes = {horizontalQuad(-2, 2, -2, 2, 0.0f, 0), horizontalQuad(-1, 1, -1, 1, 0.3f, 1)};
+    s.objects = {{"ground", 0, -1, {}, true, {}}, {"leaf", 1, -1, {}, true, {}}};
+    s.sky.intensity = 0.0f;
+    scene::TextureImages textures;
+    scene::Image8 checker{8, 8, 4, {}};
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const std::uint8_t a = ((x / 2 + y / 2) % 2) ? 255 : 0; // 4x4 cells of 0.5 m
+            checker.pixels.insert(checker.pixels.end(), {a, a, a, 255});
+        }
+    textures["checker.png"] = checker;
+    auto solution = std::make_shared<radiosity::BakedSolution>();
+    solution->mesh = radiosity::buildPatchMesh(s, {0.25f});
+    for (const radiosity::Patch& p : solution->mesh.patches)
+        solution->incident.push_back(p.material == 0 ? glm::vec3(0.0f, 0.5f, 0.0f)
+                                                     : glm::vec3(0.5f, 0.0f, 0.0f));
+    renderer_->setScene(s, textures);
+    renderer_->setBakedRadiosity(solution);
+    scene::Camera camera; // straight down; image right = +x, image up = -z
+    camera.position = {0.0f, 3.0f, 0.0f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    camera.up = {0.0f, 0.0f, -1.0f};
+    camera.fovY = glm::radians(60.0f);
+    scene::ParameterSet params;
+    ASSERT_TRUE(params.setFromText("gi.method", "radiosity", "test").has_value());
+    ASSERT_TRUE(renderer_->render(s, params, camera, kWidth, kHeight).has_value());
+    const std::vector<float> hdr = renderer_->readHdr(), depth = renderer_->readDepth();
+    const glm::mat4 inverse = glm::inverse(camera.projection(float(kWidth) / float(kHeight)) * camera.view());
+    int holes = 0, holesGreen = 0, leaf = 0, leafRed = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = std::size_t(y) * kWidth + std::size_t(x);
+            const glm::vec3 p = worldAt(inverse, x, y, depth[i]);
+            if (std::abs(p.x) > 0.9f || std::abs(p.z) > 0.9f)
+                continue;
+            const glm::vec3 c = rgb(hdr, i); // no light: the frame is the indirect light alone
+            if (p.y < 0.1f) {
+                ++holes;
+                holesGreen += c.g > 0.45f && c.r < 0.05f;
+            } else {
+                ++leaf;
+                leafRed += c.r > 0.45f && c.g < 0.05f;
+            }
+        }
+    ASSERT_GT(holes, 1000);
+    ASSERT_GT(leaf, 1000);
+    EXPECT_GE(holesGreen, holes * 98 / 100) << holesGreen << " of " << holes << " ground pixels";
+    EXPECT_GE(leafRed, leaf * 98 / 100) << leafRed << " of " << leaf << " leaf pixels";
 }
 
 // A solution is shown only with the scene it was solved for.

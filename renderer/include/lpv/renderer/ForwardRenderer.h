@@ -1,6 +1,7 @@
 #pragma once
 // One frame as a graph of passes (docs/renderer.md): shadow maps, the
-// indirect light (RSMs, LPV stages), a forward pass that shades into HDR and
+// indirect light (RSMs, LPV stages; or a baked radiosity solution drawn from
+// the camera, gi.method = radiosity), a forward pass that shades into HDR and
 // writes the camera G-buffer (depth, normal, albedo) at the same time, then
 // sun rays, exposure and tonemapping to sRGB. Each pass lives in its own
 // file (ShadowPass, ...); the graph orders them, culls and reuses them.
