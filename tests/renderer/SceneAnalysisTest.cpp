@@ -136,3 +136,25 @@ TEST(SceneAnalysis, SubsurfaceRunsOnlyWithTheLpvAndIsImplemented) {
     EXPECT_FALSE(noLpv.runs());
     EXPECT_NE(noLpv.reason.find("the LPV does not run"), std::string::npos) << noLpv.reason;
 }
+
+// gi.method = radiosity: the LPV does not run and says what lights the frame
+// instead; the baked solution's own decision needs a solution.
+TEST(SceneAnalysis, RadiosityRunsNoLpvAndNeedsASolution) {
+    const scene::Scene s = groundWithSun();
+    scene::ParameterSet params;
+    ASSERT_TRUE(params.setFromText("gi.method", "radiosity", "test").has_value());
+    const auto d = renderer::decideEffects(s, renderer::analyseSceneTraits(s), params, nullptr);
+    EXPECT_FALSE(d.front().runs());
+    EXPECT_EQ(d.front().reason, "gi.method is radiosity: the indirect light is a baked solution's");
+    EXPECT_FALSE(find(d, "lpv.localLights").runs());
+    EXPECT_TRUE(renderer::showsBakedRadiosity(params));
+    const auto none = renderer::decideBakedRadiosity(params, 0, 0.0);
+    EXPECT_FALSE(none.runs());
+    EXPECT_EQ(none.reason, "no radiosity solution: run lpv radiosity (direct light only)");
+    const auto baked = renderer::decideBakedRadiosity(params, 438, 0.0977);
+    EXPECT_TRUE(baked.runs());
+    EXPECT_EQ(baked.reason, "a baked solution of 438 patches, residual 0.0977");
+    ASSERT_TRUE(params.setFromText("gi.method", "lpv", "test").has_value());
+    EXPECT_FALSE(renderer::decideBakedRadiosity(params, 438, 0.0977).runs());
+    EXPECT_FALSE(renderer::showsBakedRadiosity(params));
+}
