@@ -166,6 +166,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     bench::SweepSpec spec;
     spec.project = project;
     spec.projectDir = fs::absolute(request.projectFile).parent_path();
+    spec.projectFile = request.projectFile;
     spec.camera = *camera;
     spec.width = *width;
     spec.height = *height;

@@ -309,6 +309,7 @@ void SweepPanel::startSweep() {
     SweepJobSpec spec;
     spec.project = document_->project();
     spec.projectDir = document_->projectDir().toStdString();
+    spec.projectFile = document_->path().toStdString();
     spec.camera = currentView_();
     spec.combinations = *combinations;
     spec.width = width_->value();

@@ -96,6 +96,7 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
         SweepSpec sweep;
         sweep.project = spec.project;
         sweep.projectDir = spec.projectDir;
+        sweep.projectFile = spec.projectFile;
         sweep.camera = spec.camera;
         sweep.width = spec.width;
         sweep.height = spec.height;

@@ -3,7 +3,11 @@
 #include "Pixels.h"
 
 #include "lpv/importers/SceneTextures.h"
+#include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/SceneAnalysis.h"
+
+#include <memory>
 
 #include <algorithm>
 
@@ -73,6 +77,21 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
 
     const std::vector<std::vector<Setting>> combinations =
         spec.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : spec.combinations;
+    // Radiosity is a GI method beside the LPV settings (issue #27 item 5):
+    // its solution is read once, before any run, and must fit the scene.
+    std::shared_ptr<const radiosity::BakedSolution> baked;
+    for (const auto& combination : combinations) {
+        scene::ParameterSet p = spec.project.parameters;
+        for (const auto& [key, value] : combination)
+            (void)p.setFromText(key, value, "--sweep");
+        if (!renderer::showsBakedRadiosity(p) || baked)
+            continue;
+        auto solution = radiosity::loadBakedSolution(spec.project.scene, textures.images, spec.projectFile);
+        if (!solution)
+            return std::unexpected(solution.error());
+        baked = std::make_shared<const radiosity::BakedSolution>(std::move(*solution));
+        gl.renderer.setBakedRadiosity(baked);
+    }
     SweepResult result;
     result.gl = gl.context.info();
     const int total = int(combinations.size());
@@ -117,7 +136,15 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
                                             &ref.coverage);
         };
         run.bounces = parameters.getInt("lpv.bounces");
-        run.indirect = run.bounces == 1 ? measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance)
+        const bool radiosity = renderer::showsBakedRadiosity(parameters);
+        if (radiosity) {
+            // A solution holds every bounce: it is measured against the
+            // reference's multi-bounce layer, whatever lpv.bounces says.
+            run.bounces = spec.referenceBounces;
+            run.solveSeconds = baked->seconds;
+            run.solveResidual = baked->residual;
+        }
+        run.indirect = run.bounces == 1 && !radiosity ? measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance)
                                         : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
         run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
         run.image = measure(image, ref.image, ref.imageVariance);

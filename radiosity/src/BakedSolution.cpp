@@ -31,6 +31,7 @@ scene::Expected<BakedSolution> loadBakedSolution(const scene::Scene& scene, cons
     out.mesh = std::move(stored->mesh);
     out.incident = std::move(stored->state.incident);
     out.shots = stored->state.shots;
+    out.seconds = stored->state.seconds;
     out.signature = signature;
     out.file = file;
     glm::dvec3 unshot(0.0);

@@ -17,6 +17,7 @@ namespace lpv::bench {
 struct MeasuredSweepSpec {
     scene::Project project;           // its parameters are the base every combination changes
     std::filesystem::path projectDir; // textures are read relative to it
+    std::filesystem::path projectFile; // a baked radiosity solution is read beside it (gi.method = radiosity)
     scene::Camera camera;
     std::vector<std::vector<Setting>> combinations; // {} = the project's own settings
     int width = 160;

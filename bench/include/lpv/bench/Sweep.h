@@ -32,6 +32,10 @@ struct SweepRun {
     reference::ErrorMetrics indirectOne; // against the one-bounce indirect irradiance
     reference::ErrorMetrics image;       // final image against the reference image
     std::vector<glm::vec3> indirectPixels;
+    // gi.method = radiosity: the saved solution's solve time (its cost is paid
+    // once, before any frame) and residual; 0 for other runs.
+    double solveSeconds = 0.0;
+    double solveResidual = 0.0;
 };
 
 // A run's settings as "steps=8 gridSize=32" ("defaults" when none).
@@ -42,6 +46,10 @@ struct SweepSpec {
     // to false there for timings of every pass every frame (the CLI does).
     scene::Project project;
     std::filesystem::path projectDir; // textures are read relative to it
+    // Where a baked radiosity solution is read (radiosity::solutionPath) for
+    // combinations with gi.method = radiosity; a sweep that shows one without
+    // a solution that fits the scene fails with the loader's error.
+    std::filesystem::path projectFile;
     scene::Camera camera;
     int width = 320;
     int height = 180;

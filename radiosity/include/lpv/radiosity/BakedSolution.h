@@ -19,6 +19,7 @@ struct BakedSolution {
     std::vector<glm::vec3> incident; // per patch: irradiance / pi that arrived through form factors
     double residual = 0.0;           // unshot / emitted power when it was saved
     std::uint64_t shots = 0;
+    double seconds = 0.0;            // solve time over all its sessions
     std::uint64_t signature = 0;     // the scene signature it was solved for
     std::filesystem::path file;      // where it was read from
 };
