@@ -51,7 +51,9 @@ Json sweepRunToJson(const SweepRun& r) {
             {"passes", passes},
             {"indirect", metricsToJson(r.indirect)},
             {"indirectOneBounce", metricsToJson(r.indirectOne)},
-            {"image", metricsToJson(r.image)}};
+            {"image", metricsToJson(r.image)},
+            {"solveSeconds", r.solveSeconds},
+            {"solveResidual", r.solveResidual}};
 }
 
 SweepRun sweepRunFromJson(const Json& r) {
@@ -67,6 +69,9 @@ SweepRun sweepRunFromJson(const Json& r) {
     run.indirect = metricsFromJson(r.at("indirect"));
     run.indirectOne = metricsFromJson(r.at("indirectOneBounce"));
     run.image = metricsFromJson(r.at("image"));
+    // Absent in sweeps written before radiosity runs were measured.
+    run.solveSeconds = r.value("solveSeconds", 0.0);
+    run.solveResidual = r.value("solveResidual", 0.0);
     return run;
 }
 

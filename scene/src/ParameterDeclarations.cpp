@@ -250,7 +250,8 @@ std::vector<ParameterInfo> declareParameters() {
                "How shooters find what they light: rays from every patch to points on the shooter (CPU, Embree; "
                "Wallace et al. 1989) or hemicubes rendered on the GPU",
                P::Radiosity),
-        integer("radiosity.shooterSamples", 4, 1, 64, "points", "Radiosity",
+        // 1: on the Cornell box 4 points cost 3.4x the solve time for 0.25 points of indirect MARE (issue #27).
+        integer("radiosity.shooterSamples", 1, 1, 64, "points", "Radiosity",
                 "Ray-cast form factors: points on each shooter that every patch casts a ray to", P::Radiosity),
         real("radiosity.convergenceThreshold", 0.01, 0.00001, 1.0, "", "Radiosity",
              "Stop when the unshot energy falls below this fraction of the emitted energy", P::Radiosity),

@@ -3,6 +3,9 @@
 #include "lpv/bench/Reference.h"
 #include "lpv/bench/Sweep.h"
 #include "lpv/bench/SweepOutput.h"
+#include "lpv/radiosity/RadiositySession.h"
+#include "lpv/radiosity/RayCastFormFactors.h"
+#include "lpv/radiosity/SolveLoop.h"
 #include "lpv/scene/CornellBox.h"
 
 #include <gtest/gtest.h>
@@ -141,4 +144,48 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     EXPECT_EQ(json.at("runs")[0].at("totalMs").get<double>(), result->runs[0].totalMs);
     EXPECT_EQ(json.at("runs")[1].at("indirect").at("mare").get<double>(), result->runs[1].indirect.mare);
     fs::remove_all(dir);
+}
+
+// Issue #27 item 5: radiosity is a GI method beside the LPV settings. The
+// sweep reads the solution saved beside the project, measures it against the
+// reference's multi-bounce layer (a solution holds every bounce) and carries
+// its solve time; without a solution the sweep fails and says what to do.
+TEST(SweepGL, RadiosityIsMeasuredBesideTheLpvFromTheSavedSolution) {
+    const CornellSweep& c = cornell();
+    ASSERT_EQ(c.reference.width, kWidth) << "the reference did not trace";
+    const fs::path dir = fs::temp_directory_path() / "lpv-sweep-radiosity";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    bench::SweepSpec spec = c.spec;
+    spec.projectFile = dir / "cornell.lpvproj";
+    spec.combinations = {{{"gi.method", "lpv"}}, {{"gi.method", "radiosity"}}};
+
+    auto missing = bench::runSweep(spec, c.reference);
+    ASSERT_FALSE(missing.has_value());
+    EXPECT_NE(missing.error().message.find("no radiosity solution"), std::string::npos)
+        << missing.error().describe();
+
+    auto session = radiosity::RadiositySession::create(spec.project.scene, {}, 0.5f, 1000000);
+    ASSERT_TRUE(session.has_value()) << session.error().describe();
+    auto rays = radiosity::RayCastFormFactors::create(session->mesh(), spec.project.scene, {}, 1, 16);
+    ASSERT_TRUE(rays.has_value()) << rays.error().describe();
+    radiosity::SolveOptions options;
+    options.residualTarget = 0.02;
+    options.shootersPerBatch = 16;
+    ASSERT_TRUE(radiosity::solve(session->solver(), **rays, options).has_value());
+    ASSERT_TRUE(radiosity::saveSolution(session->stored(), radiosity::solutionPath(spec.projectFile)).has_value());
+
+    auto result = bench::runSweep(spec, c.reference);
+    ASSERT_TRUE(result.has_value()) << result.error().describe();
+    ASSERT_EQ(result->runs.size(), 2u);
+    const bench::SweepRun& lpv = result->runs[0];
+    const bench::SweepRun& baked = result->runs[1];
+    EXPECT_EQ(lpv.solveSeconds, 0.0);
+    EXPECT_GT(baked.solveSeconds, 0.0);
+    EXPECT_LE(baked.solveResidual, 0.02);
+    EXPECT_EQ(baked.bounces, spec.referenceBounces);
+    // Against the multi-bounce layer, not the one-bounce one.
+    EXPECT_NE(baked.indirect.mare, baked.indirectOne.mare);
+    EXPECT_NEAR(baked.indirect.meanTest / baked.indirect.meanReference, 1.0, 0.25);
+    EXPECT_LT(baked.indirect.mare, lpv.indirect.mare);
 }
