@@ -13,7 +13,11 @@
 #include "Cli.h"
 #include "ReferenceFile.h"
 
+#include "BenchSweepCommand.h"
+#include "ReferenceTrace.h"
+
 #include "lpv/bench/Report.h"
+#include "lpv/radiosity/PatchMesh.h"
 #include "lpv/reference/Metrics.h"
 #include "lpv/scene/Project.h"
 
@@ -129,13 +133,20 @@ std::string describeReference(const fs::path& file) {
            fixed(std::atof(attr("lpv:seconds").c_str()), 1) + " s";
 }
 
-bool hasEmissiveMaterial(const scene::Project& p) {
-    return std::ranges::any_of(p.scene.materials, [](const scene::Material& m) {
-        return m.emissive != glm::vec3(0.0f) || !m.emissiveTexture.empty();
-    });
+// A patch size that meshes the scene into at most about 100,000 patches: the
+// default 0.05 m^2 makes a million of Sibenik's (radiosity.maxPatches).
+float reportPatchArea(const scene::Project& p) {
+    float area = p.parameters.getFloat("radiosity.maxPatchArea");
+    while (radiosity::countPatches(p.scene, {area}) > 100000 && area < 100.0f)
+        area *= 4.0f;
+    return area;
 }
 
-// Radiosity against the reference of the emissive light alone, at doubling solve times.
+// Radiosity as a GI method beside the LPV (issue #27 item 5): the project's
+// own lights shoot, the solve runs to doubling wall times, and after each the
+// frame's indirect light (gi.method = radiosity) is measured like for like
+// against a reference of many bounces without the sky (the solution holds
+// every bounce, and the sky does not shoot).
 void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, int height, int spp,
                       double maxSeconds) {
     auto project = scene::loadProject(report.projectFile);
@@ -143,73 +154,65 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         report.radiosityNote = project.error().describe();
         return;
     }
-    if (!hasEmissiveMaterial(*project)) {
-        report.radiosityNote =
-            "not measured: no emissive material (radiosity shoots from emissive surfaces only)";
-        return;
-    }
     const fs::path dir = sceneDir / "radiosity";
     fs::create_directories(dir);
-    const fs::path emissiveProject = dir / (report.name + "-emissive.lpvproj");
-    project->name += "-emissive";
-    project->scene.lights.clear(); // their stand-ins for the emitters would light the scene twice
-    if (auto ok = scene::saveProject(*project, emissiveProject); !ok) {
-        report.radiosityNote = ok.error().describe();
+    const fs::path solvedProject = dir / (report.name + ".lpvproj");
+    const float patchArea = reportPatchArea(*project);
+    const std::string areaSet = "radiosity.maxPatchArea=" + fixed(patchArea, 4);
+    const fs::path ref = dir / "reference-8-bounce-sky-off.exr";
+    ReferenceCommand traced;
+    traced.projectFile = report.projectFile;
+    traced.output = ref.string();
+    traced.width = width;
+    traced.height = height;
+    traced.spp = std::to_string(spp);
+    traced.bounces = "8";
+    traced.sets = {"reference.skyLight=off"};
+    if (!referenceMatches(ref, width, height) && runEchoed(traced) != kOk) {
+        report.radiosityNote = "the 8-bounce reference failed";
         return;
     }
-    const fs::path ref = dir / "reference-emissive.exr";
-    ReferenceCommand emissive;
-    emissive.projectFile = emissiveProject.string();
-    emissive.output = ref.string();
-    emissive.width = width;
-    emissive.height = height;
-    emissive.spp = std::to_string(spp);
-    emissive.sets = {"reference.emissiveLight=true"};
-    if (!referenceMatches(ref, width, height) && runEchoed(emissive) != kOk) {
-        report.radiosityNote = "the emissive-light reference failed";
-        return;
-    }
-    auto loadedRef = readReferenceExr(ref);
-    if (!loadedRef) {
-        report.radiosityNote = loadedRef.error().describe();
-        return;
-    }
-    report.radiosityNote =
-        "project lights removed, reference.emissiveLight=true, reference " + describeReference(ref);
+    report.radiosityNote = "the project's lights shoot, " + areaSet + ", ray-cast form factors; indirect light "
+                           "against an 8-bounce reference without sky, " + describeReference(ref);
     double solved = 0.0;
     bool restart = true;
     for (double target = 5.0; solved < maxSeconds - 1e-6; target = std::min(2.0 * target, maxSeconds)) {
-        const fs::path image = dir / ("radiosity-" + fixed(target, 0) + "s.exr");
         RadiosityCommand solve;
-        solve.projectFile = emissiveProject.string();
+        solve.projectFile = restart ? report.projectFile : solvedProject.string();
+        if (restart)
+            solve.output = solvedProject.string();
         solve.maxSeconds = target - solved;
         solve.residual = 0.0001;
-        solve.imageFile = image.string();
-        solve.width = width;
-        solve.height = height;
         solve.progressInterval = 10.0;
+        solve.sets = {areaSet};
         solve.restart = restart;
+        std::printf("\n$ lpv radiosity %s%s --set %s --max-seconds %.2f --residual 0.0001 --progress-interval 10%s\n",
+                    solve.projectFile.c_str(), restart ? (" -o " + solvedProject.string()).c_str() : "",
+                    areaSet.c_str(), solve.maxSeconds, restart ? " --restart" : "");
         restart = false;
-        std::printf("\n$ lpv radiosity %s --max-seconds %.2f --residual 0.0001 --image %s --width %d --height %d "
-                    "--progress-interval 10%s\n",
-                    solve.projectFile.c_str(), solve.maxSeconds, image.string().c_str(), width, height,
-                    solve.restart ? " --restart" : "");
         if (runRadiosityCommand(solve) != kOk) {
             report.failures.push_back("radiosity run to " + fixed(target, 0) + " s");
             return;
         }
         solved = target;
-        auto test = readRgbExr(image);
-        if (!test) {
-            report.failures.push_back(test.error().describe());
+        SweepCommand measure;
+        measure.projectFile = solvedProject.string();
+        measure.sweeps = {"gi.method=radiosity"};
+        measure.referenceFile = ref.string();
+        measure.outDir = dir / ("sweep-" + fixed(target, 0) + "s");
+        measure.width = width;
+        measure.height = height;
+        measure.frames = 1;
+        measure.warmup = 1;
+        std::vector<SweepRun> runs;
+        if (runSweepCommand(measure, &runs) != kOk || runs.empty()) {
+            report.failures.push_back("measuring the radiosity solution after " + fixed(target, 0) + " s");
             return;
         }
-        const auto& r = loadedRef->image;
-        report.radiosity.push_back(
-            {solved, reference::compareImages({test->width, test->height, &test->pixels},
-                                              {r.width, r.height, &r.image}, &r.imageVariance, &r.coverage)});
-        std::printf("radiosity after %.0f s of solving: %s\n", solved,
-                    reference::describe(report.radiosity.back().image).c_str());
+        report.radiosity.push_back({runs.front().solveSeconds, runs.front().image, runs.front().indirect,
+                                    runs.front().solveResidual});
+        std::printf("radiosity after %.0f s of solving: indirect %s\n", solved,
+                    reference::describe(report.radiosity.back().indirect).c_str());
     }
 }
 

@@ -163,11 +163,13 @@ std::string reportMarkdown(const std::vector<SceneReport>& scenes, const std::st
             }
         out << "\n\n### Radiosity against solve time\n\n" << s.radiosityNote << "\n\n";
         if (!s.radiosity.empty()) {
-            out << "| solve wall time | image MARE | image relMSE | image SSIM |\n|---:|---:|---:|---:|\n";
+            out << "| solve time | residual | indirect MARE | indirect mean (radiosity / reference) | image MARE | "
+                   "image SSIM |\n|---:|---:|---:|---:|---:|---:|\n";
             for (const RadiosityPoint& p : s.radiosity)
-                out << "| " << fixed(p.seconds, 0) << " s | " << percent(p.image.mare)
-                    << (p.image.mareBelowNoise() ? " (below noise)" : "") << " | " << fixed(p.image.relMse, 4)
-                    << " | " << fixed(p.image.ssim, 3) << " |\n";
+                out << "| " << fixed(p.seconds, 1) << " s | " << fixed(p.residual, 5) << " | "
+                    << percent(p.indirect.mare) << (p.indirect.mareBelowNoise() ? " (below noise)" : "") << " | "
+                    << fixed(p.indirect.meanReference > 0.0 ? p.indirect.meanTest / p.indirect.meanReference : 0.0, 2)
+                    << "x | " << percent(p.image.mare) << " | " << fixed(p.image.ssim, 3) << " |\n";
         }
         for (const std::string& f : s.failures)
             out << "\n**Failed:** " << f << "\n";
@@ -195,7 +197,13 @@ std::string reportJson(const std::vector<SceneReport>& scenes, const std::string
                                      {"imageMare", r.imageMare}});
         for (const RadiosityPoint& p : s.radiosity)
             scene["radiosity"].push_back(
-                {{"seconds", p.seconds}, {"imageMare", p.image.mare}, {"imageRelMse", p.image.relMse}});
+                {{"seconds", p.seconds},
+                 {"residual", p.residual},
+                 {"indirectMare", p.indirect.mare},
+                 {"indirectMeanRatio",
+                  p.indirect.meanReference > 0.0 ? p.indirect.meanTest / p.indirect.meanReference : 0.0},
+                 {"imageMare", p.image.mare},
+                 {"imageRelMse", p.image.relMse}});
         j["scenes"].push_back(scene);
     }
     return j.dump(2) + "\n";

@@ -56,6 +56,13 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     EXPECT_GT(ratioAt16Steps, 2.0 * ratioAt0Steps);
     ASSERT_EQ(scene["radiosity"].size(), 1u);
     EXPECT_TRUE(std::isfinite(scene["radiosity"][0]["imageMare"].get<double>()));
+    // Radiosity is measured like for like (issue #27 item 5): the frame's
+    // indirect light against an 8-bounce reference of the same lights; on the
+    // Cornell box a solved solution holds about the reference's light.
+    const double radiosityRatio = scene["radiosity"][0]["indirectMeanRatio"].get<double>();
+    EXPECT_GT(radiosityRatio, 0.7) << scene["radiosity"].dump();
+    EXPECT_LT(radiosityRatio, 1.4) << scene["radiosity"].dump();
+    EXPECT_GT(scene["radiosity"][0]["seconds"].get<double>(), 0.0);
     std::ifstream md(dir / "report.md");
     std::stringstream text;
     text << md.rdbuf();

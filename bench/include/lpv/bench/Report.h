@@ -28,8 +28,10 @@ struct ReportRun {
 };
 
 struct RadiosityPoint {
-    double seconds = 0.0; // cumulative wall time of the solve runs
+    double seconds = 0.0; // the solver's own time so far (all runs)
     reference::ErrorMetrics image;
+    reference::ErrorMetrics indirect; // the frame's indirect light against the reference's multi-bounce layer
+    double residual = 0.0;
 };
 
 struct SceneReport {
