@@ -32,6 +32,14 @@ scene::ParameterSet parametersOf(const MeasuredSweepSpec& spec, int index) {
     return p;
 }
 
+// A radiosity solution holds every bounce and no sky light: its reference
+// traces 8 bounces without the sky (as `lpv bench report` measures it).
+constexpr int kRadiosityReferenceBounces = 8;
+
+int referenceBouncesOf(const scene::ParameterSet& p) {
+    return renderer::showsBakedRadiosity(p) ? kRadiosityReferenceBounces : p.getInt("lpv.bounces");
+}
+
 } // namespace
 
 std::vector<std::vector<int>> groupByReference(const MeasuredSweepSpec& spec) {
@@ -41,7 +49,8 @@ std::vector<std::vector<int>> groupByReference(const MeasuredSweepSpec& spec) {
     for (int i = 0; i < int(spec.combinations.size()); ++i) {
         const scene::ParameterSet p = parametersOf(spec, i);
         const renderer::ReferenceLights lights = renderer::decideReferenceLights(spec.project.scene, traits, p);
-        auto [it, added] = index.emplace(std::make_tuple(p.getInt("lpv.bounces"), lights.sky, lights.emissive),
+        const bool sky = lights.sky && !renderer::showsBakedRadiosity(p);
+        auto [it, added] = index.emplace(std::make_tuple(referenceBouncesOf(p), sky, lights.emissive),
                                          groups.size());
         if (added)
             groups.emplace_back();
@@ -66,12 +75,14 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::vector<int>& group = groups[g];
         const scene::ParameterSet groupParameters = parametersOf(spec, group.front());
-        const int bounces = groupParameters.getInt("lpv.bounces");
+        const int bounces = referenceBouncesOf(groupParameters);
         scene::Project traced = spec.project;
         traced.parameters = groupParameters;
         (void)traced.parameters.setFromText("reference.samplesPerPixel", std::to_string(spec.referenceSpp), "sweep");
         (void)traced.parameters.setFromText("reference.bounces", std::to_string(bounces), "sweep");
         (void)traced.parameters.setFromText("reference.maxSeconds", "0", "sweep");
+        if (renderer::showsBakedRadiosity(groupParameters))
+            (void)traced.parameters.setFromText("reference.skyLight", "off", "sweep");
         bool stopped = false;
         ReferenceCallbacks referenceCallbacks;
         referenceCallbacks.warning = callbacks.warning;

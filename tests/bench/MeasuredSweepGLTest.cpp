@@ -26,6 +26,17 @@ bench::MeasuredSweepSpec cornell() {
 
 } // namespace
 
+// A radiosity solution holds every bounce: it gets a reference of its own
+// (8 bounces, no sky), whatever lpv.bounces says.
+TEST(MeasuredSweepGL, RadiosityGetsAManyBounceReferenceOfItsOwn) {
+    bench::MeasuredSweepSpec spec = cornell();
+    spec.combinations = {{}, {{"gi.method", "radiosity"}}, {{"gi.method", "radiosity"}, {"lpv.bounces", "2"}}};
+    const auto groups = bench::groupByReference(spec);
+    ASSERT_EQ(groups.size(), 2u);
+    EXPECT_EQ(groups[0], (std::vector<int>{0}));
+    EXPECT_EQ(groups[1], (std::vector<int>{1, 2}));
+}
+
 TEST(MeasuredSweepGL, EachBounceCountGetsItsOwnReferenceAndRunsKeepTheirOrder) {
     bench::MeasuredSweepSpec spec = cornell();
     spec.combinations = {{}, {{"lpv.bounces", "2"}}, {{"lpv.propagationSteps", "2"}}};
