@@ -1,12 +1,13 @@
 #include "lpv/radiosity/DirectLight.h"
 
+#include "ParallelChunks.h"
+
 #include "lpv/reference/EmbreeScene.h"
 #include "lpv/reference/PathTracer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 namespace lpv::radiosity {
 
@@ -19,7 +20,8 @@ std::vector<glm::vec3> patchSamplePoints(const Patch& patch, int count) {
         for (int i = 0; i < k; ++i) {
             const float u = (float(i) + 0.5f) / float(k), v = (float(j) + 0.5f) / float(k);
             if (patch.cornerCount == 4) {
-                points.push_back((1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3]);
+                points.push_back((1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] +
+                                 (1 - u) * v * c[3]);
             } else {
                 // Uniform on the triangle: (1 - sqrt(u), sqrt(u) (1 - v), sqrt(u) v).
                 const float s = std::sqrt(u);
@@ -41,17 +43,10 @@ scene::Expected<std::vector<glm::vec3>> directLight(const PatchMesh& mesh, const
         return std::unexpected(embree.error());
     // Only the light model is used: no camera, no pixels.
     const reference::PathTracer tracer(*embree, scene, scene::Camera{}, reference::PathTracerSettings{});
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::atomic<std::size_t> next{0};
-    constexpr std::size_t kChunk = 256;
-    auto work = [&] {
-        for (;;) {
-            if (cancel && cancel->load())
-                return;
-            const std::size_t begin = next.fetch_add(kChunk);
-            if (begin >= mesh.size())
-                return;
-            for (std::size_t i = begin; i < std::min(begin + kChunk, mesh.size()); ++i) {
+    forEachChunk(
+        mesh.size(), 256,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
                 const Patch& p = mesh.patches[i];
                 const std::vector<glm::vec3> points = patchSamplePoints(p, samplesPerPatch);
                 glm::vec3 sum(0.0f);
@@ -61,14 +56,8 @@ scene::Expected<std::vector<glm::vec3>> directLight(const PatchMesh& mesh, const
                     sum += tracer.directIrradiance(q, p.normal, p.normal);
                 out[i] = glm::max(sum / (float(points.size()) * std::numbers::pi_v<float>), glm::vec3(0.0f));
             }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
+        },
+        cancel);
     if (cancel && cancel->load())
         return scene::makeError(scene::ErrorCode::Cancelled, "radiosity", "direct light",
                                 "cancelled while the lights' direct light was computed");

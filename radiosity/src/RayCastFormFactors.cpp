@@ -3,11 +3,11 @@
 #include "lpv/radiosity/DirectLight.h"
 #include "lpv/reference/EmbreeScene.h"
 
+#include "ParallelChunks.h"
+
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <numbers>
-#include <thread>
 
 namespace lpv::radiosity {
 namespace {
@@ -28,16 +28,15 @@ struct ShooterSamples {
 
 } // namespace
 
-scene::Expected<std::unique_ptr<RayCastFormFactors>> RayCastFormFactors::create(const PatchMesh& mesh,
-                                                                                const scene::Scene& scene,
-                                                                                const scene::TextureImages& textures,
-                                                                                int samples, int batch) {
+scene::Expected<std::unique_ptr<RayCastFormFactors>>
+RayCastFormFactors::create(const PatchMesh& mesh, const scene::Scene& scene,
+                           const scene::TextureImages& textures, int samples, int batch) {
     auto embree = reference::EmbreeScene::build(scene, textures);
     if (!embree)
         return std::unexpected(embree.error());
-    return std::unique_ptr<RayCastFormFactors>(new RayCastFormFactors(
-        mesh, std::make_unique<reference::EmbreeScene>(std::move(*embree)), std::max(samples, 1),
-        std::max(batch, 1)));
+    return std::unique_ptr<RayCastFormFactors>(
+        new RayCastFormFactors(mesh, std::make_unique<reference::EmbreeScene>(std::move(*embree)),
+                               std::max(samples, 1), std::max(batch, 1)));
 }
 
 RayCastFormFactors::RayCastFormFactors(const PatchMesh& mesh, std::unique_ptr<reference::EmbreeScene> embree,
@@ -64,50 +63,35 @@ scene::Expected<void> RayCastFormFactors::compute(std::span<const std::uint32_t>
         out.pieceArea = p.area / float(out.points.size());
     }
     constexpr float kPi = std::numbers::pi_v<float>;
-    std::atomic<std::size_t> next{0};
-    constexpr std::size_t kChunk = 512;
-    auto work = [&] {
-        for (;;) {
-            const std::size_t begin = next.fetch_add(kChunk);
-            if (begin >= n)
-                return;
-            const std::size_t end = std::min(begin + kChunk, n);
-            for (std::size_t j = begin; j < end; ++j) {
-                const Patch& r = mesh_.patches[j];
-                const glm::vec3 origin = offsetAlong(r.center, r.normal);
-                for (std::size_t s = 0; s < shots.size(); ++s) {
-                    if (shooters[s] == j)
+    forEachChunk(n, 512, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t j = begin; j < end; ++j) {
+            const Patch& r = mesh_.patches[j];
+            const glm::vec3 origin = offsetAlong(r.center, r.normal);
+            for (std::size_t s = 0; s < shots.size(); ++s) {
+                if (shooters[s] == j)
+                    continue;
+                const ShooterSamples& sh = shots[s];
+                float sum = 0.0f;
+                for (const glm::vec3& q : sh.points) {
+                    const glm::vec3 d = q - origin;
+                    const float r2 = glm::dot(d, d);
+                    if (!(r2 > 0.0f))
                         continue;
-                    const ShooterSamples& sh = shots[s];
-                    float sum = 0.0f;
-                    for (const glm::vec3& q : sh.points) {
-                        const glm::vec3 d = q - origin;
-                        const float r2 = glm::dot(d, d);
-                        if (!(r2 > 0.0f))
-                            continue;
-                        const float dist = std::sqrt(r2);
-                        const glm::vec3 dir = d / dist;
-                        const float cosReceiver = glm::dot(r.normal, dir);
-                        const float cosShooter = -glm::dot(sh.normal, dir);
-                        if (cosReceiver <= 0.0f || cosShooter <= 0.0f)
-                            continue;
-                        if (embree_->occluded(origin, dir, 0.0f, dist * (1.0f - 1e-4f)))
-                            continue;
-                        sum += cosReceiver * cosShooter * sh.pieceArea / (kPi * r2 + sh.pieceArea);
-                    }
-                    if (sum > 0.0f)
-                        factors[s * n + j] = sum * r.area / sh.area;
+                    const float dist = std::sqrt(r2);
+                    const glm::vec3 dir = d / dist;
+                    const float cosReceiver = glm::dot(r.normal, dir);
+                    const float cosShooter = -glm::dot(sh.normal, dir);
+                    if (cosReceiver <= 0.0f || cosShooter <= 0.0f)
+                        continue;
+                    if (embree_->occluded(origin, dir, 0.0f, dist * (1.0f - 1e-4f)))
+                        continue;
+                    sum += cosReceiver * cosShooter * sh.pieceArea / (kPi * r2 + sh.pieceArea);
                 }
+                if (sum > 0.0f)
+                    factors[s * n + j] = sum * r.area / sh.area;
             }
         }
-    };
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
+    });
     // A receiver's centre stands for all of it: a large patch right beside a
     // shooter can be credited more than the shooter sends. No shooter gives
     // away more than it has.
