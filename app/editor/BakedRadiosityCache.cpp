@@ -6,16 +6,16 @@ namespace lpv::editor {
 
 std::shared_ptr<const radiosity::BakedSolution>
 BakedRadiosityCache::update(const scene::Scene& scene, const scene::TextureImages& textures,
-                            const scene::ParameterSet& params, const std::filesystem::path& projectFile,
-                            std::uint64_t generation) {
+                            const std::filesystem::path& projectFile, std::uint64_t generation) {
     const bool reload = !attempted_ || projectFile != file_ || generation != generation_;
     if (!reload && !sceneChanged_)
         return solution_;
     // A scene edit that leaves the solution's scene as it was (a move undone,
     // a material's name) keeps it: the signature alone is cheaper than a load.
-    const float patchArea = float(params.getFloat("radiosity.maxPatchArea"));
+    // At the patch size it was solved with, which the project's
+    // radiosity.maxPatchArea need not equal any more.
     if (!reload && solution_ &&
-        radiosity::currentSignature(scene, textures, patchArea) == solution_->signature) {
+        radiosity::currentSignature(scene, textures, solution_->maxPatchArea) == solution_->signature) {
         sceneChanged_ = false;
         return solution_;
     }

@@ -5,7 +5,6 @@
 // only when what it was checked against may have changed. Qt-free.
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/scene/Image.h"
-#include "lpv/scene/ParameterRegistry.h"
 #include "lpv/scene/Scene.h"
 
 #include <cstdint>
@@ -25,11 +24,12 @@ class BakedRadiosityCache {
     // which has none) for this scene, or null with message() saying why.
     // Loaded on the first call, for another file or `generation` (bumped
     // when a solve saved one); after a scene change a loaded solution whose
-    // signature still matches (meshed at the project's
-    // radiosity.maxPatchArea) is kept without reading the file again.
-    std::shared_ptr<const radiosity::BakedSolution>
-    update(const scene::Scene& scene, const scene::TextureImages& textures, const scene::ParameterSet& params,
-           const std::filesystem::path& projectFile, std::uint64_t generation);
+    // signature still matches (meshed at the patch size it was solved with)
+    // is kept without reading the file again.
+    std::shared_ptr<const radiosity::BakedSolution> update(const scene::Scene& scene,
+                                                           const scene::TextureImages& textures,
+                                                           const std::filesystem::path& projectFile,
+                                                           std::uint64_t generation);
 
     // What was loaded ("FILE: 438 patches, residual 0.0977") or why nothing was.
     const std::string& message() const { return message_; }

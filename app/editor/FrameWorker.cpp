@@ -210,7 +210,7 @@ void FrameWorker::run() {
                                                    renderer::showsBakedRadiosity(request.split->second)));
         if (showsBaked && !request.texturesPending) {
             renderer->setBakedRadiosity(
-                baked.update(scene, textures, request.parameters, request.projectFile, request.radiosityGeneration));
+                baked.update(scene, textures, request.projectFile, request.radiosityGeneration));
             result->radiosityNote = QString::fromStdString(baked.message());
             result->radiosityFailed = baked.failed();
         }

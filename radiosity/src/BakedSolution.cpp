@@ -33,6 +33,7 @@ scene::Expected<BakedSolution> loadBakedSolution(const scene::Scene& scene, cons
     out.shots = stored->state.shots;
     out.seconds = stored->state.seconds;
     out.signature = signature;
+    out.maxPatchArea = stored->maxPatchArea;
     out.file = file;
     glm::dvec3 unshot(0.0);
     for (std::size_t i = 0; i < out.mesh.size(); ++i)

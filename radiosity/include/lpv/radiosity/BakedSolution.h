@@ -21,6 +21,7 @@ struct BakedSolution {
     std::uint64_t shots = 0;
     double seconds = 0.0;            // solve time over all its sessions
     std::uint64_t signature = 0;     // the scene signature it was solved for
+    float maxPatchArea = 0.0f;       // the patch size it was meshed with (what the signature is computed at)
     std::filesystem::path file;      // where it was read from
 };
 
