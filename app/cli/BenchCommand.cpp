@@ -27,7 +27,7 @@ void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
        lpv bench render PROJECT [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
-                                 --thesis-settings --csv FILE --markdown FILE]
+                                 --thesis-settings --turn DEG --csv FILE --markdown FILE]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
        lpv bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]
@@ -49,6 +49,12 @@ by the command and the machine: CPU, cores, GL renderer and version).
 thesis application's phases (shadow maps, RSM, injection, propagation, final
 shading, whole frame, LPV off) with its medians beside ours. Use it on
 Sibenik imported from sibenik.4ds.
+--turn DEG measures the frame where only the camera turned, as the editor
+draws it while the user looks around: the camera yaws by +DEG and back on
+alternate frames about the up axis, the frame graph's reuse stays on (what
+does not depend on the view direction is kept), and it prints, per pass,
+the median over the frames it ran in and in how many, and the median of
+the per-frame totals (every pass that ran in that frame).
 
 )";
     printBenchLpvHelp();

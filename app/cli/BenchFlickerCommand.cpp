@@ -67,10 +67,10 @@ int benchFlicker(Args args) {
         return usageError("bench --flicker needs either --path NAME or --sun-rotate DEG", "bench");
     float degrees = 0.0f;
     if (sunRotate) {
-        char* end = nullptr;
-        degrees = std::strtof(sunRotate->c_str(), &end);
-        if (end == sunRotate->c_str() || *end != '\0' || !std::isfinite(degrees))
+        const auto parsed = parseDegrees(*sunRotate);
+        if (!parsed)
             return usageError("--sun-rotate needs a number of degrees, got '" + *sunRotate + "'", "bench");
+        degrees = *parsed;
     }
     std::string planError;
     const SetPlan plan = planSettings(sets, planError);

@@ -3,6 +3,7 @@
 // never asserted.
 #include "Cli.h"
 #include "BenchReport.h"
+#include "BenchTurn.h"
 #include "RenderSetup.h"
 #include "ThesisSettings.h"
 
@@ -29,6 +30,7 @@ int benchRender(Args args) {
     const auto frames = parseCount(args.option("--frames").value_or("60"), 1);
     const auto warmup = parseCount(args.option("--warmup").value_or("5"), 0);
     const bool perFrame = args.flag("--per-frame");
+    const auto turnText = args.option("--turn");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "bench");
     if (auto unknown = args.unknownOption())
@@ -39,6 +41,13 @@ int benchRender(Args args) {
         return usageError("bench render expects exactly one project file", "bench");
     if (!width || !height || !frames || !warmup)
         return usageError("--width, --height and --frames must be positive integers, --warmup zero or more", "bench");
+    std::optional<float> turn;
+    if (turnText) {
+        const auto parsed = parseDegrees(*turnText);
+        if (!parsed || !(*parsed > 0.0f) || *parsed > 180.0f)
+            return usageError("--turn takes degrees in (0, 180], not '" + *turnText + "'", "bench");
+        turn = *parsed;
+    }
     std::string planError;
     const SetPlan plan = planSettings(sets, planError);
     if (!planError.empty())
@@ -53,8 +62,10 @@ int benchRender(Args args) {
         request.sets.push_back(key + "=" + value);
 
     // A benchmark measures the LPV being computed: no reuse of the last frame's
-    // volumes (a later --set lpv.reuse=true wins).
-    request.sets.insert(request.sets.begin(), "lpv.reuse=false");
+    // volumes (a later --set lpv.reuse=true wins). --turn measures what the
+    // editor redraws when the camera only turned: reuse stays on.
+    if (!turn)
+        request.sets.insert(request.sets.begin(), "lpv.reuse=false");
     request.projectFile = pos.front();
     request.bakedRadiosity = sweepShowsBakedRadiosity(plan.combinations);
     int exitCode = kOk;
@@ -76,6 +87,14 @@ int benchRender(Args args) {
             (void)setup->project.parameters.setFromText(key, value, "--set");
         if (!combination.empty())
             std::printf("\n== %s\n", combinationSuffix(combination).substr(1).c_str());
+        if (turn) {
+            TurnFrames turned;
+            if (!renderTurnFrames(*setup, *width, *height, *warmup, *frames, *turn, turned))
+                return kFailure;
+            std::printf("%s: %dx%d, %d frames after %d warm-up\n%s", request.projectFile.c_str(), *width, *height,
+                        *frames, *warmup, formatTurnFrames(turned, *turn).c_str());
+            continue;
+        }
         if (*warmup > 0 && !renderFrames(*setup, *width, *height, *warmup))
             return kFailure;
         setup->renderer->timer().clearHistory();
@@ -120,7 +139,8 @@ int benchRender(Args args) {
     const renderer::GlInfo& gl = setup->context->info();
     std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(*width) +
                           " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup) + (thesis ? " --thesis-settings" : "");
+                          " --warmup " + std::to_string(*warmup) + (thesis ? " --thesis-settings" : "") +
+                          (turnText ? " --turn " + *turnText : "");
     for (const std::string& kv : sets)
         command += " --set " + kv;
     const std::string machine = describeMachine(gl.renderer, gl.version);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <iostream>
 #include <cstdio>
 #include <sstream>
@@ -126,6 +127,14 @@ std::optional<int> parseCount(const std::string& text, int minimum) {
     int v = 0;
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || ptr != text.data() + text.size() || v < minimum)
+        return std::nullopt;
+    return v;
+}
+
+std::optional<float> parseDegrees(const std::string& text) {
+    float v = 0.0f;
+    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
         return std::nullopt;
     return v;
 }

@@ -50,5 +50,7 @@ bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<Swee
 
 // A whole number >= minimum (command-line counts), or nullopt.
 std::optional<int> parseCount(const std::string& text, int minimum);
+// A finite number of degrees, or nullopt.
+std::optional<float> parseDegrees(const std::string& text);
 
 } // namespace lpv::cli

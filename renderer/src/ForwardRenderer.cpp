@@ -123,6 +123,7 @@ DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraSta
 int ForwardRenderer::shadowCascadesDrawn() const {
     return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
 }
+int ForwardRenderer::shadowCascadesStale() const { return impl_->shadows->staleCascades(); }
 std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
     return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;

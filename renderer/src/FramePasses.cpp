@@ -166,13 +166,16 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     p.id = Pass::ShadowMaps;
     p.decision = runsBecause("direct light is shadowed");
     p.writes = {"shadowMaps"};
-    p.inputsKey = cameraKey(frame); // the sun's cascades follow the camera
+    // The sun's cascades follow the camera; stale far cascades
+    // (shadow.farCascadeInterval) still have to be redrawn when it stops.
+    p.inputsKey = graph::ContentHash().add(cameraKey(frame)).add(shadows->refreshKey()).value();
     // What the maps are drawn from besides the cascades' matrices: a cascade
     // whose snapped matrix did not move keeps its layer (ShadowPass).
     graph::ContentHash content;
     content.add(sceneGeneration);
     addLights(content, frame.scene.lights);
-    for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws"})
+    for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws",
+                            "shadow.farCascadeInterval"})
         content.add(frame.params.get(key));
     // lpv.reuse = false (the benchmarks) draws every cascade every frame.
     const std::uint64_t layersKey = frame.params.getBool("lpv.reuse") ? content.value() : 0;

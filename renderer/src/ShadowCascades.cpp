@@ -94,6 +94,7 @@ std::vector<ShadowCascade> buildCascades(const CascadeCamera& camera, const glm:
         const float n = c.splitNear, f = c.splitFar;
         const float along = std::min(0.5f * (n + f) * (1.0f + k2), f);
         c.radius = std::sqrt((f - along) * (f - along) + f * f * k2);
+        c.sphereRadius = c.radius;
         if (settings.stabilize)
             c.radius = quantizeRadius(c.radius);
         c.center = camera.position + forward * along;
@@ -117,6 +118,12 @@ std::vector<ShadowCascade> buildCascades(const CascadeCamera& camera, const glm:
         cascades.push_back(c);
     }
     return cascades;
+}
+
+bool cascadeCovers(const ShadowCascade& drawn, const ShadowCascade& wanted, const glm::vec3& lightDir) {
+    const glm::vec2 center = glm::vec2(lightRotation(lightDir) * glm::vec4(wanted.center, 1.0f));
+    const glm::vec2 offset = glm::abs(center - drawn.lightCenter);
+    return std::max(offset.x, offset.y) + wanted.sphereRadius <= drawn.radius;
 }
 
 glm::mat4 cascadeUnionViewProj(const std::vector<ShadowCascade>& cascades, const glm::vec3& lightDir,

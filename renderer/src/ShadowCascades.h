@@ -41,7 +41,8 @@ struct ShadowCascade {
     float splitNear = 0.0f; // view distance this cascade starts at
     float splitFar = 0.0f;  // ... and ends at
     glm::vec3 center{0.0f}; // bounding sphere of the split (world), before snapping
-    float radius = 0.0f;
+    float radius = 0.0f;       // half the cascade's width (the sphere's radius, rounded up when stabilised)
+    float sphereRadius = 0.0f; // the sphere's own radius, before rounding
     glm::vec2 lightCenter{0.0f}; // centre of the cascade in light space (snapped when stabilised)
     float depthNear = 0.0f;      // light-space depth range (distances along the light)
     float depthFar = 0.0f;
@@ -61,6 +62,12 @@ float cascadeFarDistance(const CascadeCamera& camera, const scene::Bounds& scene
 // the whole scene, so that casters outside the camera frustum still cast.
 std::vector<ShadowCascade> buildCascades(const CascadeCamera& camera, const glm::vec3& lightDir,
                                          const scene::Bounds& sceneBounds, const CascadeSettings& settings);
+
+// Whether the cascade `drawn` (an earlier frame's, same light and map) still
+// covers the whole slice that `wanted` was fitted to: the slice's bounding
+// sphere lies inside `drawn`'s square in light space. Along the light both
+// cover the whole scene.
+bool cascadeCovers(const ShadowCascade& drawn, const ShadowCascade& wanted, const glm::vec3& lightDir);
 
 // A light-space box (as a view-projection) containing every cascade: cull
 // shadow casters against it once for all cascades.

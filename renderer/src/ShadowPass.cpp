@@ -162,8 +162,22 @@ void ShadowPass::drawLayers(GLuint p, const SceneGpu& geometry, const MaterialGp
     geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
 }
 
+bool ShadowPass::mayKeepFarCascade(std::size_t k, std::uint64_t contentKey, int farInterval,
+                                   const glm::vec3& sunDirection) const {
+    const std::size_t count = cascades_.size();
+    if (farInterval <= 1 || contentKey == 0 || k < count / 2 || layerContent_[k] != contentKey)
+        return false;
+    if ((cascadeFrame_ + k) % std::uint64_t(farInterval) == 0)
+        return false; // this cascade's turn
+    // A point the kept layer no longer covers falls to the next cascade
+    // (shadow_sampling.glsl); past the last one it would be unshadowed, so
+    // the last cascade is kept only while it covers its whole slice.
+    return k + 1 < count || cascadeCovers(drawnCascades_[k], cascades_[k], sunDirection);
+}
+
 scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
-                                                       std::uint64_t contentKey) {
+                                                       std::uint64_t contentKey, int farInterval,
+                                                       const glm::vec3& sunDirection) {
     for (bool opaque : {false, true}) {
         Program& program = opaque ? perCascadeOpaqueProgram_ : perCascadeProgram_;
         if (program)
@@ -181,15 +195,31 @@ scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry,
     // A cascade whose snapped matrix did not move keeps its layer while the
     // scene, the lights and the map are the same: far cascades mostly stay
     // put while the camera moves.
-    if (cascadeKeys_.size() != cascades_.size() || cascadeMapId_ != map)
+    if (cascadeKeys_.size() != cascades_.size() || cascadeMapId_ != map) {
         cascadeKeys_.assign(cascades_.size(), 0);
+        layerContent_.assign(cascades_.size(), 0);
+        drawnCascades_.assign(cascades_.size(), ShadowCascade{});
+    }
     cascadeMapId_ = map;
     cascadesDrawn_ = 0;
+    staleCascades_ = 0;
     for (std::size_t k = 0; k < cascades_.size(); ++k) {
         const std::uint64_t key = cascadeKey(contentKey, cascades_[k].viewProj);
         if (contentKey != 0 && key == cascadeKeys_[k])
             continue; // 0: the caller cannot say what the maps are drawn from, so every layer is drawn
+        if (mayKeepFarCascade(k, contentKey, farInterval, sunDirection)) {
+            // Shade from the layer as it was drawn: its matrix, texel and depth
+            // range; the split distances are this frame's.
+            ShadowCascade kept = drawnCascades_[k];
+            kept.splitNear = cascades_[k].splitNear;
+            kept.splitFar = cascades_[k].splitFar;
+            cascades_[k] = kept;
+            ++staleCascades_;
+            continue;
+        }
         cascadeKeys_[k] = key;
+        layerContent_[k] = contentKey;
+        drawnCascades_[k] = cascades_[k];
         ++cascadesDrawn_;
         // Each cascade culls with its own volume and draws only what it holds.
         glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, map, 0, GLint(k));
@@ -204,6 +234,7 @@ scene::Expected<void> ShadowPass::drawCascadesOneByOne(const SceneGpu& geometry,
             geometry.draw(p, *list, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Coverage); });
         }
     }
+    ++cascadeFrame_;
     glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, map, 0); // layered again
     return {};
 }
@@ -226,6 +257,7 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         return ok;
 
     cascades_.clear();
+    staleCascades_ = 0;
     spotViews_.clear();
     pointViews_.clear();
     spotPositions_.clear();
@@ -267,10 +299,15 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         glPolygonOffset(2.0f, 2.0f);
         const glm::vec3 sunDirection = s.lights[std::size_t(lights_.sun)].direction;
         if (frame.params.getEnum("shadow.cascadeDraws") == "perCascade") {
-            if (auto ok = drawCascadesOneByOne(geometry, materials, contentKey); !ok)
+            // Unstabilised cascades draw each on its own texel grid: a stale
+            // layer would shade other depths, so they are always redrawn.
+            const int farInterval =
+                frame.params.getBool("shadow.stabilize") ? frame.params.getInt("shadow.farCascadeInterval") : 1;
+            if (auto ok = drawCascadesOneByOne(geometry, materials, contentKey, farInterval, sunDirection); !ok)
                 return ok;
         } else {
             cascadeKeys_.clear(); // the broadcast draws every layer
+            staleCascades_ = 0;
             cascadesDrawn_ = int(cascades_.size());
             auto program = programFor(false, int(cascades_.size()));
             if (!program)

@@ -33,6 +33,13 @@ public:
                                  std::uint64_t contentKey = 0);
     // Sun cascades drawn by the last render() (the others kept their layer).
     int cascadesDrawn() const { return cascadesDrawn_; }
+    // Sun cascades shaded from a layer drawn for an earlier camera
+    // (shadow.farCascadeInterval > 1): the next frames redraw them in turn.
+    int staleCascades() const { return staleCascades_; }
+    // 0 while no cascade is stale; otherwise changes every render(), so the
+    // frame graph runs the pass again and the stale layers get their turn
+    // even when the camera stays still.
+    std::uint64_t refreshKey() const { return staleCascades_ > 0 ? cascadeFrame_ : 0; }
 
     // Sets the uniforms of shadow_sampling.glsl in `program` and binds its
     // six textures to units from `nextUnit`.
@@ -81,11 +88,20 @@ private:
     // shadow.vert + shadow.geom + shadow.frag (depth) or shadow_distance.frag.
     scene::Expected<GLuint> programFor(bool distance, int layers, bool opaque = false);
     // shadow.cascadeDraws = perCascade: one draw list and one depth-only draw per cascade, no geometry shader.
+    // `farInterval` > 1: the outer half of the cascades is redrawn only every
+    // farInterval-th frame each, staggered, and shaded from the layer and
+    // matrix it was drawn with in between.
     scene::Expected<void> drawCascadesOneByOne(const SceneGpu& geometry, const MaterialGpu& materials,
-                                               std::uint64_t contentKey);
+                                               std::uint64_t contentKey, int farInterval, const glm::vec3& sunDirection);
+    // Whether far cascade k may keep the layer drawn for an earlier camera this frame.
+    bool mayKeepFarCascade(std::size_t k, std::uint64_t contentKey, int farInterval, const glm::vec3& sunDirection) const;
     Program perCascadeProgram_;       // cuts alpha-masked holes (discard)
     Program perCascadeOpaqueProgram_; // opaque materials: never discards, so depth is tested early
     std::vector<std::uint64_t> cascadeKeys_; // per layer: what it holds (0: nothing known)
+    std::vector<std::uint64_t> layerContent_; // per layer: the contentKey it was drawn with
+    std::vector<ShadowCascade> drawnCascades_; // per layer: the cascade it was drawn for
+    std::uint64_t cascadeFrame_ = 0;          // render() calls, for staggering far-cascade redraws
+    int staleCascades_ = 0;
     GLuint cascadeMapId_ = 0;
     int cascadesDrawn_ = 0;
     std::array<Program, 8> depthPrograms_;

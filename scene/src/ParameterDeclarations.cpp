@@ -189,6 +189,13 @@ std::vector<ParameterInfo> declareParameters() {
                "How the sun's cascades are drawn: perCascade culls and draws each cascade on its own; "
                "geometryShader draws the scene once and broadcasts every triangle to all cascades",
                P::ShadowMaps),
+        integer("shadow.farCascadeInterval", 2, 1, 8, "frames", "Shadows",
+                "Amortised far cascades: while the camera moves, the outer half of the sun's cascades is redrawn "
+                "every Nth frame each (staggered) and shaded in between from the layer drawn for the earlier "
+                "camera, which holds the same depths on the same texel grid (shadow.stabilize; without it every "
+                "cascade is redrawn); a point it no longer covers takes the next cascade, and the last is redrawn "
+                "whenever it no longer covers its slice. 1 redraws every cascade that moved, every frame",
+                P::ShadowMaps | P::Shading),
         integer("shadow.mapSize", 1024, 256, 8192, "px", "Shadows", "Width and height of each shadow map",
                 P::ShadowMaps | P::Shading),
         real("shadow.softness", 1.0, 0.0, 8.0, "", "Shadows",

@@ -147,3 +147,28 @@ TEST(ShadowCascades, UnionBoxContainsEveryCascade) {
         EXPECT_LE(std::abs(clip.y), 1.0f);
     }
 }
+
+// shadow.farCascadeInterval keeps the last cascade only while
+// cascadeCovers(): its slice's sphere inside the square drawn earlier.
+TEST(ShadowCascades, ACascadeCoversItsOwnSliceButNotOneTurnedAway) {
+    CascadeCamera c = camera();
+    const auto drawn = buildCascades(c, kSun, sceneBox(), {6, 1024, true});
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+        EXPECT_TRUE(cascadeCovers(drawn[i], drawn[i], kSun)) << "cascade " << i;
+    c.forward = glm::vec3(glm::rotate(glm::mat4(1.0f), 0.5f, glm::vec3(0, 1, 0)) * glm::vec4(camera().forward, 0.0f));
+    const auto turned = buildCascades(c, kSun, sceneBox(), {6, 1024, true});
+    EXPECT_FALSE(cascadeCovers(drawn.back(), turned.back(), kSun)) << "a 29 degree turn moves the far slice out";
+    // The rounded-up radius leaves room for a small move of the slice's
+    // centre across the light, less the snapping (under one texel).
+    const ShadowCascade& last = drawn.back();
+    const float slack = last.radius - last.sphereRadius;
+    ASSERT_GT(slack, 4.0f * last.texelWorld);
+    // The light view's own x axis in the world (its rotation's first row).
+    const glm::mat4 light = lightRotation(kSun);
+    const glm::vec3 across(light[0][0], light[1][0], light[2][0]);
+    ShadowCascade nudged = last;
+    nudged.center += across * (0.5f * slack);
+    EXPECT_TRUE(cascadeCovers(last, nudged, kSun));
+    nudged.center = last.center + across * (slack + 2.0f * last.texelWorld);
+    EXPECT_FALSE(cascadeCovers(last, nudged, kSun));
+}

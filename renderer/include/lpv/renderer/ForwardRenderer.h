@@ -111,6 +111,9 @@ public:
     void setShadowCascadeTint(bool on);
     // Sun shadow cascades the last frame drew (the others kept their layer: their snapped matrix did not move).
     int shadowCascadesDrawn() const;
+    // Sun shadow cascades the last frame shaded from a layer drawn for an
+    // earlier camera (shadow.farCascadeInterval > 1).
+    int shadowCascadesStale() const;
     // Draw items of the last frame's camera pass: in the scene, and culled by the frustum.
     DrawListStats cameraDrawStats() const;
     // What the LPV did in the last frame and why, e.g. "LPV: 4 cascades of 32^3, 8 steps, computeGather, ..."

@@ -1,0 +1,89 @@
+#include "BenchTurn.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace lpv::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty())
+        return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+} // namespace
+
+scene::Camera yawCamera(const scene::Camera& camera, float degrees) {
+    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
+    scene::Camera turned = camera;
+    turned.target = camera.position + glm::vec3(rotation * glm::vec4(camera.target - camera.position, 0.0f));
+    turned.up = glm::vec3(rotation * glm::vec4(camera.up, 0.0f));
+    return turned;
+}
+
+bool renderTurnFrames(RenderSetup& setup, int width, int height, int warmup, int frames, float degrees,
+                      TurnFrames& out) {
+    const scene::Camera start = setup.camera;
+    renderer::GpuTimer& timer = setup.renderer->timer();
+    // The first frame draws everything; each later one turns away from the
+    // last and back, so the view stays near the start.
+    for (int f = 0; f < warmup + frames; ++f) {
+        setup.camera = f % 2 ? yawCamera(start, degrees) : start;
+        timer.clearHistory();
+        if (auto ok = setup.renderer->render(setup.project.scene, setup.project.parameters, setup.camera, width,
+                                             height);
+            !ok) {
+            std::cerr << "lpv: " << ok.error().describe() << "\n";
+            setup.camera = start;
+            return false;
+        }
+        timer.resolveAll();
+        if (f < warmup)
+            continue;
+        double total = 0.0;
+        for (const renderer::PassTiming& row : timer.table()) {
+            if (row.samples == 0)
+                continue; // reused or not run this frame
+            total += row.lastMs;
+            auto it = std::find_if(out.passMs.begin(), out.passMs.end(),
+                                   [&](const auto& p) { return p.first == row.pass; });
+            if (it == out.passMs.end())
+                it = out.passMs.insert(out.passMs.end(), {row.pass, {}});
+            it->second.push_back(row.lastMs);
+        }
+        out.frameTotalsMs.push_back(total);
+    }
+    setup.camera = start;
+    return true;
+}
+
+std::string formatTurnFrames(const TurnFrames& turn, float degrees) {
+    std::ostringstream text;
+    char line[256];
+    std::snprintf(line, sizeof line, "\nframes where only the camera turned (+-%g degrees about the up axis, reuse on):\n",
+                  double(degrees));
+    text << line;
+    std::snprintf(line, sizeof line, "%-24s %10s %10s %10s\n", "pass", "median", "max", "ran in");
+    text << line;
+    for (const auto& [pass, ms] : turn.passMs) {
+        std::snprintf(line, sizeof line, "%-24s %10.3f %10.3f %4zu of %zu\n", pass.c_str(), median(ms),
+                      *std::max_element(ms.begin(), ms.end()), ms.size(), turn.frameTotalsMs.size());
+        text << line;
+    }
+    const auto [lo, hi] = std::minmax_element(turn.frameTotalsMs.begin(), turn.frameTotalsMs.end());
+    std::snprintf(line, sizeof line, "whole frame (per frame, every pass that ran): median %.3f ms, min %.3f, max %.3f\n",
+                  median(turn.frameTotalsMs), turn.frameTotalsMs.empty() ? 0.0 : *lo,
+                  turn.frameTotalsMs.empty() ? 0.0 : *hi);
+    text << line;
+    return text.str();
+}
+
+} // namespace lpv::cli
