@@ -166,9 +166,6 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     p.id = Pass::ShadowMaps;
     p.decision = runsBecause("direct light is shadowed");
     p.writes = {"shadowMaps"};
-    // The sun's cascades follow the camera; stale far cascades
-    // (shadow.farCascadeInterval) still have to be redrawn when it stops.
-    p.inputsKey = graph::ContentHash().add(cameraKey(frame)).add(shadows->refreshKey()).value();
     // What the maps are drawn from besides the cascades' matrices: a cascade
     // whose snapped matrix did not move keeps its layer (ShadowPass).
     graph::ContentHash content;
@@ -177,6 +174,13 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws",
                             "shadow.farCascadeInterval"})
         content.add(frame.params.get(key));
+    // The sun's cascades follow the camera; stale far cascades
+    // (shadow.farCascadeInterval) still have to be redrawn when it stops.
+    // Spot and point maps do not depend on the camera: without a shadowed
+    // sun, turning the camera keeps them.
+    p.inputsKey = selectShadowLights(frame.scene).sun >= 0
+                      ? graph::ContentHash().add(cameraKey(frame)).add(shadows->refreshKey()).value()
+                      : content.value();
     // lpv.reuse = false (the benchmarks) draws every cascade every frame.
     const std::uint64_t layersKey = frame.params.getBool("lpv.reuse") ? content.value() : 0;
     p.execute = [this, key = layersKey](graph::PassContext& ctx) {

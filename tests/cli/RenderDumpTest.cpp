@@ -104,6 +104,22 @@ TEST(BenchRender, ThesisSettingsPrintTheThesisPhasesBesideItsFigures) {
     EXPECT_EQ(runLpv("bench render " + cornellProject() + " --thesis-settings --camera main").exitCode, 2);
 }
 
+TEST(BenchRender, TurnMeasuresFramesWhereOnlyTheCameraTurned) {
+    const RunResult r =
+        runLpv("bench render " + cornellProject() + " --width 64 --height 64 --frames 4 --warmup 1 --turn 5");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("frames where only the camera turned (+-5 degrees"), std::string::npos) << r.output;
+    // Shading follows the view: it runs in every turned frame.
+    EXPECT_NE(r.output.find("4 of 4"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("whole frame (per frame, every pass that ran): median"), std::string::npos) << r.output;
+    // The area light's RSM faces and its cube shadow map do not depend on
+    // the view: reuse keeps them, so they have no row.
+    EXPECT_EQ(r.output.find("localRsm"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("shadowMaps"), std::string::npos) << r.output;
+    for (const char* bad : {" --turn 0", " --turn -3", " --turn abc", " --turn 181"})
+        EXPECT_EQ(runLpv("bench render " + cornellProject() + bad).exitCode, 2) << bad;
+}
+
 TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
     // The Cornell box without its ceiling, lit by a sun slanting in from the
     // green side (-X) towards the red wall (+X): the RSM sees the floor, the
