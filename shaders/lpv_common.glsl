@@ -112,6 +112,10 @@ const float LPV_SIDE_OFF = 0.447213595;              // 0.5 / sqrt(1.25)
 
 vec3 lpvVectorPart(vec4 c) { return SH_Y1 * vec3(-c.w, -c.y, c.z); }
 
+// lpv.twoSidedOcclusion: a surfel blocks light that reaches it from either
+// side, not only light that hits its front (docs/lpv.md, Propagation).
+uniform bool uTwoSidedOcclusion;
+
 // One channel: what the source (dc, v) sends through the 5 faces with transmittances t.
 void lpvSendChannel(int a, float sigma, float dc, vec3 v, float t0, vec4 tSide, inout float accDc, inout vec3 accN) {
     int b = (a + 1) % 3, c = (a + 2) % 3;
@@ -132,12 +136,17 @@ void lpvSendChannel(int a, float sigma, float dc, vec3 v, float t0, vec4 tSide, 
 void lpvSend(int a, float sigma, vec4 r, vec4 g, vec4 b, vec4 blocking, vec3 directed, inout vec3 accDc,
              inout vec3 accNR, inout vec3 accNG, inout vec3 accNB) {
     int ib = (a + 1) % 3, ic = (a + 2) % 3;
-    // Transmittance 1 - clamp(B(-w)) per face.
+    // Transmittance 1 - clamp(B(-w)) per face; two-sided: 1 - clamp(max(B(-w), B(w))).
     float bDc = SH_Y0 * blocking.x;
     vec3 bV = lpvVectorPart(blocking);
-    float t0 = 1.0 - clamp(bDc - sigma * bV[a], 0.0, 1.0);
-    float bSide = bDc - sigma * LPV_SIDE_MAIN * bV[a];
-    vec4 tSide = vec4(1.0) - clamp(vec4(bSide) - LPV_SIDE_OFF * vec4(bV[ib], -bV[ib], bV[ic], -bV[ic]), 0.0, 1.0);
+    float front = sigma * bV[a];
+    float t0 = 1.0 - clamp(uTwoSidedOcclusion ? bDc + abs(front) : bDc - front, 0.0, 1.0);
+    float along = sigma * LPV_SIDE_MAIN * bV[a];
+    vec4 across = LPV_SIDE_OFF * vec4(bV[ib], -bV[ib], bV[ic], -bV[ic]);
+    vec4 sideBlocked = vec4(bDc - along) - across;
+    if (uTwoSidedOcclusion)
+        sideBlocked = max(sideBlocked, vec4(bDc + along) + across);
+    vec4 tSide = vec4(1.0) - clamp(sideBlocked, 0.0, 1.0);
     // Face normals: sigma e_a (front), +-e_b, +-e_c (sides).
     t0 *= min(1.0, 1.0 + sigma * directed[a]);
     tSide *= min(vec4(1.0), vec4(1.0) + vec4(directed[ib], -directed[ib], directed[ic], -directed[ic]));
@@ -158,6 +167,8 @@ void lpvPropagateThroughFaces(int i, vec4 r, vec4 g, vec4 b, vec4 blocking, vec3
     for (int f = 0; f < 5; ++f) {
         vec4 basis = LPV_FACE_BASIS[5 * i + f];
         float blocked = dot(blocking, vec4(basis.x, -basis.yzw));
+        if (uTwoSidedOcclusion)
+            blocked = max(blocked, dot(blocking, basis));
         vec4 table = LPV_FACE_LOBE[5 * i + f];
         // The lobe is c (1, -n.y, n.z, -n.x) up to scale: its face normal n_f, for directed propagation.
         vec3 faceNormal = normalize(vec3(-table.w, -table.y, table.z));

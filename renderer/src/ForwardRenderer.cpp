@@ -155,7 +155,12 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.timer.beginFrame();
     const glm::mat4 view = camera.view();
     const glm::mat4 projection = camera.projection(float(width) / float(height));
-    const FrameContext frame{scene, params, camera, width, height, view, projection, projection * view, d.timer};
+    if (d.sceneBoundsGeneration != d.sceneGeneration) {
+        d.sceneBounds = scene.worldBounds();
+        d.sceneBoundsGeneration = d.sceneGeneration;
+    }
+    const FrameContext frame{scene,      params,          camera,  width, height, view, projection,
+                             projection * view, d.timer, d.sceneBounds};
     d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     try {
         // Build the graph, compile, execute.

@@ -94,6 +94,9 @@ struct ForwardRenderer::Impl {
     std::optional<SceneTraits> traits;
     // Bumped on every scene change: part of every reuse key.
     std::uint64_t sceneGeneration = 0;
+    // scene.worldBounds() of sceneGeneration (it walks every vertex).
+    scene::Bounds sceneBounds;
+    std::uint64_t sceneBoundsGeneration = ~std::uint64_t(0);
     std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
     bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass

@@ -25,6 +25,8 @@ struct FrameContext {
     glm::mat4 projection{1.0f};
     glm::mat4 viewProj{1.0f};
     GpuTimer& timer;
+    // The scene's world bounds (computed once per scene generation).
+    scene::Bounds sceneBounds{};
 };
 
 } // namespace lpv::renderer

@@ -60,7 +60,7 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
     const int count = std::min(params.getInt("rsm.cascades"), params.getInt("lpv.cascades"));
     // The RSM's tiles and the LPV's volumes share one placement; the RSM may have more (rsm.cascades).
     plan.rsmCascades = lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
-                                   lpvCascadeSettings(params, params.getInt("rsm.cascades")));
+                                   lpvCascadeSettings(params, params.getInt("rsm.cascades"), frame.sceneBounds));
     plan.cascades.assign(plan.rsmCascades.begin(), plan.rsmCascades.begin() + count);
     frameEffects.push_back(plan.local);
     frameEffects.push_back(plan.emissive);

@@ -54,6 +54,7 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.occlusion = params.getBool("lpv.occlusion");
     s.occludeFirstStep = params.getBool("lpv.occlusionFirstStep");
     s.occlusionStrength = float(params.getFloat("lpv.occlusionStrength"));
+    s.twoSidedOcclusion = params.getBool("lpv.twoSidedOcclusion");
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
     s.gvCameraStride = params.getInt("lpv.gvCameraStride");
     // The registry only admits the four names; anything else is a bug, not a default.
@@ -221,6 +222,7 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
     gvCameraStride_ = std::max(settings.gvCameraStride, 1);
     occlusion_ = settings.occlusion;
     occlusionStrength_ = settings.occlusionStrength;
+    twoSidedOcclusion_ = settings.twoSidedOcclusion;
     propagationSteps_ = settings.propagationSteps;
     active_ = true;
     return {};
@@ -502,6 +504,7 @@ void LpvPass::bindStepSources(GLuint program, int source, bool occlusion) const 
     glBindTextureUnit(3, volumes_.geometry.id()); // uGv, layout binding 3
     glProgramUniform1i(program, loc(program, "uOcclusion"), occlusion ? 1 : 0);
     glProgramUniform1f(program, loc(program, "uOcclusionStrength"), occlusionStrength_);
+    glProgramUniform1i(program, loc(program, "uTwoSidedOcclusion"), twoSidedOcclusion_ ? 1 : 0);
     const bool directed = normalsIndex_ >= 0;
     glBindTextureUnit(kNormalsUnit, directed ? volumes_.normals[std::size_t(normalsIndex_)].id() : 0);
     glProgramUniform1i(program, loc(program, "uDirected"), directed ? 1 : 0);

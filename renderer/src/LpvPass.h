@@ -47,6 +47,8 @@ struct LpvSettings {
     // has it, for the tests that build settings by hand; frames take the
     // registry default (1.333) through fromParameters.
     float occlusionStrength = 1.0f;
+    // lpv.twoSidedOcclusion: a surfel blocks light from both sides.
+    bool twoSidedOcclusion = false;
     bool gvFromCamera = true;
     // lpv.gvCameraStride: the camera G-buffer gives one surfel per stride x
     // stride pixels (the block's middle pixel, stride^2 its area).
@@ -262,6 +264,7 @@ class LpvPass {
     int gvCameraStride_ = 1;
     bool occlusion_ = true;
     float occlusionStrength_ = 1.0f;
+    bool twoSidedOcclusion_ = false;
     int propagationSteps_ = 0;
     bool visibilityActive_ = false; // lpv.visibilityLookup on and a GV to build it from
     bool visibilityReady_ = false;  // the moments hold the current GV's (false after allocation)

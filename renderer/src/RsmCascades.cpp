@@ -14,9 +14,13 @@ int findSun(const scene::Scene& scene) {
     return -1;
 }
 
-LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count) {
-    return LpvCascadeSettings{count, int(params.getInt("lpv.gridSize")), float(params.getFloat("lpv.cellSize")),
-                              params.getBool("lpv.cellSnapping"), float(params.getFloat("lpv.viewShift"))};
+LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count, const scene::Bounds& sceneBounds) {
+    return LpvCascadeSettings{count,
+                              int(params.getInt("lpv.gridSize")),
+                              float(params.getFloat("lpv.cellSize")),
+                              params.getBool("lpv.cellSnapping"),
+                              float(params.getFloat("lpv.viewShift")),
+                              params.getBool("lpv.clampToScene") ? sceneBounds : scene::Bounds{}};
 }
 
 LpvCascade lpvCascade(const glm::vec3& camera, const glm::vec3& viewDirection, int k,
@@ -33,7 +37,15 @@ LpvCascade lpvCascade(const glm::vec3& camera, const glm::vec3& viewDirection, i
     const double shift = std::clamp(double(settings.viewShift), 0.0, 1.0) * reach;
     const glm::dvec3 ahead =
         length > 0.0f && std::isfinite(length) ? glm::dvec3(viewDirection / length) * shift : glm::dvec3(0.0);
-    const glm::dvec3 ideal = glm::dvec3(camera) + ahead - 0.5 * extent;
+    glm::dvec3 ideal = glm::dvec3(camera) + ahead - 0.5 * extent;
+    if (!settings.sceneBounds.empty()) {
+        // The nearest corner to the camera's placement from which the cube
+        // covers the most of the scene along each axis: all of it where the
+        // cube is larger, else a stretch inside it.
+        const glm::dvec3 lo = glm::dvec3(settings.sceneBounds.min), hi = glm::dvec3(settings.sceneBounds.max);
+        const glm::dvec3 a = hi - extent, b = lo; // corners whose cube ends at hi, starts at lo
+        ideal = glm::clamp(ideal, glm::min(a, b), glm::max(a, b));
+    }
     if (settings.snapToCells) {
         // Round (in double, so that far from the origin the corner still lands
         // on a cell) rather than floor: the centre stays within half a cell of
@@ -51,6 +63,18 @@ std::vector<LpvCascade> lpvCascades(const glm::vec3& camera, const glm::vec3& vi
     std::vector<LpvCascade> cascades;
     for (int k = 0; k < settings.cascades; ++k)
         cascades.push_back(lpvCascade(camera, viewDirection, k, settings));
+    if (!settings.sceneBounds.empty()) {
+        // Clamped at a scene's edge, two cascades can want the same corner,
+        // and rounding each to its own cells may then push the finer one out
+        // of the coarser by half a coarse cell: move it back in. Cascade k+1's
+        // corner lies on cascade k's cells, so k stays snapped.
+        for (int k = int(cascades.size()) - 2; k >= 0; --k) {
+            const LpvCascade& outer = cascades[std::size_t(k + 1)];
+            LpvCascade& inner = cascades[std::size_t(k)];
+            inner.origin = glm::clamp(inner.origin, outer.origin,
+                                      outer.origin + glm::vec3(outer.extent() - inner.extent()));
+        }
+    }
     return cascades;
 }
 

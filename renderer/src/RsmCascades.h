@@ -52,12 +52,18 @@ struct LpvCascadeSettings {
     float cellSize = 0.25f; // of cascade 0
     bool snapToCells = true;
     float viewShift = 0.0f; // lpv.viewShift: centre ahead of the camera, 0..1 of (half extent - 2 cells)
+    // lpv.clampToScene: where not empty, each cascade is moved (as little as
+    // it can) so that along each axis it covers as much of these bounds as
+    // its extent allows: a cascade larger than the scene holds all of it, a
+    // smaller one lies inside it. Cells outside the scene hold no light.
+    scene::Bounds sceneBounds{};
 };
 
 // The cascade settings of a frame from its parameters (lpv.gridSize,
-// lpv.cellSize, lpv.cellSnapping, lpv.viewShift) for `count` cascades: the
-// RSM tiles and the LPV volumes must agree on them.
-LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count);
+// lpv.cellSize, lpv.cellSnapping, lpv.viewShift, lpv.clampToScene) for
+// `count` cascades: the RSM tiles and the LPV volumes must agree on them.
+LpvCascadeSettings lpvCascadeSettings(const scene::ParameterSet& params, int count,
+                                      const scene::Bounds& sceneBounds = {});
 
 // Cascade `k` (0 = finest) around `camera`, shifted along `viewDirection`
 // (need not be unit length; zero means no shift).

@@ -157,7 +157,7 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     const int count = frame.params.getInt("rsm.cascades");
     return render(frame, geometry, materials,
                   lpvCascades(frame.camera.position, frame.camera.target - frame.camera.position,
-                              lpvCascadeSettings(frame.params, count)));
+                              lpvCascadeSettings(frame.params, count, frame.sceneBounds)));
 }
 
 scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu& geometry,

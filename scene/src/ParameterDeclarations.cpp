@@ -57,6 +57,15 @@ std::vector<ParameterInfo> declareParameters() {
         integer("lpv.gridSize", 32, 8, 128, "cells", "LPV", "Cells along each axis of every LPV cascade", kLpvAll),
         integer("lpv.cascades", 4, 1, 6, "", "LPV", "Number of nested LPV volumes, each cell twice the previous",
                 kLpvAll | P::Rsm),
+        boolean("lpv.twoSidedOcclusion", false, "LPV",
+                "A geometry-volume surfel blocks light reaching it from either side, not only light that hits its "
+                "front: a wall the volume saw from one side only still blocks light from the other",
+                P::LpvPropagation | P::LpvBounces | P::Shading),
+        boolean("lpv.clampToScene", false, "LPV",
+                "Place each cascade, as near the camera as it can, so that it covers as much of the scene's "
+                "bounds as its extent allows (all of it where larger, else a stretch inside it): no cells "
+                "outside the scene, and a camera outside the scene (a Cornell box) gets the finest cells on it",
+                kLpvAll | P::Rsm),
         real("lpv.cellSize", 0.25, 0.001, 100.0, "m", "LPV", "Cell size of the finest cascade", kLpvAll | P::Rsm),
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
                 "Propagation iterations per cascade; light travels one cell per step",

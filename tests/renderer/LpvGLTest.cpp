@@ -59,6 +59,7 @@ struct LpvCase {
     float injectionOffset = 1.0f;
     bool occludeFirstStep = true;   // lpv.occlusionFirstStep
     float occlusionStrength = 1.0f; // lpv.occlusionStrength
+    bool twoSided = false;          // lpv.twoSidedOcclusion
 };
 
 // The reference accumulator for the texels of one tile.
@@ -75,6 +76,7 @@ ref::ShGrid referenceAccumulator(const LpvCase& s, const std::vector<Texel>& tex
     const ref::ShGrid injected = ref::injectVpls(s.grid, vpls, s.injectionOffset);
     ref::GvGrid gv = ref::mergeByMax(ref::injectSurfels(s.grid, surfels), ref::GvGrid(s.grid.n));
     gv.strength = s.occlusionStrength;
+    gv.twoSided = s.twoSided;
     if (dilation < 0)
         return ref::propagateAndAccumulate(injected, occlusion ? &gv : nullptr, steps, nullptr, s.occludeFirstStep);
     ref::NormalGrid normals = ref::injectNormals(s.grid, vpls, s.injectionOffset);
@@ -121,6 +123,7 @@ class LpvGLTest : public GlTest {
         settings.occlusion = occlusion;
         settings.occludeFirstStep = s.occludeFirstStep;
         settings.occlusionStrength = s.occlusionStrength;
+        settings.twoSidedOcclusion = s.twoSided;
         settings.gvFromCamera = false;
         settings.variant = variant;
         settings.directed = dilation >= 0;
@@ -218,7 +221,8 @@ INSTANTIATE_TEST_SUITE_P(AllVariants, LpvVariantTest,
                          });
 
 // The leak and over-blocking candidates of issue #24 (docs/lpv.md): the first
-// step without occlusion, and a stronger blocking potential, in every variant
+// step without occlusion, a stronger blocking potential, and two-sided
+// blocking (lpv.twoSidedOcclusion), in every variant
 // against the reference; each must change the result, or it tests nothing.
 class LpvOcclusionOptionsTest : public LpvGLTest, public ::testing::WithParamInterface<LpvVariant> {};
 
@@ -228,10 +232,12 @@ TEST_P(LpvOcclusionOptionsTest, FirstStepAndStrengthMatchReference) {
     const auto texels = wallScene(base.grid, 80, 2.0f, 10u);
     FakeRsm rsm(int(std::ceil(std::sqrt(double(texels.size())))), {texels});
     const ref::ShGrid plain = referenceAccumulator(base, texels, 6, true);
-    LpvCase firstOpen = base, stronger = base;
+    LpvCase firstOpen = base, stronger = base, twoSided = base;
     firstOpen.occludeFirstStep = false;
     stronger.occlusionStrength = 4.0f / 3.0f;
-    for (const auto& [name, s] : {std::pair{"first step unoccluded", firstOpen}, std::pair{"strength 4/3", stronger}}) {
+    twoSided.twoSided = true; // the wall's surfels face -x: two-sided they block light going -x too
+    for (const auto& [name, s] : {std::pair{"first step unoccluded", firstOpen}, std::pair{"strength 4/3", stronger},
+                                  std::pair{"two-sided", twoSided}}) {
         const ref::ShGrid expected = referenceAccumulator(s, texels, 6, true);
         const Difference d = compare(expected, runGpu(s, rsm, variant, 6, true));
         const Difference change = compare(plain, [&] {

@@ -424,3 +424,26 @@ TEST(LpvReferencePointLight, TrilinearLookupClampsAndInterpolates) {
     for (int ch = 0; ch < 3; ++ch)
         EXPECT_NEAR(e[ch], kPi * (ch + 1) / 0.25, 1e-4);
 }
+
+// lpv.twoSidedOcclusion: a wall the GV saw from one side (normal -x) blocks
+// light travelling +x (it meets the wall's front) either way, and light
+// travelling -x (it meets the back) only when two-sided.
+TEST(LpvReference, TwoSidedOcclusionBlocksLightReachingASurfelsBack) {
+    GridFrame grid{glm::vec3(0.0f), 1.0f, 4};
+    const std::vector<Surfel> wall{{glm::vec3(2.0f, 2.0f, 2.0f), glm::vec3(-1.0f, 0.0f, 0.0f), 1.0f}};
+    GvGrid gv = injectSurfels(grid, wall);
+    gv.strength = 4.0f / 3.0f;
+    const glm::vec3 g(2.0f, 2.0f, 2.0f); // the surfel's GV cell
+    const float intoFront = transmittance(gv, g, glm::vec3(1, 0, 0));
+    const float intoBack = transmittance(gv, g, glm::vec3(-1, 0, 0));
+    EXPECT_LT(intoFront, 0.05f);
+    EXPECT_GT(intoBack, 0.95f) << "one-sided: light leaving past the back passes";
+    gv.twoSided = true;
+    EXPECT_FLOAT_EQ(transmittance(gv, g, glm::vec3(1, 0, 0)), intoFront);
+    EXPECT_LT(transmittance(gv, g, glm::vec3(-1, 0, 0)), 0.05f);
+    // Across the wall's plane (along it) nothing changes: the lobe is symmetric there.
+    gv.twoSided = false;
+    const float along = transmittance(gv, g, glm::vec3(0, 1, 0));
+    gv.twoSided = true;
+    EXPECT_FLOAT_EQ(transmittance(gv, g, glm::vec3(0, 1, 0)), along);
+}

@@ -220,3 +220,44 @@ TEST(RsmCascades, ViewShiftBringsADistantBoxIntoAFinerCascade) {
     EXPECT_EQ(finestHolding(ahead), 1);   // 0.5 m cells: 11 across
 }
 
+
+// lpv.clampToScene: each cascade as near the camera's placement as it can be
+// while covering as much of the scene as its extent allows. The Cornell box
+// seen from 8 m: the finest cascade holds the whole box; a camera inside a
+// long hall keeps its finest cascade and the coarse ones stop at the walls.
+TEST(RsmCascades, ClampedToTheSceneCascadesCoverItAndStayNested) {
+    const scene::Bounds box{glm::vec3(0.0f), glm::vec3(5.56f, 5.49f, 5.59f)};
+    LpvCascadeSettings clamped{4, 32, 0.2f, true, 0.0f};
+    clamped.sceneBounds = box;
+    const auto outside = renderer::lpvCascades(glm::vec3(2.78f, 2.73f, -8.0f), glm::vec3(0, 0, 1), clamped);
+    ASSERT_EQ(outside.size(), 4u);
+    for (const auto& c : outside)
+        EXPECT_TRUE(contains(c.bounds(), box)) << "every cascade, 6.4 m or more across, holds the 5.6 m box";
+
+    const scene::Bounds hall{glm::vec3(-20.0f, -2.0f, -8.0f), glm::vec3(20.0f, 15.0f, 8.0f)};
+    LpvCascadeSettings inHall{4, 32, 0.25f, true, 0.0f};
+    inHall.sceneBounds = hall;
+    for (const glm::vec3 camera : {glm::vec3(-15.3f, 3.0f, 0.4f), glm::vec3(0.0f, 1.0f, 7.5f), glm::vec3(60.0f, 80.0f, -3.0f)}) {
+        const auto cascades = renderer::lpvCascades(camera, glm::vec3(1, 0, 0), inHall);
+        const auto centred = renderer::lpvCascades(camera, glm::vec3(1, 0, 0), LpvCascadeSettings{4, 32, 0.25f, true});
+        for (std::size_t k = 0; k < cascades.size(); ++k) {
+            const auto& c = cascades[k];
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_LT(offGrid(c.origin[a], c.cellSize), 1e-4f) << "snapped";
+                const float span = hall.max[a] - hall.min[a];
+                if (c.extent() >= span) { // holds the hall along this axis (up to the snap)
+                    EXPECT_LE(c.origin[a], hall.min[a] + 0.5f * c.cellSize + 1e-3f) << "cascade " << k << " axis " << a;
+                    EXPECT_GE(c.origin[a] + c.extent(), hall.max[a] - 0.5f * c.cellSize - 1e-3f);
+                } else { // lies inside it
+                    EXPECT_GE(c.origin[a], hall.min[a] - 0.5f * c.cellSize - 1e-3f) << "cascade " << k << " axis " << a;
+                    EXPECT_LE(c.origin[a] + c.extent(), hall.max[a] + 0.5f * c.cellSize + 1e-3f);
+                }
+            }
+            if (k > 0)
+                EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds())) << "cascade " << k << " must hold " << k - 1;
+        }
+        // Inside the hall, away from its walls, the finest cascade does not move.
+        if (camera == glm::vec3(-15.3f, 3.0f, 0.4f))
+            EXPECT_EQ(cascades[0].origin, centred[0].origin);
+    }
+}

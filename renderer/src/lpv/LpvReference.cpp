@@ -151,9 +151,13 @@ GvGrid mergeByMax(const GvGrid& a, const GvGrid& b) {
 }
 
 float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& travel) {
-    // A surfel blocks light that hits its front, i.e. travels against its normal.
-    const float blocked = gv.strength * sh::evaluate(gv.sample(g), -travel);
-    return 1.0f - std::clamp(blocked, 0.0f, 1.0f);
+    // A surfel blocks light that hits its front, i.e. travels against its
+    // normal; two-sided, light that reaches its back as well.
+    const glm::vec4 b = gv.sample(g);
+    float blocked = sh::evaluate(b, -travel);
+    if (gv.twoSided)
+        blocked = std::max(blocked, sh::evaluate(b, travel));
+    return 1.0f - std::clamp(gv.strength * blocked, 0.0f, 1.0f);
 }
 
 NormalGrid::NormalGrid(int cells) : n(cells) {

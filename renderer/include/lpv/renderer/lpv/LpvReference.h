@@ -43,6 +43,8 @@ struct GvGrid {
     // lpv.occlusionStrength: propagation reads strength * B (docs/lpv.md,
     // Propagation); the stored potential (which bounces read) is unscaled.
     float strength = 1.0f;
+    // lpv.twoSidedOcclusion: a surfel blocks light from both sides.
+    bool twoSided = false;
 
     explicit GvGrid(int lpvCells = 0);
     int size() const { return n + 1; }
@@ -108,7 +110,9 @@ struct CameraGBuffer {
 std::vector<Surfel> cameraSurfels(const CameraGBuffer& gbuffer, int stride);
 // Per GV cell, the SH of the two with the larger DC coefficient.
 GvGrid mergeByMax(const GvGrid& a, const GvGrid& b);
-// Transmittance of light travelling along unit `travel` through GV coordinate `g`.
+// Transmittance of light travelling along unit `travel` through GV coordinate
+// `g`: 1 - clamp(strength B(-travel)), or with gv.twoSided
+// 1 - clamp(strength max(B(-travel), B(travel))).
 float transmittance(const GvGrid& gv, const glm::vec3& g, const glm::vec3& travel);
 
 // Directed propagation (docs/lpv.md): per cell the average unit normal of the
