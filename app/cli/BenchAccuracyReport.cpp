@@ -70,14 +70,17 @@ varied alone around the project's settings:
   strength   lpv.occlusionStrength=0.5,1,1.333,2
   lookupOffset lpv.lookupOffset=0,0.5,1
   visibility lpv.visibilityLookup=false,true
+  clampToScene lpv.clampToScene=false,true
+  twoSided   lpv.twoSidedOcclusion=false,true
 Like for like: each LPV is measured against the reference's light reflected
 as many times as its lpv.bounces, and the reference traces the sky and
 emissive surfaces where the LPV injects them (reference.skyLight and
 reference.emissiveLight on auto). The tables give the indirect MARE and the
 ratio of the LPV's mean indirect irradiance to the reference's.
-Scenes with emissive surfaces (the Cornell box's ceiling light) also get a
-radiosity solve measured against a reference of the emissive light alone
-(the project's lights removed), at doubling solve times. Writes DIR/report.md
+Each scene also gets a radiosity solve of its lights (meshed as finely as
+150,000 patches allow), measured at doubling solve times against a
+reference of the same lights reflected 8 times without the sky: the residual,
+the indirect MARE and the mean ratio per solve time. Writes DIR/report.md
 (headline table: the project's settings, and the cheapest settings reaching
 10% and 5% indirect MARE per scene) and DIR/report.json; each sweep's CSV,
 JSON, Markdown and plots stay in DIR/NAME/QUESTION/.

@@ -22,6 +22,8 @@ const std::vector<Question>& reportQuestions() {
         {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
         {"lookupOffset", "lpv.lookupOffset=0,0.5,1", ""},
         {"visibility", "lpv.visibilityLookup=false,true", ""},
+        {"clampToScene", "lpv.clampToScene=false,true", ""},
+        {"twoSided", "lpv.twoSidedOcclusion=false,true", ""},
     };
     return questions;
 }
