@@ -35,6 +35,20 @@ scene::Project cornellWithSun() {
     return project;
 }
 
+// The shadow maps `r` holds now equal those a new renderer draws for `camera`.
+void expectTheMapsOfAFreshRenderer(const renderer::ForwardRenderer& r, const scene::Project& project,
+                                   const scene::Camera& camera) {
+    const auto kept = r.debugImages("shadowMaps");
+    auto fresh = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(fresh.has_value());
+    fresh->setScene(project.scene);
+    ASSERT_TRUE(fresh->render(project.scene, project.parameters, camera, 128, 96).has_value());
+    const auto computed = fresh->debugImages("shadowMaps");
+    ASSERT_EQ(kept.size(), computed.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+        EXPECT_EQ(kept[i].pixels, computed[i].pixels) << kept[i].name;
+}
+
 Maps render(const std::string& mode) {
     scene::Project project = cornellWithSun();
     EXPECT_TRUE(project.parameters.setFromText("shadow.cascadeDraws", mode).has_value());
@@ -131,16 +145,7 @@ TEST_F(ShadowCascadeDrawsGLTest, CascadesThatDidNotMoveKeepTheirLayers) {
     const int drawn = r->shadowCascadesDrawn();
     EXPECT_LT(drawn, cascades) << "every cascade was redrawn for a millimetre";
     std::cout << "[ figures ] a 1 mm camera move redrew " << drawn << " of " << cascades << " sun cascades\n";
-    const auto kept = r->debugImages("shadowMaps");
-
-    auto fresh = renderer::ForwardRenderer::create();
-    ASSERT_TRUE(fresh.has_value());
-    fresh->setScene(project.scene);
-    ASSERT_TRUE(fresh->render(project.scene, project.parameters, camera, 128, 96).has_value());
-    const auto computed = fresh->debugImages("shadowMaps");
-    ASSERT_EQ(kept.size(), computed.size());
-    for (std::size_t i = 0; i < kept.size(); ++i)
-        EXPECT_EQ(kept[i].pixels, computed[i].pixels) << kept[i].name;
+    expectTheMapsOfAFreshRenderer(*r, project, camera);
     // A changed light redraws every cascade.
     project.scene.lights.back().direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.3f));
     ASSERT_TRUE(r->render(project.scene, project.parameters, camera, 128, 96).has_value());
@@ -252,16 +257,7 @@ TEST_F(ShadowCascadeDrawsGLTest, FarCascadesAreRedrawnInTurnAndCatchUpWhenTheCam
     for (int f = 0; f < kInterval && r->shadowCascadesStale() > 0; ++f)
         ASSERT_TRUE(r->render(project.scene, project.parameters, camera, 128, 96).has_value());
     EXPECT_EQ(r->shadowCascadesStale(), 0);
-    const auto caughtUp = r->debugImages("shadowMaps");
-
-    auto fresh = renderer::ForwardRenderer::create();
-    ASSERT_TRUE(fresh.has_value());
-    fresh->setScene(project.scene);
-    ASSERT_TRUE(fresh->render(project.scene, project.parameters, camera, 128, 96).has_value());
-    const auto computed = fresh->debugImages("shadowMaps");
-    ASSERT_EQ(caughtUp.size(), computed.size());
-    for (std::size_t i = 0; i < caughtUp.size(); ++i)
-        EXPECT_EQ(caughtUp[i].pixels, computed[i].pixels) << caughtUp[i].name;
+    expectTheMapsOfAFreshRenderer(*r, project, camera);
 }
 
 } // namespace
