@@ -1,6 +1,7 @@
 // `lpv bench`: measured figures, printed, never asserted (machines are shared
 // and noisy). `lpv bench import` compares importing a source file with
 // loading the project it becomes.
+#include "BenchReport.h"
 #include "BenchSweepShard.h"
 #include "Cli.h"
 
@@ -84,11 +85,6 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 struct ImportFigures {

@@ -131,6 +131,14 @@ std::optional<int> parseCount(const std::string& text, int minimum) {
     return v;
 }
 
+double median(std::vector<double> values) {
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 std::optional<float> parseDegrees(const std::string& text) {
     float v = 0.0f;
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);

@@ -50,6 +50,8 @@ bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<Swee
 
 // A whole number >= minimum (command-line counts), or nullopt.
 std::optional<int> parseCount(const std::string& text, int minimum);
+// The median of `values` (the mean of the middle two for an even count; 0 when empty).
+double median(std::vector<double> values);
 // A finite number of degrees, or nullopt.
 std::optional<float> parseDegrees(const std::string& text);
 

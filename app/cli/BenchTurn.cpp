@@ -1,4 +1,5 @@
 #include "BenchTurn.h"
+#include "BenchReport.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -8,18 +9,6 @@
 #include <sstream>
 
 namespace lpv::cli {
-
-namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-} // namespace
 
 scene::Camera yawCamera(const scene::Camera& camera, float degrees) {
     const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));

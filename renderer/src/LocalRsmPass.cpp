@@ -117,7 +117,7 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
 
     const GLuint p = program_.id();
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
-    const scene::Bounds bounds = frame.scene.worldBounds();
+    const scene::Bounds bounds = frame.sceneBounds;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);

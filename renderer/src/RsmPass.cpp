@@ -182,7 +182,7 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     }
 
     const scene::Light& sun = frame.scene.lights[std::size_t(sunIndex_)];
-    const scene::Bounds sceneBounds = frame.scene.worldBounds();
+    const scene::Bounds sceneBounds = frame.sceneBounds;
     std::array<glm::mat4, kMaxRsmCascades> viewProj{};
     std::array<float, kMaxRsmCascades> texelArea{};
     for (const LpvCascade& cascade : cascades) {

@@ -245,7 +245,7 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
     lights_ = selectShadowLights(s);
     const int mapSize = frame.params.getInt("shadow.mapSize");
     const int cascadeCount = std::clamp(frame.params.getInt("shadow.cascades"), 1, kMaxLayersPerPass);
-    const scene::Bounds bounds = s.worldBounds();
+    const scene::Bounds bounds = frame.sceneBounds;
 
     if (auto ok = ensureTarget(cascadeMap_, GL_TEXTURE_2D_ARRAY, mapSize, lights_.sun >= 0 ? cascadeCount : 0); !ok)
         return ok;

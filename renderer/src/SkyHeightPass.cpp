@@ -48,7 +48,7 @@ scene::Expected<LpvSkyInput> SkyHeightPass::render(const FrameContext& frame, co
         glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
         size_ = resolution;
     }
-    const scene::Bounds bounds = frame.scene.worldBounds();
+    const scene::Bounds bounds = frame.sceneBounds;
     const float margin = 0.01f * std::max(bounds.size().y, 1.0f);
     LpvSkyInput out;
     out.depth = depth_.id();

@@ -139,7 +139,8 @@ class Rsm : public GlTest {
                                            camera.view(),
                                            camera.projection(1.0f),
                                            camera.projection(1.0f) * camera.view(),
-                                           timer};
+                                           timer,
+                                           scene.worldBounds()};
         auto ok = pass->render(frame, geometry, materials);
         EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
