@@ -21,6 +21,7 @@
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/lpv/SceneGeometryVolume.h"
 
 #include <memory>
 #include <optional>
@@ -111,6 +112,12 @@ struct ForwardRenderer::Impl {
     // reads it before this frame's shading overwrites it.
     bool gBufferValid = false;
     LpvCameraInput previousCamera;
+    // The scene's geometry volume (lpv.geometrySource = scene): built on the
+    // CPU once per scene, cell size and cascade count (sceneGvKey); each frame
+    // the cascades' windows of it (sceneGeometry).
+    std::optional<lpvref::SceneGv> sceneGv;
+    std::uint64_t sceneGvKey = 0;
+    LpvSceneGeometry sceneGeometry;
     int width = 0, height = 0;
     // Framebuffers around the graph's camera targets, rebuilt when it hands out others.
     Framebuffer hdrFbo, displayFbo;
@@ -147,6 +154,8 @@ struct ForwardRenderer::Impl {
     // Passes the graph culled free what they hold.
     void releaseCulled();
     LpvRsmInput rsmInput(const FrameContext& frame) const;
+    // This frame's cascades' windows of the scene's geometry volume, building it first if the scene changed.
+    const LpvSceneGeometry& sceneGeometryFor(const FrameContext& frame);
     std::vector<LpvLocalInput> localInputs() const;
     // After the depth pre-pass, whose depth it reads (`prepass`), before shading.
     void declareBakedRadiosity(const FrameContext& frame, bool prepass);

@@ -88,7 +88,7 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
         return {};
     }
     plan.lpvRuns = true;
-    plan.cameraGv = plan.settings.gvFromCamera && gBufferValid;
+    plan.cameraGv = plan.settings.gvFromCamera && !plan.settings.gvFromScene && gBufferValid;
     return {};
 }
 
@@ -105,6 +105,30 @@ LpvRsmInput ForwardRenderer::Impl::rsmInput(const FrameContext& frame) const {
         input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
     }
     return input;
+}
+
+const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameContext& frame) {
+    // At most 2^24 surfels per level: about 10 M cover Sponza or Sibenik at 0.125 m.
+    constexpr std::size_t kMaxSurfelsPerLevel = std::size_t(1) << 24;
+    std::vector<float> cellSizes;
+    for (const LpvCascade& c : plan.cascades)
+        cellSizes.push_back(c.cellSize);
+    graph::ContentHash key;
+    key.add(sceneGeneration);
+    for (float s : cellSizes)
+        key.add(s);
+    if (!sceneGv || sceneGvKey != key.value()) {
+        sceneGv = lpvref::buildSceneGv(frame.scene, cellSizes, kMaxSurfelsPerLevel);
+        sceneGvKey = key.value();
+    }
+    sceneGeometry.windows.clear();
+    for (std::size_t k = 0; k < plan.cascades.size() && k < sceneGv->levels.size(); ++k) {
+        const LpvCascade& c = plan.cascades[k];
+        const lpvref::GvGrid window = lpvref::windowOf(sceneGv->levels[k], {c.origin, c.cellSize, c.gridSize});
+        sceneGeometry.windows.insert(sceneGeometry.windows.end(), window.potential.begin(), window.potential.end());
+    }
+    sceneGeometry.surfels = sceneGv->surfels.empty() ? 0 : sceneGv->surfels.front();
+    return sceneGeometry;
 }
 
 std::vector<LpvLocalInput> ForwardRenderer::Impl::localInputs() const {
@@ -288,14 +312,17 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         p.decision = !lpvRuns ? skippedBecause(off)
                      : settings.geometryVolumeRuns() ? runsBecause("lpv.occlusion or lpv.bounces > 1")
                                                                    : skippedBecause("lpv.occlusion is off and one bounce");
-        if (plan.sun)
+        if (plan.sun && !settings.gvFromScene)
             p.reads = {"rsm.position", "rsm.normal"};
         if (plan.cameraGv)
             p.readsHistory = {"camera.depth", "camera.normal"};
         p.writes = {"lpv.geometry"};
         p.inputsKey = lpvKey;
         p.execute = [this](graph::PassContext& ctx) {
-            lpv->geometryStage(rsmInput(ctx.frame), plan.cameraGv ? &previousCamera : nullptr);
+            if (plan.settings.gvFromScene)
+                lpv->geometryStage(rsmInput(ctx.frame), nullptr, &sceneGeometryFor(ctx.frame));
+            else
+                lpv->geometryStage(rsmInput(ctx.frame), plan.cameraGv ? &previousCamera : nullptr);
             return scene::Expected<void>{};
         };
         graph.addPass(std::move(p));

@@ -55,6 +55,7 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.occludeFirstStep = params.getBool("lpv.occlusionFirstStep");
     s.occlusionStrength = float(params.getFloat("lpv.occlusionStrength"));
     s.twoSidedOcclusion = params.getBool("lpv.twoSidedOcclusion");
+    s.gvFromScene = params.getEnum("lpv.geometrySource") == "scene";
     s.gvFromCamera = params.getBool("lpv.gvFromCamera");
     s.gvCameraStride = params.getInt("lpv.gvCameraStride");
     // The registry only admits the four names; anything else is a bug, not a default.
@@ -136,7 +137,7 @@ scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
     std::vector<LpvKernel> kernels = {LpvKernel::FluxMax, LpvKernel::Inject, LpvKernel::Resolve};
     if (settings.geometryVolumeRuns())
         kernels.insert(kernels.end(), {LpvKernel::GvFromRsm, LpvKernel::GvMerge, LpvKernel::FaceBlocking});
-    if (settings.gvFromCamera)
+    if (settings.gvFromCamera && !settings.gvFromScene)
         kernels.push_back(LpvKernel::GvFromCamera);
     if (settings.directed)
         kernels.insert(kernels.end(), {LpvKernel::Normals, LpvKernel::NormalsDilate});
@@ -239,7 +240,10 @@ void LpvPass::skyStage(const LpvSkyInput& sky) { injectSky(sky); }
 
 void LpvPass::normalsStage(int dilation) { buildNormals(dilation); }
 
-void LpvPass::geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera) { injectGeometry(rsm, camera); }
+void LpvPass::geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera,
+                            const LpvSceneGeometry* sceneGeometry) {
+    injectGeometry(rsm, camera, sceneGeometry);
+}
 
 void LpvPass::propagationStage(const LpvSettings& settings) {
     if (!settings.directed)
@@ -256,8 +260,9 @@ void LpvPass::finish(const LpvSettings& settings, bool cameraGv, bool sky, const
     const int n = settings.gridSize;
     note_ = "LPV: " + std::to_string(cascades_.size()) + " cascades of " + std::to_string(n) + "^3, " +
             std::to_string(settings.propagationSteps) + " steps, " + lpvVariantName(settings.variant) +
-            (settings.occlusion ? ", occlusion from the RSM" + std::string(settings.gvFromCamera && cameraGv ? " and the camera" : "")
-                                : ", no occlusion") +
+            (!settings.occlusion ? ", no occlusion"
+             : sceneSurfels_ > 0 ? ", occlusion from the scene (" + std::to_string(sceneSurfels_) + " surfels)"
+                                 : ", occlusion from the RSM" + std::string(settings.gvFromCamera && cameraGv ? " and the camera" : "")) +
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
             (sky ? ", sky light injected" : "") + localNote(nonEmpty(local)) +
             (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "") +
@@ -267,7 +272,7 @@ void LpvPass::finish(const LpvSettings& settings, bool cameraGv, bool sky, const
 
 scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInput& rsm,
                                    const LpvCameraInput* camera, GpuTimer& timer, const LpvSkyInput* sky,
-                                   const std::vector<LpvLocalInput>& allLocal) {
+                                   const std::vector<LpvLocalInput>& allLocal, const LpvSceneGeometry* sceneGeometry) {
     const std::vector<LpvLocalInput> local = nonEmpty(allLocal);
     if (rsm.cascades.empty() || ((rsm.tileSize <= 0 || !rsm.position) && local.empty())) {
         disable("no RSM to inject from");
@@ -289,7 +294,9 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     if (settings.directed)
         timed(scene::Pass::LpvNormals, [&] { normalsStage(settings.directedDilation); });
     if (settings.geometryVolumeRuns())
-        timed(scene::Pass::GeometryVolume, [&] { geometryStage(rsm, settings.gvFromCamera ? camera : nullptr); });
+        timed(scene::Pass::GeometryVolume, [&] {
+            geometryStage(rsm, settings.gvFromCamera ? camera : nullptr, settings.gvFromScene ? sceneGeometry : nullptr);
+        });
     timed(scene::Pass::LpvPropagation, [&] { propagationStage(settings); });
     if (settings.bounces > 1)
         timed(scene::Pass::LpvBounces, [&] { bounceStage(settings); });
@@ -370,7 +377,9 @@ void LpvPass::bindStepImages(int destination) const {
     }
 }
 
-void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera) {
+// The GV from the views: the RSM's and the camera's surfels, each summed into
+// its half of the fixed-point sums, merged by maximum into the GV volume.
+void LpvPass::injectViews(const LpvRsmInput& rsm, const LpvCameraInput* camera) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGvSumsBinding, volumes_.gvSums.id());
     GLuint p = kernel(LpvKernel::GvFromRsm);
     glUseProgram(p);
@@ -413,9 +422,24 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     const int m = volumes_.gridSize() + 1;
     glDispatchCompute(groups(m, 4), groups(m, 4), groups(m * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
+}
 
+void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera,
+                             const LpvSceneGeometry* sceneGeometry) {
+    const int m = volumes_.gridSize() + 1;
+    const std::size_t cells = std::size_t(m) * std::size_t(m) * std::size_t(m) * std::size_t(volumes_.cascades());
+    sceneSurfels_ = 0;
+    if (sceneGeometry && sceneGeometry->windows.size() == cells) {
+        // The scene's GV, windowed on the CPU: uploaded as the merged volume (the
+        // surfel sums stay cleared; nothing is injected or merged).
+        glTextureSubImage3D(volumes_.geometry.id(), 0, 0, 0, 0, m, m, m * volumes_.cascades(), GL_RGBA, GL_FLOAT,
+                            sceneGeometry->windows.data());
+        sceneSurfels_ = std::max<std::size_t>(sceneGeometry->surfels, 1);
+    } else {
+        injectViews(rsm, camera);
+    }
     // The GV on every cell face, for the compute gather.
-    p = kernel(LpvKernel::FaceBlocking);
+    const GLuint p = kernel(LpvKernel::FaceBlocking);
     glUseProgram(p);
     setCascadeUniforms(p);
     glProgramUniform1i(p, loc(p, "uOcclusion"), 1);

@@ -49,6 +49,10 @@ struct LpvSettings {
     float occlusionStrength = 1.0f;
     // lpv.twoSidedOcclusion: a surfel blocks light from both sides.
     bool twoSidedOcclusion = false;
+    // lpv.geometrySource = scene: the GV is the scene's own (LpvSceneGeometry),
+    // not the RSM's and the camera's surfels; views (false) here for the
+    // tests that build settings by hand.
+    bool gvFromScene = false;
     bool gvFromCamera = true;
     // lpv.gvCameraStride: the camera G-buffer gives one surfel per stride x
     // stride pixels (the block's middle pixel, stride^2 its area).
@@ -111,6 +115,13 @@ struct LpvCameraInput {
     float pixelAngle = 0.0f; // 2 tan(fovY / 2) / height
 };
 
+// The scene's geometry volume (lpv.geometrySource = scene; lpvref::SceneGv):
+// per cascade, in order, its (N+1)^3 GV cells (lpvref::windowOf), x fastest.
+struct LpvSceneGeometry {
+    std::vector<glm::vec4> windows;
+    std::size_t surfels = 0; // sampled for the finest level (the note says it)
+};
+
 // Sky light injection: a top-down depth map of the scene (SkyHeightPass) and
 // the sky's radiance (docs/lpv.md).
 struct LpvSkyInput {
@@ -150,7 +161,9 @@ class LpvPass {
     void injectStage(const LpvRsmInput& rsm, const std::vector<LpvLocalInput>& local, bool directed);
     void skyStage(const LpvSkyInput& sky);
     void normalsStage(int dilation);
-    void geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera);
+    // With `sceneGeometry` the GV is its windows, and the RSM and the camera add nothing.
+    void geometryStage(const LpvRsmInput& rsm, const LpvCameraInput* camera,
+                       const LpvSceneGeometry* sceneGeometry = nullptr);
     void propagationStage(const LpvSettings& settings);
     void bounceStage(const LpvSettings& settings);
     void finish(const LpvSettings& settings, bool cameraGv, bool sky, const std::vector<LpvLocalInput>& local);
@@ -164,7 +177,8 @@ class LpvPass {
     // cascades but no tiles (position 0, tileSize 0): a scene without a sun.
     scene::Expected<void> run(const LpvSettings& settings, const LpvRsmInput& rsm, const LpvCameraInput* camera,
                               GpuTimer& timer, const LpvSkyInput* sky = nullptr,
-                              const std::vector<LpvLocalInput>& local = {});
+                              const std::vector<LpvLocalInput>& local = {},
+                              const LpvSceneGeometry* sceneGeometry = nullptr);
     // Nothing to inject (no sun): frees the volumes, shading reads no LPV.
     void disable(std::string reason);
     // Nothing the LPV is computed from changed: keep the volumes as they are.
@@ -208,7 +222,8 @@ class LpvPass {
     // into every cascade's bound, then their VPLs into the fixed-point sums.
     void localFluxMax(const LpvLocalInput& local);
     void injectLocal(const LpvLocalInput& local, bool directed);
-    void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera);
+    void injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camera, const LpvSceneGeometry* sceneGeometry);
+    void injectViews(const LpvRsmInput& rsm, const LpvCameraInput* camera);
     // The visibility-aware lookup's moments from the GV (lpv_visibility.comp).
     void buildVisibility();
     void propagate(const LpvSettings& settings);
@@ -262,6 +277,7 @@ class LpvPass {
     int injectedTexels_ = 0; // the sun's tile and every local face: the fixed-point bound counts them
     float injectionOffset_ = 1.0f;
     int gvCameraStride_ = 1;
+    std::size_t sceneSurfels_ = 0; // the scene GV's finest-level surfels this frame; 0: the GV came from the views
     bool occlusion_ = true;
     float occlusionStrength_ = 1.0f;
     bool twoSidedOcclusion_ = false;

@@ -91,7 +91,13 @@ std::vector<ParameterInfo> declareParameters() {
              "Scale of the geometry volume's blocking potential in propagation: 1 = a surface covering a cell "
              "face blocks 75% of the light meeting it head-on (the two-band cosine lobe), 4/3 = all of it",
                P::LpvPropagation | P::LpvBounces | P::Shading),
-        boolean("lpv.gvFromCamera", true, "LPV", "Also inject blocking potential from the camera G-buffer",
+        choice("lpv.geometrySource", "views", {"scene", "views"}, "LPV",
+               "Where the geometry volume's surfaces come from: scene = every visible triangle, sampled on the "
+               "CPU once per scene change (both faces of every wall, wherever the cascades go); views = what "
+               "the sun's RSM and the camera see this frame",
+               P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
+        boolean("lpv.gvFromCamera", true, "LPV",
+                "Also inject blocking potential from the camera G-buffer (lpv.geometrySource = views)",
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         integer("lpv.gvCameraStride", 1, 1, 8, "pixels", "LPV",
                 "The camera G-buffer gives the geometry volume one surfel per stride x stride pixels (the "

@@ -1,5 +1,5 @@
 #include "lpv/renderer/lpv/EmissiveVpls.h"
-#include "lpv/scene/WorldMatrices.h"
+#include "SceneTriangles.h"
 
 #include "lpv/scene/AreaLight.h"
 
@@ -23,41 +23,14 @@ struct EmissiveTriangle {
 // light's visible surface, until it returns false.
 template <class Visit>
 void forEachEmissiveTriangle(const scene::Scene& scene, Visit&& visit) {
-    const std::vector<glm::mat4> worlds = scene::worldMatrices(scene); // linear in any parent chain
-    for (int o = 0; o < int(scene.objects.size()); ++o) {
-        const scene::Object& object = scene.objects[std::size_t(o)];
-        if (!object.visible || object.mesh < 0 || std::size_t(object.mesh) >= scene.meshes.size())
-            continue;
-        const scene::Mesh& mesh = scene.meshes[std::size_t(object.mesh)];
-        const glm::mat4 world = worlds[std::size_t(o)];
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
-        for (const scene::Submesh& sub : mesh.submeshes) {
-            if (sub.materialIndex >= scene.materials.size() || !emits(scene.materials[sub.materialIndex]))
-                continue;
-            for (std::uint32_t t = sub.firstIndex; t + 2 < sub.firstIndex + sub.indexCount; t += 3) {
-                const std::uint32_t i[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
-                const glm::vec3 a(world * glm::vec4(mesh.positions[i[0]], 1.0f));
-                const glm::vec3 b(world * glm::vec4(mesh.positions[i[1]], 1.0f));
-                const glm::vec3 c(world * glm::vec4(mesh.positions[i[2]], 1.0f));
-                const glm::vec3 cross = glm::cross(b - a, c - a);
-                const float length = glm::length(cross);
-                if (!(length > 0.0f))
-                    continue; // degenerate: no area, no light
-                if (scene::liesOnAnAreaLight(scene.lights, a, b, c))
-                    continue; // an area light's visible surface: injected as that light
-                glm::vec3 n = cross / length;
-                // The emitting side is the one the shading normals face (the winding may disagree).
-                if (mesh.normals.size() == mesh.positions.size()) {
-                    const glm::vec3 shading =
-                        normalMatrix * (mesh.normals[i[0]] + mesh.normals[i[1]] + mesh.normals[i[2]]);
-                    if (glm::dot(shading, n) < 0.0f)
-                        n = -n;
-                }
-                if (!visit(EmissiveTriangle{a, b, c, n, scene.materials[sub.materialIndex].emissive, 0.5f * length}))
-                    return;
-            }
-        }
-    }
+    detail::forEachWorldTriangle(
+        scene,
+        [&](std::uint32_t material) { return material < scene.materials.size() && emits(scene.materials[material]); },
+        [&](const detail::WorldTriangle& t) {
+            if (scene::liesOnAnAreaLight(scene.lights, t.a, t.b, t.c))
+                return true; // an area light's visible surface: injected as that light
+            return bool(visit(EmissiveTriangle{t.a, t.b, t.c, t.normal, scene.materials[t.material].emissive, t.area}));
+        });
 }
 
 std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
@@ -107,13 +80,7 @@ std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, in
             vpls.push_back(
                 {t.a + (u / float(m)) * (t.b - t.a) + (v / float(m)) * (t.c - t.a), t.normal, flux});
         };
-        // Centroids of the m^2 sub-triangles: m (m + 1) / 2 upright, m (m - 1) / 2 upside down.
-        for (int i = 0; i < m; ++i)
-            for (int j = 0; i + j < m; ++j) {
-                add(float(i) + 1.0f / 3.0f, float(j) + 1.0f / 3.0f);
-                if (i + j < m - 1)
-                    add(float(i) + 2.0f / 3.0f, float(j) + 2.0f / 3.0f);
-            }
+        detail::forEachSubTriangleCentroid(m, add);
     }
     return vpls;
 }

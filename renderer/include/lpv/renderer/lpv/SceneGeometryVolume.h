@@ -1,0 +1,62 @@
+#pragma once
+// The geometry volume of the whole scene (lpv.geometrySource = scene;
+// docs/lpv.md, "Geometry volume from the scene"): every visible triangle cut
+// into surfels on the CPU, binned once per scene change into one sparse
+// world-aligned GV per cascade level, and each frame a cascade's GV is the
+// window of its level under the cascade. The RSM and the camera see only the
+// surfaces the sun and the view reach; this holds every wall, both faces of
+// it, wherever the cascades go, and does not move when the camera turns.
+#include "lpv/renderer/lpv/LpvReference.h"
+#include "lpv/scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace lpv::renderer::lpvref {
+
+// Surfels of every visible object's triangles: each triangle cut into m^2
+// equal sub-triangles, m = ceil(longest edge / spacing) (at most 256), one
+// surfel at each centroid with the triangle's area / m^2, facing the side
+// its shading normals face.
+std::vector<Surfel> sampleSceneSurfels(const scene::Scene& scene, float spacing);
+// How many surfels sampleSceneSurfels gives, without making them.
+std::size_t countSceneSurfels(const scene::Scene& scene, float spacing);
+
+// The GV of surfels on the world grid of one cell size: world GV cell c
+// (integer) is centred at c * cellSize and sums, over the surfels nearest to
+// it (floor(p / cellSize + 0.5)), min(A / cellSize^2, 1) cosineLobe(n), as
+// injectSurfels does for one cascade. Sparse: only cells a surfel reached,
+// sorted by z, then y, then x. Cells beyond 2^20 from the origin are dropped.
+struct WorldGv {
+    float cellSize = 1.0f;
+    std::vector<std::pair<std::uint64_t, glm::vec4>> cells;
+
+    static constexpr int kCoordinateBias = 1 << 20;
+    static bool representable(const glm::ivec3& c);
+    static std::uint64_t key(const glm::ivec3& c); // c must be representable
+    glm::vec4 at(const glm::ivec3& c) const;       // zero where no surfel reached
+};
+WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize);
+
+// One world GV per cascade level, level k sampled at spacing cellSizes[k] / 2
+// (wider where the scene would give more than maxSurfelsPerLevel surfels).
+struct SceneGv {
+    std::vector<WorldGv> levels;
+    std::vector<float> spacing;        // per level, as sampled
+    std::vector<std::size_t> surfels;  // per level
+};
+SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel);
+
+// The GV of cascade `grid` read from `world` (same cell size): GV cell g holds
+// world cell floor(origin / cellSize + 0.5) + g. Where the origin is a
+// multiple of the cell size (lpv.cellSnapping), this is injectSurfels(grid,
+// surfels) of the surfels `world` was built from, up to float rounding of
+// surfels exactly between two cells; otherwise the cascade reads the nearest
+// world cells, at most half a cell off.
+GvGrid windowOf(const WorldGv& world, const GridFrame& grid);
+
+} // namespace lpv::renderer::lpvref

@@ -1,0 +1,149 @@
+#include "lpv/renderer/lpv/SceneGeometryVolume.h"
+#include "SceneTriangles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace lpv::renderer::lpvref {
+
+namespace {
+
+int subdivisions(const detail::WorldTriangle& t, float spacing) {
+    const float longest =
+        std::max({glm::length(t.b - t.a), glm::length(t.c - t.b), glm::length(t.a - t.c)});
+    return std::clamp(int(std::ceil(longest / spacing)), 1, 256);
+}
+
+template <class Visit>
+void forEachSceneSurfel(const scene::Scene& scene, float spacing, Visit&& visit) {
+    detail::forEachWorldTriangle(
+        scene, [](std::uint32_t) { return true; },
+        [&](const detail::WorldTriangle& t) {
+            const int m = subdivisions(t, spacing);
+            const float area = t.area / float(m * m);
+            const glm::vec3 du = (t.b - t.a) / float(m), dv = (t.c - t.a) / float(m);
+            detail::forEachSubTriangleCentroid(m, [&](float u, float v) { visit(Surfel{t.a + u * du + v * dv, t.normal, area}); });
+            return true;
+        });
+}
+
+// Sums surfels into world cells; consecutive surfels of one triangle mostly
+// fall into the cell before, so the last cell is kept at hand.
+class WorldGvBuilder {
+  public:
+    explicit WorldGvBuilder(float cellSize) : cellSize_(cellSize) {}
+    void add(const Surfel& s) {
+        const glm::vec3 g = glm::floor(s.position / cellSize_ + 0.5f);
+        if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z) ||
+            glm::any(glm::greaterThan(glm::abs(g), glm::vec3(float(WorldGv::kCoordinateBias - 1)))))
+            return;
+        const std::uint64_t k = WorldGv::key(glm::ivec3(g));
+        if (!last_ || lastKey_ != k) {
+            last_ = &sums_[k];
+            lastKey_ = k;
+        }
+        *last_ += std::min(s.area / (cellSize_ * cellSize_), 1.0f) * sh::cosineLobe(s.normal);
+    }
+    WorldGv finish() {
+        WorldGv out;
+        out.cellSize = cellSize_;
+        out.cells.assign(sums_.begin(), sums_.end());
+        std::sort(out.cells.begin(), out.cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        return out;
+    }
+
+  private:
+    float cellSize_;
+    std::unordered_map<std::uint64_t, glm::vec4> sums_;
+    glm::vec4* last_ = nullptr; // stable: unordered_map never moves its elements
+    std::uint64_t lastKey_ = 0;
+};
+
+} // namespace
+
+std::vector<Surfel> sampleSceneSurfels(const scene::Scene& scene, float spacing) {
+    std::vector<Surfel> out;
+    forEachSceneSurfel(scene, spacing, [&](const Surfel& s) { out.push_back(s); });
+    return out;
+}
+
+std::size_t countSceneSurfels(const scene::Scene& scene, float spacing) {
+    std::size_t count = 0;
+    detail::forEachWorldTriangle(
+        scene, [](std::uint32_t) { return true; },
+        [&](const detail::WorldTriangle& t) {
+            const std::size_t m = std::size_t(subdivisions(t, spacing));
+            count += m * m;
+            return true;
+        });
+    return count;
+}
+
+bool WorldGv::representable(const glm::ivec3& c) {
+    return glm::all(glm::lessThan(glm::abs(c), glm::ivec3(kCoordinateBias)));
+}
+
+std::uint64_t WorldGv::key(const glm::ivec3& c) {
+    const auto biased = [](int v) { return std::uint64_t(std::uint32_t(v + kCoordinateBias)); };
+    return (biased(c.z) << 42) | (biased(c.y) << 21) | biased(c.x);
+}
+
+glm::vec4 WorldGv::at(const glm::ivec3& c) const {
+    if (!representable(c))
+        return glm::vec4(0.0f);
+    const std::uint64_t k = key(c);
+    const auto it = std::lower_bound(cells.begin(), cells.end(), k, [](const auto& e, std::uint64_t v) { return e.first < v; });
+    return it != cells.end() && it->first == k ? it->second : glm::vec4(0.0f);
+}
+
+WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize) {
+    WorldGvBuilder builder(cellSize);
+    for (const Surfel& s : surfels)
+        builder.add(s);
+    return builder.finish();
+}
+
+SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel) {
+    SceneGv out;
+    for (const float cellSize : cellSizes) {
+        // Two surfels per cell along an edge, coarser until the level fits its budget
+        // (each triangle keeps at least one surfel).
+        float spacing = 0.5f * cellSize;
+        std::size_t count = countSceneSurfels(scene, spacing);
+        for (int widen = 0; count > maxSurfelsPerLevel && widen < 64; ++widen) {
+            const std::size_t wider = countSceneSurfels(scene, spacing * 1.25f);
+            if (wider == count)
+                break; // one surfel per triangle already
+            spacing *= 1.25f;
+            count = wider;
+        }
+        WorldGvBuilder builder(cellSize);
+        forEachSceneSurfel(scene, spacing, [&](const Surfel& s) { builder.add(s); });
+        out.levels.push_back(builder.finish());
+        out.spacing.push_back(spacing);
+        out.surfels.push_back(count);
+    }
+    return out;
+}
+
+GvGrid windowOf(const WorldGv& world, const GridFrame& grid) {
+    GvGrid out(grid.n);
+    const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
+    const int m = grid.n + 1;
+    for (int z = 0; z < m; ++z)
+        for (int y = 0; y < m; ++y) {
+            const glm::ivec3 first = base + glm::ivec3(0, y, z), last = base + glm::ivec3(grid.n, y, z);
+            if (!WorldGv::representable(first) || !WorldGv::representable(last))
+                continue;
+            // A row of the window is a run of consecutive keys in the sorted cells.
+            const std::uint64_t lo = WorldGv::key(first), hi = WorldGv::key(last);
+            auto it = std::lower_bound(world.cells.begin(), world.cells.end(), lo,
+                                       [](const auto& e, std::uint64_t v) { return e.first < v; });
+            for (; it != world.cells.end() && it->first <= hi; ++it)
+                out.at(int(it->first - lo), y, z) = it->second;
+        }
+    return out;
+}
+
+} // namespace lpv::renderer::lpvref
