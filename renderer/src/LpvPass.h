@@ -43,9 +43,8 @@ struct LpvSettings {
     // lpv.occlusionFirstStep: false = the first step ignores the GV (no
     // self-occlusion by the surface that injected the light).
     bool occludeFirstStep = true;
-    // lpv.occlusionStrength: blocking potential scale. 1 here, as lpvref::GvGrid
-    // has it, for the tests that build settings by hand; frames take the
-    // registry default (1.333) through fromParameters.
+    // lpv.occlusionStrength: blocking potential scale (1, as lpvref::GvGrid
+    // and the registry have it).
     float occlusionStrength = 1.0f;
     // lpv.twoSidedOcclusion: a surfel blocks light from both sides.
     bool twoSidedOcclusion = false;

@@ -85,13 +85,14 @@ std::vector<ParameterInfo> declareParameters() {
                 "Let the geometry volume block the first propagation step too; off, light leaves the cell it "
                 "was injected into past the surface that injected it (no self-occlusion)",
                P::LpvPropagation | P::LpvBounces | P::Shading),
-        // 1.333 (4/3 in three decimals, which the inspector's spin box shows exactly) from the
-        // accuracy measurements of issue #24 (docs/lpv.md, "Leaks, over-blocking and placement").
-        real("lpv.occlusionStrength", 1.333, 0.0, 4.0, "", "LPV",
+        // 1 with the scene's geometry volume, from the accuracy measurements of issue #24 (docs/lpv.md,
+        // "Geometry volume from the scene"); 1.333 suited the views' GV, which misses a wall's hidden face.
+        real("lpv.occlusionStrength", 1.0, 0.0, 4.0, "", "LPV",
              "Scale of the geometry volume's blocking potential in propagation: 1 = a surface covering a cell "
              "face blocks 75% of the light meeting it head-on (the two-band cosine lobe), 4/3 = all of it",
                P::LpvPropagation | P::LpvBounces | P::Shading),
-        choice("lpv.geometrySource", "views", {"scene", "views"}, "LPV",
+        // scene from the accuracy measurements of issue #24 (docs/lpv.md, "Geometry volume from the scene").
+        choice("lpv.geometrySource", "scene", {"scene", "views"}, "LPV",
                "Where the geometry volume's surfaces come from: scene = every visible triangle, sampled on the "
                "CPU once per scene change (both faces of every wall, wherever the cascades go); views = what "
                "the sun's RSM and the camera see this frame",
