@@ -72,6 +72,7 @@ varied alone around the project's settings:
   visibility lpv.visibilityLookup=false,true
   clampToScene lpv.clampToScene=false,true
   twoSided   lpv.twoSidedOcclusion=false,true
+  geometrySource lpv.geometrySource=views,scene
 Like for like: each LPV is measured against the reference's light reflected
 as many times as its lpv.bounces, and the reference traces the sky and
 emissive surfaces where the LPV injects them (reference.skyLight and

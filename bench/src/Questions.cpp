@@ -24,6 +24,7 @@ const std::vector<Question>& reportQuestions() {
         {"visibility", "lpv.visibilityLookup=false,true", ""},
         {"clampToScene", "lpv.clampToScene=false,true", ""},
         {"twoSided", "lpv.twoSidedOcclusion=false,true", ""},
+        {"geometrySource", "lpv.geometrySource=views,scene", ""},
     };
     return questions;
 }
