@@ -185,7 +185,7 @@ TEST(SceneGv, BothFacesOfAThickWallBlockLightFromEitherSide) {
     EXPECT_GT(oneEast, 0.99f) << "light travelling +x meets only the +x face's back, which lets it through";
 }
 
-// Real data: Sponza (OBJ, 262k triangles) at the default cascades' cell
+// Real data: Sponza (OBJ, 66,443 triangles) at the default cascades' cell
 // sizes. Every surfel is smaller than a cell face, so no coverage is clamped
 // away: each level's DC sums the scene's whole area (pi Y00 per cell face).
 TEST(SceneGv, SponzaIsSampledWhole) {
