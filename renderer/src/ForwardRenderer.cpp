@@ -78,6 +78,7 @@ void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureIm
     impl_->traits.reset();
     impl_->exposure->reset();
     ++impl_->sceneGeneration;
+    impl_->sceneGvCache.clear(); // another scene's meshes
     impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
     impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
 }

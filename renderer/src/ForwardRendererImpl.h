@@ -112,11 +112,11 @@ struct ForwardRenderer::Impl {
     // reads it before this frame's shading overwrites it.
     bool gBufferValid = false;
     LpvCameraInput previousCamera;
-    // The scene's geometry volume (lpv.geometrySource = scene): built on the
-    // CPU once per scene, cell size and cascade count (sceneGvKey); each frame
-    // the cascades' windows of it (sceneGeometry).
-    std::optional<lpvref::SceneGv> sceneGv;
-    std::uint64_t sceneGvKey = 0;
+    // The scene's geometry volume (lpv.geometrySource = scene), sampled on the
+    // CPU per object: an edit samples again only the objects it moved, hid or
+    // added; setScene empties it (other meshes). Each frame that recomputes
+    // the GV cuts the cascades' windows of it (sceneGeometry).
+    lpvref::SceneGvCache sceneGvCache;
     LpvSceneGeometry sceneGeometry;
     int width = 0, height = 0;
     // Framebuffers around the graph's camera targets, rebuilt when it hands out others.

@@ -113,21 +113,15 @@ const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameConte
     std::vector<float> cellSizes;
     for (const LpvCascade& c : plan.cascades)
         cellSizes.push_back(c.cellSize);
-    graph::ContentHash key;
-    key.add(sceneGeneration);
-    for (float s : cellSizes)
-        key.add(s);
-    if (!sceneGv || sceneGvKey != key.value()) {
-        sceneGv = lpvref::buildSceneGv(frame.scene, cellSizes, kMaxSurfelsPerLevel);
-        sceneGvKey = key.value();
-    }
+    sceneGvCache.update(frame.scene, cellSizes, kMaxSurfelsPerLevel);
+    const lpvref::SceneGv& gv = sceneGvCache.gv();
     sceneGeometry.windows.clear();
-    for (std::size_t k = 0; k < plan.cascades.size() && k < sceneGv->levels.size(); ++k) {
+    for (std::size_t k = 0; k < plan.cascades.size() && k < gv.levels.size(); ++k) {
         const LpvCascade& c = plan.cascades[k];
-        const lpvref::GvGrid window = lpvref::windowOf(sceneGv->levels[k], {c.origin, c.cellSize, c.gridSize});
+        const lpvref::GvGrid window = lpvref::windowOf(gv.levels[k], {c.origin, c.cellSize, c.gridSize});
         sceneGeometry.windows.insert(sceneGeometry.windows.end(), window.potential.begin(), window.potential.end());
     }
-    sceneGeometry.surfels = sceneGv->surfels.empty() ? 0 : sceneGv->surfels.front();
+    sceneGeometry.surfels = gv.surfels.empty() ? 0 : gv.surfels.front();
     return sceneGeometry;
 }
 

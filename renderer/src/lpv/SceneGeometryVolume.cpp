@@ -16,16 +16,48 @@ int subdivisions(const detail::WorldTriangle& t, float spacing) {
 }
 
 template <class Visit>
+bool visitSurfels(const detail::WorldTriangle& t, float spacing, Visit&& visit) {
+    const int m = subdivisions(t, spacing);
+    const float area = t.area / float(m * m);
+    const glm::vec3 du = (t.b - t.a) / float(m), dv = (t.c - t.a) / float(m);
+    detail::forEachSubTriangleCentroid(m, [&](float u, float v) { visit(Surfel{t.a + u * du + v * dv, t.normal, area}); });
+    return true;
+}
+
+template <class Visit>
 void forEachSceneSurfel(const scene::Scene& scene, float spacing, Visit&& visit) {
     detail::forEachWorldTriangle(
-        scene, [](std::uint32_t) { return true; },
-        [&](const detail::WorldTriangle& t) {
-            const int m = subdivisions(t, spacing);
-            const float area = t.area / float(m * m);
-            const glm::vec3 du = (t.b - t.a) / float(m), dv = (t.c - t.a) / float(m);
-            detail::forEachSubTriangleCentroid(m, [&](float u, float v) { visit(Surfel{t.a + u * du + v * dv, t.normal, area}); });
+        scene, [](std::uint32_t) { return true; }, [&](const detail::WorldTriangle& t) { return visitSurfels(t, spacing, visit); });
+}
+
+auto everyMaterial() {
+    return [](std::uint32_t) { return true; };
+}
+
+// Surfels of every object, hidden ones too: what the budget is checked against.
+std::size_t countAllSurfels(const scene::Scene& scene, const std::vector<glm::mat4>& worlds, float spacing) {
+    std::size_t count = 0;
+    for (int o = 0; o < int(scene.objects.size()); ++o)
+        detail::forEachObjectTriangle(scene, o, worlds[std::size_t(o)], everyMaterial(), [&](const detail::WorldTriangle& t) {
+            const std::size_t m = std::size_t(subdivisions(t, spacing));
+            count += m * m;
             return true;
         });
+    return count;
+}
+
+std::uint64_t placementKey(const scene::Object& object, const glm::mat4& world) {
+    std::uint64_t h = 1469598103934665603ull; // FNV-1a over the mesh, the visibility and the matrix
+    auto mix = [&](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i)
+            h = (h ^ bytes[i]) * 1099511628211ull;
+    };
+    mix(&object.mesh, sizeof(object.mesh));
+    const unsigned char visible = object.visible ? 1 : 0;
+    mix(&visible, 1);
+    mix(&world, sizeof(world));
+    return h;
 }
 
 // Sums surfels into world cells; consecutive surfels of one triangle mostly
@@ -45,6 +77,7 @@ class WorldGvBuilder {
         }
         *last_ += std::min(s.area / (cellSize_ * cellSize_), 1.0f) * sh::cosineLobe(s.normal);
     }
+    void add(std::uint64_t key, const glm::vec4& value) { sums_[key] += value; }
     WorldGv finish() {
         WorldGv out;
         out.cellSize = cellSize_;
@@ -105,26 +138,82 @@ WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize) {
 }
 
 SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel) {
-    SceneGv out;
-    for (const float cellSize : cellSizes) {
+    SceneGvCache cache;
+    cache.update(scene, cellSizes, maxSurfelsPerLevel);
+    return cache.gv();
+}
+
+void SceneGvCache::clear() {
+    objects_.clear();
+    cellSizes_.clear();
+    gv_ = {};
+}
+
+int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel) {
+    const std::vector<glm::mat4> worlds = scene::worldMatrices(scene);
+    if (!std::equal(cellSizes.begin(), cellSizes.end(), cellSizes_.begin(), cellSizes_.end()) ||
+        maxSurfelsPerLevel != maxSurfels_)
+        clear();
+    if (gv_.spacing.empty()) {
         // Two surfels per cell along an edge, coarser until the level fits its budget
         // (each triangle keeps at least one surfel).
-        float spacing = 0.5f * cellSize;
-        std::size_t count = countSceneSurfels(scene, spacing);
-        for (int widen = 0; count > maxSurfelsPerLevel && widen < 64; ++widen) {
-            const std::size_t wider = countSceneSurfels(scene, spacing * 1.25f);
-            if (wider == count)
-                break; // one surfel per triangle already
-            spacing *= 1.25f;
-            count = wider;
+        cellSizes_.assign(cellSizes.begin(), cellSizes.end());
+        maxSurfels_ = maxSurfelsPerLevel;
+        for (const float cellSize : cellSizes) {
+            float spacing = 0.5f * cellSize;
+            std::size_t count = countAllSurfels(scene, worlds, spacing);
+            for (int widen = 0; count > maxSurfelsPerLevel && widen < 64; ++widen) {
+                const std::size_t wider = countAllSurfels(scene, worlds, spacing * 1.25f);
+                if (wider == count)
+                    break; // one surfel per triangle already
+                spacing *= 1.25f;
+                count = wider;
+            }
+            gv_.spacing.push_back(spacing);
         }
-        WorldGvBuilder builder(cellSize);
-        forEachSceneSurfel(scene, spacing, [&](const Surfel& s) { builder.add(s); });
-        out.levels.push_back(builder.finish());
-        out.spacing.push_back(spacing);
-        out.surfels.push_back(count);
     }
-    return out;
+    const std::size_t levels = cellSizes_.size();
+    const bool removed = objects_.size() > scene.objects.size();
+    objects_.resize(scene.objects.size());
+    int sampled = 0;
+    for (int o = 0; o < int(scene.objects.size()); ++o) {
+        ObjectCells& cells = objects_[std::size_t(o)];
+        const scene::Object& object = scene.objects[std::size_t(o)];
+        const std::uint64_t placement = placementKey(object, worlds[std::size_t(o)]);
+        if (cells.sampled && cells.placement == placement)
+            continue;
+        cells = ObjectCells{true, placement, {}, {}};
+        for (std::size_t k = 0; k < levels; ++k) {
+            WorldGvBuilder builder(cellSizes_[k]);
+            std::size_t count = 0;
+            if (object.visible)
+                detail::forEachObjectTriangle(scene, o, worlds[std::size_t(o)], everyMaterial(),
+                                              [&](const detail::WorldTriangle& t) {
+                                                  return visitSurfels(t, gv_.spacing[k], [&](const Surfel& s) {
+                                                      builder.add(s);
+                                                      ++count;
+                                                  });
+                                              });
+            cells.levels.push_back(std::move(builder.finish().cells));
+            cells.surfels.push_back(count);
+        }
+        ++sampled;
+    }
+    if (sampled == 0 && !removed && gv_.levels.size() == levels)
+        return 0;
+    // The objects' cells summed, object after object (the same order every time).
+    gv_.levels.clear();
+    gv_.surfels.assign(levels, 0);
+    for (std::size_t k = 0; k < levels; ++k) {
+        WorldGvBuilder sum(cellSizes_[k]);
+        for (const ObjectCells& cells : objects_) {
+            for (const auto& [key, value] : cells.levels[k])
+                sum.add(key, value);
+            gv_.surfels[k] += cells.surfels[k];
+        }
+        gv_.levels.push_back(sum.finish());
+    }
+    return sampled;
 }
 
 GvGrid windowOf(const WorldGv& world, const GridFrame& grid) {

@@ -43,13 +43,40 @@ struct WorldGv {
 WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize);
 
 // One world GV per cascade level, level k sampled at spacing cellSizes[k] / 2
-// (wider where the scene would give more than maxSurfelsPerLevel surfels).
+// (wider where the scene's objects, hidden ones too, would give more than
+// maxSurfelsPerLevel surfels).
 struct SceneGv {
     std::vector<WorldGv> levels;
     std::vector<float> spacing;        // per level, as sampled
     std::vector<std::size_t> surfels;  // per level
 };
 SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel);
+
+// The scene's GV kept per object, so that an edit samples again only the
+// objects it moved, hid, showed or added (the editor drags one object at a
+// time): each object's cells per level, summed over the objects in their
+// order into gv(). buildSceneGv is one update of an empty cache, so both
+// give the same sums. The spacing is chosen when the cache is (re)filled.
+class SceneGvCache {
+  public:
+    // Brings gv() up to date with `scene`; returns how many objects were sampled.
+    int update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel);
+    // The meshes changed (another scene): the next update samples every object.
+    void clear();
+    const SceneGv& gv() const { return gv_; }
+
+  private:
+    struct ObjectCells {
+        bool sampled = false;
+        std::uint64_t placement = 0; // mesh, visibility and world matrix it was sampled with
+        std::vector<std::vector<std::pair<std::uint64_t, glm::vec4>>> levels;
+        std::vector<std::size_t> surfels;
+    };
+    std::vector<ObjectCells> objects_;
+    std::vector<float> cellSizes_;
+    std::size_t maxSurfels_ = 0;
+    SceneGv gv_;
+};
 
 // The GV of cascade `grid` read from `world` (same cell size): GV cell g holds
 // world cell floor(origin / cellSize + 0.5) + g. Where the origin is a
