@@ -94,7 +94,7 @@ std::vector<ParameterInfo> declareParameters() {
         // scene from the accuracy measurements of issue #24 (docs/lpv.md, "Geometry volume from the scene").
         choice("lpv.geometrySource", "scene", {"scene", "views"}, "LPV",
                "Where the geometry volume's surfaces come from: scene = every visible triangle, sampled on the "
-               "CPU once per scene change (both faces of every wall, wherever the cascades go); views = what "
+               "CPU when its object changes (both faces of every wall, wherever the cascades go); views = what "
                "the sun's RSM and the camera see this frame",
                P::GeometryVolume | P::LpvPropagation | P::LpvBounces | P::Shading),
         boolean("lpv.gvFromCamera", true, "LPV",
