@@ -115,11 +115,21 @@ const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameConte
         cellSizes.push_back(c.cellSize);
     sceneGvCache.update(frame.scene, cellSizes, kMaxSurfelsPerLevel);
     const lpvref::SceneGv& gv = sceneGvCache.gv();
-    sceneGeometry.windows.clear();
-    for (std::size_t k = 0; k < plan.cascades.size() && k < gv.levels.size(); ++k) {
+    // One buffer for every cascade's window, kept from frame to frame.
+    const std::size_t cascades = std::min(plan.cascades.size(), gv.levels.size());
+    std::size_t offset = 0;
+    for (std::size_t k = 0; k < cascades; ++k) {
+        const std::size_t m = std::size_t(plan.cascades[k].gridSize) + 1;
+        offset += m * m * m;
+    }
+    sceneGeometry.windows.resize(offset);
+    offset = 0;
+    for (std::size_t k = 0; k < cascades; ++k) {
         const LpvCascade& c = plan.cascades[k];
-        const lpvref::GvGrid window = lpvref::windowOf(gv.levels[k], {c.origin, c.cellSize, c.gridSize});
-        sceneGeometry.windows.insert(sceneGeometry.windows.end(), window.potential.begin(), window.potential.end());
+        const std::size_t m = std::size_t(c.gridSize) + 1;
+        lpvref::windowInto(gv.levels[k], {c.origin, c.cellSize, c.gridSize},
+                           std::span<glm::vec4>(sceneGeometry.windows).subspan(offset, m * m * m));
+        offset += m * m * m;
     }
     sceneGeometry.surfels = gv.surfels.empty() ? 0 : gv.surfels.front();
     return sceneGeometry;

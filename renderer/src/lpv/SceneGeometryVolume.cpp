@@ -218,8 +218,16 @@ int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellS
 
 GvGrid windowOf(const WorldGv& world, const GridFrame& grid) {
     GvGrid out(grid.n);
-    const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
+    windowInto(world, grid, out.potential);
+    return out;
+}
+
+void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
     const int m = grid.n + 1;
+    std::fill(out.begin(), out.end(), glm::vec4(0.0f));
+    if (out.size() != std::size_t(m) * std::size_t(m) * std::size_t(m))
+        return;
+    const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
     for (int z = 0; z < m; ++z)
         for (int y = 0; y < m; ++y) {
             const glm::ivec3 first = base + glm::ivec3(0, y, z), last = base + glm::ivec3(grid.n, y, z);
@@ -229,10 +237,10 @@ GvGrid windowOf(const WorldGv& world, const GridFrame& grid) {
             const std::uint64_t lo = WorldGv::key(first), hi = WorldGv::key(last);
             auto it = std::lower_bound(world.cells.begin(), world.cells.end(), lo,
                                        [](const auto& e, std::uint64_t v) { return e.first < v; });
+            const std::size_t row = std::size_t(m) * (std::size_t(y) + std::size_t(m) * std::size_t(z));
             for (; it != world.cells.end() && it->first <= hi; ++it)
-                out.at(int(it->first - lo), y, z) = it->second;
+                out[row + std::size_t(it->first - lo)] = it->second;
         }
-    return out;
 }
 
 } // namespace lpv::renderer::lpvref

@@ -85,5 +85,8 @@ class SceneGvCache {
 // surfels exactly between two cells; otherwise the cascade reads the nearest
 // world cells, at most half a cell off.
 GvGrid windowOf(const WorldGv& world, const GridFrame& grid);
+// The same into `out`, (grid.n + 1)^3 cells (x fastest), which it overwrites
+// (the renderer cuts every cascade's window into one buffer each frame).
+void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out);
 
 } // namespace lpv::renderer::lpvref
