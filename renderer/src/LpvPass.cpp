@@ -135,8 +135,12 @@ GLint LpvPass::loc(GLuint program, const char* name) const {
 
 scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
     std::vector<LpvKernel> kernels = {LpvKernel::FluxMax, LpvKernel::Inject, LpvKernel::Resolve};
-    if (settings.geometryVolumeRuns())
-        kernels.insert(kernels.end(), {LpvKernel::GvFromRsm, LpvKernel::GvMerge, LpvKernel::FaceBlocking});
+    if (settings.geometryVolumeRuns()) {
+        kernels.push_back(LpvKernel::FaceBlocking);
+        // The scene's GV is uploaded: no surfel is injected or merged on the GPU.
+        if (!settings.gvFromScene)
+            kernels.insert(kernels.end(), {LpvKernel::GvFromRsm, LpvKernel::GvMerge});
+    }
     if (settings.gvFromCamera && !settings.gvFromScene)
         kernels.push_back(LpvKernel::GvFromCamera);
     if (settings.directed)
