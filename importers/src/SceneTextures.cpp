@@ -1,13 +1,18 @@
 #include "lpv/importers/SceneTextures.h"
 
+#include "lpv/importers/ImageBudget.h"
 #include "lpv/importers/ImageIO.h"
+#include "lpv/importers/TextureBudget.h"
+#include "lpv/scene/FileRead.h"
 #include "lpv/scene/ProjectTextures.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace lpv::importers {
@@ -16,9 +21,12 @@ namespace fs = std::filesystem;
 namespace {
 
 std::uint32_t readLe32(const unsigned char* p) {
-    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
+    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
+           std::uint32_t(p[3]) << 24;
 }
-std::uint16_t readLe16(const unsigned char* p) { return std::uint16_t(p[0] | p[1] << 8); }
+std::uint16_t readLe16(const unsigned char* p) {
+    return std::uint16_t(p[0] | p[1] << 8);
+}
 
 } // namespace
 
@@ -118,14 +126,14 @@ scene::Image8 heightToNormalMap(const scene::Image8& height, float strength) {
     out.height = height.height;
     out.channels = 4;
     const int w = height.width, h = height.height, c = height.channels;
-    if (w <= 0 || h <= 0 || c <= 0 ||
-        height.pixels.size() < std::size_t(w) * std::size_t(h) * std::size_t(c))
+    if (w <= 0 || h <= 0 || c <= 0 || height.pixels.size() < std::size_t(w) * std::size_t(h) * std::size_t(c))
         return out;
     out.pixels.resize(std::size_t(w) * std::size_t(h) * 4);
     auto at = [&](int x, int row) {
         x = (x % w + w) % w;
         row = (row % h + h) % h;
-        return float(height.pixels[(std::size_t(row) * std::size_t(w) + std::size_t(x)) * std::size_t(c)]) / 255.0f;
+        return float(height.pixels[(std::size_t(row) * std::size_t(w) + std::size_t(x)) * std::size_t(c)]) /
+               255.0f;
     };
     for (int row = 0; row < h; ++row)
         for (int x = 0; x < w; ++x) {
@@ -140,50 +148,71 @@ scene::Image8 heightToNormalMap(const scene::Image8& height, float strength) {
     return out;
 }
 
-SceneTextures loadSceneTextures(const scene::Scene& scene, const fs::path& projectDir) {
+SceneTextures loadSceneTextures(const scene::Scene& scene, const fs::path& projectDir, std::uint64_t budget) {
     SceneTextures result;
-    // Decoded once per path, whatever the number of materials or slots using it.
-    std::map<std::string, LoadedTexture> decoded;
     auto resolve = [&](const std::string& path) {
         const fs::path p(path);
         return p.is_absolute() ? p : projectDir / p;
     };
-    auto load = [&](const std::string& path) -> const scene::Image8& {
-        auto it = decoded.find(path);
-        if (it == decoded.end()) {
-            it = decoded.emplace(path, loadTextureOrPlaceholder(resolve(path))).first;
-            if (it->second.placeholder)
-                result.warnings.push_back(it->second.warning);
-        }
-        return it->second.image;
-    };
-
+    // Which files are used how: each file is decoded once, whatever the
+    // number of materials or slots using it, and each use is one image.
+    std::set<std::string> plain, heights, keyed;
     for (const scene::Material& m : scene.materials) {
-        for (const std::string* slot : scene::textureSlots(m)) {
-            if (slot->empty() || slot == &m.heightTexture)
-                continue;
-            if (!result.images.contains(*slot))
-                result.images.emplace(*slot, load(*slot));
-        }
-        if (!m.heightTexture.empty()) {
-            const std::string key = m.heightTexture + kHeightNormalSuffix;
-            if (!result.images.contains(key))
-                result.images.emplace(key, heightToNormalMap(load(m.heightTexture)));
-        }
-        if (m.colorKey && !m.diffuseTexture.empty()) {
-            const std::string key = m.diffuseTexture + kColorKeySuffix;
-            if (!result.images.contains(key)) {
-                scene::Image8 keyed = load(m.diffuseTexture);
-                const fs::path file = resolve(m.diffuseTexture);
-                std::array<std::uint8_t, 3> colour{0, 0, 0};
-                if (!decoded.at(m.diffuseTexture).placeholder)
-                    if (auto first = bmpFirstPaletteColour(file)) // nothing for non-BMPs and true-colour BMPs
-                        colour = *first;
-                applyColorKey(keyed, colour);
-                result.images.emplace(key, std::move(keyed));
-            }
-        }
+        for (const std::string* slot : scene::textureSlots(m))
+            if (!slot->empty() && slot != &m.heightTexture)
+                plain.insert(*slot);
+        if (!m.heightTexture.empty())
+            heights.insert(m.heightTexture);
+        if (m.colorKey && !m.diffuseTexture.empty())
+            keyed.insert(m.diffuseTexture);
     }
+    std::vector<std::string> files;
+    std::set_union(plain.begin(), plain.end(), heights.begin(), heights.end(), std::back_inserter(files));
+    files.erase(std::unique(files.begin(), files.end()), files.end());
+
+    // The scene's budget, planned from the headers before anything decodes:
+    // an unreadable header costs nothing (it becomes the placeholder).
+    std::vector<TextureFootprint> footprints;
+    for (const std::string& path : files) {
+        TextureFootprint f;
+        f.copies = int(plain.contains(path)) + int(heights.contains(path)) + int(keyed.contains(path));
+        if (auto header = readImageHeader(resolve(path))) {
+            f.width = header->width;
+            f.height = header->height;
+        }
+        footprints.push_back(f);
+    }
+    const std::vector<int> shrink = planTextureShrink(footprints, budget);
+
+    std::map<std::string, LoadedTexture> decoded;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        LoadedTexture t = loadTextureOrPlaceholder(resolve(files[i]), shrink[i]);
+        if (t.placeholder)
+            result.warnings.push_back(t.warning);
+        else if (shrink[i] > 1)
+            result.warnings.push_back(
+                "texture " + resolve(files[i]).string() + " is " + std::to_string(footprints[i].width) + "x" +
+                std::to_string(footprints[i].height) + "; loaded at " + std::to_string(t.image.width) + "x" +
+                std::to_string(t.image.height) + " to keep the scene's textures within " +
+                scene::formatBytes(budget) + " (RGBA8 with mipmaps)");
+        decoded.emplace(files[i], std::move(t));
+    }
+
+    for (const std::string& path : heights)
+        result.images.emplace(path + kHeightNormalSuffix, heightToNormalMap(decoded.at(path).image));
+    for (const std::string& path : keyed) {
+        scene::Image8 image = decoded.at(path).image;
+        std::array<std::uint8_t, 3> colour{0, 0, 0};
+        if (!decoded.at(path).placeholder)
+            if (auto first =
+                    bmpFirstPaletteColour(resolve(path))) // nothing for non-BMPs and true-colour BMPs
+                colour = *first;
+        applyColorKey(image, colour);
+        result.images.emplace(path + kColorKeySuffix, std::move(image));
+    }
+    // Last, so the derived images above could read them: moved, not copied.
+    for (const std::string& path : plain)
+        result.images.emplace(path, std::move(decoded.at(path).image));
     return result;
 }
 

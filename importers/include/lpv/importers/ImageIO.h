@@ -15,8 +15,13 @@ namespace lpv::importers {
 using Image8 = scene::Image8;
 
 // Larger sides are refused before anything is allocated (a corrupt header
-// must not cost gigabytes).
+// must not cost gigabytes). The side is not the memory limit: every read
+// also keeps within the budgets of ImageBudget.h (issue #42), checked from
+// the file's header before OpenImageIO opens it, and whatever OpenImageIO
+// throws comes back as an error value.
 inline constexpr int kMaxImageSide = 16384;
+// Named channels readImageChannels accepts (a path-traced reference has about a dozen).
+inline constexpr int kMaxImageChannels = 64;
 
 // Format from the extension (.png, .jpg, .bmp, .tga, .exr...).
 scene::Expected<void> writeImage(const std::filesystem::path& file, const Image8& image);
@@ -40,8 +45,10 @@ scene::Expected<FloatChannels> readImageChannels(const std::filesystem::path& fi
 scene::Expected<Image8> readImage8(const std::filesystem::path& file);
 
 // Four channels for use as a texture: grey, grey + alpha and RGB are expanded
-// (palettised BMPs already arrive expanded from OpenImageIO).
-scene::Expected<Image8> readTextureRgba8(const std::filesystem::path& file);
+// (palettised BMPs already arrive expanded from OpenImageIO). `shrink` (a
+// power of two) makes it that many times smaller on each side, box-filtered
+// while it is decoded in strips, so the full-size image is never held.
+scene::Expected<Image8> readTextureRgba8(const std::filesystem::path& file, int shrink = 1);
 
 // 64x64 magenta and black checks: what a missing or unreadable texture looks like.
 Image8 placeholderTexture();
@@ -51,7 +58,8 @@ struct LoadedTexture {
     bool placeholder = false;
     std::string warning;     // names the file and why, when placeholder
 };
-// Never fails: a texture that cannot be read becomes the placeholder plus a warning.
-LoadedTexture loadTextureOrPlaceholder(const std::filesystem::path& file);
+// Never fails: a texture that cannot be read (or is over the budget) becomes
+// the placeholder plus a warning. `shrink` as for readTextureRgba8.
+LoadedTexture loadTextureOrPlaceholder(const std::filesystem::path& file, int shrink = 1);
 
 } // namespace lpv::importers

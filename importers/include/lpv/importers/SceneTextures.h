@@ -4,6 +4,7 @@
 // under their own keys because they depend on how a material uses the file:
 // - colour-keyed diffuse maps (4ds COLOR_KEY): `path + kColorKeySuffix`,
 // - normal maps made from height/bump maps: `path + kHeightNormalSuffix`.
+#include "lpv/importers/TextureBudget.h"
 #include "lpv/scene/Image.h"
 #include "lpv/scene/Scene.h"
 
@@ -28,7 +29,10 @@ struct SceneTextures {
 
 // Texture paths are relative to `projectDir` or absolute. Never fails: an
 // unreadable file becomes the magenta/black placeholder plus a warning.
-SceneTextures loadSceneTextures(const scene::Scene& scene, const std::filesystem::path& projectDir);
+// The images together keep within `budget` (TextureBudget.h): over it, the
+// largest are decoded at half size, or smaller, with a warning for each.
+SceneTextures loadSceneTextures(const scene::Scene& scene, const std::filesystem::path& projectDir,
+                                std::uint64_t budget = kSceneTextureBudgetBytes);
 
 // How strongly height maps bend normals: a height step from 0 to 1 (black to
 // white) across one texel tilts the normal as a slope of this many units.
