@@ -5,6 +5,7 @@
 #include "lpv/scene/CameraPathFile.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ValueChecks.h"
 
 #include <algorithm>
 #include <cctype>
@@ -111,6 +112,10 @@ int exportPath(Args& args) {
         return kOk;
     }
     const scene::CameraSpline spline(*path);
+    if (auto why = scene::checkPlannedFrames(double(spline.duration()), fps)) {
+        std::cerr << "lpv: " << pos[1] << ": path '" << *name << "': " << *why << "; nothing was written\n";
+        return kFailure;
+    }
     if (auto ok = scene::writeFileAtomically(*output, scene::cameraPathToCsv(spline, fps)); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;

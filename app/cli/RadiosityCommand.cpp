@@ -45,7 +45,10 @@ solution so far is saved.
 
   -o, --output FILE     Save the project with its solution as FILE (default: in place)
   --residual R          Stop at this residual (default radiosity.convergenceThreshold)
-  --max-seconds S       Stop after S seconds of solving in this run (default: no limit)
+  --max-seconds S       Stop after S seconds of solving in this run (default 3600, an
+                        hour; 0: no limit). Stopped there, the solution is saved and a
+                        second run resumes it. A residual that is not finite (a light
+                        whose energy overflows) stops the solve with an error, unsaved
   --restart             Ignore a saved solution and start over
   --refine T            After converging, split patches whose radiosity differs
                         from a neighbour's by more than T (relative, e.g. 0.3),
@@ -159,7 +162,8 @@ int runRadiosity(Args args) {
     const auto pos = args.positionals();
     if (pos.size() != 1)
         return usageError("expected exactly one project file", "radiosity");
-    const auto maxSeconds = parseNumber(secondsText.value_or("0"));
+    const auto maxSeconds =
+        secondsText ? parseNumber(*secondsText) : std::optional(radiosity::kDefaultMaxSeconds);
     const auto interval = parseNumber(intervalText.value_or("1"));
     const auto width = parseNumber(widthText.value_or("800"));
     const auto height = parseNumber(heightText.value_or("600"));
@@ -269,6 +273,13 @@ int runRadiosityCommand(const RadiosityCommand& c) {
         return kFailure;
     std::printf("form factors: %s, target residual %g\n", renderer::describeFormFactorSource(*formFactors).c_str(),
                 residualTarget);
+    if (*maxSeconds > 0.0)
+        std::printf("time limit: %g s of solving in this run%s\n", *maxSeconds,
+                    *maxSeconds == radiosity::kDefaultMaxSeconds
+                        ? " (the default; --max-seconds S, 0 for none)"
+                        : "");
+    else
+        std::printf("time limit: none (--max-seconds 0)\n");
 
     Milestones milestones;
     radiosity::SolveOptions options;

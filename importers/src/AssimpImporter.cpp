@@ -290,6 +290,14 @@ scene::Camera convertCamera(const aiCamera& c, const glm::mat4& world, const glm
     const glm::vec3 up = glm::mat3(world) * toVec3(c.mUp);
     const bool believable = glm::length(up) > 0.0f && finite(up) && glm::normalize(up).y > 0.5f;
     cam.up = believable ? glm::normalize(up) : glm::vec3(0, 1, 0);
+    // A camera looking straight up or down (3DS/CameraRollAnim.3ds: Z-up
+    // "forward" becomes +Y) would get +Y, parallel to its view: a NaN view
+    // matrix, and Embree aborted on its rays. Then the file's own up, which
+    // 3DS keeps perpendicular, is the better guess.
+    const glm::vec3 view = glm::normalize(cam.target - cam.position);
+    if (glm::length(glm::cross(view, cam.up)) < 1e-3f && glm::length(up) > 0.0f && finite(up) &&
+        glm::length(glm::cross(view, glm::normalize(up))) >= 1e-3f)
+        cam.up = glm::normalize(up);
     // Assimp's mHorizontalFOV is the half angle, centre line to the left border.
     const float aspect = c.mAspect > 0.0f ? c.mAspect : 16.0f / 9.0f;
     const float fovY = 2.0f * std::atan(std::tan(c.mHorizontalFOV) / aspect);

@@ -7,6 +7,7 @@
 
 #include "EmissiveLamps.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ValueRepair.h"
 
 #include <algorithm>
 #include <cctype>
@@ -104,6 +105,10 @@ void clampNegativeColours(const std::filesystem::path& file, ImportResult& resul
 // The same clean-up for every format, then the summary's counts.
 void finishImport(const std::filesystem::path& file, ImportResult& result) {
     clampNegativeColours(file, result);
+    // Values a project would refuse as products (ValueChecks.h) are repaired
+    // here with a warning: a parallel up vector must not cost the whole file.
+    for (const std::string& note : scene::repairSceneValues(result.scene))
+        result.warnings.push_back(file.string() + ": " + note);
     std::size_t repairedNormals = 0;
     for (scene::Mesh& mesh : result.scene.meshes) {
         const MeshCleanupStats s = cleanupMesh(mesh);

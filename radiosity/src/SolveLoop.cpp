@@ -1,6 +1,8 @@
 #include "lpv/radiosity/SolveLoop.h"
 
 #include <chrono>
+#include <cmath>
+#include <string>
 
 namespace lpv::radiosity {
 
@@ -42,6 +44,18 @@ scene::Expected<StopReason> solve(ProgressiveSolver& solver, FormFactorSource& f
             options.progress(progressOf(solver, elapsed(now), solver.state().shots - shotsBefore));
     };
     for (;;) {
+        // NaN compares false with every target: without this a light whose
+        // energy overflows (3.4e38 W) solved for ever, or saved NaN.
+        const glm::dvec3 emitted = solver.state().balance.emitted;
+        if (const double residual = solver.residual();
+            !std::isfinite(residual) || !std::isfinite(emitted.x + emitted.y + emitted.z)) {
+            report(Clock::now());
+            return scene::makeError(scene::ErrorCode::NonFinite, "", "radiosity residual",
+                                    "the residual (unshot / emitted energy) is " + std::to_string(residual) +
+                                        " after " + std::to_string(solver.state().shots) +
+                                        " shots: the emitted energy overflowed (a light, emissive surface or "
+                                        "reflectance too large); the solution was not kept");
+        }
         if (solver.residual() <= options.residualTarget) {
             report(Clock::now());
             return StopReason::Converged;

@@ -185,8 +185,18 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
     return out;
 }
 
+bool embreeAcceptsRay(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) {
+    constexpr float kFltLarge = 1.844e18f; // Embree's FLT_LARGE
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(origin[i]) <= kFltLarge) || !(std::abs(dir[i]) <= kFltLarge))
+            return false;
+    return !std::isnan(tMin) && !std::isnan(tMax) && tMin >= 0.0f;
+}
+
 std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float tMin,
                                           float tMax) const {
+    if (!embreeAcceptsRay(origin, dir, tMin, tMax))
+        return std::nullopt;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh{};
@@ -227,6 +237,8 @@ std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::ve
 }
 
 bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const {
+    if (!embreeAcceptsRay(origin, dir, tMin, tMax))
+        return true;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray{};

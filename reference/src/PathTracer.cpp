@@ -56,7 +56,7 @@ PathTracer::PathTracer(const EmbreeScene& embree, const scene::Scene& scene, con
                        PathTracerSettings settings)
     : embree_(embree), scene_(scene), settings_(settings) {
     const float aspect = float(settings_.width) / float(std::max(settings_.height, 1));
-    inverseViewProjection_ = glm::inverse(camera.projection(aspect) * camera.view());
+    cameraRays_ = CameraRays(camera, aspect);
     // ForwardRenderer clears to the sky colour times its intensity.
     background_ = scene.sky.color * scene.sky.intensity;
 }
@@ -175,12 +175,10 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     // Through the pixel centre, as the rasteriser samples the G-buffer.
     const float ndcX = 2.0f * (float(x) + 0.5f) / float(settings_.width) - 1.0f;
     const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(settings_.height);
-    const glm::vec4 nearH = inverseViewProjection_ * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
-    const glm::vec4 farH = inverseViewProjection_ * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
-    const glm::vec3 nearP = glm::vec3(nearH) / nearH.w;
-    const glm::vec3 farP = glm::vec3(farH) / farH.w;
-    const glm::vec3 dir = glm::normalize(farP - nearP);
-    const auto primary = embree_.intersect(nearP, dir, 0.0f, glm::length(farP - nearP));
+    // A degenerate camera (a NaN field) gives no ray: the pixel shows the background.
+    const std::optional<CameraRay> ray = cameraRays_.through(ndcX, ndcY);
+    const glm::vec3 dir = ray ? ray->direction : glm::vec3(0.0f);
+    const auto primary = ray ? embree_.intersect(ray->origin, dir, 0.0f, ray->length) : std::nullopt;
     if (!primary) {
         out.radiance = background_;
         return out;

@@ -1,4 +1,5 @@
 #include "lpv/reference/SunPlacement.h"
+#include "lpv/reference/CameraRays.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,16 +17,17 @@ struct ViewPoint {
 };
 
 std::vector<ViewPoint> viewPoints(const EmbreeScene& embree, const scene::Camera& camera, int gridW, int gridH) {
-    const float aspect = float(gridW) / float(gridH);
-    const glm::mat4 inv = glm::inverse(camera.projection(aspect) * camera.view());
+    const CameraRays rays(camera, float(gridW) / float(gridH));
     std::vector<ViewPoint> out;
     for (int y = 0; y < gridH; ++y)
         for (int x = 0; x < gridW; ++x) {
             const float nx = 2.0f * (float(x) + 0.5f) / float(gridW) - 1.0f;
             const float ny = 1.0f - 2.0f * (float(y) + 0.5f) / float(gridH);
-            const glm::vec4 a = inv * glm::vec4(nx, ny, -1.0f, 1.0f), b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
-            const glm::vec3 pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
-            if (const auto hit = embree.intersect(pa, pb - pa, 0.0f, 1.0f))
+            // A degenerate camera (issue #42: up along the view) sees nothing, not NaN.
+            const auto ray = rays.through(nx, ny);
+            if (!ray)
+                continue;
+            if (const auto hit = embree.intersect(ray->origin, ray->direction, 0.0f, ray->length))
                 out.push_back({hit->position, hit->geometricNormal});
         }
     return out;

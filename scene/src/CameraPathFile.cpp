@@ -5,7 +5,9 @@
 #include "FileText.h"
 #include "ProjectJson.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ValueChecks.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -63,7 +65,11 @@ template <class T> void appendNumber(std::string& out, T v) {
 int cameraPathCsvRows(double duration, double fps) {
     if (!(fps > 0.0) || !std::isfinite(fps) || !(duration > 0.0))
         return 1;
-    return static_cast<int>(std::floor(duration * fps + 1e-4)) + 1;
+    // Clamped before the cast: 1e30 s once printed "-2147483647 rows" (issue #42).
+    const double frames = std::floor(duration * fps + 1e-4);
+    const double kept =
+        std::isfinite(frames) ? std::clamp(frames, 0.0, kMaxPlannedFrames) : kMaxPlannedFrames;
+    return static_cast<int>(kept) + 1;
 }
 
 std::string cameraPathToCsv(const CameraSpline& spline, double fps) {

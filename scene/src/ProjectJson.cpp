@@ -6,6 +6,8 @@
 // editing the file by hand can find it.
 #include "ProjectJson.h"
 
+#include "lpv/scene/ValueChecks.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -321,6 +323,12 @@ private:
     std::string path_;
 };
 
+// The product checks (ValueChecks.h) after a struct's fields are read one by one.
+void report(Fields& f, const std::optional<ValueProblem>& problem) {
+    if (problem && f.ok())
+        f.reader().fail(problem->code, f.pathOf(problem->field), problem->message);
+}
+
 template <class T, class ReadElement>
 std::vector<T> readArray(Fields& parent, const char* key, ReadElement readElement) {
     std::vector<T> out;
@@ -369,6 +377,7 @@ Material readMaterial(Fields& f) {
         f.text("environmentTexture", m.environmentTexture);
     if (f.has("environmentRatio"))
         f.number("environmentRatio", m.environmentRatio, kUnit);
+    report(f, checkMaterial(m));
     return m;
 }
 
@@ -400,6 +409,7 @@ Object readObject(Fields& f, std::size_t meshCount, std::size_t objectCount) {
             lod.number("distance", level.distance, kNonNegative);
             return level;
         });
+    report(f, checkObject(o));
     return o;
 }
 
@@ -457,6 +467,7 @@ Light readLight(Fields& f) {
     if (l.type != LightType::Point && l.direction == glm::vec3(0.0f))
         f.reader().fail(ErrorCode::InvalidValue, f.pathOf("direction"),
                         concat("a ", toString(l.type), " light needs a non-zero direction"));
+    report(f, checkLight(l));
     return l;
 }
 
@@ -480,6 +491,7 @@ Camera readCamera(Fields& f) {
         f.reader().fail(ErrorCode::InvalidValue, f.pathOf("target"), "the camera looks at its own position");
     if (c.up == glm::vec3(0.0f))
         f.reader().fail(ErrorCode::InvalidValue, f.pathOf("up"), "the up vector is zero");
+    report(f, checkCamera(c));
     return c;
 }
 
@@ -489,6 +501,7 @@ CameraKeyframe readKeyframe(Fields& f) {
     f.vector("position", k.position, kAnyValue);
     f.rotation("orientation", k.orientation);
     f.number("fovY", k.fovY, kFieldOfView);
+    report(f, checkKeyframe(k));
     return k;
 }
 
@@ -538,6 +551,11 @@ CameraKeyframe readPathFileKeyframe(Fields& f) {
     if (f.ok())
         if (const Json* v = f.get("fovYDegrees"))
             k.fovY = radiansFromDegrees(v->get<double>());
+    // The file names the field of view in degrees.
+    auto problem = checkKeyframe(k);
+    if (problem && problem->field == "fovY")
+        problem->field = "fovYDegrees";
+    report(f, problem);
     return k;
 }
 
@@ -546,6 +564,7 @@ void readSky(Fields& top, Sky& sky) {
         Fields f(top.reader(), *v, "sky");
         f.vector("color", sky.color, kNonNegative);
         f.number("intensity", sky.intensity, kNonNegative);
+        report(f, checkSky(sky));
     }
 }
 
@@ -963,6 +982,9 @@ Expected<ProjectDocument> projectFromJson(const Json& document, const std::strin
     }
     if (r.ok())
         checkParentChains(r, scene.objects);
+    if (r.ok())
+        if (const auto problem = checkObjectChains(scene))
+            r.fail(problem->code, problem->field, problem->message);
     if (!r.ok())
         return std::unexpected(r.error());
     return out;

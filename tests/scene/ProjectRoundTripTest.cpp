@@ -234,17 +234,19 @@ TEST_F(ProjectRoundTrip, FloatsSurviveExactly) {
     Project p;
     p.name = "floats";
     const float tiny = std::numeric_limits<float>::denorm_min();
-    const float huge = std::numeric_limits<float>::max();
+    // The extremes a project accepts (ValueChecks.h, issue #42): coordinates
+    // to +-1e18, scales from 1e-18, quaternions normalisable in float.
+    const float huge = 1e18f;
     Object o{"o", -1, -1, {}, true, {}};
-    o.transform.translation = {tiny, -huge, 0.1f};
-    o.transform.scale = {-0.0f, 1.0f / 3.0f, 16777217.0f};
-    o.transform.rotation = glm::quat(1e-30f, -1e-30f, 0.0f, 0.0f);
+    o.transform.translation = {tiny, -huge, -0.0f};
+    o.transform.scale = {-1e-18f, 1.0f / 3.0f, 16777217.0f};
+    o.transform.rotation = glm::quat(1e-17f, -1e-17f, 0.0f, 0.0f);
     p.scene.objects = {o};
     ASSERT_TRUE(saveProject(p, dir_ / "f.lpvproj"));
     const auto loaded = loadProject(dir_ / "f.lpvproj");
     ASSERT_TRUE(loaded) << loaded.error().describe();
     EXPECT_EQ(*loaded, p);
-    EXPECT_TRUE(std::signbit(loaded->scene.objects[0].transform.scale.x)) << "-0 stays -0";
+    EXPECT_TRUE(std::signbit(loaded->scene.objects[0].transform.translation.z)) << "-0 stays -0";
     EXPECT_EQ(loaded->scene.objects[0].transform.translation.x, tiny);
 }
 

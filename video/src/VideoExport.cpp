@@ -7,10 +7,11 @@
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/ForwardRenderer.h"
-#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/GlContext.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/ValueChecks.h"
 #include "lpv/video/FrameLabels.h"
 
 #include <algorithm>
@@ -275,6 +276,11 @@ scene::Expected<void> checkVideoOptions(const scene::Project& project, const Vid
     if (path->keyframes.empty())
         return makeError(ErrorCode::InvalidValue, where, "pathName",
                          "the camera path \"" + options.pathName + "\" has no keyframes");
+    // Before any frame is planned: a key at 1e30 s once planned 10^9 frames (issue #42).
+    if (options.fps > 0.0 && options.fps <= kMaxFps)
+        if (auto why = scene::checkPlannedFrames(double(scene::CameraSpline(*path).duration()), options.fps))
+            return makeError(ErrorCode::OutOfRange, where, "pathName",
+                             "the camera path \"" + options.pathName + "\": " + *why);
     const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
     if (options.width < 1 || options.height < 1 || options.width > kMaxSide || options.height > kMaxSide)
         return makeError(ErrorCode::OutOfRange, where,

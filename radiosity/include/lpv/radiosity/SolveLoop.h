@@ -20,9 +20,15 @@ struct SolveProgress {
 enum class StopReason { Converged, TimeBudget, Cancelled, NothingToShoot };
 const char* toString(StopReason reason);
 
+// `lpv radiosity`'s time limit when none is given: a solve that has not
+// converged in an hour is resumable (run again), but never runs unattended
+// for ever.
+inline constexpr double kDefaultMaxSeconds = 3600.0;
+
+// Stops with an error (NonFinite) as soon as the residual is not finite.
 struct SolveOptions {
     double residualTarget = 0.01;  // radiosity.convergenceThreshold
-    double maxSeconds = 0.0;       // this session's budget; 0 = none
+    double maxSeconds = 0.0;       // this session's budget; 0 = none (lpv radiosity: kDefaultMaxSeconds)
     int shootersPerBatch = 16;     // radiosity.shootersPerBatch
     double progressInterval = 1.0; // seconds between progress reports
     std::function<void(const SolveProgress&)> progress;

@@ -35,6 +35,12 @@ struct EmitterSample {
     float pdfArea = 0.0f;     // probability density per unit area of picking this point
 };
 
+// Whether Embree 3 accepts a ray: its ray.valid() asserts that every origin
+// and direction component is within 1.844e18 (FLT_LARGE), NaN failing, and
+// that tnear and tfar are not NaN. A ray it refuses aborted `lpv import`
+// (issue #42), so intersect() and occluded() check first.
+bool embreeAcceptsRay(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax);
+
 class EmbreeScene {
   public:
     // `textures` are the decoded images the renderer also gets (alpha masks
@@ -46,8 +52,10 @@ class EmbreeScene {
     ~EmbreeScene();
 
     // Closest hit along origin + t dir, t in (tMin, tMax); dir need not be unit.
+    // A ray Embree would refuse (embreeAcceptsRay) hits nothing.
     std::optional<Hit> intersect(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
-    // Anything between (shadow rays).
+    // Anything between (shadow rays). A ray Embree would refuse counts as
+    // blocked: no light arrives along a direction that does not exist.
     bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const;
 
     // The material at a hit: albedo, emission and the direct-light BRDF terms.

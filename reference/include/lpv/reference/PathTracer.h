@@ -7,6 +7,7 @@
 // (shaders/forward.frag): a directional light's intensity is irradiance, a
 // point or spot light's is intensity over distance squared with the glTF
 // range window and smoothstep cone; secondary surfaces are Lambertian.
+#include "lpv/reference/CameraRays.h"
 #include "lpv/reference/EmbreeScene.h"
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/reference/Shards.h"
@@ -74,7 +75,7 @@ class PathTracer {
     const EmbreeScene& embree_;
     const scene::Scene& scene_;
     PathTracerSettings settings_;
-    glm::mat4 inverseViewProjection_{1.0f};
+    CameraRays cameraRays_;
     glm::vec3 background_{0.0f};
 
     glm::vec3 escapedRadiance() const;
