@@ -45,6 +45,9 @@ buffer. Copies in the project are never more widely readable than rw-r--r--.
 Prints per file: objects, triangles, materials, textures found/missing,
 degenerate triangles dropped, time. Exit code 1 when a file cannot be
 imported or the project cannot be saved; the project is then unchanged.
+Saves of one project take turns (a lock file beside it): when another
+process saved the project while this import read its files, this import
+saves nothing and says so (exit code 1); run it again to add to that project.
 )";
 }
 
@@ -119,8 +122,11 @@ int runImport(Args args) {
         return usageError("the project file must end in .lpvproj", "import");
 
     const auto start = std::chrono::steady_clock::now();
+    // The project as this import found it: another process that saves it
+    // while the inputs are read wins, and this import says it lost.
+    const scene::ProjectFileIdentity found = scene::projectFileIdentity(projectFile);
     scene::Project project;
-    const bool adding = fs::exists(projectFile);
+    const bool adding = found.exists;
     if (adding) {
         auto loaded = scene::loadProject(projectFile, options.allowPaths);
         if (!loaded) {
@@ -149,6 +155,18 @@ int runImport(Args args) {
         std::cout << "no lights in the scene: added a sun " << how << " (--no-sun to leave it dark)\n";
     }
 
+    // The lock spans the texture copies too: another save's clean-up would
+    // take copies that no project file names yet for orphans.
+    auto lock = scene::ProjectLock::acquire(projectFile);
+    if (!lock) {
+        std::cerr << "lpv: " << lock.error().describe() << "\n";
+        return kFailure;
+    }
+    if (scene::projectFileIdentity(projectFile) != found) {
+        std::cerr << "lpv: " << scene::projectChangedError(projectFile, "import").describe() << "\n";
+        return kFailure;
+    }
+
     // Texture copies go in before the project that names them; if either
     // step fails (a full disk), the copies this import made go again.
     scene::SaveRollback rollback;
@@ -159,7 +177,11 @@ int runImport(Args args) {
         std::cerr << "lpv: " << textures.error().describe() << "\n";
         return kFailure;
     }
-    if (auto saved = scene::saveProject(project, projectFile); !saved) {
+    scene::SaveOptions saveOptions;
+    saveOptions.heldLock = &*lock;
+    saveOptions.unchangedSince = found;
+    saveOptions.operation = "import";
+    if (auto saved = scene::saveProject(project, projectFile, saveOptions); !saved) {
         rollback.undo();
         std::cerr << "lpv: " << saved.error().describe() << "\n";
         std::cerr << "lpv: nothing was saved" << (adding ? "; " + projectFile.string() + " is unchanged" : "")

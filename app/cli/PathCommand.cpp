@@ -141,6 +141,8 @@ int importPath(Args& args) {
     }
     if (rename)
         path->name = *rename;
+    // Another process that saves the project before this one does wins (issue #42).
+    const scene::ProjectFileIdentity found = scene::projectFileIdentity(pos[1]);
     auto project = scene::loadProject(pos[1]);
     if (!project) {
         std::cerr << "lpv: " << project.error().describe() << "\n";
@@ -154,7 +156,10 @@ int importPath(Args& args) {
         *existing = *path;
     else
         paths.push_back(*path);
-    if (auto ok = scene::saveProject(*project, pos[1]); !ok) {
+    scene::SaveOptions saveOptions;
+    saveOptions.unchangedSince = found;
+    saveOptions.operation = "path import";
+    if (auto ok = scene::saveProject(*project, pos[1], saveOptions); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;
     }

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #ifdef _WIN32
+#include <fcntl.h>
 #include <io.h>
 #else
 #include <fcntl.h>
@@ -111,6 +112,30 @@ Expected<void> writeFileAtomically(const fs::path& file, std::string_view bytes)
         return makeError(ErrorCode::IoError, file.string(), "", "cannot replace the file: " + ec.message());
     }
     syncFolder(folder);
+    return {};
+}
+
+Expected<void> syncFileToDisk(const fs::path& file) {
+#ifdef _WIN32
+    const int fd = ::_wopen(file.c_str(), _O_RDWR | _O_BINARY);
+#else
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+#endif
+    if (fd < 0)
+        return makeError(ErrorCode::IoError, file.string(), "",
+                         describeErrno("cannot open", file, lastError()));
+    errno = 0;
+#ifdef _WIN32
+    int error = ::_commit(fd) == 0 ? 0 : lastError();
+    if (::_close(fd) != 0 && error == 0)
+        error = lastError();
+#else
+    int error = ::fsync(fd) == 0 ? 0 : lastError();
+    if (::close(fd) != 0 && error == 0)
+        error = lastError();
+#endif
+    if (error != 0)
+        return makeError(ErrorCode::IoError, file.string(), "", describeErrno("cannot write", file, error));
     return {};
 }
 

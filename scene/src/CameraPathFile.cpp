@@ -5,6 +5,7 @@
 #include "FileText.h"
 #include "ProjectJson.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectLimits.h"
 #include "lpv/scene/ValueChecks.h"
 
 #include <algorithm>
@@ -48,6 +49,9 @@ Expected<void> saveCameraPathFile(const CameraPath& path, const std::filesystem:
         text.error().file = file.string();
         return std::unexpected(text.error());
     }
+    // What loadCameraPathFile would refuse is not written (issue #42).
+    if (auto fits = checkWriteFits(text->size(), detail::kCameraPathFileLimit, file.string()); !fits)
+        return fits;
     return writeFileAtomically(file, *text);
 }
 

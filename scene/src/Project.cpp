@@ -5,6 +5,7 @@
 #include "FileText.h"
 #include "ProjectJson.h"
 #include "lpv/scene/MeshAsset.h"
+#include "lpv/scene/ProjectLimits.h"
 #include "lpv/scene/ProjectTextures.h"
 #include "lpv/scene/ReadRoots.h"
 #include "lpv/scene/SaveCleanup.h"
@@ -108,11 +109,13 @@ void removeUnreferencedAssets(const fs::path& meshFolder, const std::set<std::st
 }
 
 // Everything a save could object to, found before anything is written:
-// meshes (stream sizes, finite values, indices) and the document as the
-// loader will read it back.
+// meshes (stream sizes, finite values, indices), the document as the loader
+// will read it back, and the limits the loader applies (ProjectLimits.h).
 Expected<std::string> buildDocument(const Project& project, const fs::path& file,
                                     const std::vector<std::string>& assetPaths) {
     const std::string where = file.string();
+    if (auto fits = checkMaterialCount(project.scene.materials.size(), where, "materials"); !fits)
+        return std::unexpected(fits.error());
     for (std::size_t i = 0; i < project.scene.meshes.size(); ++i)
         if (auto valid = validateMesh(project.scene.meshes[i], where, meshLocation(i), project.scene.materials.size());
             !valid)
@@ -121,7 +124,10 @@ Expected<std::string> buildDocument(const Project& project, const fs::path& file
     if (auto valid = detail::projectFromJson(document, where); !valid)
         return std::unexpected(valid.error());
     try {
-        return document.dump(2) + "\n";
+        std::string text = document.dump(2) + "\n";
+        if (auto fits = checkWriteFits(text.size(), detail::kProjectFileLimit, where); !fits)
+            return std::unexpected(fits.error());
+        return text;
     } catch (const Json::exception& e) {
         // nlohmann refuses strings that are not UTF-8 (e.g. names from an old 8-bit file).
         return makeError(ErrorCode::InvalidValue, where, "", std::string("cannot write the project: ") + e.what());
@@ -148,6 +154,8 @@ Expected<Project> loadProject(const fs::path& file, const std::vector<fs::path>&
         return std::unexpected(document.error());
 
     Project project = std::move(document->project);
+    if (auto fits = checkMaterialCount(project.scene.materials.size(), where, "materials"); !fits)
+        return std::unexpected(fits.error());
     const std::size_t materialCount = project.scene.materials.size();
     project.scene.meshes.reserve(document->meshes.size());
     for (std::size_t i = 0; i < document->meshes.size(); ++i) {
@@ -187,6 +195,19 @@ Expected<void> saveProject(const Project& project, const fs::path& file, const S
     const auto text = buildDocument(project, file, assetPaths);
     if (!text)
         return std::unexpected(text.error());
+
+    // From here to the clean-up no other save of this project runs: its
+    // clean-up would delete the assets this project file names, ours those
+    // of its project file.
+    std::optional<ProjectLock> ownLock;
+    if (!options.heldLock) {
+        auto lock = ProjectLock::acquire(file, options.lockWait);
+        if (!lock)
+            return std::unexpected(lock.error());
+        ownLock.emplace(std::move(*lock));
+    }
+    if (options.unchangedSince && projectFileIdentity(file) != *options.unchangedSince)
+        return std::unexpected(projectChangedError(file, options.operation));
 
     const fs::path folder = file.parent_path();
     const fs::path assetFolder = folder / fromUtf8(utf8(file.stem()) + ".assets");

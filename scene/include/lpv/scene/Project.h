@@ -3,6 +3,7 @@
 // `Name.assets/` folder holding meshes in the binary `.lpvmesh` form.
 #include "lpv/scene/Error.h"
 #include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/ProjectLock.h"
 #include "lpv/scene/Scene.h"
 
 #include <filesystem>
@@ -63,17 +64,36 @@ Expected<void> validateSceneContent(Scene& scene, const std::string& source);
 
 // Writes the assets then the JSON, each to a temporary file in the same
 // folder that is flushed and renamed over the target: a failed save leaves
-// the previous project intact.
+// the previous project intact. A project file the loader would refuse (over
+// its size limit, more than kMaxMaterials) is refused before anything is
+// written. The writes and the clean-up happen under the project's lock
+// (ProjectLock), so concurrent saves follow one another.
 struct SaveOptions {
     // Remove texture copies no material names any more (removeOrphanTextures).
     // The editor turns it off while its undo history could bring a removed
     // texture back.
     bool collectOrphanTextures = true;
+    // The project file as the caller found it when its work began
+    // (projectFileIdentity before loading it; absent for a new project).
+    // When set, a save finds it changed refuses with projectChangedError
+    // rather than replace another process's work.
+    std::optional<ProjectFileIdentity> unchangedSince;
+    std::string operation = "save"; // what that error says ran: "import", "path import"
+    // A lock the caller already holds on this project (it also spans the
+    // texture copies of an import); without one, the save takes the lock
+    // itself, waiting up to lockWait.
+    const ProjectLock* heldLock = nullptr;
+    std::chrono::milliseconds lockWait = kProjectLockWait;
 };
 Expected<void> saveProject(const Project& project, const std::filesystem::path& file,
                            const SaveOptions& options = {});
 
 // Atomic write of one file (temp file, flush, fsync, rename).
 Expected<void> writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
+
+// Pushes a file another library wrote (and may not have checked) to the
+// disk; the error carries the system's reason. For writers that cannot give
+// their bytes to writeFileAtomically.
+Expected<void> syncFileToDisk(const std::filesystem::path& file);
 
 } // namespace lpv::scene
