@@ -26,6 +26,8 @@ PACKAGES=(
   desktop-file-utils appstream shared-mime-info
   # the cluster test (tests/cluster, docs/cluster.md) runs a private Slurm on localhost
   munge slurmctld slurmd slurm-client
+  # data only: Assimp's own test models, which the corpus test imports (issue #42)
+  assimp-testmodels
 )
 
 if [ "${1:-}" = "--print-packages" ]; then
