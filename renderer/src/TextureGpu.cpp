@@ -26,19 +26,24 @@ Texture uploadTexture(const scene::Image8& image, TextureUsage usage) {
     const int w = std::max(image.width, 1), h = std::max(image.height, 1), c = std::clamp(image.channels, 1, 4);
     const std::size_t row = std::size_t(w) * std::size_t(c);
     const bool valid = image.width > 0 && image.height > 0 && image.pixels.size() >= row * std::size_t(h);
-    // GL's first row is the bottom one: reverse the rows.
-    std::vector<std::uint8_t> flipped(row * std::size_t(h), 255);
-    if (valid)
-        for (int y = 0; y < h; ++y)
-            std::copy_n(image.pixels.begin() + std::ptrdiff_t(std::size_t(h - 1 - y) * row), row,
-                        flipped.begin() + std::ptrdiff_t(std::size_t(y) * row));
     const GLsizei levels = GLsizei(std::bit_width(unsigned(std::max(w, h))));
     Texture t = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), levels, usage == TextureUsage::Color ? GL_SRGB8_ALPHA8 : GL_RGBA8, w, h);
     GLint alignment = 4;
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(t.id(), 0, 0, 0, w, h, pixelFormat(c), GL_UNSIGNED_BYTE, flipped.data());
+    // GL's first row is the bottom one: rows go up reversed, a strip at a
+    // time, so a large texture never costs a second full copy (issue #42).
+    constexpr int kStripRows = 256;
+    std::vector<std::uint8_t> strip(row * std::size_t(std::min(h, kStripRows)), 255);
+    for (int y0 = 0; y0 < h; y0 += kStripRows) {
+        const int rows = std::min(kStripRows, h - y0);
+        if (valid)
+            for (int y = 0; y < rows; ++y)
+                std::copy_n(image.pixels.begin() + std::ptrdiff_t(std::size_t(h - 1 - (y0 + y)) * row), row,
+                            strip.begin() + std::ptrdiff_t(std::size_t(y) * row));
+        glTextureSubImage2D(t.id(), 0, 0, y0, w, rows, pixelFormat(c), GL_UNSIGNED_BYTE, strip.data());
+    }
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
     if (c == 1) { // grey masks read the same from every channel
         const GLint swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};

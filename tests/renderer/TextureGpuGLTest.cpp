@@ -77,6 +77,24 @@ TEST_F(TextureGpu, FirstGlRowIsTheImagesBottomRow) {
     EXPECT_EQ(int(px[(7 * 16) * 4 + 1]), 0);
 }
 
+TEST_F(TextureGpu, TallImagesAreFlippedAcrossUploadStrips) {
+    // Rows go up in strips of 256 (issue #42: no second full copy); 600
+    // rows make three strips, the last one short.
+    // One channel, four texels a row: rows of 4 bytes keep GL's default
+    // pack alignment out of the way.
+    scene::Image8 img{4, 600, 1, {}};
+    for (int row = 0; row < 600; ++row)
+        img.pixels.insert(img.pixels.end(), {std::uint8_t(row % 251), std::uint8_t(row / 251), 9, 9});
+    const renderer::Texture t = renderer::uploadTexture(img, renderer::TextureUsage::Data);
+    std::vector<std::uint8_t> px(4 * 600);
+    glGetTextureImage(t.id(), 0, GL_RED, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
+    for (int glRow = 0; glRow < 600; ++glRow) {
+        const int row = 599 - glRow;
+        ASSERT_EQ(int(px[std::size_t(glRow) * 4]), row % 251) << "GL row " << glRow;
+        ASSERT_EQ(int(px[std::size_t(glRow) * 4 + 1]), row / 251) << "GL row " << glRow;
+    }
+}
+
 TEST_F(TextureGpu, SharedImagesAreUploadedOncePerUse) {
     scene::Scene s;
     scene::Material a, b, c;
