@@ -32,7 +32,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     lpv::fuzz::writeInput(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
     const auto project = lpv::scene::loadProject(gProjectFile);
-    if (project)
+    if (project) {
         lpv::fuzz::checkScene(project->scene, gProjectFile.string());
+        lpv::fuzz::checkProjectRenderFinite(*project);
+    }
     return 0;
 }

@@ -13,7 +13,10 @@
 // 63 to 100,000 levels deep (arrays, objects, unterminated, inside a string);
 // parent chains (a chain of thousands of objects, a cycle, an index out of
 // range); registry parameters with values at, past and beside their ranges;
-// version and format changes; wrong mesh vertex and triangle counts. The
+// version and format changes; wrong mesh vertex and triangle counts; float
+// extremes (FloatExtremes.h: +-0, denormals, +-3.4e38, 1e30, NaN and
+// Infinity as text) in one number, one vector, every number of an object
+// or of the whole project, and degenerate cameras, lights and paths. The
 // text is then sometimes re-encoded (UTF-16 LE/BE, UTF-32, a UTF-8 byte order
 // mark), cut short or given trailing bytes. Inputs that do not parse, or nest
 // deeper than the mutator itself walks, get libFuzzer's byte mutations or
@@ -28,6 +31,7 @@
 // objects); a count that would not fit is cut to what does. The generated
 // seeds with 100,000 unknown keys and a 10,000-object chain (1.1 and 1.4 MB)
 // are run whole once by scripts/fuzz.sh before fuzzing.
+#include "FloatExtremes.h"
 #include "SceneChecks.h"
 #include "WorkFolder.h"
 
@@ -664,11 +668,41 @@ bool mutateMeshCounts(Mutation& m, std::vector<Site>&) {
     return true;
 }
 
+// Float extremes (FloatExtremes.h) in one number, one vector, every number
+// of one object, every number of the project (each with a chance of one in
+// eight), or a degenerate camera, light or path.
+bool plantFloatExtremes(Mutation& m, std::vector<Site>& sites) {
+    Rng& rng = m.rng();
+    const auto raw = [&m](const std::string& text) { return m.raw(text); };
+    switch (below(rng, 5)) {
+    case 0: {
+        Site s = pickSite(rng, sites, [](const Json& j) { return j.is_number(); });
+        return lpv::fuzz::plantInNumbers(*s.node, rng, 1, raw) > 0;
+    }
+    case 1: { // a vector: one component or all of them
+        Site s = pickSite(rng, sites, [](const Json& j) {
+            return j.is_array() && !j.empty() && j.size() <= 4 &&
+                   std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); });
+        });
+        return lpv::fuzz::plantInNumbers(*s.node, rng, oneIn(rng, 2) ? 1 : s.node->size(), raw) > 0;
+    }
+    case 2: {
+        Site s = pickSite(rng, sites, [](const Json& j) { return j.is_object(); });
+        return lpv::fuzz::plantInNumbers(*s.node, rng, 1 + below(rng, 2), raw) > 0;
+    }
+    case 3:
+        return lpv::fuzz::plantInNumbers(m.root(), rng, 8, raw) > 0;
+    default:
+        return lpv::fuzz::plantDegenerateWhole(m.root(), rng);
+    }
+}
+
 using MutationFn = bool (*)(Mutation&, std::vector<Site>&);
 constexpr MutationFn kMutations[] = {
     replaceWithWrongType, replaceNumber,   replaceNumber,   replaceString, replaceString,    addUnknownKeys,
     duplicateElement,     duplicateKey,    removeSite,      copySubtree,   nestDeeply,       mutateParents,
     mutateParents,        mutateParameter, mutateParameter, mutateHeader,  mutateMeshCounts,
+    plantFloatExtremes,   plantFloatExtremes, plantFloatExtremes,
 };
 
 // ----- text-level changes after serialisation
@@ -777,8 +811,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     lpv::fuzz::writeInput(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
     const auto project = lpv::scene::loadProject(gProjectFile);
-    if (project)
+    if (project) {
         lpv::fuzz::checkScene(project->scene, gProjectFile.string());
+        lpv::fuzz::checkProjectRenderFinite(*project);
+    }
     return 0;
 }
 

@@ -7,8 +7,13 @@
 // transforms. A broken promise aborts, so libFuzzer reports the input like
 // any crash.
 //
+// Last, checkRenderFinite (RenderChecks.h): the products a render of the
+// scene computes are finite.
+//
 // checkTexturesInside adds the importers' read-root promise for the targets
 // that import from a path (fuzz_gltf, fuzz_obj).
+#include "RenderChecks.h"
+
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Scene.h"
 
@@ -121,6 +126,8 @@ inline void checkScene(const scene::Scene& s, const std::string& file) {
         for (const std::size_t c : chain)
             state[c] = 2;
     }
+
+    checkRenderFinite(s);
 }
 
 // Importers promise that a texture path they hand back as found, i.e.

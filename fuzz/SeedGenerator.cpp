@@ -21,8 +21,12 @@
 //                            arrays, 64 and 65 nested objects, UTF-16 LE and
 //                            BE, 100,000 unknown keys, a 10,000-object
 //                            parent chain, a parent cycle
+//   fuzz_image               small PNG, JPEG, GIF, BMP, TGA and EXR files and
+//                            their header bombs (fuzz/ImageSeeds.cpp)
 //
 //   fuzz_seeds OUT
+#include "ImageSeeds.h"
+
 #include "lpv/radiosity/FormFactors.h"
 #include "lpv/radiosity/RadiositySession.h"
 #include "lpv/radiosity/SolutionFile.h"
@@ -332,6 +336,7 @@ int main(int argc, char** argv) {
     objSeeds(out / "fuzz_obj", shared);
     radiositySeeds(out / "fuzz_radiosity_solution", project->scene);
     projectSeeds(out / "fuzz_project_structure", projectDir);
+    gWritten += lpv::fuzz::writeImageSeeds(out / "fuzz_image");
     std::printf("fuzz_seeds: %zu seeds in %s\n", gWritten, out.string().c_str());
     return 0;
 }

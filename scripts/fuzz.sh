@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET="${1:-600}"
 shift || true
 TARGETS=("$@")
-ALL_TARGETS=(fuzz_4ds fuzz_project fuzz_mesh_asset fuzz_gltf fuzz_obj fuzz_radiosity_solution fuzz_project_structure)
+ALL_TARGETS=(fuzz_4ds fuzz_project fuzz_mesh_asset fuzz_gltf fuzz_obj fuzz_radiosity_solution fuzz_project_structure fuzz_image)
 [ ${#TARGETS[@]} -gt 0 ] || TARGETS=("${ALL_TARGETS[@]}")
 
 BUILD=build-fuzz
@@ -27,11 +27,12 @@ SHARED_SCENES="${LPV_SHARED_SCENES_DIR:-$PWD/../shared/scenes}"
 JOBS="${LPV_BUILD_JOBS:-2}"
 
 # --- packages (only the missing ones): clang 16 with libFuzzer, and what
-# lpv_scene, lpv_importers and lpv_radiosity build against (the library part of the list in
+# lpv_scene, lpv_importers, lpv_reference and lpv_radiosity build against (the library part of the list in
 # scripts/setup.sh; no Qt, GL or test packages).
 PACKAGES=(
   clang-16 libclang-rt-16-dev llvm-16 cmake ninja-build ccache pkg-config
   libglm-dev nlohmann-json3-dev libxxhash-dev libopenimageio-dev libtinygltf-dev libassimp-dev libopenmesh-dev
+  libembree-dev
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -74,6 +75,7 @@ seeds() {
     fuzz_obj) ls fuzz/seeds/fuzz_obj/* "$BUILD"/seeds/fuzz_obj/* ;;
     fuzz_radiosity_solution) ls "$BUILD"/seeds/fuzz_radiosity_solution/* ;;
     fuzz_project_structure) ls projects/*/*.lpvproj "$BUILD"/seeds/fuzz_project_structure/* ;;
+    fuzz_image) ls "$BUILD"/seeds/fuzz_image/* ;;
   esac
 }
 # -max_len: the largest input libFuzzer makes. Seeds longer than it are not
@@ -99,6 +101,9 @@ seeds() {
 #   10,000-object chain) are run whole once. -len_control=0: the custom
 #   mutator sizes its own mutations, libFuzzer's slow growth of the length
 #   limit would hold back nesting and long chains for hours.
+#   image: 64 KiB, many times the generated seeds (the 64-channel EXR is the
+#   largest, under 20 KB); a header bomb needs only its header, and larger
+#   pixel data only slows every decode.
 maxLen() {
   case "$1" in
     fuzz_4ds) echo 131072 ;;
@@ -106,6 +111,7 @@ maxLen() {
     fuzz_mesh_asset) echo 8192 ;;
     fuzz_gltf | fuzz_obj | fuzz_radiosity_solution) echo 65536 ;;
     fuzz_project_structure) echo 262144 ;;
+    fuzz_image) echo 65536 ;;
   esac
 }
 options() {
@@ -114,6 +120,7 @@ options() {
     fuzz_gltf) echo "-dict=fuzz/gltf.dict" ;;
     fuzz_obj) echo "-dict=fuzz/obj.dict" ;;
     fuzz_project_structure) echo "-len_control=0" ;;
+    fuzz_image) echo "-dict=fuzz/image.dict" ;;
   esac
 }
 # The limits of every run (docs/fuzzing.md).
