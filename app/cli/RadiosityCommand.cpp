@@ -13,6 +13,7 @@
 #include "lpv/renderer/RadiosityView.h"
 #include "lpv/scene/FramingCamera.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectLock.h"
 #include "lpv/scene/ProjectTextures.h"
 #include "lpv/scene/SaveCleanup.h"
 
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace lpv::cli {
 
@@ -351,7 +353,15 @@ int runRadiosityCommand(const RadiosityCommand& c) {
         return kFailure;
     };
     scene::Project copy;
+    // The new project's lock spans its texture copies, the solution and the
+    // save, as an import's does (issue #42): another save's clean-up must not
+    // take copies no project file names yet.
+    std::optional<scene::ProjectLock> lock;
     if (output) {
+        auto held = scene::ProjectLock::acquire(target);
+        if (!held)
+            return fail(held.error());
+        lock.emplace(std::move(*held));
         copy = *project;
         makeTexturePathsAbsolute(copy.scene, std::filesystem::absolute(projectFile).parent_path());
         rollback.watchTextureCopies(scene::assetsFolderOf(target) / "textures");
@@ -363,7 +373,9 @@ int runRadiosityCommand(const RadiosityCommand& c) {
     if (auto ok = radiosity::saveSolution(session.stored(), solutionFile); !ok)
         return fail(ok.error());
     if (output) {
-        if (auto ok = scene::saveProject(copy, target); !ok)
+        scene::SaveOptions saveOptions;
+        saveOptions.heldLock = &*lock;
+        if (auto ok = scene::saveProject(copy, target, saveOptions); !ok)
             return fail(ok.error());
         std::printf("wrote %s\n", target.string().c_str());
     }

@@ -2,6 +2,7 @@
 // target's folder (same file system, so the rename cannot turn into a copy),
 // which is flushed to the disk and then renamed over the target. Readers see
 // the old file or the new one, never a mixture, even if we crash midway.
+#include "FileText.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProcessId.h"
 
@@ -90,6 +91,15 @@ std::string writeAndSync(const fs::path& temp, std::string_view bytes) {
 } // namespace
 
 Expected<void> writeFileAtomically(const fs::path& file, std::string_view bytes) {
+    auto written = detail::writeFileAtomicallyFolderUnsynced(file, bytes);
+    if (written)
+        syncFolder(file.parent_path());
+    return written;
+}
+
+void detail::syncFolderToDisk(const fs::path& folder) { syncFolder(folder); }
+
+Expected<void> detail::writeFileAtomicallyFolderUnsynced(const fs::path& file, std::string_view bytes) {
     if (file.filename().empty())
         return makeError(ErrorCode::IoError, file.string(), "", "not a file name");
     const fs::path folder = file.parent_path();
@@ -111,7 +121,6 @@ Expected<void> writeFileAtomically(const fs::path& file, std::string_view bytes)
         fs::remove(temp, ignored);
         return makeError(ErrorCode::IoError, file.string(), "", "cannot replace the file: " + ec.message());
     }
-    syncFolder(folder);
     return {};
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace lpv::scene::detail {
 
@@ -23,5 +24,12 @@ using scene::readFileBytes;
 using scene::ReadLimit;
 inline const ReadLimit kProjectFileLimit{std::uint64_t{64} << 20, "project file"};
 inline const ReadLimit kCameraPathFileLimit{std::uint64_t{64} << 20, "camera path file"};
+
+// writeFileAtomically without its last step, the fsync of the folder, for a
+// save that puts many files in one folder: it syncs the folder once
+// (syncFolderToDisk) before it writes the file that names them. One sync per
+// mesh asset made a save of 16,000 meshes take twice as long.
+Expected<void> writeFileAtomicallyFolderUnsynced(const std::filesystem::path& file, std::string_view bytes);
+void syncFolderToDisk(const std::filesystem::path& folder);
 
 } // namespace lpv::scene::detail

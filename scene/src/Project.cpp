@@ -234,13 +234,16 @@ Expected<void> saveProject(const Project& project, const fs::path& file, const S
         if (hasContent(target, assets[i]))
             continue; // an unchanged mesh keeps its file
         const bool existed = fs::exists(target, ec);
-        if (auto written = writeFileAtomically(target, assets[i]); !written) {
+        if (auto written = detail::writeFileAtomicallyFolderUnsynced(target, assets[i]); !written) {
             created.remove();
             return written;
         }
         if (!existed)
             created.files.push_back(target);
     }
+    // The assets' renames are durable before the project file that names them.
+    if (!assets.empty())
+        detail::syncFolderToDisk(meshFolder);
     if (auto written = writeFileAtomically(file, *text); !written) {
         created.remove();
         return written;

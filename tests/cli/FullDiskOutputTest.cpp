@@ -109,3 +109,21 @@ TEST(FullDiskOutput, PathExportFailsAndLeavesNoFile) {
         expectCleanFailure(*out);
     }
 }
+
+TEST(FullDiskOutput, VideoFailsAndLeavesNoMovieNorFrames) {
+    const fs::path dir = freshDir("video");
+    auto project = lpv::scene::loadProject(cornellProject());
+    ASSERT_TRUE(project) << project.error().describe();
+    project->scene.cameraPaths.push_back(
+        {"orbit", {{0.0f, {0.0f, 1.0f, 3.5f}}, {0.4f, {0.2f, 1.0f, 3.5f}}}, false, false});
+    ASSERT_TRUE(lpv::scene::saveProject(*project, dir / "p.lpvproj"));
+    for (const std::string name : {"v.mp4", "frames"}) {
+        const auto out =
+            onFullDisk(dir / "disk", std::string(kLpvExecutable) + " video " + quoted(dir / "p.lpvproj") +
+                                         " --path orbit -o " + quoted(dir / "disk" / name) +
+                                         " --width 32 --height 32 --fps 5 --warmup 0");
+        if (!out)
+            GTEST_SKIP() << kSkip;
+        expectCleanFailure(*out);
+    }
+}

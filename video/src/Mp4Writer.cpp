@@ -204,6 +204,11 @@ scene::Expected<void> Mp4Writer::finish() {
         return flushed;
     if (const int r = av_write_trailer(s.format); r < 0)
         return s.fail("cannot finish the MP4 file", r);
+    // avio_closep flushes without reporting a failed write: flushed and
+    // checked here, so a full disk is an error (issue #42).
+    avio_flush(s.format->pb);
+    if (const int r = s.format->pb->error; r < 0)
+        return s.fail("cannot write to the file", r);
     if (const int r = avio_closep(&s.format->pb); r < 0)
         return s.fail("cannot close the MP4 file", r);
     return {};

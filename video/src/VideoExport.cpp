@@ -11,6 +11,7 @@
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/CameraSpline.h"
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/Project.h"
 #include "lpv/scene/ValueChecks.h"
 #include "lpv/video/FrameLabels.h"
 
@@ -172,7 +173,9 @@ class PendingOutput {
     scene::Expected<void> commit() {
         std::error_code ec;
         if (out_.format == VideoFormat::Mp4) {
-            syncPath(temp_, false);
+            // A failed sync is a failed write (issue #42): the file is not renamed into place.
+            if (auto synced = scene::syncFileToDisk(temp_); !synced)
+                return makeError(ErrorCode::IoError, where_, "", synced.error().message);
             fs::rename(temp_, target_, ec);
         } else if (!folderExisted_) {
             fs::rename(temp_, target_, ec);
