@@ -3,6 +3,7 @@
 #include "EditCommands.h"
 
 #include "lpv/scene/ProjectTextures.h"
+#include "lpv/scene/ValueChecks.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -44,7 +45,22 @@ void Document::reset(scene::Project project, const QString& path, bool modified)
     emit titleChanged();
 }
 
+// An edit the project reader would refuse (ValueChecks.h: a product that
+// overflows, an up vector along the view) is not applied: the renderer would
+// turn it into NaN and the next save would fail on it.
+bool Document::refuses(const std::optional<scene::ValueProblem>& problem, const QString& what) {
+    if (!problem)
+        return false;
+    emit editRefused(
+        tr("%1, %2: %3")
+            .arg(what, QString::fromStdString(problem->field), QString::fromStdString(problem->message)));
+    return true;
+}
+
 void Document::setEditorView(const scene::Camera& view) {
+    // Not recorded when a save would refuse it (an orbit straight down keeps +Y up).
+    if (scene::checkCamera(view))
+        return;
     project_.editorView = view;
     project_.editorView->name = "Editor view";
 }
@@ -90,7 +106,7 @@ void Document::setAllParameters(const scene::ParameterSet& values, const QString
 
 void Document::setObject(int index, const scene::Object& object, const QString& text) {
     const scene::Object& before = project_.scene.objects.at(std::size_t(index));
-    if (before == object)
+    if (before == object || refuses(scene::checkObject(object), tr("Object")))
         return;
     // A parent change alters world matrices of children: still only transforms.
     undoStack_->push(new ElementCommand<scene::Object>(this, &scene::Scene::objects, index, before, object,
@@ -99,7 +115,7 @@ void Document::setObject(int index, const scene::Object& object, const QString& 
 
 void Document::setMaterial(int index, const scene::Material& material, const QString& text) {
     const scene::Material& before = project_.scene.materials.at(std::size_t(index));
-    if (before == material)
+    if (before == material || refuses(scene::checkMaterial(material), tr("Material")))
         return;
     undoStack_->push(new ElementCommand<scene::Material>(this, &scene::Scene::materials, index, before, material,
                                                          Change::Materials, text));
@@ -107,7 +123,7 @@ void Document::setMaterial(int index, const scene::Material& material, const QSt
 
 void Document::setLight(int index, const scene::Light& light, const QString& text) {
     const scene::Light& before = project_.scene.lights.at(std::size_t(index));
-    if (before == light)
+    if (before == light || refuses(scene::checkLight(light), tr("Light")))
         return;
     undoStack_->push(
         new ElementCommand<scene::Light>(this, &scene::Scene::lights, index, before, light, Change::Lights, text));
@@ -115,7 +131,7 @@ void Document::setLight(int index, const scene::Light& light, const QString& tex
 
 void Document::setCamera(int index, const scene::Camera& camera, const QString& text) {
     const scene::Camera& before = project_.scene.cameras.at(std::size_t(index));
-    if (before == camera)
+    if (before == camera || refuses(scene::checkCamera(camera), tr("Camera")))
         return;
     undoStack_->push(
         new ElementCommand<scene::Camera>(this, &scene::Scene::cameras, index, before, camera, Change::Cameras, text));
@@ -125,12 +141,15 @@ void Document::setCameraPath(int index, const scene::CameraPath& path, const QSt
     const scene::CameraPath& before = project_.scene.cameraPaths.at(std::size_t(index));
     if (before == path)
         return;
+    for (const scene::CameraKeyframe& key : path.keyframes)
+        if (refuses(scene::checkKeyframe(key), tr("Camera path key")))
+            return;
     undoStack_->push(new ElementCommand<scene::CameraPath>(this, &scene::Scene::cameraPaths, index, before, path,
                                                            Change::CameraPaths, text));
 }
 
 void Document::setSky(const scene::Sky& sky, const QString& text) {
-    if (sky == project_.scene.sky)
+    if (sky == project_.scene.sky || refuses(scene::checkSky(sky), tr("Sky")))
         return;
     undoStack_->push(new SkyCommand(this, project_.scene.sky, sky, text));
 }

@@ -3,6 +3,7 @@
 // the document's undo stack (EditCommands.h); views never change the project
 // directly, they call a Document method and refresh on `changed`.
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ValueChecks.h"
 
 #include <QFlags>
 #include <QObject>
@@ -105,8 +106,12 @@ signals:
     void titleChanged();
     // A save to `path` succeeded (what is kept beside the project saves too).
     void projectSaved(const QString& path);
+    // An edit was not applied: a save would refuse the value (ValueChecks.h).
+    void editRefused(const QString& message);
 
-private:
+  private:
+    bool refuses(const std::optional<scene::ValueProblem>& problem, const QString& what);
+
     scene::Project project_;
     QString path_;
     QUndoStack* undoStack_ = nullptr;

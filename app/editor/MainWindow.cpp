@@ -92,6 +92,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
                   failed ? note : tr("showing %1").arg(note));
     });
     connect(document_, &Document::projectSaved, viewport_, &Viewport::reloadBakedRadiosity);
+    connect(document_, &Document::editRefused, this, [this](const QString& message) {
+        statusBar()->showMessage(tr("Not applied: ") + message, 10000);
+        log_->add(EventLog::Severity::Warning, tr("Edit"), message);
+    });
     connect(viewport_, &Viewport::renderFailed, this, [this](const QString& message) {
         statusBar()->showMessage(tr("Render error: ") + message);
         log_->add(EventLog::Severity::Error, tr("Render"), message);

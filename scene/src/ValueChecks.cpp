@@ -185,6 +185,19 @@ std::optional<ValueProblem> checkLight(const Light& l) {
             return p;
     if (auto p = checkLength(l.range, "range", true))
         return p;
+    // A spot's shadow map is a perspective of twice the outer angle, and the
+    // renderer softens the cone's edge over 1e-3 rad inside it.
+    if (l.type == LightType::Spot && !(double(l.outerConeAngle) >= kMinSpotCone))
+        return problem(
+            ErrorCode::OutOfRange, "outerConeAngle",
+            "outer cone angle " + number(l.outerConeAngle) +
+                " rad is below 0.001 rad (0.057 degrees): the spot's shadow projection, 1/tan of the "
+                "angle, and its 0.001 rad soft edge need at least that");
+    // Each factor too, not only the product: a colour of 3.4e38 at intensity
+    // 0 multiplies to 0 here but not where colour is used alone.
+    for (int i = 0; i < 3; ++i)
+        if (auto p = checkEmission(l.color[i], element("color", i), "the colour"))
+            return p;
     const double emitted = double(std::max({l.color.r, l.color.g, l.color.b})) * double(l.intensity);
     const std::string field = brighterField(l.color, l.intensity, "color");
     if (l.type == LightType::Area)
@@ -215,6 +228,9 @@ std::optional<ValueProblem> checkMaterial(const Material& m) {
 }
 
 std::optional<ValueProblem> checkSky(const Sky& s) {
+    for (int i = 0; i < 3; ++i)
+        if (auto p = checkEmission(s.color[i], element("color", i), "the colour"))
+            return p;
     const double emitted = double(std::max({s.color.r, s.color.g, s.color.b})) * double(s.intensity);
     return checkEmission(emitted, brighterField(s.color, s.intensity, "color"),
                          "the sky radiance (colour x intensity)");
@@ -236,9 +252,14 @@ std::optional<ValueProblem> checkObject(const Object& o) {
         return p;
     // Not 0 either: the normal matrix is the inverse of the scale, and a
     // zero made the normals of a flattened object NaN.
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
+        if (o.transform.scale[i] == 0.0f)
+            return problem(ErrorCode::OutOfRange, element("scale", i),
+                           "a scale of 0 flattens the object and makes its normal matrix (the inverse of the "
+                           "scale) infinite");
         if (auto p = checkLength(o.transform.scale[i], element("scale", i), false))
             return p;
+    }
     if (auto p = checkRotation(o.transform.rotation, "rotation"))
         return p;
     for (std::size_t i = 0; i < o.lods.size(); ++i)

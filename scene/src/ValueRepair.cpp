@@ -97,6 +97,11 @@ bool repairLight(Light& l, std::vector<std::string>& notes) {
         notes.push_back(who + "position not finite or beyond +-1e18; the light was dropped");
         return false;
     }
+    if (l.type == LightType::Spot && !(double(l.outerConeAngle) >= kMinSpotCone)) {
+        l.outerConeAngle = float(kMinSpotCone);
+        l.innerConeAngle = std::min(l.innerConeAngle, l.outerConeAngle);
+        notes.push_back(who + "outer cone angle below 0.001 rad; set to 0.001");
+    }
     if (l.type != LightType::Point && !normalisable(l.direction)) {
         l.direction = glm::vec3(0.0f, -1.0f, 0.0f);
         notes.push_back(who + "direction zero, too short or not finite; set to straight down (0, -1, 0)");
@@ -106,16 +111,26 @@ bool repairLight(Light& l, std::vector<std::string>& notes) {
         l.range = 0.0f;
         notes.push_back(who + "range not finite or outside 1e-18..1e18; set to 0 (unlimited)");
     }
-    if (!std::isfinite(l.intensity) || !usableCoordinates(l.color)) {
+    if (!std::isfinite(l.intensity) || !std::isfinite(l.color.r) || !std::isfinite(l.color.g) ||
+        !std::isfinite(l.color.b)) {
         l.intensity = 1.0f;
         l.color = glm::vec3(1.0f);
         notes.push_back(who + "colour or intensity not finite; set to white, intensity 1");
     }
     const double product = emittedProduct(l);
-    if (product > kMaxRadiometric) {
+    const double peak = std::max({l.color.r, l.color.g, l.color.b});
+    if (product > kMaxRadiometric || peak > kMaxRadiometric) {
         const float before = l.intensity;
+        double intensity = l.intensity;
+        // A colour beyond the limit carries the brightness: it moves into the intensity.
+        if (peak > kMaxRadiometric) {
+            l.color = glm::vec3(glm::dvec3(l.color) / peak);
+            intensity *= peak;
+        }
         // Scaled by a hair more than needed, so the float product lands below the limit.
-        l.intensity = float(double(l.intensity) * (kMaxRadiometric / product) * (1.0 - 1e-6));
+        if (product > kMaxRadiometric)
+            intensity *= kMaxRadiometric / product * (1.0 - 1e-6);
+        l.intensity = float(intensity);
         notes.push_back(who + "colour x intensity (x area) " + std::to_string(product) +
                         " is over 1e30; intensity " + std::to_string(before) + " scaled to " +
                         std::to_string(l.intensity));

@@ -350,3 +350,31 @@ TEST_F(PropertyPanelTest, AreaLightShowsItsShapeSizeAndUnit) {
     EXPECT_EQ(doc.scene().lights[0].unit, scene::AreaUnit::Power);
     EXPECT_TRUE(box("lightIntensity")->suffix().endsWith(" W"));
 }
+
+// Issue #42: an edit the project reader would refuse (a product of values
+// that overflows, an up vector along the view) is not applied, and says why.
+TEST_F(PropertyPanelTest, EditsThatASaveWouldRefuseAreNotAppliedAndSayWhy) {
+    QStringList refused;
+    QObject::connect(&doc, &editor::Document::editRefused, [&](const QString& m) { refused << m; });
+    const scene::Scene before = doc.scene();
+    scene::Light bright = before.lights[0];
+    bright.intensity = 3.4e38f;
+    doc.setLight(0, bright, "too bright");
+    scene::Camera looksUp = before.cameras[0];
+    looksUp.target = looksUp.position + glm::vec3(0, 1, 0);
+    doc.setCamera(0, looksUp, "up along the view");
+    EXPECT_EQ(doc.scene(), before);
+    EXPECT_EQ(doc.undoStack()->count(), 0);
+    ASSERT_EQ(refused.size(), 2);
+    EXPECT_EQ(refused[0],
+              "Light, intensity: the radiance (colour x intensity) is 3.39999995e+38, over 1e30: "
+              "products kept under 1e30 leave 1e8 of float headroom for exposure, SH constants and "
+              "sums over lights");
+    EXPECT_TRUE(refused[1].startsWith("Camera, up: the up vector is parallel to the view direction"))
+        << refused[1].toStdString();
+    // A sound edit still goes through.
+    scene::Light dimmer = before.lights[0];
+    dimmer.intensity = 5.0f;
+    doc.setLight(0, dimmer, "dimmer");
+    EXPECT_EQ(doc.scene().lights[0].intensity, 5.0f);
+}

@@ -68,7 +68,8 @@ TEST(ValueChecks, OverflowingLightIntensityOrColourIsRefusedNamingTheField) {
         "leave 1e8 of float headroom for exposure, SH constants and sums over lights");
     Light colour;
     colour.color = {1.0f, kHuge, 1.0f};
-    expectRefused(oneLight(colour), "lights[0].color", ErrorCode::OutOfRange, "over 1e30");
+    expectRefused(oneLight(colour), "lights[0].color[1]", ErrorCode::OutOfRange,
+                  "the colour is 3.39999995e+38, over 1e30");
     // Each factor alone is modest; their product is not.
     Light product;
     product.type = LightType::Point;
@@ -76,6 +77,23 @@ TEST(ValueChecks, OverflowingLightIntensityOrColourIsRefusedNamingTheField) {
     product.intensity = 1e16f;
     expectRefused(oneLight(product), "lights[0].color", ErrorCode::OutOfRange,
                   "the radiant intensity (colour x intensity) is 2");
+}
+
+TEST(ValueChecks, EachFactorIsBoundedAndASpotConeCannotVanish) {
+    Light dark; // colour 3.4e38 at intensity 0: the product is 0, the colour alone is not
+    dark.color = {kHuge, 1.0f, 1.0f};
+    dark.intensity = 0.0f;
+    expectRefused(oneLight(dark), "lights[0].color[0]", ErrorCode::OutOfRange,
+                  "the colour is 3.39999995e+38, over 1e30");
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.outerConeAngle = kTiniest;
+    expectRefused(oneLight(spot), "lights[0].outerConeAngle", ErrorCode::OutOfRange,
+                  "outer cone angle 1.40129846e-45 rad is below 0.001 rad (0.057 degrees)");
+    Scene sky;
+    sky.sky.color = {0.5f, kHuge, 0.5f};
+    sky.sky.intensity = 0.0f;
+    expectRefused(sky, "sky.color[1]", ErrorCode::OutOfRange, "the colour is 3.39999995e+38, over 1e30");
 }
 
 TEST(ValueChecks, DiffuseColourAndEmissionBeyondTheHeadroomAreRefused) {
@@ -200,6 +218,10 @@ TEST(ValueChecks, ObjectTransformProductsAreBounded) {
     s.objects[1].transform.translation = {0.0f, 0.0f, 0.0f};
     s.objects[1].transform.scale = {kTiniest, 1.0f, 1.0f};
     expectRefused(s, "objects[1].scale[0]", ErrorCode::OutOfRange, "is outside 1e-18..1e18");
+    s.objects[1].transform.scale = {1.0f, 0.0f, 1.0f};
+    expectRefused(s, "objects[1].scale[1]", ErrorCode::OutOfRange,
+                  "a scale of 0 flattens the object and makes its normal matrix (the inverse of the scale) "
+                  "infinite");
 }
 
 TEST(ValueChecks, TheProjectReaderNamesTheFileAndField) {
@@ -268,8 +290,15 @@ TEST(ValueRepair, ImportedLightsAndMaterialsAreBroughtUnderTheLimits) {
     s.materials.resize(1);
     s.materials[0].name = "glow";
     s.materials[0].diffuseColor = glm::vec3(kHuge);
+    Light coloured;
+    coloured.name = "coloured";
+    coloured.color = {kHuge, kHuge / 2.0f, 0.0f};
+    s.lights.push_back(coloured);
     const auto notes = repairSceneValues(s);
-    ASSERT_EQ(notes.size(), 3u);
+    ASSERT_EQ(notes.size(), 4u);
+    EXPECT_EQ(s.lights[1].color, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_LE(double(s.lights[1].intensity), 1e30);
+    EXPECT_GT(double(s.lights[1].intensity), 0.99e30);
     EXPECT_EQ(s.lights[0].direction, glm::vec3(0, -1, 0));
     EXPECT_LE(double(s.lights[0].intensity), 1e30);
     EXPECT_GT(double(s.lights[0].intensity), 0.99e30);

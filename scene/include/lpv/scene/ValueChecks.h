@@ -51,6 +51,10 @@ inline constexpr double kMaxFovY = 3.1241393; // 179 degrees
 // cross product (the camera's side axis) is then 1e-3 long and rounding
 // (1e-7) turns it by at most 1e-4 rad.
 inline constexpr double kMinUpSine = 1e-3;
+// A spot light's outer cone half-angle: its shadow map is a perspective of
+// twice the angle (1/tan overflows near 0), and the renderer softens the
+// cone's edge over 1e-3 rad inside it.
+inline constexpr double kMinSpotCone = 1e-3;
 // Camera path key times: float times resolve 1/128 s up to a day (86,400 s),
 // half a frame at 60 fps; later keys would snap frames together.
 inline constexpr double kMaxKeyTime = 86400.0;
