@@ -3,6 +3,7 @@
 #include "lpv/scene/FileRead.h"
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/ProjectLimits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -267,20 +268,28 @@ scene::Expected<StoredSolution> decodeSolution(std::string_view bytes, const std
     return s;
 }
 
+namespace {
+// Regular files only, the size checked before reading: 1 GiB holds about
+// 9 million patches (Sponza meshes 1.4 million). saveSolution refuses to
+// write more (issue #42: no write that a read refuses).
+const scene::ReadLimit kSolutionLimit{std::uint64_t{1} << 30, "radiosity solution"};
+} // namespace
+
 scene::Expected<void> saveSolution(const StoredSolution& solution, const std::filesystem::path& file) {
+    const std::string bytes = encodeSolution(solution);
+    if (auto fits = scene::checkWriteFits(bytes.size(), kSolutionLimit, file.string()); !fits)
+        return fits;
     std::error_code ec;
     std::filesystem::create_directories(file.parent_path(), ec);
     if (ec)
         return scene::makeError(scene::ErrorCode::IoError, file.parent_path().string(), "",
                                 "cannot create the folder: " + ec.message());
-    return scene::writeFileAtomically(file, encodeSolution(solution));
+    return scene::writeFileAtomically(file, bytes);
 }
 
 scene::Expected<StoredSolution> loadSolution(const std::filesystem::path& file, std::size_t materialCount,
                                              std::size_t objectCount) {
-    // Regular files only, the size checked before reading: 1 GiB holds about
-    // 9 million patches (Sponza meshes 1.4 million).
-    const auto bytes = scene::readFileBytes(file, {std::uint64_t{1} << 30, "radiosity solution"});
+    const auto bytes = scene::readFileBytes(file, kSolutionLimit);
     if (!bytes)
         return std::unexpected(bytes.error());
     return decodeSolution(*bytes, file.string(), materialCount, objectCount);

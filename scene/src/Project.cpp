@@ -28,21 +28,24 @@ using detail::utf8;
 
 std::string meshLocation(std::size_t i) { return "meshes[" + std::to_string(i) + "]"; }
 
+// The counts the project file records bound the asset's size (all four
+// vertex streams, indices, at most one submesh per triangle, its name): a
+// larger file is refused before it is read, and saveProject refuses to write
+// one (a mesh name over 1 MiB).
+detail::ReadLimit meshAssetLimit(std::uint64_t vertices, std::uint64_t triangles) {
+    constexpr std::uint64_t kCountLimit = std::uint64_t{1} << 40; // no overflow below
+    const std::uint64_t bound = std::min(vertices, kCountLimit) * 48 + std::min(triangles, kCountLimit) * 24 +
+                                kMeshAssetHeaderSize + (std::uint64_t{1} << 20);
+    return {bound, "mesh asset of " + std::to_string(vertices) + " vertices and " + std::to_string(triangles) +
+                       " triangles"};
+}
+
 Expected<Mesh> loadMesh(const fs::path& projectFile, const detail::MeshReference& ref, std::size_t i,
                         std::size_t materialCount) {
     const std::string where = projectFile.string();
     // checkAssetPath has already confined ref.asset to the project's folder.
     const fs::path assetFile = projectFile.parent_path() / fromUtf8(ref.asset);
-    // The counts the project file records bound the asset's size (all four
-    // vertex streams, indices, at most one submesh per triangle, its name):
-    // a larger file is refused before it is read.
-    constexpr std::uint64_t kCountLimit = std::uint64_t{1} << 40; // no overflow below
-    const std::uint64_t bound =
-        std::min(ref.vertices, kCountLimit) * 48 + std::min(ref.triangles, kCountLimit) * 24 +
-        kMeshAssetHeaderSize + (std::uint64_t{1} << 20);
-    const auto bytes = readFileBytes(
-        assetFile, detail::ReadLimit{bound, "mesh asset of " + std::to_string(ref.vertices) + " vertices and " +
-                                                std::to_string(ref.triangles) + " triangles"});
+    const auto bytes = readFileBytes(assetFile, meshAssetLimit(ref.vertices, ref.triangles));
     if (!bytes && bytes.error().code == ErrorCode::FileNotFound)
         return makeError(ErrorCode::MissingAsset, where, meshLocation(i) + ".asset",
                          "mesh asset \"" + ref.asset + "\" does not exist (looked for " + assetFile.string() + ")");
@@ -189,7 +192,14 @@ Expected<void> saveProject(const Project& project, const fs::path& file, const S
     std::vector<std::string> assets;
     std::vector<std::string> assetPaths;
     for (std::size_t i = 0; i < project.scene.meshes.size(); ++i) {
-        assets.push_back(encodeMeshAsset(project.scene.meshes[i]));
+        const Mesh& mesh = project.scene.meshes[i];
+        assets.push_back(encodeMeshAsset(mesh));
+        if (auto fits = checkWriteFits(assets.back().size(),
+                                       meshAssetLimit(mesh.positions.size(), mesh.triangleCount()), where);
+            !fits) {
+            fits.error().location = meshLocation(i);
+            return fits;
+        }
         assetPaths.push_back(assetPathFor(file, i, assets.back()));
     }
     const auto text = buildDocument(project, file, assetPaths);

@@ -151,3 +151,20 @@ TEST_F(ProjectLockTest, MoreMaterialsThanAProjectHoldsAreRefusedBeforeWriting) {
               file.string() + ": materials: 16385 materials, more than a project can hold (16384)");
     EXPECT_TRUE(listFiles(dir_).empty());
 }
+
+// The loader bounds a mesh asset by its counts (48 bytes a vertex, 24 a
+// triangle, 1 MiB more): a mesh whose name alone is longer would be saved
+// and then refused.
+TEST_F(ProjectLockTest, AMeshAssetTheLoaderWouldRefuseIsNotWritten) {
+    Project p = triangleProject(0);
+    p.scene.meshes[0].name = std::string((std::size_t{1} << 20) + 4096, 'n');
+    p.scene.objects[0].name = "tri";
+    const fs::path file = dir_ / "p.lpvproj";
+    auto saved = saveProject(p, file);
+    ASSERT_FALSE(saved);
+    EXPECT_EQ(saved.error().location, "meshes[0]");
+    EXPECT_NE(saved.error().message.find("more than a mesh asset of 3 vertices and 1 triangles can be"),
+              std::string::npos)
+        << saved.error().message;
+    EXPECT_TRUE(listFiles(dir_).empty());
+}
