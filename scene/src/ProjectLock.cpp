@@ -4,6 +4,7 @@
 
 #include "FileText.h"
 
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -20,7 +21,6 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
-#include <system_error>
 #include <unistd.h>
 #endif
 
