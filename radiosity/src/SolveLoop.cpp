@@ -31,6 +31,19 @@ SolveProgress progressOf(const ProgressiveSolver& solver, double sessionSeconds,
     return p;
 }
 
+namespace {
+
+// "-nan" from std::to_string says less than this.
+std::string nonFiniteText(double v) {
+    if (std::isnan(v))
+        return "NaN";
+    if (std::isinf(v))
+        return v > 0.0 ? "infinite" : "-infinite";
+    return std::to_string(v) + " but the emitted energy is not finite";
+}
+
+} // namespace
+
 scene::Expected<StopReason> solve(ProgressiveSolver& solver, FormFactorSource& formFactors,
                                   const SolveOptions& options) {
     using Clock = std::chrono::steady_clock;
@@ -51,7 +64,7 @@ scene::Expected<StopReason> solve(ProgressiveSolver& solver, FormFactorSource& f
             !std::isfinite(residual) || !std::isfinite(emitted.x + emitted.y + emitted.z)) {
             report(Clock::now());
             return scene::makeError(scene::ErrorCode::NonFinite, "", "radiosity residual",
-                                    "the residual (unshot / emitted energy) is " + std::to_string(residual) +
+                                    "the residual (unshot / emitted energy) is " + nonFiniteText(residual) +
                                         " after " + std::to_string(solver.state().shots) +
                                         " shots: the emitted energy overflowed (a light, emissive surface or "
                                         "reflectance too large); the solution was not kept");
