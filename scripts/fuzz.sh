@@ -128,6 +128,8 @@ LIMITS=(-rss_limit_mb=2048 -malloc_limit_mb=1024)
 
 # Stack traces for undefined behaviour too (llvm-16 brings the symbolizer).
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
+# Leaks inside libraries we cannot change (each explained in the file).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0}"
 
 # The targets' scratch folders (lpv-fuzz-<target>-<pid>, fuzz/WorkFolder.h) go here.
 export LPV_FUZZ_TMP="${LPV_FUZZ_TMP:-/dev/shm}"
