@@ -75,7 +75,7 @@ seeds() {
     fuzz_obj) ls fuzz/seeds/fuzz_obj/* "$BUILD"/seeds/fuzz_obj/* ;;
     fuzz_radiosity_solution) ls "$BUILD"/seeds/fuzz_radiosity_solution/* ;;
     fuzz_project_structure) ls projects/*/*.lpvproj "$BUILD"/seeds/fuzz_project_structure/* ;;
-    fuzz_image) ls "$BUILD"/seeds/fuzz_image/* ;;
+    fuzz_image) ls fuzz/seeds/fuzz_image/* "$BUILD"/seeds/fuzz_image/* ;;
   esac
 }
 # -max_len: the largest input libFuzzer makes. Seeds longer than it are not
