@@ -111,12 +111,12 @@ bool repairLight(Light& l, std::vector<std::string>& notes) {
         l.range = 0.0f;
         notes.push_back(who + "range not finite or outside 1e-18..1e18; set to 0 (unlimited)");
     }
+    // A colour or intensity that is not a finite float is a broken file, not
+    // a value out of range: it is left for the import's read check to refuse,
+    // naming the input file and the field (ReadPolicy), as before issue #42.
     if (!std::isfinite(l.intensity) || !std::isfinite(l.color.r) || !std::isfinite(l.color.g) ||
-        !std::isfinite(l.color.b)) {
-        l.intensity = 1.0f;
-        l.color = glm::vec3(1.0f);
-        notes.push_back(who + "colour or intensity not finite; set to white, intensity 1");
-    }
+        !std::isfinite(l.color.b))
+        return true;
     const double product = emittedProduct(l);
     const double peak = std::max({l.color.r, l.color.g, l.color.b});
     if (product > kMaxRadiometric || peak > kMaxRadiometric) {

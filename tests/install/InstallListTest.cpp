@@ -62,5 +62,10 @@ TEST(InstallList, FailsNamingAPackageLeftOutOfTheList) {
     const RunResult r = run(checkCommand("--without zlib1g-dev"));
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("MISSING PACKAGE zlib1g-dev:"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("libz.so"), std::string::npos) << r.output;
+    // It names one of the package's files the build read: the library Assimp
+    // links, or zlib's headers (the image-budget test reads them too).
+    const bool namesAZlibFile = r.output.find("libz.so") != std::string::npos ||
+                                r.output.find("/usr/include/zconf.h") != std::string::npos ||
+                                r.output.find("/usr/include/zlib.h") != std::string::npos;
+    EXPECT_TRUE(namesAZlibFile) << r.output;
 }
