@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -28,6 +29,13 @@ std::uint32_t be32(const unsigned char* p) {
     return be16(p) << 16 | be16(p + 2);
 }
 
+// Products of header fields saturate instead of wrapping: a header may claim
+// 2^32 x 2^32 pixels, and a wrapped product would pass the budget.
+std::uint64_t mulSat(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t r = 0;
+    return __builtin_mul_overflow(a, b, &r) ? UINT64_MAX : r;
+}
+
 std::unexpected<scene::Error> unreadable(const fs::path& file, const std::string& format,
                                          const std::string& why) {
     return makeError(ErrorCode::CorruptAsset, file.string(), "header", format + " header " + why);
@@ -46,7 +54,9 @@ ImageHeader claim(std::string format, std::string compression, std::int64_t w, s
     c.bytesPerSample = bytesPerSample;
     c.storedBytes = storedBytes;
     const double pixels = double(std::max<std::int64_t>(w, 0)) * double(std::max<std::int64_t>(h, 0));
-    c.decodedBytes = std::uint64_t(pixels * (double(channels) * bytesPerSample + extraDecodedPerPixel));
+    // Converting a double at or beyond 2^64 to an integer is undefined: saturate first.
+    const double decoded = pixels * (double(channels) * bytesPerSample + extraDecodedPerPixel);
+    c.decodedBytes = decoded >= 18446744073709551615.0 ? UINT64_MAX : std::uint64_t(decoded);
     c.maxRatio = maxRatio;
     return c;
 }
@@ -59,7 +69,7 @@ std::uint64_t rowBytes(std::int64_t width, std::uint64_t bitsPerPixel) {
 // OpenImageIO allocates as RGBA inside open(), whatever the frames hold.
 ImageHeader gif(const unsigned char* b) {
     const std::int64_t w = le16(b + 6), h = le16(b + 8);
-    return claim("gif", "lzw", w, h, 4, 1, std::uint64_t(w) * std::uint64_t(h), 0.0, kLzwMaxRatio);
+    return claim("gif", "lzw", w, h, 4, 1, std::uint64_t(w) * std::uint64_t(h), 0.0, kLzwMaxRatio); // < 2^32
 }
 
 // PNG: IHDR is the first chunk. Stored bytes are the deflate stream's
@@ -95,7 +105,7 @@ scene::Expected<ImageHeader> png(const fs::path& file, const unsigned char* b, s
         return unreadable(file, "PNG",
                           "has bit depth " + std::to_string(bits) + ", which PNG does not define");
     const std::uint64_t storedBytes =
-        std::uint64_t(h) * (1 + rowBytes(w, std::uint64_t(stored) * std::uint64_t(bits)));
+        mulSat(std::uint64_t(h), 1 + rowBytes(w, std::uint64_t(stored) * std::uint64_t(bits)));
     return claim("png", "deflate", w, h, decoded, bits == 16 ? 2 : 1, storedBytes, 0.0, kDeflateMaxRatio);
 }
 
@@ -167,7 +177,7 @@ scene::Expected<ImageHeader> bmp(const fs::path& file, const unsigned char* b, s
     h = h < 0 ? -h : h;
     const bool rle = compression == 1 || compression == 2;
     const bool uncompressed = compression == 0 || compression == 3 || compression == 6;
-    const std::uint64_t stored = std::uint64_t(h) * ((rowBytes(w, bpp) + 3) / 4 * 4);
+    const std::uint64_t stored = mulSat(std::uint64_t(h), (rowBytes(w, bpp) + 3) / 4 * 4);
     // OpenImageIO decodes to RGB (RGBA from 32 bits) and unpacks RLE into a
     // byte per pixel first.
     return claim("bmp",
@@ -218,9 +228,16 @@ const char* exrCompressionName(int compression) {
 }
 
 // OpenEXR: attributes (name, type, size, value) until an empty name. The
-// first part's channels, compression and data window make the claim.
+// first part's channels, compression and data window make the claim. Every
+// attribute's size must fit in what is left of the file: OpenEXR allocates
+// an attribute of a type it does not know (an "opaque" one) at the size its
+// header claims, before reading it.
 scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
     in.clear();
+    in.seekg(0, std::ios::end);
+    const std::int64_t fileBytes = std::int64_t(in.tellg());
+    in.seekg(5);
+    const bool multiPart = (in.get() & 0x10) != 0; // version flags, bit 12
     in.seekg(8);
     auto readName = [&](std::string& out) {
         out.clear();
@@ -248,6 +265,10 @@ scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
         const std::int32_t size = std::int32_t(le32(sizeBytes));
         if (size < 0)
             return unreadable(file, "OpenEXR", "gives attribute '" + name + "' a negative size");
+        if (std::int64_t(size) > fileBytes - std::int64_t(in.tellg()))
+            return unreadable(file, "OpenEXR",
+                              "gives attribute '" + name + "' " + std::to_string(size) +
+                                  " bytes, more than the rest of the file holds");
         if (name == "channels" && type == "chlist") {
             if (size > (1 << 20))
                 return unreadable(file, "OpenEXR",
@@ -281,8 +302,31 @@ scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
     }
     if (channels == 0 || compression < 0 || w < 0 || h < 0)
         return unreadable(file, "OpenEXR", "lacks its channels, compression or data window");
+    // A multi-part file's further headers follow, up to an empty one; OpenEXR
+    // reads them all when it opens the file, so their sizes are checked too.
+    for (int part = 1; multiPart && part < 4096; ++part) {
+        if (in.peek() == 0)
+            break;
+        for (int attribute = 0; attribute < 4096; ++attribute) {
+            if (!readName(name))
+                return unreadable(file, "OpenEXR",
+                                  "is truncated in the header of part " + std::to_string(part));
+            if (name.empty())
+                break;
+            unsigned char sizeBytes[4];
+            if (!readName(type) || !in.read(reinterpret_cast<char*>(sizeBytes), 4))
+                return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
+            const std::int64_t size = std::int32_t(le32(sizeBytes));
+            if (size < 0 || size > fileBytes - std::int64_t(in.tellg()))
+                return unreadable(file, "OpenEXR",
+                                  "gives attribute '" + name + "' " + std::to_string(size) +
+                                      " bytes, more than the rest of the file holds");
+            in.seekg(size, std::ios::cur);
+        }
+    }
     ImageHeader c = claim("openexr", exrCompressionName(compression), w, h, channels, 4,
-                          std::uint64_t(w) * std::uint64_t(h) * bytesPerPixel, 0.0, exrMaxRatio(compression));
+                          mulSat(mulSat(std::uint64_t(w), std::uint64_t(h)), bytesPerPixel), 0.0,
+                          exrMaxRatio(compression));
     // In the file's own sample format: half channels decode to 2 bytes each.
     c.bytesPerSample = int(bytesPerPixel / std::uint64_t(channels));
     c.decodedBytes = c.storedBytes;
@@ -311,7 +355,9 @@ scene::Expected<std::optional<ImageHeader>> sniffImageHeader(const fs::path& fil
             return std::unexpected(h.error());
         return std::optional<ImageHeader>(std::move(*h));
     };
-    if (is("GIF87a", 6) || is("GIF89a", 6)) {
+    // giflib accepts any file that starts with "GIF" (it does not check the
+    // version), so every such file is weighed as one.
+    if (is("GIF", 3)) {
         if (n < 10)
             return unreadable(file, "GIF", "is truncated");
         return std::optional<ImageHeader>(gif(b));

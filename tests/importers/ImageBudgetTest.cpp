@@ -306,7 +306,56 @@ TEST_F(Bounded, TruncatedExrHeader) {
     const fs::path f = writeFile("cut.exr", exrHeader(64, 64, 4, 1, 3).substr(0, 40));
     const auto r = importers::readImageChannels(f);
     ASSERT_FALSE(r.has_value());
-    EXPECT_EQ(r.error().describe(), f.string() + ": header: OpenEXR header is truncated in its channel list");
+    EXPECT_EQ(r.error().describe(),
+              f.string() + ": header: OpenEXR header gives attribute 'channels' 77 bytes, more than the "
+                           "rest of the file holds");
+}
+
+// Found by fuzz_image: giflib reads any file that starts with "GIF" (it does
+// not check "87a" or "89a"), so such a file is weighed as a GIF too.
+TEST_F(Bounded, GifWithAnyVersionIsWeighedAsAGif) {
+    std::string bytes = gifBomb(65535, 65535);
+    bytes.replace(3, 3, "xyz");
+    const fs::path f = writeFile("odd-version.bin", bytes);
+    EXPECT_EQ(refusal(importers::readImage8(f)),
+              f.string() +
+                  ": header: claims 65535x65535 pixels, 4 channels of 1 byte (gif, lzw): 16.0 GiB to "
+                  "decode; the budget is 1.0 GiB per image");
+}
+
+// Found by fuzz_image: OpenEXR allocates an attribute of a type it does not
+// know at the size the header claims (1.9 GB from a 513-byte file).
+TEST_F(Bounded, ExrAttributeLargerThanTheFileIsRefused) {
+    std::string bytes = exrHeader(64, 64, 4, 1, 3);
+    bytes.pop_back(); // the header's closing empty name: one more attribute follows
+    bytes += std::string("junk") + '\0' + "mystery" + '\0' + le32(1969618944u) + std::string(16, 'x') + '\0';
+    const fs::path f = writeFile("opaque.exr", bytes);
+    const auto r = importers::readImageChannels(f);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().describe(), f.string() + ": header: OpenEXR header gives attribute 'junk' 1969618944 "
+                                                 "bytes, more than the rest of the file holds");
+    EXPECT_EQ(refusal(importers::readImage8(f)), r.error().describe());
+}
+
+// Found by fuzz_image: sides near 2^32 made the claimed size overflow (a
+// double beyond 2^64 converted to an integer); it saturates and is refused.
+TEST_F(Bounded, SidesNearTwoToTheThirtyTwoDoNotOverflowTheClaim) {
+    const fs::path png = writeFile("huge.png", pngHeader(0xFFFFFFFFu, 0xFFFFFFFFu, 16, 6));
+    EXPECT_EQ(refusal(importers::readImage8(png)),
+              png.string() +
+                  ": header: claims 4294967295x4294967295 pixels, 4 channels of 2 bytes (png, deflate): "
+                  "16777216.0 TiB to decode; the budget is 1.0 GiB per image");
+    std::string exr = exrHeader(64, 64, 4, 2, 0);
+    const std::string small = le32(0) + le32(0) + le32(63) + le32(63);
+    const std::string huge = le32(0x80000000u) + le32(0x80000000u) + le32(0x7FFFFFFFu) + le32(0x7FFFFFFFu);
+    exr.replace(exr.find(small), small.size(), huge);
+    const fs::path e = writeFile("huge.exr", exr);
+    const auto r = importers::readImageChannels(e);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().describe(),
+              e.string() +
+                  ": header: claims 4294967296x4294967296 pixels, 4 channels of 4 bytes (openexr, none): "
+                  "16777216.0 TiB to decode; the budget is 1.0 GiB per image");
 }
 
 TEST(ImageBudget, RealImagesWithinTheBudgetStillRead) {
