@@ -227,11 +227,34 @@ const char* exrCompressionName(int compression) {
                                                                 : "unknown";
 }
 
-// OpenEXR: attributes (name, type, size, value) until an empty name. The
-// first part's channels, compression and data window make the claim. Every
-// attribute's size must fit in what is left of the file: OpenEXR allocates
-// an attribute of a type it does not know (an "opaque" one) at the size its
-// header claims, before reading it.
+// The bytes OpenEXR 3.1 reads for the value of an attribute of a known,
+// fixed-size type, whatever size the attribute declares (its typed readers
+// ignore the declared size); -1 for the types whose value it reads at the
+// declared size (strings, vectors, manifests, and types it does not know,
+// which it keeps as "opaque" bytes allocated at that size).
+std::int64_t exrFixedValueBytes(const std::string& type) {
+    static const std::pair<const char*, int> kFixed[] = {
+        {"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+        {"compression", 1}, {"double", 8},   {"envmap", 1},
+        {"float", 4},       {"int", 4},      {"keycode", 28},
+        {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+        {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+        {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+        {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1}};
+    for (const auto& [name, bytes] : kFixed)
+        if (type == name)
+            return bytes;
+    return -1;
+}
+
+// OpenEXR: attributes (name, type, size, value) until an empty name, walked
+// as OpenEXR walks them (fixed-size types at their own size, a channel list
+// up to its empty name, a preview at its width x height), so that every
+// allocation OpenEXR makes while opening is weighed against the bytes left:
+// it allocates strings, vectors and attributes of unknown types at the size
+// their header claims, and a preview at width x height x 4. The first
+// part's channels, compression and data window make the claim.
 scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
     in.clear();
     in.seekg(0, std::ios::end);
@@ -239,6 +262,7 @@ scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
     in.seekg(5);
     const bool multiPart = (in.get() & 0x10) != 0; // version flags, bit 12
     in.seekg(8);
+    const auto left = [&] { return fileBytes - std::int64_t(in.tellg()); };
     auto readName = [&](std::string& out) {
         out.clear();
         for (int c = in.get(); c != EOF; c = in.get()) {
@@ -250,79 +274,83 @@ scene::Expected<ImageHeader> exr(const fs::path& file, std::ifstream& in) {
         }
         return false;
     };
+    const auto tooLarge = [&](const std::string& name, std::int64_t bytes) {
+        return unreadable(file, "OpenEXR",
+                          "gives attribute '" + name + "' " + std::to_string(bytes) +
+                              " bytes, more than the rest of the file holds");
+    };
     int channels = 0, compression = -1;
     std::uint64_t bytesPerPixel = 0;
     std::int64_t w = -1, h = -1;
     std::string name, type;
-    for (int attribute = 0; attribute < 4096; ++attribute) {
-        if (!readName(name))
-            return unreadable(file, "OpenEXR", "is truncated in its attributes");
-        if (name.empty())
-            break;
-        unsigned char sizeBytes[4];
-        if (!readName(type) || !in.read(reinterpret_cast<char*>(sizeBytes), 4))
-            return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
-        const std::int32_t size = std::int32_t(le32(sizeBytes));
-        if (size < 0)
-            return unreadable(file, "OpenEXR", "gives attribute '" + name + "' a negative size");
-        if (std::int64_t(size) > fileBytes - std::int64_t(in.tellg()))
-            return unreadable(file, "OpenEXR",
-                              "gives attribute '" + name + "' " + std::to_string(size) +
-                                  " bytes, more than the rest of the file holds");
-        if (name == "channels" && type == "chlist") {
-            if (size > (1 << 20))
-                return unreadable(file, "OpenEXR",
-                                  "has a channel list of " + std::to_string(size) + " bytes");
-            std::vector<unsigned char> list(std::size_t(size) + 1, 0);
-            if (!in.read(reinterpret_cast<char*>(list.data()), size))
-                return unreadable(file, "OpenEXR", "is truncated in its channel list");
-            for (std::size_t at = 0; at < std::size_t(size) && list[at] != 0;) {
-                const std::size_t end =
-                    std::find(list.begin() + std::ptrdiff_t(at), list.end(), 0) - list.begin();
-                if (end + 17 > std::size_t(size))
-                    return unreadable(file, "OpenEXR", "is truncated in its channel list");
-                bytesPerPixel += le32(&list[end + 1]) == 1 ? 2 : 4; // HALF, else UINT or FLOAT
-                ++channels;
-                at = end + 17;
-            }
-        } else if (name == "compression" && size == 1) {
-            compression = in.get();
-        } else if (name == "dataWindow" && type == "box2i" && size == 16) {
-            unsigned char box[16];
-            if (!in.read(reinterpret_cast<char*>(box), 16))
-                return unreadable(file, "OpenEXR", "is truncated in its data window");
-            const auto at = [&](int i) { return std::int64_t(std::int32_t(le32(box + 4 * i))); };
-            w = at(2) - at(0) + 1;
-            h = at(3) - at(1) + 1;
-        } else {
-            in.seekg(size, std::ios::cur);
-        }
-        if (!in)
-            return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
-    }
-    if (channels == 0 || compression < 0 || w < 0 || h < 0)
-        return unreadable(file, "OpenEXR", "lacks its channels, compression or data window");
-    // A multi-part file's further headers follow, up to an empty one; OpenEXR
-    // reads them all when it opens the file, so their sizes are checked too.
-    for (int part = 1; multiPart && part < 4096; ++part) {
-        if (in.peek() == 0)
-            break;
+    // One header; `first` keeps what the claim needs.
+    auto walkHeader = [&](bool first) -> scene::Expected<void> {
         for (int attribute = 0; attribute < 4096; ++attribute) {
             if (!readName(name))
-                return unreadable(file, "OpenEXR",
-                                  "is truncated in the header of part " + std::to_string(part));
+                return unreadable(file, "OpenEXR", "is truncated in its attributes");
             if (name.empty())
-                break;
+                return {};
             unsigned char sizeBytes[4];
             if (!readName(type) || !in.read(reinterpret_cast<char*>(sizeBytes), 4))
                 return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
             const std::int64_t size = std::int32_t(le32(sizeBytes));
-            if (size < 0 || size > fileBytes - std::int64_t(in.tellg()))
-                return unreadable(file, "OpenEXR",
-                                  "gives attribute '" + name + "' " + std::to_string(size) +
-                                      " bytes, more than the rest of the file holds");
-            in.seekg(size, std::ios::cur);
+            if (size < 0)
+                return unreadable(file, "OpenEXR", "gives attribute '" + name + "' a negative size");
+            if (type == "chlist") {
+                // name, then type, pLinear, reserved, xSampling, ySampling: 16 bytes
+                for (std::string channel;;) {
+                    if (!readName(channel))
+                        return unreadable(file, "OpenEXR", "is truncated in its channel list");
+                    if (channel.empty())
+                        break;
+                    unsigned char entry[16];
+                    if (!in.read(reinterpret_cast<char*>(entry), 16))
+                        return unreadable(file, "OpenEXR", "is truncated in its channel list");
+                    if (first && name == "channels") {
+                        bytesPerPixel += le32(entry) == 1 ? 2 : 4; // HALF, else UINT or FLOAT
+                        ++channels;
+                    }
+                }
+            } else if (type == "preview") {
+                unsigned char wh[8];
+                if (!in.read(reinterpret_cast<char*>(wh), 8))
+                    return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
+                const std::int64_t pixelBytes = std::int64_t(le32(wh)) * std::int64_t(le32(wh + 4)) * 4;
+                if (pixelBytes > left())
+                    return tooLarge(name, pixelBytes);
+                in.seekg(pixelBytes, std::ios::cur);
+            } else if (const std::int64_t fixed = exrFixedValueBytes(type); fixed >= 0) {
+                unsigned char value[128];
+                if (!in.read(reinterpret_cast<char*>(value), fixed))
+                    return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
+                if (first && name == "compression")
+                    compression = value[0];
+                if (first && name == "dataWindow" && type == "box2i") {
+                    const auto at = [&](int i) { return std::int64_t(std::int32_t(le32(value + 4 * i))); };
+                    w = at(2) - at(0) + 1;
+                    h = at(3) - at(1) + 1;
+                }
+            } else {
+                if (size > left())
+                    return tooLarge(name, size);
+                in.seekg(size, std::ios::cur);
+            }
+            if (!in)
+                return unreadable(file, "OpenEXR", "is truncated in attribute '" + name + "'");
         }
+        return unreadable(file, "OpenEXR", "has more than 4096 attributes in one header");
+    };
+    if (auto walked = walkHeader(true); !walked)
+        return std::unexpected(walked.error());
+    if (channels == 0 || compression < 0 || w < 0 || h < 0)
+        return unreadable(file, "OpenEXR", "lacks its channels, compression or data window");
+    // A multi-part file's further headers follow, up to an empty one; OpenEXR
+    // reads them all when it opens the file, so they are walked too.
+    for (int part = 1; multiPart && in.peek() != 0 && in.peek() != EOF; ++part) {
+        if (part >= 4096)
+            return unreadable(file, "OpenEXR", "has more than 4096 parts");
+        if (auto walked = walkHeader(false); !walked)
+            return std::unexpected(walked.error());
     }
     ImageHeader c = claim("openexr", exrCompressionName(compression), w, h, channels, 4,
                           mulSat(mulSat(std::uint64_t(w), std::uint64_t(h)), bytesPerPixel), 0.0,
