@@ -1,5 +1,7 @@
 #include "lpv/importers/Importer.h"
 
+#include "TextEncoding.h"
+
 #include "lpv/importers/AssimpImporter.h"
 #include "lpv/importers/FourDsReader.h"
 #include "lpv/importers/GltfImporter.h"
@@ -25,7 +27,8 @@ enum class Format { FourDs, Gltf, Assimp, Unknown };
 
 std::string lowerExtension(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -81,9 +84,10 @@ scene::Expected<ImportResult> readFormat(Format format, const std::filesystem::p
     case Format::Unknown:
         break;
     }
-    return makeError(ErrorCode::UnknownFormat, file.string(), "",
-                     "no importer reads '" + lowerExtension(file) +
-                         "' files (4ds, glTF .gltf/.glb, and what Assimp reads: .obj, .3ds, .fbx, .dae, .ply, ...)");
+    return makeError(
+        ErrorCode::UnknownFormat, file.string(), "",
+        "no importer reads '" + lowerExtension(file) +
+            "' files (4ds, glTF .gltf/.glb, and what Assimp reads: .obj, .3ds, .fbx, .dae, .ply, ...)");
 }
 
 // Colours below zero (a 4ds or MTL can store them) mean nothing to a
@@ -102,8 +106,38 @@ void clampNegativeColours(const std::filesystem::path& file, ImportResult& resul
     }
 }
 
+// Names that are not UTF-8 (an OBJ written by a Windows tool in its 8-bit
+// code page) cannot go into the project's JSON: the whole save failed on one
+// byte. They are read as Windows-1250 instead, with a warning.
+void makeNamesUtf8(const std::filesystem::path& file, ImportResult& result) {
+    std::size_t renamed = 0;
+    const auto fix = [&](std::string& name) {
+        if (auto utf8 = legacyNameToUtf8(name)) {
+            name = std::move(*utf8);
+            ++renamed;
+        }
+    };
+    scene::Scene& s = result.scene;
+    for (auto& o : s.objects)
+        fix(o.name);
+    for (auto& m : s.meshes)
+        fix(m.name);
+    for (auto& m : s.materials)
+        fix(m.name);
+    for (auto& l : s.lights)
+        fix(l.name);
+    for (auto& c : s.cameras)
+        fix(c.name);
+    for (auto& p : s.cameraPaths)
+        fix(p.name);
+    if (renamed > 0)
+        result.warnings.push_back(file.string() + ": " + std::to_string(renamed) +
+                                  " name(s) were not UTF-8 and were read as Windows-1250");
+}
+
 // The same clean-up for every format, then the summary's counts.
 void finishImport(const std::filesystem::path& file, ImportResult& result) {
+    makeNamesUtf8(file, result);
     clampNegativeColours(file, result);
     // Values a project would refuse as products (ValueChecks.h) are repaired
     // here with a warning: a parallel up vector must not cost the whole file.
@@ -116,8 +150,9 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
         repairedNormals += s.invalidNormalsRepaired;
     }
     if (result.stats.degenerateTrianglesDropped > 0)
-        result.warnings.push_back(file.string() + ": " + std::to_string(result.stats.degenerateTrianglesDropped) +
-                                  " degenerate triangle(s) (zero area, repeated or non-finite corners) dropped");
+        result.warnings.push_back(
+            file.string() + ": " + std::to_string(result.stats.degenerateTrianglesDropped) +
+            " degenerate triangle(s) (zero area, repeated or non-finite corners) dropped");
     if (repairedNormals > 0)
         result.warnings.push_back(file.string() + ": " + std::to_string(repairedNormals) +
                                   " invalid normal(s) (zero length or non-finite) recomputed");

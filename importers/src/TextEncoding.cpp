@@ -56,4 +56,48 @@ std::string windows1250ToUtf8(std::span<const std::uint8_t> bytes) {
     return out;
 }
 
+namespace {
+// Well-formed UTF-8 as RFC 3629 defines it: no overlong forms, no surrogates,
+// nothing above U+10FFFF (what nlohmann::json accepts when it writes).
+bool isValidUtf8(const std::string& text) {
+    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t n = text.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned c = p[i];
+        std::size_t len = 0;
+        unsigned lo = 0x80, hi = 0xBF; // range of the second byte
+        if (c < 0x80)
+            len = 1;
+        else if (c >= 0xC2 && c <= 0xDF)
+            len = 2;
+        else if (c >= 0xE0 && c <= 0xEF) {
+            len = 3;
+            lo = c == 0xE0 ? 0xA0 : 0x80;
+            hi = c == 0xED ? 0x9F : 0xBF;
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            len = 4;
+            lo = c == 0xF0 ? 0x90 : 0x80;
+            hi = c == 0xF4 ? 0x8F : 0xBF;
+        } else
+            return false;
+        if (i + len > n)
+            return false;
+        for (std::size_t k = 1; k < len; ++k) {
+            const unsigned b = p[i + k];
+            if (k == 1 ? (b < lo || b > hi) : (b < 0x80 || b > 0xBF))
+                return false;
+        }
+        i += len;
+    }
+    return true;
+}
+} // namespace
+
+std::optional<std::string> legacyNameToUtf8(const std::string& text) {
+    if (isValidUtf8(text))
+        return std::nullopt;
+    return windows1250ToUtf8(
+        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
 } // namespace lpv::importers

@@ -2,6 +2,7 @@
 // Legacy 8-bit names (game formats written on Windows) to valid UTF-8, so a
 // name read from any file can go straight into the project (JSON) and the UI.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -12,6 +13,11 @@ namespace lpv::importers {
 // U+FFFD; C0 control characters (and DEL) become '?' so a name stays
 // printable. The result is always valid UTF-8, whatever the input.
 std::string windows1250ToUtf8(std::span<const std::uint8_t> bytes);
+
+// `text` itself when it is valid UTF-8; otherwise the same bytes read as
+// Windows-1250 (a legacy 8-bit name from a Windows tool), which is always
+// valid. nullopt when `text` was valid already.
+std::optional<std::string> legacyNameToUtf8(const std::string& text);
 
 // Appends the UTF-8 encoding of a code point (at most U+FFFF here).
 void appendUtf8(std::string& out, char32_t codePoint);
