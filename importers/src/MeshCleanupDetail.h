@@ -16,7 +16,7 @@
 namespace lpv::importers::detail {
 
 // Per triangle of the index buffer: 1 if it survives, 0 if it is degenerate
-// (repeated or out-of-range index, a non-finite corner, or no area relative
+// (repeated or out-of-range index, a corner not finite or beyond +-1e18, or no area relative
 // to its size). Trailing indices that make no whole triangle are not listed.
 std::vector<std::uint8_t> survivingTriangles(const scene::Mesh& mesh);
 

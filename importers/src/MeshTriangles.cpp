@@ -1,14 +1,23 @@
 // Degenerate triangles and the submesh ranges around them (MeshCleanupDetail.h).
 #include "MeshCleanupDetail.h"
 
+#include "lpv/scene/ValueChecks.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace lpv::importers::detail {
 namespace {
 
-bool isFinite(const glm::vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+// A corner the renderers can place: finite and within +-kMaxLength (1e18),
+// the bound every other length in a project has (ValueChecks.h). A finite
+// 3e38 corner made the scene's extent infinite, and with it the LPV cells
+// and shadow frusta (found by fuzz_4ds's render check, issue #42).
+bool isUsablePosition(const glm::vec3& p) {
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(p[i]) || std::abs(double(p[i])) > scene::kMaxLength)
+            return false;
+    return true;
 }
 
 // A triangle whose |cross| is below this fraction of its longest squared edge
@@ -32,7 +41,7 @@ bool isDegenerate(const scene::Mesh& mesh, std::size_t firstIndex) {
     if (a >= n || b >= n || c >= n || a == b || b == c || a == c)
         return true;
     const glm::vec3 &p0 = mesh.positions[a], &p1 = mesh.positions[b], &p2 = mesh.positions[c];
-    return !isFinite(p0) || !isFinite(p1) || !isFinite(p2) || !hasArea(p0, p1, p2);
+    return !isUsablePosition(p0) || !isUsablePosition(p1) || !isUsablePosition(p2) || !hasArea(p0, p1, p2);
 }
 
 } // namespace
@@ -50,14 +59,17 @@ void remapSubmeshes(std::vector<scene::Submesh>& submeshes, const std::vector<st
     std::vector<std::uint32_t> keptBefore(keep.size() + 1, 0);
     for (std::size_t t = 0; t < keep.size(); ++t)
         keptBefore[t + 1] = keptBefore[t] + keep[t];
-    const auto triangleAt = [&](std::uint64_t index) { return std::min<std::uint64_t>(index / 3, keep.size()); };
+    const auto triangleAt = [&](std::uint64_t index) {
+        return std::min<std::uint64_t>(index / 3, keep.size());
+    };
     std::vector<scene::Submesh> out;
     for (const scene::Submesh& s : submeshes) {
         const std::uint64_t first = triangleAt(s.firstIndex);
         const std::uint64_t end = triangleAt(std::uint64_t(s.firstIndex) + s.indexCount);
         const std::uint32_t count = keptBefore[end] - keptBefore[first];
         if (count > 0)
-            out.push_back({.firstIndex = 3 * keptBefore[first], .indexCount = 3 * count,
+            out.push_back({.firstIndex = 3 * keptBefore[first],
+                           .indexCount = 3 * count,
                            .materialIndex = s.materialIndex});
     }
     submeshes = std::move(out);

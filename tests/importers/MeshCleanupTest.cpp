@@ -38,7 +38,8 @@ Mesh makeMesh(std::vector<glm::vec3> positions, std::vector<std::uint32_t> indic
     m.name = "test";
     m.positions = std::move(positions);
     m.indices = std::move(indices);
-    m.submeshes.push_back({.firstIndex = 0, .indexCount = std::uint32_t(m.indices.size()), .materialIndex = 0});
+    m.submeshes.push_back(
+        {.firstIndex = 0, .indexCount = std::uint32_t(m.indices.size()), .materialIndex = 0});
     return m;
 }
 
@@ -104,14 +105,14 @@ void expectIdempotent(const Mesh& cleaned, const MeshCleanupOptions& options = {
 
 // OpenMesh reports rejected faces on std::cerr; the clean-up must never let it.
 class CerrCapture {
-public:
+  public:
     CerrCapture() : old_(std::cerr.rdbuf(text_.rdbuf())) {}
     ~CerrCapture() { std::cerr.rdbuf(old_); }
     CerrCapture(const CerrCapture&) = delete;
     CerrCapture& operator=(const CerrCapture&) = delete;
     std::string text() const { return text_.str(); }
 
-private:
+  private:
     std::ostringstream text_;
     std::streambuf* old_;
 };
@@ -174,12 +175,14 @@ Mesh uvSphere(int stacks = 16, int slices = 32) {
     for (int j = 0; j < slices; ++j) {
         m.indices.insert(m.indices.end(), {north[j], rings.front()[j], rings.front()[j + 1]});
         for (std::size_t r = 0; r + 1 < rings.size(); ++r) {
-            const std::uint32_t a = rings[r][j], b = rings[r + 1][j], c = rings[r + 1][j + 1], d = rings[r][j + 1];
+            const std::uint32_t a = rings[r][j], b = rings[r + 1][j], c = rings[r + 1][j + 1],
+                                d = rings[r][j + 1];
             m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
         }
         m.indices.insert(m.indices.end(), {rings.back()[j], south[j], rings.back()[j + 1]});
     }
-    m.submeshes.push_back({.firstIndex = 0, .indexCount = std::uint32_t(m.indices.size()), .materialIndex = 0});
+    m.submeshes.push_back(
+        {.firstIndex = 0, .indexCount = std::uint32_t(m.indices.size()), .materialIndex = 0});
     return m;
 }
 
@@ -206,7 +209,7 @@ TEST(MeshCleanup, WeldsAQuadMadeOfSixVertices) {
 
 TEST(MeshCleanup, VerticesThatDifferInAnyAttributeStaySeparate) {
     Mesh m = sixVertexQuad();
-    m.uvs[3] = {0.0f, 0.5f};          // a uv seam at corner (0, 0)
+    m.uvs[3] = {0.0f, 0.5f};                               // a uv seam at corner (0, 0)
     m.normals[4] = glm::normalize(glm::vec3(0, 0.01f, 1)); // a different normal at (1, 1)
     const MeshCleanupStats s = cleanupMesh(m);
     EXPECT_EQ(s.verticesWelded, 0u);
@@ -227,8 +230,9 @@ TEST(MeshCleanup, WeldOffKeepsEqualVerticesApart) {
 
 TEST(MeshCleanup, DropsVerticesNoTriangleUses) {
     // The six-vertex quad shifted up by one, with unused vertices 0 and 7.
-    Mesh m = makeMesh({{9, 9, 9}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}, {5, 5, 5}},
-                      {1, 2, 3, 4, 5, 6});
+    Mesh m =
+        makeMesh({{9, 9, 9}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}, {5, 5, 5}},
+                 {1, 2, 3, 4, 5, 6});
     m.normals.assign(8, glm::vec3(0, 0, 1));
     m.uvs = {{0.5f, 0.5f}, {0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}, {0.5f, 0.5f}};
     const MeshCleanupStats s = cleanupMesh(m);
@@ -246,21 +250,46 @@ TEST(MeshCleanup, DropsDegenerateTrianglesAndKeepsSubmeshRangesRight) {
     Mesh m = makeMesh({{0, 0, 0},
                        {1, 0, 0},
                        {0, 1, 0},
-                       {2, 0, 0},                // 3: collinear with 0 and 1
-                       {0.1f, 0.2f, 0.3f},       // 4, 5: collinear with 0 up to float rounding
+                       {2, 0, 0},          // 3: collinear with 0 and 1
+                       {0.1f, 0.2f, 0.3f}, // 4, 5: collinear with 0 up to float rounding
                        {0.3f, 0.6f, 0.9f},
-                       {kNaN, 0, 0},             // 6
-                       {0, kInf, 0},             // 7
+                       {kNaN, 0, 0}, // 6
+                       {0, kInf, 0}, // 7
                        {1, 1, 0}},
                       {});
     m.indices = {
-        0, 1, 2, /*repeated*/ 0, 1, 1, 1, 8, 2,                            // submesh 0: 2 of 3 survive
-        /*collinear*/ 0, 1, 3, /*rounded collinear*/ 0, 4, 5,              // submesh 1: none survives
-        /*NaN*/ 0, 6, 2, /*Inf*/ 7, 1, 2, /*out of range*/ 0, 1, 99, 2, 1, 8, // submesh 2: 1 of 4 survives
+        0,
+        1,
+        2,
+        /*repeated*/ 0,
+        1,
+        1,
+        1,
+        8,
+        2, // submesh 0: 2 of 3 survive
+        /*collinear*/ 0,
+        1,
+        3,
+        /*rounded collinear*/ 0,
+        4,
+        5, // submesh 1: none survives
+        /*NaN*/ 0,
+        6,
+        2,
+        /*Inf*/ 7,
+        1,
+        2,
+        /*out of range*/ 0,
+        1,
+        99,
+        2,
+        1,
+        8, // submesh 2: 1 of 4 survives
     };
     m.submeshes = {{0, 9, 4}, {9, 6, 5}, {15, 12, 6}};
-    const std::vector<std::vector<glm::vec3>> survivors = {
-        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 0}, {1, 0, 0}, {1, 1, 0}}};
+    const std::vector<std::vector<glm::vec3>> survivors = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                                           {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                                                           {{0, 1, 0}, {1, 0, 0}, {1, 1, 0}}};
     const MeshCleanupStats s = cleanupMesh(m);
     EXPECT_EQ(s.degenerateTrianglesDropped, 6u);
     ASSERT_EQ(m.triangleCount(), 3u);
@@ -285,11 +314,32 @@ TEST(MeshCleanup, MeshOfOnlyDegenerateTrianglesComesOutEmpty) {
     EXPECT_TRUE(m.submeshes.empty());
 }
 
+// A finite corner beyond +-1e18 (the bound of every length in a project)
+// made the scene's extent infinite; such triangles go like non-finite ones,
+// while one at 1e17 stays (found by fuzz_4ds's render check, issue #42).
+TEST(MeshCleanup, DropsTrianglesWithCornersBeyondTheLengthBound) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3e38f, 0, 0}, {1e17f, 0, 0}, {0, 1e17f, 0}},
+                      {0, 1, 3, 0, 4, 5, 0, 1, 2});
+    const MeshCleanupStats s = cleanupMesh(m);
+    EXPECT_EQ(s.degenerateTrianglesDropped, 1u);
+    EXPECT_EQ(m.triangleCount(), 2u);
+    for (const glm::vec3& p : m.positions)
+        EXPECT_LE(std::abs(p.x), 1e18f);
+    expectValidOutput(m);
+}
+
 TEST(MeshCleanup, KeepsThinButRealTriangles) {
     // Slivers of 1:1e3 and 1:1e5, a tiny triangle far from the origin, and a
     // triangle repeated with the same corners (double-sided export): all real.
-    Mesh m = makeMesh({{0, 0, 0}, {1000, 0, 0}, {500, 1, 0}, {0, 0, 1}, {1e5f, 0, 1}, {0, 1, 1},
-                       {1000, 1000, 1000}, {1000.001f, 1000, 1000}, {1000, 1000.001f, 1000}},
+    Mesh m = makeMesh({{0, 0, 0},
+                       {1000, 0, 0},
+                       {500, 1, 0},
+                       {0, 0, 1},
+                       {1e5f, 0, 1},
+                       {0, 1, 1},
+                       {1000, 1000, 1000},
+                       {1000.001f, 1000, 1000},
+                       {1000, 1000.001f, 1000}},
                       {0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2});
     const MeshCleanupStats s = cleanupMesh(m);
     EXPECT_EQ(s.degenerateTrianglesDropped, 0u);
@@ -392,9 +442,9 @@ TEST(MeshCleanup, NonManifoldFanKeepsEveryTriangle) {
 TEST(MeshCleanup, FaceAtAClosedFanIsKept) {
     // A closed fan around (0,0,0) leaves no gap there for a fifth face
     // ("complex vertex" in OpenMesh), plus a bow-tie at (1,0,0).
-    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {1, 0, 1},
-                       {2, 0, 0}, {2, 1, 0}},
-                      {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1, 0, 5, 6, 1, 7, 8});
+    Mesh m = makeMesh(
+        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {1, 0, 1}, {2, 0, 0}, {2, 1, 0}},
+        {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1, 0, 5, 6, 1, 7, 8});
     CerrCapture cerr;
     const MeshCleanupStats s = cleanupMesh(m);
     EXPECT_EQ(cerr.text(), "");
@@ -402,7 +452,8 @@ TEST(MeshCleanup, FaceAtAClosedFanIsKept) {
     ASSERT_EQ(m.triangleCount(), 6u);
     EXPECT_NEAR(glm::distance(m.normals[m.indices[12]], glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
     for (std::size_t i : {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 15, 16, 17})
-        EXPECT_NEAR(glm::distance(m.normals[m.indices[i]], glm::vec3(0, 0, 1)), 0.0f, 1e-6f) << "corner " << i;
+        EXPECT_NEAR(glm::distance(m.normals[m.indices[i]], glm::vec3(0, 0, 1)), 0.0f, 1e-6f)
+            << "corner " << i;
     expectValidOutput(m);
 }
 
@@ -446,10 +497,12 @@ TEST(MeshCleanup, PositionOnlyARejectedFaceUsesGetsItsFaceNormal) {
     const glm::vec3 tilted = faceNormal(m, 1); // (0, -sin 20, cos 20)
     EXPECT_NEAR(glm::dot(tilted, up), std::cos(glm::radians(20.0f)), 1e-6f);
     for (std::size_t k = 0; k < 3; ++k)
-        EXPECT_NEAR(glm::distance(m.normals[m.indices[k]], up), 0.0f, 1e-6f) << "first triangle, corner " << k;
+        EXPECT_NEAR(glm::distance(m.normals[m.indices[k]], up), 0.0f, 1e-6f)
+            << "first triangle, corner " << k;
     EXPECT_NEAR(glm::distance(m.normals[m.indices[5]], tilted), 0.0f, 1e-6f)
         << "the lone corner keeps its own face's normal";
-    for (std::size_t k = 3; k < 5; ++k) { // on the shared edge: smoothed with the first triangle (20 < 60 degrees)
+    for (std::size_t k = 3; k < 5;
+         ++k) { // on the shared edge: smoothed with the first triangle (20 < 60 degrees)
         const glm::vec3 n = m.normals[m.indices[k]];
         EXPECT_GT(glm::dot(n, up), glm::dot(tilted, up)) << "corner " << k;
         EXPECT_GT(glm::dot(n, tilted), glm::dot(up, tilted)) << "corner " << k;
@@ -507,7 +560,8 @@ TEST(MeshCleanup, MirroredUvsSplitTheSharedVerticesByHandedness) {
             EXPECT_EQ(tangent.w, w) << "triangle " << t;
             EXPECT_GT(glm::dot(glm::vec3(tangent), along), 0.9999f) << "triangle " << t;
             // w * cross(n, t) is the direction of increasing v: +y on both sides.
-            const glm::vec3 bitangent = tangent.w * glm::cross(m.normals[m.indices[3 * t + k]], glm::vec3(tangent));
+            const glm::vec3 bitangent =
+                tangent.w * glm::cross(m.normals[m.indices[3 * t + k]], glm::vec3(tangent));
             EXPECT_GT(bitangent.y, 0.9999f);
         }
     }
@@ -531,8 +585,7 @@ TEST(MeshCleanup, UvSphereTangentsAreRightHandedAndFollowU) {
 }
 
 TEST(MeshCleanup, DegenerateUvsStillGiveAValidTangent) {
-    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 0, 0}, {4, 0, 0}, {3, 0, 1}},
-                      {0, 1, 2, 3, 4, 5});
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 0, 0}, {4, 0, 0}, {3, 0, 1}}, {0, 1, 2, 3, 4, 5});
     m.uvs = {{0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0, 0}, {1, 1}, {2, 2}}; // a point, a line
     const MeshCleanupStats s = cleanupMesh(m);
     EXPECT_TRUE(s.tangentsGenerated);
@@ -613,9 +666,11 @@ TEST(MeshCleanup, RandomSoupsGiveValidDeterministicIdempotentOutput) {
 // ---- real data -------------------------------------------------------------
 
 TEST(MeshCleanup, SibenikKeepsEveryRealTriangleWithValidFrames) {
-    const std::filesystem::path file = std::filesystem::path(lpv::test::kSharedScenesDir) / "4ds" / "sibenik.4ds";
+    const std::filesystem::path file =
+        std::filesystem::path(lpv::test::kSharedScenesDir) / "4ds" / "sibenik.4ds";
     std::ifstream in(file, std::ios::binary);
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                          std::istreambuf_iterator<char>());
     ASSERT_FALSE(bytes.empty()) << file;
     const auto r = lpv::importers::readFourDs(bytes, file, {});
     ASSERT_TRUE(r.has_value()) << r.error().describe();
