@@ -135,14 +135,21 @@ void makeNamesUtf8(const std::filesystem::path& file, ImportResult& result) {
                                   " name(s) were not UTF-8 and were read as Windows-1250");
 }
 
-// The same clean-up for every format, then the summary's counts.
-void finishImport(const std::filesystem::path& file, ImportResult& result) {
+// Every importer's result gets the same repairs, each with a warning naming
+// the file.
+void repairImportedValues(const std::filesystem::path& file, ImportResult& result) {
     makeNamesUtf8(file, result);
     clampNegativeColours(file, result);
     // Values a project would refuse as products (ValueChecks.h) are repaired
     // here with a warning: a parallel up vector must not cost the whole file.
     for (const std::string& note : scene::repairSceneValues(result.scene))
         result.warnings.push_back(file.string() + ": " + note);
+}
+
+} // namespace
+
+void finishImport(const std::filesystem::path& file, ImportResult& result) {
+    repairImportedValues(file, result);
     std::size_t repairedNormals = 0;
     for (scene::Mesh& mesh : result.scene.meshes) {
         const MeshCleanupStats s = cleanupMesh(mesh);
@@ -150,9 +157,10 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
         repairedNormals += s.invalidNormalsRepaired;
     }
     if (result.stats.degenerateTrianglesDropped > 0)
-        result.warnings.push_back(
-            file.string() + ": " + std::to_string(result.stats.degenerateTrianglesDropped) +
-            " degenerate triangle(s) (zero area, repeated or non-finite corners) dropped");
+        result.warnings.push_back(file.string() + ": " +
+                                  std::to_string(result.stats.degenerateTrianglesDropped) +
+                                  " degenerate triangle(s) (zero area, repeated corners, or corners not "
+                                  "finite or beyond +-1e18) dropped");
     if (repairedNormals > 0)
         result.warnings.push_back(file.string() + ": " + std::to_string(repairedNormals) +
                                   " invalid normal(s) (zero length or non-finite) recomputed");
@@ -161,8 +169,6 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
     result.stats.triangles = result.scene.triangleCount();
     result.stats.materials = result.scene.materials.size();
 }
-
-} // namespace
 
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options) {
     const auto start = std::chrono::steady_clock::now();

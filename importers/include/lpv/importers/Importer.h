@@ -55,6 +55,15 @@ struct ImportResult {
 // tangents). Texture paths in the result are absolute where the file was
 // found and may be read (importReadRoots), else the stored name's last
 // component (counted and warned about): never a path that leads elsewhere.
-scene::Expected<ImportResult> importScene(const std::filesystem::path& file, const ImportOptions& options = {});
+scene::Expected<ImportResult> importScene(const std::filesystem::path& file,
+                                          const ImportOptions& options = {});
+
+// What importScene does to every importer's result after reading it, each
+// step with a warning naming `file`: names that are not UTF-8 read as
+// Windows-1250, negative colours set to 0, values a project would refuse as
+// products repaired (ValueRepair.h), every mesh cleaned (cleanupMesh),
+// emissive panels made area lights, the counts filled in. For callers of one
+// importer's reader (the fuzz targets).
+void finishImport(const std::filesystem::path& file, ImportResult& result);
 
 } // namespace lpv::importers
