@@ -12,15 +12,8 @@
 namespace lpv::radiosity {
 namespace {
 
-// Off the surface by a little more than float rounding at this distance from
-// the origin (as the path tracer offsets its rays).
-glm::vec3 offsetAlong(const glm::vec3& p, const glm::vec3& n) {
-    const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    return p + n * (2e-5f * scale);
-}
-
 struct ShooterSamples {
-    std::vector<glm::vec3> points; // already lifted off the shooter
+    std::vector<glm::vec3> points; // in Embree's frame, already lifted off the shooter (EmbreeScene::offsetOrigin)
     glm::vec3 normal{0.0f};
     float pieceArea = 0.0f; // A_i / S
     float area = 0.0f;
@@ -57,7 +50,7 @@ scene::Expected<void> RayCastFormFactors::compute(std::span<const std::uint32_t>
         const Patch& p = mesh_.patches[shooters[s]];
         ShooterSamples& out = shots[s];
         for (const glm::vec3& q : patchSamplePoints(p, samples_))
-            out.points.push_back(offsetAlong(q, p.normal));
+            out.points.push_back(embree_->offsetOrigin(embree_->toFrame(q), p.normal));
         out.normal = p.normal;
         out.area = p.area;
         out.pieceArea = p.area / float(out.points.size());
@@ -66,7 +59,7 @@ scene::Expected<void> RayCastFormFactors::compute(std::span<const std::uint32_t>
     forEachChunk(n, 512, [&](std::size_t begin, std::size_t end) {
         for (std::size_t j = begin; j < end; ++j) {
             const Patch& r = mesh_.patches[j];
-            const glm::vec3 origin = offsetAlong(r.center, r.normal);
+            const glm::vec3 origin = embree_->offsetOrigin(embree_->toFrame(r.center), r.normal);
             for (std::size_t s = 0; s < shots.size(); ++s) {
                 if (shooters[s] == j)
                     continue;

@@ -42,6 +42,8 @@ struct EmbreeScene::Impl {
     };
     std::vector<Emitter> emitters;
     std::vector<float> emitterCdf;
+    glm::dvec3 origin{0.0};
+    float extent = 0.0f;
 
     ~Impl() {
         if (scene)
@@ -76,7 +78,8 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                                 !m.alphaTexture.empty());
     }
 
-    std::vector<glm::vec3> positions;
+    // World corners in double first: the frame's origin comes from their bounds.
+    std::vector<glm::dvec3> corners;
     const std::vector<glm::mat4> worlds = scene::worldMatrices(s); // linear in any parent chain
     for (std::size_t o = 0; o < s.objects.size(); ++o) {
         const scene::Object& object = s.objects[o];
@@ -88,7 +91,8 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
         auto addRange = [&](std::uint32_t first, std::uint32_t count, int material) {
             for (std::uint32_t k = first; k + 3 <= std::size_t(first) + count && k + 3 <= mesh.indices.size();
                  k += 3) {
-                glm::vec3 p[3];
+                glm::vec3 p[3]; // world, for the area-light test
+                glm::dvec3 pd[3];
                 glm::vec3 n[3];
                 glm::vec2 uv[3];
                 bool ok = true;
@@ -99,16 +103,20 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                         break;
                     }
                     p[c] = glm::vec3(world * glm::vec4(mesh.positions[vi], 1.0f));
+                    pd[c] = glm::dvec3(glm::dmat4(world) * glm::dvec4(glm::dvec3(mesh.positions[vi]), 1.0));
                     n[c] = vi < mesh.normals.size() ? normalMatrix * mesh.normals[vi] : glm::vec3(0.0f);
                     uv[c] = vi < mesh.uvs.size() ? mesh.uvs[vi] : glm::vec2(0.0f);
                     ok = ok && finite(p[c]);
                 }
                 // Non-finite or degenerate triangles are left out rather than poisoning the BVH.
-                if (!ok || glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) <= 0.0f)
+                // Edges in double: far from the origin the float corners are
+                // rounded to millimetres and a small triangle would collapse.
+                const glm::dvec3 cross = glm::cross(pd[1] - pd[0], pd[2] - pd[0]);
+                if (!ok || !(glm::length(glm::vec3(cross)) > 0.0f))
                     continue;
-                const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+                const glm::vec3 face = glm::vec3(glm::normalize(cross));
                 for (int c = 0; c < 3; ++c) {
-                    positions.push_back(p[c]);
+                    corners.push_back(pd[c]);
                     const float len = glm::length(n[c]);
                     d.normals.push_back(std::isfinite(len) && len > 0.0f ? n[c] / len : face);
                     d.uvs.push_back(uv[c]);
@@ -118,11 +126,12 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
                     const scene::Material& mat = s.materials[std::size_t(m)];
                     const float luminance =
                         0.2126f * mat.emissive.r + 0.7152f * mat.emissive.g + 0.0722f * mat.emissive.b;
-                    const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+                    const float area = float(0.5 * glm::length(cross));
                     // An area light's visible surface is sampled as that light, not again as an emitter.
                     if (luminance > 0.0f && std::isfinite(luminance) && std::isfinite(area) &&
                         !scene::liesOnAnAreaLight(s.lights, p[0], p[1], p[2])) {
-                        d.emitters.push_back({p[0], p[1], p[2], unsigned(d.triangleMaterial.size() - 1), area});
+                        // Corners are filled in once the frame is known.
+                        d.emitters.push_back({{}, {}, {}, unsigned(d.triangleMaterial.size() - 1), area});
                         d.emitterCdf.push_back((d.emitterCdf.empty() ? 0.0f : d.emitterCdf.back()) +
                                                area * luminance);
                     }
@@ -133,6 +142,30 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
             addRange(0, std::uint32_t(mesh.indices.size()), -1);
         for (const scene::Submesh& sub : mesh.submeshes)
             addRange(sub.firstIndex, sub.indexCount, int(sub.materialIndex));
+    }
+
+    // The frame: the bounds' centre snapped to a grid of the power of two at
+    // or above the extent. A scene around the world origin keeps origin 0
+    // (bit for bit the coordinates it always had); one 100 km away is moved
+    // by an exact multiple of that power of two.
+    if (!corners.empty()) {
+        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+        for (const glm::dvec3& c : corners) {
+            lo = glm::min(lo, c);
+            hi = glm::max(hi, c);
+        }
+        const double side = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+        const double grid = side > 0.0 ? std::exp2(std::ceil(std::log2(side))) : 1.0;
+        d.origin = glm::round(0.5 * (lo + hi) / grid) * grid;
+        d.extent = float(side);
+    }
+    std::vector<glm::vec3> positions(corners.size());
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        positions[i] = glm::vec3(corners[i] - d.origin);
+    for (Impl::Emitter& e : d.emitters) {
+        e.p0 = positions[3 * std::size_t(e.prim)];
+        e.p1 = positions[3 * std::size_t(e.prim) + 1];
+        e.p2 = positions[3 * std::size_t(e.prim) + 2];
     }
 
     d.scene = rtcNewScene(d.device);
@@ -264,6 +297,27 @@ SurfaceSample EmbreeScene::surface(const Hit& hit) const {
 
 std::size_t EmbreeScene::triangleCount() const {
     return impl_->triangleMaterial.size();
+}
+
+const glm::dvec3& EmbreeScene::frameOrigin() const {
+    return impl_->origin;
+}
+
+glm::vec3 EmbreeScene::toFrame(const glm::vec3& world) const {
+    return glm::vec3(glm::dvec3(world) - impl_->origin);
+}
+
+float EmbreeScene::extent() const {
+    return impl_->extent;
+}
+
+glm::vec3 EmbreeScene::offsetOrigin(const glm::vec3& p, const glm::vec3& n) const {
+    // 2e-5 is about 170 float ulps of the scale: far above the rounding of a
+    // hit, far below the thickness of real walls (a 1 mm gap 50 m from the
+    // frame's centre is still not jumped). The extent / 8 floor covers hits
+    // near the frame's centre, whose rounding comes from the ray's length.
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 0.125f * impl_->extent});
+    return p + n * (2e-5f * scale);
 }
 
 bool EmbreeScene::hasEmitters() const {

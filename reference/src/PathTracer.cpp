@@ -25,15 +25,6 @@ float smoothstep(float e0, float e1, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
-// Secondary rays start this far off the surface: a few hundred float ulps of
-// the position, so they cannot hit their own triangle again, yet far below
-// the thickness of real walls (a fixed fraction of the scene's size would
-// jump a 1 mm gap in a 100 m scene and leak light).
-glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n) {
-    const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    return p + n * (2e-5f * scale);
-}
-
 // Welford's running mean and M2, per channel.
 struct Welford {
     glm::vec3 mean{0.0f};
@@ -56,7 +47,16 @@ PathTracer::PathTracer(const EmbreeScene& embree, const scene::Scene& scene, con
                        PathTracerSettings settings)
     : embree_(embree), scene_(scene), settings_(settings) {
     const float aspect = float(settings_.width) / float(std::max(settings_.height, 1));
-    cameraRays_ = CameraRays(camera, aspect);
+    // Rays are traced in Embree's frame (EmbreeScene.h): the camera and the
+    // lights move into it once, in double, so a scene far from the origin is
+    // traced as one at the origin.
+    scene::Camera framed = camera;
+    framed.position = embree.toFrame(camera.position);
+    framed.target = embree.toFrame(camera.target);
+    cameraRays_ = CameraRays(framed, aspect);
+    lights_ = scene.lights;
+    for (scene::Light& light : lights_)
+        light.position = embree.toFrame(light.position);
     // ForwardRenderer clears to the sky colour times its intensity.
     background_ = scene.sky.color * scene.sky.intensity;
 }
@@ -78,10 +78,11 @@ glm::vec3 PathTracer::areaLightIrradiance(const scene::Light& light, const glm::
     } else {
         q = f.center + (2.0f * u - 1.0f) * f.halfU + (2.0f * w - 1.0f) * f.halfV;
     }
-    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    const glm::vec3 origin = embree_.offsetOrigin(p, offsetNormal);
     const glm::vec3 d = q - origin;
     const float dist2 = glm::dot(d, d);
-    if (!(dist2 > 1e-20f))
+    // A float guard only (1 / dist2 must stay finite), not a length: it holds at any scale.
+    if (!(dist2 >= std::numeric_limits<float>::min()))
         return glm::vec3(0.0f);
     const float dist = std::sqrt(dist2);
     l = d / dist;
@@ -101,7 +102,7 @@ glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3
     if (light.type == scene::LightType::Area)
         return areaLightIrradiance(light, p, offsetNormal, n, l, rng);
     glm::vec3 irradiance = light.color * light.intensity;
-    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    const glm::vec3 origin = embree_.offsetOrigin(p, offsetNormal);
     float maxT = std::numeric_limits<float>::infinity();
     if (light.type == scene::LightType::Directional) {
         l = -glm::normalize(light.direction);
@@ -111,6 +112,8 @@ glm::vec3 PathTracer::lightIrradiance(const scene::Light& light, const glm::vec3
         if (dist <= 0.0f)
             return glm::vec3(0.0f);
         l = d / dist;
+        // The 1e-8 m^2 clamp of the inverse square is forward.frag's, kept so
+        // the direct parts agree; it only bites within 0.1 mm of a point light.
         float atten = 1.0f / std::max(dist * dist, 1e-8f);
         if (light.range > 0.0f) {
             // Smooth window to zero at the range (glTF convention, as forward.frag).
@@ -138,10 +141,11 @@ glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& off
         return glm::vec3(0.0f);
     const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
     const EmitterSample e = embree_.sampleEmitter(pick, u1, u2);
-    const glm::vec3 origin = offsetOrigin(p, offsetNormal);
+    const glm::vec3 origin = embree_.offsetOrigin(p, offsetNormal);
     const glm::vec3 d = e.position - origin;
     const float dist2 = glm::dot(d, d);
-    if (e.pdfArea <= 0.0f || dist2 <= 1e-12f || e.radiance == glm::vec3(0.0f))
+    // dist2: a float guard only (1 / dist2 must stay finite), not a length.
+    if (e.pdfArea <= 0.0f || !(dist2 >= std::numeric_limits<float>::min()) || e.radiance == glm::vec3(0.0f))
         return glm::vec3(0.0f);
     const float dist = std::sqrt(dist2);
     const glm::vec3 l = d / dist;
@@ -160,12 +164,17 @@ glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& off
 
 glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
                                        Rng* rng) const {
+    return directIrradianceInFrame(embree_.toFrame(p), offsetNormal, n, rng);
+}
+
+glm::vec3 PathTracer::directIrradianceInFrame(const glm::vec3& p, const glm::vec3& offsetNormal,
+                                              const glm::vec3& n, Rng* rng) const {
     Rng seeded(std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
                std::bit_cast<std::uint32_t>(p.z));
     Rng& r = rng ? *rng : seeded;
     glm::vec3 e(0.0f);
     glm::vec3 l;
-    for (const scene::Light& light : scene_.lights)
+    for (const scene::Light& light : lights_)
         e += lightIrradiance(light, p, offsetNormal, n, l, r);
     return e;
 }
@@ -191,7 +200,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
     const glm::vec3 v = -dir;
     // Direct light with the renderer's full BRDF (brdf.glsl), so the direct parts agree.
     glm::vec3 radiance = s.emissive;
-    for (const scene::Light& light : scene_.lights) {
+    for (const scene::Light& light : lights_) {
         glm::vec3 l;
         const glm::vec3 e = lightIrradiance(light, h.position, h.geometricNormal, h.shadingNormal, l, rng);
         if (e != glm::vec3(0.0f))
@@ -217,7 +226,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
         if (glm::dot(w, ng) <= 0.0f)
             break; // below the true surface: the shading normal leans past the face
         const auto hit =
-            embree_.intersect(offsetOrigin(pos, ng), w, 0.0f, std::numeric_limits<float>::infinity());
+            embree_.intersect(embree_.offsetOrigin(pos, ng), w, 0.0f, std::numeric_limits<float>::infinity());
         if (!hit) {
             const glm::vec3 sky = throughput * escapedRadiance();
             multi += sky;
@@ -229,7 +238,7 @@ PixelSample PathTracer::samplePixel(int x, int y, int sampleIndex) const {
         // Every light's direct light at this vertex, reflected here: `depth` reflections in all.
         const glm::vec3 lit =
             hs.diffuse / kPi *
-            (directIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, &rng) +
+            (directIrradianceInFrame(hit->position, hit->geometricNormal, hit->shadingNormal, &rng) +
              emitterIrradiance(hit->position, hit->geometricNormal, hit->shadingNormal, rng));
         multi += throughput * lit;
         if (depth == 1)

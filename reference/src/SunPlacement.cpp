@@ -17,7 +17,11 @@ struct ViewPoint {
 };
 
 std::vector<ViewPoint> viewPoints(const EmbreeScene& embree, const scene::Camera& camera, int gridW, int gridH) {
-    const CameraRays rays(camera, float(gridW) / float(gridH));
+    // The camera in Embree's frame (EmbreeScene.h), where the hits are.
+    scene::Camera framed = camera;
+    framed.position = embree.toFrame(camera.position);
+    framed.target = embree.toFrame(camera.target);
+    const CameraRays rays(framed, float(gridW) / float(gridH));
     std::vector<ViewPoint> out;
     for (int y = 0; y < gridH; ++y)
         for (int x = 0; x < gridW; ++x) {
@@ -44,7 +48,7 @@ SunChoice share(const EmbreeScene& embree, const std::vector<ViewPoint>& points,
     for (const ViewPoint& p : points) {
         if (glm::dot(p.normal, toSun) <= 0.0f)
             continue;
-        const glm::vec3 origin = p.position + p.normal * (1e-4f * (1.0f + glm::length(p.position)));
+        const glm::vec3 origin = embree.offsetOrigin(p.position, p.normal);
         lit += embree.occluded(origin, toSun, 0.0f, std::numeric_limits<float>::infinity()) ? 0 : 1;
     }
     c.litFraction = points.empty() ? 0.0f : float(lit) / float(points.size());

@@ -3,6 +3,14 @@
 // geometry for every visible object, with per-triangle material and the
 // vertex normals and UVs needed to shade a hit. Alpha-masked materials are
 // cut out by an intersection filter, like the renderer's discard.
+//
+// Lengths that scale (issue #41, docs/reference.md): the triangles are kept
+// relative to frameOrigin(), a point near the scene's centre computed in
+// double, so a scene 100 km from the world origin is traced with the float
+// precision it has at the origin. Every position this class takes or gives
+// (ray origins, hits, emitter samples) is in that frame; toFrame() converts.
+// Ray origins are lifted off surfaces by offsetOrigin(), relative to the
+// hit's magnitude in that frame with a floor relative to the scene's extent.
 #include "lpv/reference/SurfaceLookup.h"
 #include "lpv/scene/Error.h"
 #include "lpv/scene/Image.h"
@@ -62,6 +70,21 @@ class EmbreeScene {
     SurfaceSample surface(const Hit& hit) const;
 
     std::size_t triangleCount() const;
+
+    // The world point the frame's coordinates are measured from: the centre of
+    // the scene's bounds snapped to a power-of-two grid as coarse as the
+    // scene's extent, so a scene around the world origin keeps origin 0 (its
+    // coordinates unchanged) and a far one is moved by an exact amount.
+    const glm::dvec3& frameOrigin() const;
+    // A world position (or a light's, a camera's) in the frame, computed in double.
+    glm::vec3 toFrame(const glm::vec3& world) const;
+    // The largest side of the scene's bounds (0 for an empty scene).
+    float extent() const;
+    // A secondary ray's origin: p lifted along the unit normal n by 2e-5 of
+    // max(|p|, extent / 8) (p in the frame). Float rounding of a hit grows
+    // with its magnitude and with the ray's length, which is at most the
+    // extent; no metre constant, so a 1 cm and a 1 km scene are lifted alike.
+    glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n) const;
 
     // Emissive triangles (materials with emission), picked in proportion to
     // area x emitted luminance, then a uniform point on the one picked.

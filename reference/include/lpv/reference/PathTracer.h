@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <functional>
+#include <vector>
 
 namespace lpv::reference {
 
@@ -65,7 +66,7 @@ class PathTracer {
 
     // Sample `sampleIndex` of pixel (x, y) (rows from the top); deterministic.
     PixelSample samplePixel(int x, int y, int sampleIndex) const;
-    // Irradiance the scene's lights deliver at p with normal n (shadow rays included).
+    // Irradiance the scene's lights deliver at the world point p with normal n (shadow rays included).
     // Area lights are sampled at one point drawn from `rng` (an unbiased estimate);
     // without one, from a generator seeded by p, so the call stays deterministic.
     glm::vec3 directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
@@ -75,10 +76,14 @@ class PathTracer {
     const EmbreeScene& embree_;
     const scene::Scene& scene_;
     PathTracerSettings settings_;
-    CameraRays cameraRays_;
+    CameraRays cameraRays_;               // in the EmbreeScene's frame
+    std::vector<scene::Light> lights_;    // the scene's lights, positions in that frame
     glm::vec3 background_{0.0f};
 
     glm::vec3 escapedRadiance() const;
+    // directIrradiance at p in the EmbreeScene's frame.
+    glm::vec3 directIrradianceInFrame(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
+                                      Rng* rng) const;
     // With reference.emissiveLight: the irradiance emissive surfaces deliver at
     // p toward n, estimated from one point sampled on them (next-event
     // estimation; paths that hit an emitter by chance then add nothing, so
