@@ -2,14 +2,18 @@
 #include "lpv/app/ImportDefaults.h"
 
 
+#include "lpv/importers/ImportUnits.h"
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectTextures.h"
 #include "lpv/scene/SaveCleanup.h"
 #include "lpv/scene/SceneMerge.h"
 
+#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace lpv::cli {
@@ -31,8 +35,22 @@ and drawn as a placeholder instead of failing the import.
   --texture-path DIR        Also look for textures in DIR (and DIR/maps); repeatable
   --allow-path DIR          Let the scene (and an existing PROJECT) name files in
                             DIR too; repeatable (see "What a scene may read")
+  --unit mm|cm|m|in|ft      The unit the files are in; every length is scaled into
+                            metres (vertices, translations, lights, cameras, paths)
+  --scale S                 The same as metres per unit (S > 0), e.g. --scale 0.01
+                            for centimetres; --unit and --scale exclude each other
   --no-sun                  Do not add a sun when the project ends up without lights
   --verbose                 Print every warning (default: the first 20)
+
+Units: without --unit or --scale a file is read in the unit it states (glTF
+and Mafia 4ds: metres; FBX: its UnitScaleFactor; Collada: its <unit>), and
+in metres when it states none; the scale is printed with the file's line.
+When the size of a scene without a stated unit suggests another (over 1,000
+units along a side, at least 100 along every side, or under 0.05), a note
+says which --unit to try. The new files' lengths are scaled only, never a
+project's earlier content. Meshes far from their origin compared with their
+size are stored relative to their centre, the offset moved into their
+objects' translations, which keeps float precision 100 km away.
 
 What a scene may read: files it names (textures, glTF buffers) are read
 only from the scene file's folder, its maps/ and ../maps/ folders, each
@@ -63,6 +81,23 @@ std::string withCommas(std::size_t n) {
     return out;
 }
 
+// A whole argument that is a finite number above 0, or nothing.
+std::optional<double> parseScale(const std::string& text) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(begin, &end);
+    if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value) || value <= 0.0)
+        return std::nullopt;
+    return value;
+}
+
+std::string factorText(double f) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", f);
+    return text;
+}
+
 std::string seconds(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f s", s);
@@ -74,7 +109,12 @@ void printSummary(const fs::path& file, const importers::ImportResult& r, bool v
     std::cout << file.string() << ": " << withCommas(s.objects) << " objects, " << withCommas(s.triangles)
               << " triangles, " << s.materials << " materials, textures " << s.texturesFound << " found / "
               << s.texturesMissing << " missing, " << s.degenerateTrianglesDropped
-              << " degenerate triangles dropped, " << seconds(s.seconds) << "\n";
+              << " degenerate triangles dropped, " << seconds(s.seconds);
+    // The scale into metres, when there was one or the user named the unit.
+    const importers::AppliedScale& scale = s.lengthScale;
+    if (scale.factor != 1.0 || scale.knew == importers::UnitKnowledge::GivenByUser)
+        std::cout << "; lengths x" << factorText(scale.factor) << " into metres (" << scale.source << ")";
+    std::cout << "\n";
     for (const std::string& note : r.notes)
         std::cout << "  " << note << "\n";
     const std::size_t shown = verbose ? r.warnings.size() : std::min<std::size_t>(r.warnings.size(), 20);
@@ -106,12 +146,28 @@ int runImport(Args args) {
         options.textureSearchPaths.emplace_back(dir);
     for (const std::string& dir : args.options("--allow-path"))
         options.allowPaths.emplace_back(dir);
+    const auto unit = args.option("--unit");
+    const auto scale = args.option("--scale");
     const bool noSun = args.flag("--no-sun");
     const bool verbose = args.flag("--verbose");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "import");
     if (auto unknown = args.unknownOption())
         return usageError("unknown option '" + *unknown + "'", "import");
+    if (unit && scale)
+        return usageError("--unit and --scale both say what a unit of the file is: give one", "import");
+    if (unit) {
+        options.metresPerUnit = importers::metresPerUnit(*unit);
+        if (!options.metresPerUnit)
+            return usageError("--unit '" + *unit + "' is not one of " + importers::unitNames(), "import");
+        options.unitSource = "--unit " + *unit;
+    }
+    if (scale) {
+        options.metresPerUnit = parseScale(*scale);
+        if (!options.metresPerUnit)
+            return usageError("--scale '" + *scale + "' is not a finite number above 0", "import");
+        options.unitSource = "--scale " + *scale;
+    }
     const auto inputs = args.positionals();
     if (inputs.empty())
         return usageError("no file to import", "import");

@@ -7,6 +7,7 @@
 #include "TextureResolver.h"
 
 #include "lpv/scene/ProjectLimits.h"
+#include "lpv/scene/SceneScale.h"
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
@@ -20,7 +21,11 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -499,6 +504,79 @@ class RootedIOSystem : public Assimp::DefaultIOSystem {
     std::string refusal_;
 };
 
+// ---- units ---------------------------------------------------------------
+
+std::string numberText(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return text;
+}
+
+// A metadata number of any of the types Assimp stores numbers as.
+std::optional<double> metadataNumber(const aiScene& in, const char* key) {
+    if (!in.mMetaData)
+        return std::nullopt;
+    const aiMetadata& md = *in.mMetaData;
+    for (unsigned i = 0; i < md.mNumProperties; ++i) {
+        if (std::string_view(md.mKeys[i].C_Str()) != key || !md.mValues[i].mData)
+            continue;
+        const void* data = md.mValues[i].mData;
+        switch (md.mValues[i].mType) {
+        case AI_DOUBLE:
+            return *static_cast<const double*>(data);
+        case AI_FLOAT:
+            return double(*static_cast<const float*>(data));
+        case AI_INT32:
+            return double(*static_cast<const std::int32_t*>(data));
+        case AI_UINT64:
+            return double(*static_cast<const std::uint64_t*>(data));
+        default:
+            return std::nullopt;
+        }
+    }
+    return std::nullopt;
+}
+
+// FBX's GlobalSettings UnitScaleFactor: centimetres per unit of the file
+// (1 for centimetres, 100 for metres). Assimp 5.2 reports it as metadata
+// and leaves the vertices in the file's unit (we do not ask it to scale).
+std::optional<StatedUnit> fbxUnit(const aiScene& in) {
+    const std::optional<double> cm = metadataNumber(in, "UnitScaleFactor");
+    if (!cm || !std::isfinite(*cm) || *cm <= 0.0)
+        return std::nullopt;
+    static constexpr std::pair<double, const char*> kNames[] = {
+        {0.1, "millimetres"}, {1.0, "centimetres"}, {2.54, "inches"},  {30.48, "feet"},
+        {91.44, "yards"},     {100.0, "metres"},    {1e5, "kilometres"}};
+    std::string name = numberText(*cm) + " cm per unit";
+    for (const auto& [value, unit] : kNames)
+        if (std::abs(*cm - value) <= 1e-6 * value)
+            name = unit;
+    return StatedUnit{*cm * 0.01, "the file's UnitScaleFactor " + numberText(*cm) + ": " + name};
+}
+
+// Collada's <unit meter="..."/> in its <asset>, at the top of the file. Assimp
+// applies it to the root node itself; nothing when the file names none.
+std::optional<double> colladaUnitMetres(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::string head(std::size_t(256) << 10, '\0');
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(std::size_t(in.gcount()));
+    const std::size_t unit = head.find("<unit");
+    if (unit == std::string::npos)
+        return std::nullopt;
+    const std::size_t end = head.find('>', unit);
+    const std::string tag = head.substr(unit, end == std::string::npos ? std::string::npos : end - unit);
+    const std::size_t meter = tag.find("meter=");
+    if (meter == std::string::npos || meter + 7 >= tag.size())
+        return std::nullopt;
+    const char* begin = tag.c_str() + meter + 7; // past the quote
+    char* stop = nullptr;
+    const double metres = std::strtod(begin, &stop);
+    if (stop == begin || !std::isfinite(metres) || metres <= 0.0)
+        return std::nullopt;
+    return metres;
+}
+
 } // namespace
 
 bool assimpReads(const std::filesystem::path& file) {
@@ -568,6 +646,20 @@ scene::Expected<ImportResult> importWithAssimp(const std::filesystem::path& file
 
     result.stats.texturesFound = textures.foundCount();
     result.stats.texturesMissing = textures.missingCount();
+    if (auto unit = fbxUnit(*in)) {
+        result.statedUnit = std::move(*unit);
+    } else if (hasExtension(file.string(), ".dae")) {
+        const std::optional<double> metres = colladaUnitMetres(file);
+        const std::string how = metres ? "the file's Collada <unit meter=\"" + numberText(*metres) + "\">"
+                                       : "Collada is in metres when it names no <unit>";
+        if (options.metresPerUnit && metres && *metres != 1.0) {
+            // The user's unit replaces the file's, which Assimp already applied.
+            scene::scaleSceneLengths(result.scene, 1.0 / *metres, {.cameraPlanes = false});
+            result.statedUnit = StatedUnit{*metres, how};
+        } else {
+            result.statedUnit = StatedUnit{1.0, how};
+        }
+    }
     return result;
 }
 

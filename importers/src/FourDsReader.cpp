@@ -856,7 +856,9 @@ scene::Expected<ImportResult> readFourDs(std::span<const std::uint8_t> bytes, co
     // anything else (out of memory) still becomes an error value.
     try {
         FourDsParser parser(bytes, file, options);
-        return parser.parse();
+        ImportResult result = parser.parse();
+        result.statedUnit = StatedUnit{1.0, "Mafia 4ds is in metres"};
+        return result;
     } catch (const FormatError& e) {
         return scene::makeError(e.code(), file.string(), "byte offset " + std::to_string(e.offset()),
                                 e.message());

@@ -520,6 +520,8 @@ scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, cons
     if (auto numbers = checkNodeNumbers(model, file); !numbers)
         return std::unexpected(numbers.error());
     ImportResult result;
+    result.statedUnit = StatedUnit{1.0, "glTF is in metres by its spec"};
+    result.cameraPlanesFromFile = true; // znear/zfar, in the file's metres
     if (const std::string own = withoutImageFileLines(warn); !own.empty())
         result.warnings.push_back(file.string() + ": " + own);
     Context ctx{model, file, result, embedded, roots};

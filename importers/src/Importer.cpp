@@ -9,11 +9,14 @@
 
 #include "EmissiveLamps.h"
 #include "lpv/scene/Project.h"
+#include "lpv/scene/SceneScale.h"
 #include "lpv/scene/ValueRepair.h"
 
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace lpv::importers {
@@ -146,6 +149,42 @@ void repairImportedValues(const std::filesystem::path& file, ImportResult& resul
         result.warnings.push_back(file.string() + ": " + note);
 }
 
+std::string factorText(double f) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", f);
+    return text;
+}
+
+// The user's unit replaces the file's; the file's is read in; else metres.
+AppliedScale chooseLengthScale(const ImportOptions& options, const ImportResult& result) {
+    AppliedScale applied;
+    if (options.metresPerUnit) {
+        applied.factor = *options.metresPerUnit;
+        applied.source = options.unitSource.empty() ? "--scale " + factorText(applied.factor) : options.unitSource;
+        applied.knew = UnitKnowledge::GivenByUser;
+    } else if (result.statedUnit) {
+        applied.factor = result.statedUnit->metresPerUnit;
+        applied.source = result.statedUnit->how;
+        applied.knew = UnitKnowledge::StatedByFile;
+    }
+    return applied;
+}
+
+// Every length into metres before the clean-up and the repairs, so that
+// they (and the emissive panels' notes in metres) see the scene as it stays.
+void applyLengthScale(const ImportOptions& options, ImportResult& result) {
+    const AppliedScale applied = chooseLengthScale(options, result);
+    if (options.metresPerUnit && result.statedUnit &&
+        std::abs(result.statedUnit->metresPerUnit - *options.metresPerUnit) > 1e-9 * *options.metresPerUnit)
+        result.notes.push_back(applied.source + " replaces the unit the file states (" + result.statedUnit->how +
+                               ")");
+    scene::SceneScaleParts parts;
+    // Clip planes are lengths of the file only where its reader set them.
+    parts.cameraPlanes = result.cameraPlanesFromFile;
+    scene::scaleSceneLengths(result.scene, applied.factor, parts);
+    result.stats.lengthScale = applied;
+}
+
 } // namespace
 
 void finishImport(const std::filesystem::path& file, ImportResult& result) {
@@ -165,6 +204,13 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
         result.warnings.push_back(file.string() + ": " + std::to_string(repairedNormals) +
                                   " invalid normal(s) (zero length or non-finite) recomputed");
     addAreaLightsForEmissivePanels(result.scene, result.notes);
+    const RecentreStats recentred = recentreFarMeshes(result.scene);
+    result.stats.meshesRecentred = recentred.meshes;
+    if (recentred.meshes > 0)
+        result.notes.push_back(std::to_string(recentred.meshes) + (recentred.meshes == 1 ? " mesh" : " meshes") +
+                               " far from the origin (up to " + factorText(recentred.farthest) +
+                               " m) stored relative to " + (recentred.meshes == 1 ? "its" : "their") +
+                               " centre, the offset moved into the objects' translations (float precision)");
     result.stats.objects = result.scene.objects.size();
     result.stats.triangles = result.scene.triangleCount();
     result.stats.materials = result.scene.materials.size();
@@ -178,7 +224,10 @@ scene::Expected<ImportResult> importScene(const std::filesystem::path& file, con
     auto result = readFormat(detectFormat(file), file, options);
     if (!result)
         return result;
+    applyLengthScale(options, *result);
     finishImport(file, *result);
+    if (auto note = sizeNote(result->scene.worldBounds(), result->stats.lengthScale.knew))
+        result->notes.push_back(*note);
     // What a save would refuse (a number infinite as a float, an index out
     // of range) is reported now, against this file, not later against the
     // project the import writes.

@@ -1,11 +1,13 @@
 #pragma once
 // One interface for every scene format: a file in, a scene::Scene or an error
 // out. The format is chosen by content (magic bytes) first, extension second.
+#include "lpv/importers/ImportUnits.h"
 #include "lpv/scene/Error.h"
 #include "lpv/scene/ReadRoots.h"
 #include "lpv/scene/Scene.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,12 @@ struct ImportOptions {
     // Folders outside those that the scene may still name files in (textures,
     // glTF buffers): `lpv import --allow-path DIR`. See importReadRoots.
     std::vector<std::filesystem::path> allowPaths;
+    // Metres per unit of the file (`lpv import --unit/--scale`), replacing
+    // the unit the file states. Unset: the unit the file states
+    // (ImportResult::statedUnit), else metres (docs/importers.md, "Units").
+    std::optional<double> metresPerUnit;
+    // How the user gave it, for the printed line: "--unit cm", "--scale 0.5".
+    std::string unitSource;
 };
 
 // The folders an import of `file` may read from (docs/importers.md, "What a
@@ -38,6 +46,10 @@ struct ImportStats {
     std::size_t texturesMissing = 0;
     std::size_t degenerateTrianglesDropped = 0;
     double seconds = 0.0; // wall time of importScene
+    // What every length of the file was multiplied by to reach metres, and why.
+    AppliedScale lengthScale;
+    // Meshes far from their origin recentred (recentreFarMeshes).
+    std::size_t meshesRecentred = 0;
 };
 
 struct ImportResult {
@@ -48,11 +60,19 @@ struct ImportResult {
     // panel that became an area light (one line each, for the user).
     std::vector<std::string> notes;
     ImportStats stats;
+    // The unit the file states, set by its reader (glTF and 4ds: metres; FBX
+    // UnitScaleFactor; Collada <unit>); unset when the format states none.
+    std::optional<StatedUnit> statedUnit;
+    // The cameras' near/far planes come from the file (glTF) and scale with
+    // it; otherwise they are the Camera defaults, already in metres.
+    bool cameraPlanesFromFile = false;
 };
 
 // Reads the file with the importer its content (or extension) calls for,
-// then cleans every mesh (cleanupMesh: weld, degenerate triangles, normals,
-// tangents). Texture paths in the result are absolute where the file was
+// multiplies its lengths into metres (options.metresPerUnit, else the unit
+// the file states: scene::scaleSceneLengths), then cleans every mesh
+// (cleanupMesh: weld, degenerate triangles, normals, tangents) and adds a
+// note when the scene's size suggests another unit (sizeNote). Texture paths in the result are absolute where the file was
 // found and may be read (importReadRoots), else the stored name's last
 // component (counted and warned about): never a path that leads elsewhere.
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file,
@@ -62,7 +82,8 @@ scene::Expected<ImportResult> importScene(const std::filesystem::path& file,
 // step with a warning naming `file`: names that are not UTF-8 read as
 // Windows-1250, negative colours set to 0, values a project would refuse as
 // products repaired (ValueRepair.h), every mesh cleaned (cleanupMesh),
-// emissive panels made area lights, the counts filled in. For callers of one
+// emissive panels made area lights, meshes far from their origin recentred
+// (recentreFarMeshes), the counts filled in. For callers of one
 // importer's reader (the fuzz targets).
 void finishImport(const std::filesystem::path& file, ImportResult& result);
 
