@@ -125,7 +125,18 @@ int ForwardRenderer::shadowCascadesDrawn() const {
     return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
 }
 int ForwardRenderer::shadowCascadesStale() const { return impl_->shadows->staleCascades(); }
-std::string ForwardRenderer::lpvNote() const { return impl_->lpv->note(); }
+std::string ForwardRenderer::lpvNote() const {
+    // The LPV's line, then how its size was chosen, then why it delivers
+    // (almost) nothing when it does not: a silent zero is a bug to a user.
+    std::string note = impl_->lpv->note();
+    if (impl_->lpvFit.fitted)
+        note += "; fitted: " + impl_->lpvFit.reason;
+    if (impl_->lpvDelivery.problem != LpvDelivery::Problem::None && !impl_->lpvDelivery.skipsLpv())
+        note += "; warning: almost no indirect light: " + impl_->lpvDelivery.reason;
+    return note;
+}
+const LpvFit& ForwardRenderer::lpvFit() const { return impl_->lpvFit; }
+const LpvDelivery& ForwardRenderer::lpvDelivery() const { return impl_->lpvDelivery; }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
     return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;
 }
@@ -160,7 +171,15 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         d.sceneBounds = scene.worldBounds();
         d.sceneBoundsGeneration = d.sceneGeneration;
     }
-    const FrameContext frame{scene,      params,          camera,  width, height, view, projection,
+    if (d.sceneScaleGeneration != d.sceneGeneration) {
+        d.sceneScale = measureSceneScale(scene);
+        d.sceneScaleGeneration = d.sceneGeneration;
+    }
+    // Every pass reads the parameters with the LPV's fit written in.
+    d.lpvFit = fitLpv(params, d.sceneScale, camera.position);
+    d.frameParams = withFit(params, d.lpvFit);
+    d.lpvDelivery = renderer::lpvDelivery(d.lpvFit, params.getInt("lpv.gridSize"), d.sceneScale, camera.position);
+    const FrameContext frame{scene,      d.frameParams,   camera,  width, height, view, projection,
                              projection * view, d.timer, d.sceneBounds};
     d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     try {
@@ -180,7 +199,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
         d.declareIndirect(frame);
         d.declareShading(frame);
         d.declarePost(frame);
-        if (auto ok = d.graph.compile(params, params.getBool("lpv.reuse")); !ok)
+        if (auto ok = d.graph.compile(d.frameParams, params.getBool("lpv.reuse")); !ok)
             return ok;
         d.releaseCulled();
         if (auto ok = d.graph.execute(frame); !ok)

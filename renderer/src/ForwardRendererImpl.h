@@ -98,6 +98,14 @@ struct ForwardRenderer::Impl {
     // scene.worldBounds() of sceneGeneration (it walks every vertex).
     scene::Bounds sceneBounds;
     std::uint64_t sceneBoundsGeneration = ~std::uint64_t(0);
+    // The LPV fitted to the scene (LpvFit.h): the scene's lengths per scene
+    // generation, this frame's fit, what it means for the light delivered,
+    // and the parameters every pass of the frame reads (the fit written in).
+    SceneScale sceneScale;
+    std::uint64_t sceneScaleGeneration = ~std::uint64_t(0);
+    LpvFit lpvFit;
+    LpvDelivery lpvDelivery;
+    scene::ParameterSet frameParams;
     std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
     bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass

@@ -55,6 +55,12 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
         plan.lpvOffReason = "lpv.intensity is 0";
         return {};
     }
+    // The analysis skips an LPV that cannot reach the scene (issue #41): it
+    // would cost its passes and add nothing.
+    if (lpvDelivery.skipsLpv()) {
+        plan.lpvOffReason = lpvDelivery.reason;
+        return {};
+    }
     plan.settings = LpvSettings::fromParameters(params);
     // One volume per RSM tile, as far as lpv.cascades asks; the tiles follow the camera.
     const int count = std::min(params.getInt("rsm.cascades"), params.getInt("lpv.cascades"));

@@ -19,7 +19,7 @@ using scene::makeError;
 
 namespace {
 
-constexpr std::size_t kBytesPerTexel = 16 + 8 + 8 + 4; // position, normal, flux, depth (as RsmPass)
+constexpr std::size_t kBytesPerTexel = 16 + 8 + 16 + 4; // position, normal, flux, depth (as RsmPass)
 
 Texture makeArray(GLenum format, int size, int layers) {
     Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
@@ -85,7 +85,10 @@ scene::Expected<void> LocalRsmPass::ensureTargets(int size, int layers) {
     } // an earlier failure must not be blamed on these targets
     position_ = makeArray(GL_RGBA32F, size, layers);
     normal_ = makeArray(GL_RGBA16F, size, layers);
-    flux_ = makeArray(GL_RGBA16F, size, layers);
+    // 32-bit: a texel's flux (W) goes with its area, so it spans the
+    // square of the scene's unit; half floats lost a 2 cm box's light
+    // (below 6e-8 W) and would overflow a kilometre scene's (issue #41).
+    flux_ = makeArray(GL_RGBA32F, size, layers);
     depth_ = makeArray(GL_DEPTH_COMPONENT32F, size, layers);
     fbo_ = createFramebuffer();
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};

@@ -16,7 +16,7 @@ using scene::makeError;
 
 namespace {
 
-constexpr std::size_t kBytesPerTexel = 16 + 8 + 8 + 4; // position, normal, flux, depth
+constexpr std::size_t kBytesPerTexel = 16 + 8 + 16 + 4; // position, normal, flux, depth
 
 std::string hex(GLenum value) {
     char text[16];
@@ -122,7 +122,10 @@ scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
     } // an earlier failure must not be blamed on these targets
     position_ = makeArray(GL_RGBA32F, tileSize, layers);
     normal_ = makeArray(GL_RGBA16F, tileSize, layers);
-    flux_ = makeArray(GL_RGBA16F, tileSize, layers);
+    // 32-bit: a texel's flux (W) goes with its area, so it spans the
+    // square of the scene's unit; half floats lost a 2 cm box's light
+    // (below 6e-8 W) and would overflow a kilometre scene's (issue #41).
+    flux_ = makeArray(GL_RGBA32F, tileSize, layers);
     depth_ = makeArray(GL_DEPTH_COMPONENT32F, tileSize, layers);
     fbo_ = createFramebuffer();
     // Whole arrays attached: a layered framebuffer, gl_Layer picks the tile.

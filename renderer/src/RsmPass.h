@@ -11,7 +11,7 @@
 //             1.5 cm steps 30 m from the origin and 12 cm at 250 m, enough to
 //             put a VPL into the neighbouring LPV cell of a fine cascade.
 //   normal    RGBA16F  world normal turned toward the sun (0.05 degree steps).
-//   flux      RGBA16F  reflected flux of the texel in W (rgb); a = 1 + the
+//   flux      RGBA32F  reflected flux of the texel in W (rgb); a = 1 + the
 //             material's translucency (the subsurface LPV injects texels with
 //             a > 1; a stays non-zero where a surface was seen). Half floats keep
 //             3 significant digits down to 6e-5 W per texel; below (a dim sun

@@ -23,6 +23,13 @@ ParameterInfo real(std::string key, double def, double lo, double hi, std::strin
                          std::move(group), inv};
 }
 
+// A Float that also admits `word` (its default): the renderer chooses the number.
+ParameterInfo withWords(ParameterInfo info, std::string word) {
+    info.enumValues = {word};
+    info.defaultValue = std::move(word);
+    return info;
+}
+
 ParameterInfo choice(std::string key, std::string def, std::vector<std::string> values, std::string group,
                      std::string desc, Pass inv) {
     return ParameterInfo{std::move(key), ParameterType::Enum, std::move(def), 0.0, 0.0, std::move(values), "",
@@ -66,7 +73,14 @@ std::vector<ParameterInfo> declareParameters() {
                 "bounds as its extent allows (all of it where larger, else a stretch inside it): no cells "
                 "outside the scene, and a camera outside the scene (a Cornell box) gets the finest cells on it",
                 kLpvAll | P::Rsm),
-        real("lpv.cellSize", 0.25, 0.001, 100.0, "m", "LPV", "Cell size of the finest cascade", kLpvAll | P::Rsm),
+        // auto (issue #41): fitted to the scene's mean free path and the
+        // view (renderer/src/LpvFit.cpp); a number forces it. The range
+        // allows a scene in millimetres or kilometres.
+        withWords(real("lpv.cellSize", 0.0, 1e-6, 1e6, "m", "LPV",
+                       "Cell size of the finest cascade; auto fits it, the cascade count and the steps to the "
+                       "scene and the view",
+                       kLpvAll | P::Rsm),
+                  "auto"),
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
                 "Propagation iterations per cascade; light travels one cell per step",
                P::LpvPropagation | P::LpvBounces | P::Shading),

@@ -148,6 +148,13 @@ Expected<ParameterValue> ParameterRegistry::validate(std::string_view key, const
     case ParameterType::Int:
     case ParameterType::Float: {
         double d = 0.0;
+        if (info->type == ParameterType::Float && std::holds_alternative<std::string>(value)) {
+            // A word the parameter admits besides numbers ("auto").
+            const auto& s = std::get<std::string>(value);
+            if (std::find(info->enumValues.begin(), info->enumValues.end(), s) != info->enumValues.end())
+                return value;
+            return mismatch(("'" + s + "'").c_str());
+        }
         if (std::holds_alternative<int>(value))
             d = std::get<int>(value);
         else if (std::holds_alternative<double>(value))
@@ -190,6 +197,9 @@ Expected<ParameterValue> ParameterRegistry::parse(std::string_view key, std::str
         return validate(key, ParameterValue(std::string(text)), where);
     case ParameterType::Int:
     case ParameterType::Float: {
+        if (info->type == ParameterType::Float &&
+            std::find(info->enumValues.begin(), info->enumValues.end(), text) != info->enumValues.end())
+            return ParameterValue(std::string(text));
         double d = 0.0;
         const char* end = text.data() + text.size();
         auto [ptr, ec] = std::from_chars(text.data(), end, d);

@@ -48,6 +48,11 @@ bool ParameterSet::isSet(std::string_view key) const {
     return std::any_of(values_.begin(), values_.end(), [&](const auto& kv) { return kv.first == key; });
 }
 
+bool ParameterSet::isWord(std::string_view key, std::string_view word) const {
+    const ParameterValue v = get(key);
+    return std::holds_alternative<std::string>(v) && std::get<std::string>(v) == word;
+}
+
 ParameterValue ParameterSet::get(std::string_view key) const {
     for (const auto& [k, v] : values_)
         if (k == key)

@@ -41,7 +41,7 @@ std::string ParameterRegistry::toJson() const {
             j["min"] = p.minValue;
             j["max"] = p.maxValue;
         }
-        if (p.type == ParameterType::Enum)
+        if (p.type == ParameterType::Enum || (p.type == ParameterType::Float && !p.enumValues.empty()))
             j["values"] = p.enumValues;
         out.push_back(std::move(j));
     }
@@ -72,7 +72,12 @@ Expected<ParameterRegistry> ParameterRegistry::fromJson(std::string_view text, c
             switch (p.type) {
             case ParameterType::Bool: p.defaultValue = def.get<bool>(); break;
             case ParameterType::Int: p.defaultValue = def.get<int>(); break;
-            case ParameterType::Float: p.defaultValue = def.get<double>(); break;
+            case ParameterType::Float:
+                if (def.is_string())
+                    p.defaultValue = def.get<std::string>(); // a word such as "auto"
+                else
+                    p.defaultValue = def.get<double>();
+                break;
             case ParameterType::Enum: p.defaultValue = def.get<std::string>(); break;
             }
             if (p.type == ParameterType::Int || p.type == ParameterType::Float) {
@@ -82,6 +87,8 @@ Expected<ParameterRegistry> ParameterRegistry::fromJson(std::string_view text, c
                 p.maxValue = 1.0;
             }
             if (p.type == ParameterType::Enum)
+                p.enumValues = j.at("values").get<std::vector<std::string>>();
+            else if (p.type == ParameterType::Float && j.contains("values"))
                 p.enumValues = j.at("values").get<std::vector<std::string>>();
             p.unit = j.at("unit").get<std::string>();
             p.description = j.at("description").get<std::string>();

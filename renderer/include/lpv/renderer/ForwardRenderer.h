@@ -8,6 +8,7 @@
 #include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/FrameGraphReport.h"
 #include "lpv/renderer/GpuTimer.h"
+#include "lpv/renderer/LpvFit.h"
 #include "lpv/renderer/LpvSnapshot.h"
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/SceneGpu.h"
@@ -120,6 +121,10 @@ public:
     // or "LPV: off (gi.method is off: direct light only)", "LPV: off (gi.method
     // is radiosity: the indirect light is the baked solution's, 438 patches, ...)".
     std::string lpvNote() const;
+    // The last frame's LPV fit (lpv.cellSize = auto chooses it), and why
+    // that LPV delivers almost no light to the view (empty when it does).
+    const LpvFit& lpvFit() const;
+    const LpvDelivery& lpvDelivery() const;
     // GPU memory of the subsurface LPV's volumes (0 while it does not run).
     std::size_t subsurfaceAllocatedBytes() const;
     // The effect decisions of the last frame, each with its reason: directed

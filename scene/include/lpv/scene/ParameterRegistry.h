@@ -60,7 +60,9 @@ struct ParameterInfo {
     ParameterValue defaultValue;
     double minValue = 0.0; // Int/Float only
     double maxValue = 0.0;
-    std::vector<std::string> enumValues; // Enum only
+    // Enum: the choices. Float: words accepted besides a number in
+    // [min, max] (lpv.cellSize's "auto": the renderer fits it to the scene).
+    std::vector<std::string> enumValues;
     std::string unit;
     std::string description;
     std::string group; // display group: LPV, RSM, Shadows, Effects, Output, Radiosity, Reference
@@ -112,6 +114,9 @@ public:
     float getFloat(std::string_view key) const;
     std::string getEnum(std::string_view key) const;
     bool isSet(std::string_view key) const;
+    // A Float parameter holding one of its words (e.g. lpv.cellSize = auto)
+    // instead of a number; getFloat must not be asked for it then.
+    bool isWord(std::string_view key, std::string_view word) const;
 
     // Only the keys that differ from defaults or were set explicitly, sorted by key.
     const std::vector<std::pair<std::string, ParameterValue>>& overrides() const { return values_; }
