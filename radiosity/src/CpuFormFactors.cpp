@@ -29,7 +29,9 @@ bool segmentHitsTriangle(const glm::dvec3& origin, const glm::dvec3& dir, const 
     const glm::dvec3 e1 = b - a, e2 = c - a;
     const glm::dvec3 p = glm::cross(dir, e2);
     const double det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-18)
+    // Parallel up to rounding: relative to the lengths multiplied (det is a
+    // length cubed), so the test reads the same in centimetres or kilometres.
+    if (!(std::abs(det) > 1e-12 * glm::length(e1) * glm::length(e2) * glm::length(dir)))
         return false;
     const double inv = 1.0 / det;
     const glm::dvec3 s = origin - a;
@@ -41,7 +43,7 @@ bool segmentHitsTriangle(const glm::dvec3& origin, const glm::dvec3& dir, const 
     if (v < 0.0 || u + v > 1.0)
         return false;
     const double t = glm::dot(e2, q) * inv;
-    return t > 1e-6 && t < 1.0 - 1e-6;
+    return t > 1e-6 && t < 1.0 - 1e-6; // fractions of the segment: unitless
 }
 
 bool segmentHitsPatch(const glm::dvec3& origin, const glm::dvec3& dir, const Patch& p) {

@@ -36,7 +36,10 @@ void buildAdjacency(PatchMesh& mesh) {
     for (const Patch& p : mesh.patches)
         for (int k = 0; k < p.cornerCount; ++k)
             bounds.extend(p.corners[std::size_t(k)]);
-    const float extent = bounds.empty() ? 1.0f : std::max(glm::length(bounds.size()), 1e-6f);
+    // Welded within a millionth of the mesh's diagonal (scene-relative); the
+    // fallback is a float guard for a mesh of one point, not a length.
+    const float diagonal = bounds.empty() ? 0.0f : glm::length(bounds.size());
+    const float extent = diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f;
     const double quantum = double(extent) * 1e-6;
 
     using Key = std::tuple<std::uint32_t, long long, long long, long long>;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -20,8 +21,22 @@ float triangleArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     return 0.5f * glm::length(glm::cross(b - a, c - a));
 }
 
+// At most 32768 cuts per edge: a billion patches per face, far over any
+// radiosity.maxPatches, and nu * nv stays an int at any patch area.
+constexpr float kMaxCuts = 32768.0f;
+
+// The 1e-4 is of a cut (unitless): a length that is a whole number of steps up
+// to float rounding is not cut once more.
 int cutsFor(float length, float step) {
-    return std::max(1, int(std::ceil(length / step - 1e-4f)));
+    return std::max(1, int(std::min(std::ceil(length / step - 1e-4f), kMaxCuts)));
+}
+
+// Zero area up to float rounding of its own edges (relative, so a 1 um
+// triangle of a centimetre scene is kept and a needle of a kilometre one is not).
+bool degenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    const float area = triangleArea(a, b, c);
+    return !(area > 1e-12f * longest * longest);
 }
 
 // Source face -> patches, appended to `out`.
@@ -39,7 +54,7 @@ class Subdivider {
         int nv = std::max(cutsFor(glm::length(q[3].p - q[0].p), step_),
                           cutsFor(glm::length(q[2].p - q[1].p), step_));
         const float area = triangleArea(q[0].p, q[1].p, q[2].p) + triangleArea(q[0].p, q[2].p, q[3].p);
-        while (area / float(nu * nv) > maxArea_ * 1.0001f) {
+        while (area / float(nu * nv) > maxArea_ * 1.0001f && float(std::max(nu, nv)) < kMaxCuts) {
             ++nu;
             ++nv;
         }
@@ -59,7 +74,7 @@ class Subdivider {
                           cutsFor(glm::length(t[2].p - t[1].p), step_),
                           cutsFor(glm::length(t[0].p - t[2].p), step_)});
         const float area = triangleArea(t[0].p, t[1].p, t[2].p);
-        n = std::max(n, int(std::ceil(std::sqrt(area / maxArea_) - 1e-4f)));
+        n = std::max(n, int(std::min(std::ceil(std::sqrt(area / maxArea_) - 1e-4f), kMaxCuts)));
         auto at = [&](int i, int j) {
             const float u = float(i) / float(n), v = float(j) / float(n);
             return Corner{t[0].p + u * (t[1].p - t[0].p) + v * (t[2].p - t[0].p),
@@ -122,7 +137,7 @@ void meshObject(const scene::Scene& scene, std::uint32_t objectIndex, float maxA
                                            mesh.indices[sub.firstIndex + k + 2]};
             if (mirrored)
                 std::swap(t[1], t[2]);
-            if (triangleArea(positions[t[0]], positions[t[1]], positions[t[2]]) > 1e-12f)
+            if (!degenerate(positions[t[0]], positions[t[1]], positions[t[2]]))
                 tris.push_back(t);
         }
         // Longest edge of each triangle as (corner index of its start), and an
@@ -215,7 +230,8 @@ float PatchMesh::totalArea() const {
 std::size_t countPatches(const scene::Scene& scene, const MeshingOptions& options) {
     PatchMesh none; // receives the quad and triangle counts only
     std::size_t count = 0;
-    const float maxArea = std::max(options.maxPatchArea, 1e-8f);
+    // A float guard only (the area divides): any positive area is a length squared of some scene.
+    const float maxArea = std::max(options.maxPatchArea, std::numeric_limits<float>::min());
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
         if (!o.visible || o.mesh < 0 || std::size_t(o.mesh) >= scene.meshes.size())
@@ -227,7 +243,8 @@ std::size_t countPatches(const scene::Scene& scene, const MeshingOptions& option
 
 PatchMesh buildPatchMesh(const scene::Scene& scene, const MeshingOptions& options) {
     PatchMesh out;
-    const float maxArea = std::max(options.maxPatchArea, 1e-8f);
+    // A float guard only (the area divides): any positive area is a length squared of some scene.
+    const float maxArea = std::max(options.maxPatchArea, std::numeric_limits<float>::min());
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
         if (!o.visible || o.mesh < 0 || std::size_t(o.mesh) >= scene.meshes.size())

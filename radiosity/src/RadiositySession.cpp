@@ -4,7 +4,9 @@
 #include "lpv/radiosity/SurfaceProperties.h"
 #include "lpv/scene/AreaLight.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace lpv::radiosity {
@@ -81,13 +83,24 @@ scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& s
     return create(scene, textures, options, std::move(saved));
 }
 
+float patchAreaFor(const scene::Scene& scene, const scene::ParameterSet& parameters) {
+    const float set = parameters.getFloat("radiosity.maxPatchArea");
+    if (parameters.isSet("radiosity.maxPatchArea"))
+        return set;
+    const scene::Bounds bounds = scene.worldBounds();
+    const glm::vec3 size = bounds.empty() ? glm::vec3(0.0f) : bounds.size();
+    const float side = std::max({size.x, size.y, size.z}) / kAutoPatchesPerSide;
+    // An empty or flat-to-a-point scene has no length to scale with: the registry's value.
+    return std::isfinite(side) && side > 0.0f ? side * side : set;
+}
+
 scene::Expected<RadiositySession> RadiositySession::create(const scene::Scene& scene,
                                                            const scene::ParameterSet& parameters,
                                                            const scene::TextureImages& textures,
                                                            std::optional<StoredSolution> saved,
                                                            const std::atomic<bool>* cancel) {
     SessionOptions options;
-    options.maxPatchArea = parameters.getFloat("radiosity.maxPatchArea");
+    options.maxPatchArea = patchAreaFor(scene, parameters);
     options.maxPatches = std::size_t(parameters.getInt("radiosity.maxPatches"));
     options.lightSamples = parameters.getInt("radiosity.lightSamples");
     options.cancel = cancel;

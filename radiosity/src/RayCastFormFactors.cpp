@@ -13,7 +13,7 @@ namespace lpv::radiosity {
 namespace {
 
 struct ShooterSamples {
-    std::vector<glm::vec3> points; // in Embree's frame, already lifted off the shooter (EmbreeScene::offsetOrigin)
+    std::vector<glm::vec3> points; // in Embree's frame, already lifted off the shooter (EmbreeScene::offsetWorldPoint)
     glm::vec3 normal{0.0f};
     float pieceArea = 0.0f; // A_i / S
     float area = 0.0f;
@@ -50,7 +50,7 @@ scene::Expected<void> RayCastFormFactors::compute(std::span<const std::uint32_t>
         const Patch& p = mesh_.patches[shooters[s]];
         ShooterSamples& out = shots[s];
         for (const glm::vec3& q : patchSamplePoints(p, samples_))
-            out.points.push_back(embree_->offsetOrigin(embree_->toFrame(q), p.normal));
+            out.points.push_back(embree_->offsetWorldPoint(q, p.normal));
         out.normal = p.normal;
         out.area = p.area;
         out.pieceArea = p.area / float(out.points.size());
@@ -59,7 +59,7 @@ scene::Expected<void> RayCastFormFactors::compute(std::span<const std::uint32_t>
     forEachChunk(n, 512, [&](std::size_t begin, std::size_t end) {
         for (std::size_t j = begin; j < end; ++j) {
             const Patch& r = mesh_.patches[j];
-            const glm::vec3 origin = embree_->offsetOrigin(embree_->toFrame(r.center), r.normal);
+            const glm::vec3 origin = embree_->offsetWorldPoint(r.center, r.normal);
             for (std::size_t s = 0; s < shots.size(); ++s) {
                 if (shooters[s] == j)
                     continue;

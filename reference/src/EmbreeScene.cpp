@@ -320,6 +320,14 @@ glm::vec3 EmbreeScene::offsetOrigin(const glm::vec3& p, const glm::vec3& n) cons
     return p + n * (2e-5f * scale);
 }
 
+glm::vec3 EmbreeScene::offsetWorldPoint(const glm::vec3& world, const glm::vec3& n) const {
+    const glm::vec3 p = toFrame(world);
+    const float frameScale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 0.125f * impl_->extent});
+    const float worldScale = std::max({std::abs(world.x), std::abs(world.y), std::abs(world.z)});
+    const float lift = std::max(2e-5f * frameScale, 2.0f * std::numeric_limits<float>::epsilon() * worldScale);
+    return p + n * lift;
+}
+
 bool EmbreeScene::hasEmitters() const {
     return !impl_->emitters.empty() && impl_->emitterCdf.back() > 0.0f;
 }

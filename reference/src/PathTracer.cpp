@@ -164,7 +164,13 @@ glm::vec3 PathTracer::emitterIrradiance(const glm::vec3& p, const glm::vec3& off
 
 glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offsetNormal, const glm::vec3& n,
                                        Rng* rng) const {
-    return directIrradianceInFrame(embree_.toFrame(p), offsetNormal, n, rng);
+    // A float world point is already rounded to steps of its magnitude (8 mm
+    // 100 km out): where those steps outgrow the usual lift it is first lifted
+    // past them, or its shadow rays could start behind its own wall.
+    const glm::vec3 q = embree_.toFrame(p);
+    const glm::vec3 lifted = embree_.offsetWorldPoint(p, offsetNormal);
+    return directIrradianceInFrame(lifted == embree_.offsetOrigin(q, offsetNormal) ? q : lifted, offsetNormal, n,
+                                   rng);
 }
 
 glm::vec3 PathTracer::directIrradianceInFrame(const glm::vec3& p, const glm::vec3& offsetNormal,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace lpv::renderer {
 namespace {
@@ -64,7 +65,8 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
             bounds.extend(p.corners[std::size_t(k)]);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
     order.reserve(mesh.size());
-    const glm::vec3 size = glm::max(bounds.size(), glm::vec3(1e-6f));
+    // A float guard only (a flat axis divides): the Morton order needs no length.
+    const glm::vec3 size = glm::max(bounds.size(), glm::vec3(std::numeric_limits<float>::min()));
     for (std::uint32_t i = 0; i < mesh.size(); ++i) {
         const glm::vec3 q = glm::clamp((mesh.patches[i].center - bounds.min) / size, 0.0f, 1.0f) * 1023.0f;
         std::uint64_t code = 0;
@@ -102,7 +104,9 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
         cluster.max = cb.max;
         h->clusters_.push_back(cluster);
     }
-    const float extent = bounds.empty() ? 1.0f : std::max(glm::length(bounds.size()), 1e-3f);
+    // A float guard only: a mesh of one point has no extent to scale with.
+    const float diagonal = bounds.empty() ? 0.0f : glm::length(bounds.size());
+    const float extent = diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f;
     // The near plane must be closer than the thinnest gap the scene has (the
     // Cornell light hangs 1 mm under the ceiling, 0.2% of the box).
     h->near_ = extent * 1e-5f;

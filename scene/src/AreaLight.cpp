@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace lpv::scene {
@@ -140,8 +141,12 @@ bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const 
         const float u = glm::length(f.halfU), v = glm::length(f.halfV);
         if (!(u > 0.0f) || !(v > 0.0f))
             continue;
-        // A millimetre, or a thousandth of the light, off its plane and outline still counts.
-        const float slack = std::max(1e-3f, 1e-3f * (u + v));
+        // A thousandth of the light off its plane and outline still counts, plus
+        // the float rounding of positions that far from the origin (8 mm at
+        // 100 km): lengths that scale (issue #41), no millimetre floor, which
+        // was 7% of the Cornell lamp in centimetres.
+        const float magnitude = std::max({std::abs(f.center.x), std::abs(f.center.y), std::abs(f.center.z)});
+        const float slack = 1e-3f * (u + v) + 4.0f * std::numeric_limits<float>::epsilon() * magnitude;
         bool inside = true;
         for (const glm::vec3& p : {a, b, c}) {
             const glm::vec3 d = p - f.center;

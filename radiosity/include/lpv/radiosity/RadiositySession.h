@@ -26,6 +26,14 @@ struct SessionOptions {
     const std::atomic<bool>* cancel = nullptr; // stops the direct light (an error value)
 };
 
+// The patch area a solve of `scene` uses (issue #41 item 3, docs/radiosity.md):
+// radiosity.maxPatchArea when the project sets it (m^2, forced), else a patch
+// edge of 1/25 of the largest side of the scene's bounds, so a scene meshes
+// into the same patches in centimetres or kilometres (0.05 m^2 in the 5.59 m
+// Cornell box, what the registry's default was tuned on).
+inline constexpr float kAutoPatchesPerSide = 25.0f;
+float patchAreaFor(const scene::Scene& scene, const scene::ParameterSet& parameters);
+
 class RadiositySession {
   public:
     // The checks a solve needs before it meshes, the mesh, and for a fresh
@@ -43,8 +51,8 @@ class RadiositySession {
                                                     float maxPatchArea, std::size_t maxPatches,
                                                     std::optional<StoredSolution> saved = std::nullopt);
 
-    // The same with the project's radiosity.maxPatchArea, radiosity.maxPatches
-    // and radiosity.lightSamples: what `lpv radiosity` and the editor's dock run.
+    // The same with the project's radiosity.maxPatches and radiosity.lightSamples,
+    // and patchAreaFor's patch area: what `lpv radiosity` and the editor's dock run.
     static scene::Expected<RadiositySession> create(const scene::Scene& scene, const scene::ParameterSet& parameters,
                                                     const scene::TextureImages& textures,
                                                     std::optional<StoredSolution> saved = std::nullopt,
@@ -64,6 +72,8 @@ class RadiositySession {
     // Seconds the lights' direct light took (0 when resumed or without lights).
     double directLightSeconds() const { return directLightSeconds_; }
     const std::string& note() const { return note_; }
+    // The largest patch area the scene was meshed with (m^2 of the scene's units).
+    float maxPatchArea() const { return maxPatchArea_; }
 
     // Splits patches whose radiosity differs from a neighbour's by more than
     // `threshold` (relative), carrying the solution over. The mesh and solver

@@ -85,6 +85,11 @@ class EmbreeScene {
     // with its magnitude and with the ray's length, which is at most the
     // extent; no metre constant, so a 1 cm and a 1 km scene are lifted alike.
     glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& n) const;
+    // The same for a point given in float world coordinates (a radiosity
+    // patch, DirectLight's sample points): such a point is already rounded to
+    // float steps of its world magnitude (8 mm at 100 km), so it is lifted by
+    // at least 8 of those steps, or it may start behind its own wall.
+    glm::vec3 offsetWorldPoint(const glm::vec3& world, const glm::vec3& n) const;
 
     // Emissive triangles (materials with emission), picked in proportion to
     // area x emitted luminance, then a uniform point on the one picked.
