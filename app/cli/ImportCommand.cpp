@@ -1,7 +1,6 @@
 #include "Cli.h"
 #include "lpv/app/ImportDefaults.h"
 
-
 #include "lpv/importers/ImportUnits.h"
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/Project.h"
@@ -87,7 +86,8 @@ std::optional<double> parseScale(const std::string& text) {
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod(begin, &end);
-    if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value) || value <= 0.0)
+    if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value) ||
+        value <= 0.0)
         return std::nullopt;
     return value;
 }

@@ -25,8 +25,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -545,7 +545,7 @@ std::optional<StatedUnit> fbxUnit(const aiScene& in) {
     if (!cm || !std::isfinite(*cm) || *cm <= 0.0)
         return std::nullopt;
     static constexpr std::pair<double, const char*> kNames[] = {
-        {0.1, "millimetres"}, {1.0, "centimetres"}, {2.54, "inches"},  {30.48, "feet"},
+        {0.1, "millimetres"}, {1.0, "centimetres"}, {2.54, "inches"},   {30.48, "feet"},
         {91.44, "yards"},     {100.0, "metres"},    {1e5, "kilometres"}};
     std::string name = numberText(*cm) + " cm per unit";
     for (const auto& [value, unit] : kNames)

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -69,7 +69,9 @@ std::size_t findRoot(std::vector<std::size_t>& parent, std::size_t i) {
     return i;
 }
 
-bool validMesh(const scene::Scene& s, int mesh) { return mesh >= 0 && std::size_t(mesh) < s.meshes.size(); }
+bool validMesh(const scene::Scene& s, int mesh) {
+    return mesh >= 0 && std::size_t(mesh) < s.meshes.size();
+}
 
 // The meshes an object draws: its main mesh and its LODs (valid indices only).
 std::vector<std::size_t> meshesOf(const scene::Scene& s, const scene::Object& o) {
@@ -85,15 +87,17 @@ std::vector<std::size_t> meshesOf(const scene::Scene& s, const scene::Object& o)
 } // namespace
 
 std::optional<double> metresPerUnit(std::string_view name) {
-    static constexpr std::array<std::pair<std::string_view, double>, 5> kUnits{{
-        {"mm", 0.001}, {"cm", 0.01}, {"m", 1.0}, {"in", 0.0254}, {"ft", 0.3048}}};
+    static constexpr std::array<std::pair<std::string_view, double>, 5> kUnits{
+        {{"mm", 0.001}, {"cm", 0.01}, {"m", 1.0}, {"in", 0.0254}, {"ft", 0.3048}}};
     for (const auto& [unit, metres] : kUnits)
         if (unit == name)
             return metres;
     return std::nullopt;
 }
 
-const char* unitNames() { return "mm, cm, m, in, ft"; }
+const char* unitNames() {
+    return "mm, cm, m, in, ft";
+}
 
 std::optional<std::string> sizeNote(const scene::Bounds& bounds, UnitKnowledge knew) {
     if (bounds.empty() || knew == UnitKnowledge::GivenByUser)

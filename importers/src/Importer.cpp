@@ -160,7 +160,8 @@ AppliedScale chooseLengthScale(const ImportOptions& options, const ImportResult&
     AppliedScale applied;
     if (options.metresPerUnit) {
         applied.factor = *options.metresPerUnit;
-        applied.source = options.unitSource.empty() ? "--scale " + factorText(applied.factor) : options.unitSource;
+        applied.source =
+            options.unitSource.empty() ? "--scale " + factorText(applied.factor) : options.unitSource;
         applied.knew = UnitKnowledge::GivenByUser;
     } else if (result.statedUnit) {
         applied.factor = result.statedUnit->metresPerUnit;
@@ -176,8 +177,8 @@ void applyLengthScale(const ImportOptions& options, ImportResult& result) {
     const AppliedScale applied = chooseLengthScale(options, result);
     if (options.metresPerUnit && result.statedUnit &&
         std::abs(result.statedUnit->metresPerUnit - *options.metresPerUnit) > 1e-9 * *options.metresPerUnit)
-        result.notes.push_back(applied.source + " replaces the unit the file states (" + result.statedUnit->how +
-                               ")");
+        result.notes.push_back(applied.source + " replaces the unit the file states (" +
+                               result.statedUnit->how + ")");
     scene::SceneScaleParts parts;
     // Clip planes are lengths of the file only where its reader set them.
     parts.cameraPlanes = result.cameraPlanesFromFile;
@@ -207,7 +208,8 @@ void finishImport(const std::filesystem::path& file, ImportResult& result) {
     const RecentreStats recentred = recentreFarMeshes(result.scene);
     result.stats.meshesRecentred = recentred.meshes;
     if (recentred.meshes > 0)
-        result.notes.push_back(std::to_string(recentred.meshes) + (recentred.meshes == 1 ? " mesh" : " meshes") +
+        result.notes.push_back(std::to_string(recentred.meshes) +
+                               (recentred.meshes == 1 ? " mesh" : " meshes") +
                                " far from the origin (up to " + factorText(recentred.farthest) +
                                " m) stored relative to " + (recentred.meshes == 1 ? "its" : "their") +
                                " centre, the offset moved into the objects' translations (float precision)");

@@ -3,11 +3,17 @@
 namespace lpv::scene {
 namespace {
 
-float scaled(float v, double factor) { return float(double(v) * factor); }
+float scaled(float v, double factor) {
+    return float(double(v) * factor);
+}
 
-glm::vec3 scaled(const glm::vec3& v, double factor) { return glm::vec3(glm::dvec3(v) * factor); }
+glm::vec3 scaled(const glm::vec3& v, double factor) {
+    return glm::vec3(glm::dvec3(v) * factor);
+}
 
-glm::vec2 scaled(const glm::vec2& v, double factor) { return glm::vec2(glm::dvec2(v) * factor); }
+glm::vec2 scaled(const glm::vec2& v, double factor) {
+    return glm::vec2(glm::dvec2(v) * factor);
+}
 
 } // namespace
 

@@ -21,7 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scenes() { return fs::path(kSharedScenesDir); }
+fs::path scenes() {
+    return fs::path(kSharedScenesDir);
+}
 
 fs::path tempDir(const std::string& name) {
     fs::path p = fs::temp_directory_path() / ("lpv-import-units-" + name + "-" + std::to_string(::getpid()));
@@ -30,7 +32,9 @@ fs::path tempDir(const std::string& name) {
     return p;
 }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string quoted(const fs::path& p) {
+    return "'" + p.string() + "'";
+}
 
 lpv::scene::Scene loadScene(const fs::path& project) {
     auto loaded = lpv::scene::loadProject(project);
@@ -55,8 +59,10 @@ lpv::scene::Bounds boundsOfObjects(const lpv::scene::Scene& s, std::size_t first
 void expectScaled(const lpv::scene::Bounds& scaled, const lpv::scene::Bounds& metres, double s) {
     ASSERT_FALSE(metres.empty());
     for (int k = 0; k < 3; ++k) {
-        EXPECT_NEAR(scaled.min[k], s * metres.min[k], 1e-6 * std::max(1.0, std::abs(double(metres.min[k])))) << k;
-        EXPECT_NEAR(scaled.max[k], s * metres.max[k], 1e-6 * std::max(1.0, std::abs(double(metres.max[k])))) << k;
+        EXPECT_NEAR(scaled.min[k], s * metres.min[k], 1e-6 * std::max(1.0, std::abs(double(metres.min[k]))))
+            << k;
+        EXPECT_NEAR(scaled.max[k], s * metres.max[k], 1e-6 * std::max(1.0, std::abs(double(metres.max[k]))))
+            << k;
     }
 }
 
@@ -107,7 +113,8 @@ TEST(ImportUnitsCommand, UnitCmGivesAHundredthOfTheMetreImport) {
     // --scale 0.01 is the same import.
     const RunResult scale = runLpv("import " + quoted(obj) + " --scale 0.01 -o " + quoted(dir / "s.lpvproj"));
     ASSERT_EQ(scale.exitCode, 0) << scale.output;
-    EXPECT_NE(scale.output.find("lengths x0.01 into metres (--scale 0.01)"), std::string::npos) << scale.output;
+    EXPECT_NE(scale.output.find("lengths x0.01 into metres (--scale 0.01)"), std::string::npos)
+        << scale.output;
     const lpv::scene::Scene s = loadScene(dir / "s.lpvproj");
     EXPECT_EQ(s.worldBounds().min, c.worldBounds().min);
     EXPECT_EQ(s.worldBounds().max, c.worldBounds().max);
@@ -145,7 +152,8 @@ TEST(ImportUnitsCommand, UnitAndScaleTogetherOrBadValuesAreUsageErrors) {
     for (const char* bad : {"0", "-1", "nan", "inf", "1e400", "abc", "2x", "''"}) {
         const RunResult r = runLpv("import " + obj + " --scale " + bad + out);
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
-        EXPECT_NE(r.output.find("is not a finite number above 0"), std::string::npos) << bad << ": " << r.output;
+        EXPECT_NE(r.output.find("is not a finite number above 0"), std::string::npos)
+            << bad << ": " << r.output;
     }
     EXPECT_EQ(runLpv("import " + obj + " --scale" + out).exitCode, 2);
     EXPECT_FALSE(fs::exists(dir / "x.lpvproj"));
@@ -157,8 +165,9 @@ TEST(ImportUnitsCommand, SizeNoteForTheCornellBoxInCentimetres) {
     const fs::path obj = scaledCornell(dir, 100.0);
     const RunResult r = runLpv("import " + quoted(obj) + " -o " + quoted(dir / "big.lpvproj"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("  the scene is 203 units across: if these are centimetres, import with --unit cm"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find("  the scene is 203 units across: if these are centimetres, import with --unit cm"),
+        std::string::npos)
         << r.output;
     // Following the advice gives the box in metres again, without the note.
     const RunResult cm = runLpv("import " + quoted(obj) + " --unit cm -o " + quoted(dir / "cm.lpvproj"));
@@ -167,8 +176,8 @@ TEST(ImportUnitsCommand, SizeNoteForTheCornellBoxInCentimetres) {
     const lpv::scene::Bounds b = loadScene(dir / "cm.lpvproj").worldBounds();
     EXPECT_NEAR(b.max.y, 1.99f, 1e-5f);
     // The original box gets no note.
-    const RunResult metres = runLpv("import " + quoted(scenes() / "cornell/CornellBox-Original.obj") + " -o " +
-                                    quoted(dir / "m.lpvproj"));
+    const RunResult metres = runLpv("import " + quoted(scenes() / "cornell/CornellBox-Original.obj") +
+                                    " -o " + quoted(dir / "m.lpvproj"));
     EXPECT_EQ(metres.output.find("units across"), std::string::npos) << metres.output;
     fs::remove_all(dir);
 }
@@ -181,7 +190,8 @@ TEST(ImportUnitsCommand, AFarBoxIsRecentred) {
     {
         std::ofstream out(obj);
         for (int i = 0; i < 8; ++i)
-            out << "v " << (i & 1 ? 100001 : 99999) << " " << (i & 2 ? 2 : 0) << " " << (i & 4 ? 1 : -1) << "\n";
+            out << "v " << (i & 1 ? 100001 : 99999) << " " << (i & 2 ? 2 : 0) << " " << (i & 4 ? 1 : -1)
+                << "\n";
         out << "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
     }
     const RunResult r = runLpv("import " + quoted(obj) + " -o " + quoted(dir / "far.lpvproj"));

@@ -3,10 +3,10 @@
 // origin, and the units formats state (FBX UnitScaleFactor, Collada <unit>),
 // through importScene on real files. docs/importers.md, "Units (issue #41)".
 #include "lpv/importers/ImportUnits.h"
+#include "TestPaths.h"
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/SceneScale.h"
 #include "lpv/scene/WorldMatrices.h"
-#include "TestPaths.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scenes() { return fs::path(test::kSharedScenesDir); }
+fs::path scenes() {
+    return fs::path(test::kSharedScenesDir);
+}
 
 fs::path tempDir(const std::string& name) {
     fs::path p = fs::temp_directory_path() / ("lpv-units-" + name + "-" + std::to_string(::getpid()));
@@ -36,7 +38,8 @@ scene::Mesh box(const glm::vec3& centre, float size, const std::string& name = "
     scene::Mesh m;
     m.name = name;
     for (int i = 0; i < 8; ++i)
-        m.positions.push_back(centre + 0.5f * size * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
+        m.positions.push_back(centre +
+                              0.5f * size * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
     m.indices = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1,
                  2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
     m.submeshes.push_back({0, std::uint32_t(m.indices.size()), 0});
@@ -224,8 +227,8 @@ scene::Bounds sized(glm::vec3 size) {
 } // namespace
 
 TEST(ImportUnits, SizeNoteSuggestsAUnitOnlyWhenTheSizeCallsForIt) {
-    using importers::UnitKnowledge;
     using importers::sizeNote;
+    using importers::UnitKnowledge;
     // Metre-sized scenes: the Cornell box, Sponza, a flat 600 m terrain.
     EXPECT_FALSE(sizeNote(sized({2.0f, 2.0f, 2.0f}), UnitKnowledge::Assumed));
     EXPECT_FALSE(sizeNote(sized({35.0f, 16.0f, 15.0f}), UnitKnowledge::Assumed));
@@ -261,7 +264,9 @@ TEST(ImportUnits, SizeNoteSuggestsAUnitOnlyWhenTheSizeCallsForIt) {
 
 // Float rounding of a world position near `magnitude`: a few units in the
 // last place of the largest coordinate.
-double floatRounding(double magnitude) { return 4.0 * magnitude * std::ldexp(1.0, -23); }
+double floatRounding(double magnitude) {
+    return 4.0 * magnitude * std::ldexp(1.0, -23);
+}
 
 TEST(Recentre, TwoMetreBoxAHundredKilometresOutKeepsItsWorldPositions) {
     scene::Scene s;
@@ -382,7 +387,8 @@ TEST(ImportUnits, FarBoxObjIsRecentredOnImport) {
     {
         std::ofstream out(file);
         for (int i = 0; i < 8; ++i)
-            out << "v " << (i & 1 ? 100001 : 99999) << " " << (i & 2 ? 2 : 0) << " " << (i & 4 ? 1 : -1) << "\n";
+            out << "v " << (i & 1 ? 100001 : 99999) << " " << (i & 2 ? 2 : 0) << " " << (i & 4 ? 1 : -1)
+                << "\n";
         out << "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
     }
     auto r = importers::importScene(file);
@@ -403,7 +409,9 @@ TEST(ImportUnits, FarBoxObjIsRecentredOnImport) {
 }
 
 namespace {
-fs::path assimpModels() { return fs::path(LPV_TEST_ASSIMP_MODELS_DIR); }
+fs::path assimpModels() {
+    return fs::path(LPV_TEST_ASSIMP_MODELS_DIR);
+}
 } // namespace
 
 // FBX's UnitScaleFactor is centimetres per unit; global_settings.fbx says 500.

@@ -49,8 +49,8 @@ std::optional<std::string> sizeNote(const scene::Bounds& bounds, UnitKnowledge k
 // same c, taken over all of them) or not at all; a mesh shared by several
 // objects moves once. Meshes no object uses are left alone.
 struct RecentreStats {
-    std::size_t meshes = 0;   // meshes moved
-    double farthest = 0.0;    // the largest |c| among them
+    std::size_t meshes = 0; // meshes moved
+    double farthest = 0.0;  // the largest |c| among them
 };
 RecentreStats recentreFarMeshes(scene::Scene& s);
 

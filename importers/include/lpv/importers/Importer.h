@@ -72,9 +72,10 @@ struct ImportResult {
 // multiplies its lengths into metres (options.metresPerUnit, else the unit
 // the file states: scene::scaleSceneLengths), then cleans every mesh
 // (cleanupMesh: weld, degenerate triangles, normals, tangents) and adds a
-// note when the scene's size suggests another unit (sizeNote). Texture paths in the result are absolute where the file was
-// found and may be read (importReadRoots), else the stored name's last
-// component (counted and warned about): never a path that leads elsewhere.
+// note when the scene's size suggests another unit (sizeNote). Texture
+// paths in the result are absolute where the file was found and may be read
+// (importReadRoots), else the stored name's last component (counted and
+// warned about): never a path that leads elsewhere.
 scene::Expected<ImportResult> importScene(const std::filesystem::path& file,
                                           const ImportOptions& options = {});
 
