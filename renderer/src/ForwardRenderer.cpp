@@ -74,13 +74,29 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     return r;
 }
 
+const scene::Scene& ForwardRenderer::Impl::enterRenderSpace(const scene::Scene& world) {
+    if (sceneBoundsGeneration != sceneGeneration) {
+        worldBounds = world.worldBounds();
+        sceneBoundsGeneration = sceneGeneration;
+    }
+    const glm::dvec3 before = space.anchor();
+    const scene::Scene& rs = space.update(world, worldBounds);
+    sceneBounds = worldBounds.empty() ? scene::Bounds{}
+                                      : scene::Bounds{space.toRender(worldBounds.min), space.toRender(worldBounds.max)};
+    if (space.anchor() != before)
+        gBufferValid = false; // last frame's G-buffer holds positions of the old render space
+    return rs;
+}
+
 void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
     impl_->traits.reset();
     impl_->exposure->reset();
     ++impl_->sceneGeneration;
     impl_->sceneGvCache.clear(); // another scene's meshes
-    impl_->sceneGpu = std::make_unique<SceneGpu>(scene);
-    impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
+    impl_->space.setScene(scene);
+    const scene::Scene& rs = impl_->enterRenderSpace(scene);
+    impl_->sceneGpu = std::make_unique<SceneGpu>(rs);
+    impl_->materialGpu = std::make_unique<MaterialGpu>(rs, textures);
 }
 
 void ForwardRenderer::updateObjects(const scene::Scene& scene) {
@@ -88,7 +104,7 @@ void ForwardRenderer::updateObjects(const scene::Scene& scene) {
     ++impl_->sceneGeneration;
     if (!impl_->sceneGpu)
         return setScene(scene);
-    impl_->sceneGpu->updateDraws(scene);
+    impl_->sceneGpu->updateDraws(impl_->enterRenderSpace(scene));
 }
 
 void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::TextureImages& textures) {
@@ -96,8 +112,9 @@ void ForwardRenderer::updateMaterials(const scene::Scene& scene, const scene::Te
     ++impl_->sceneGeneration;
     if (!impl_->sceneGpu)
         return setScene(scene, textures);
-    impl_->materialGpu = std::make_unique<MaterialGpu>(scene, textures);
-    impl_->sceneGpu->updateDraws(scene); // buckets follow the materials' alpha modes
+    const scene::Scene& rs = impl_->enterRenderSpace(scene);
+    impl_->materialGpu = std::make_unique<MaterialGpu>(rs, textures);
+    impl_->sceneGpu->updateDraws(rs); // buckets follow the materials' alpha modes
 }
 
 void ForwardRenderer::setBakedRadiosity(std::shared_ptr<const radiosity::BakedSolution> solution) {
@@ -148,29 +165,38 @@ void ForwardRenderer::setLpvCapture(std::optional<LpvCaptureRequest> request) { 
 
 const LpvSnapshot* ForwardRenderer::lpvSnapshot() const {
     const auto& snapshot = impl_->lpv->snapshot();
-    return snapshot ? &*snapshot : nullptr;
+    if (!snapshot)
+        return nullptr;
+    impl_->worldSnapshot = *snapshot; // in world space, as the visualizers draw it
+    impl_->worldSnapshot->frame.origin = impl_->space.toWorld(snapshot->frame.origin);
+    return &*impl_->worldSnapshot;
 }
 
-std::vector<LpvGridFrame> ForwardRenderer::lpvCascadeFrames() const { return impl_->lpv->cascadeFrames(); }
+std::vector<LpvGridFrame> ForwardRenderer::lpvCascadeFrames() const {
+    std::vector<LpvGridFrame> frames = impl_->lpv->cascadeFrames();
+    for (LpvGridFrame& f : frames)
+        f.origin = impl_->space.toWorld(f.origin);
+    return frames;
+}
 
 std::vector<DebugImage> ForwardRenderer::debugImages(const std::string& what) const { return impl_->dump(what); }
 
 std::vector<std::string> ForwardRenderer::dumpNames() const { return impl_->dumpNames(); }
 
-Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::ParameterSet& params,
-                                       const scene::Camera& camera, int width, int height) {
+Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const scene::ParameterSet& params,
+                                       const scene::Camera& worldCamera, int width, int height) {
     Impl& d = *impl_;
     if (!d.sceneGpu)
-        setScene(scene);
+        setScene(worldScene);
     if (auto ok = d.checkSize(width, height); !ok)
         return ok;
     d.timer.beginFrame();
+    // Every pass works in render space (RenderSpace.h): the scene and the
+    // camera moved so that the scene's bounds start at the origin.
+    const scene::Scene& scene = d.enterRenderSpace(worldScene);
+    const scene::Camera camera = d.space.toRender(worldCamera);
     const glm::mat4 view = camera.view();
     const glm::mat4 projection = camera.projection(float(width) / float(height));
-    if (d.sceneBoundsGeneration != d.sceneGeneration) {
-        d.sceneBounds = scene.worldBounds();
-        d.sceneBoundsGeneration = d.sceneGeneration;
-    }
     if (d.sceneScaleGeneration != d.sceneGeneration) {
         d.sceneScale = measureSceneScale(scene);
         d.sceneScaleGeneration = d.sceneGeneration;
@@ -180,7 +206,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& scene, const scene::P
     d.frameParams = withFit(params, d.lpvFit);
     d.lpvDelivery = renderer::lpvDelivery(d.lpvFit, params.getInt("lpv.gridSize"), d.sceneScale, camera.position);
     const FrameContext frame{scene,      d.frameParams,   camera,  width, height, view, projection,
-                             projection * view, d.timer, d.sceneBounds};
+                             projection * view, d.timer, d.sceneBounds, d.space.anchor()};
     d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));
     try {
         // Build the graph, compile, execute.

@@ -14,6 +14,7 @@
 #include "MaterialGpu.h"
 #include "ProgramCache.h"
 #include "RadiosityIndirectPass.h"
+#include "RenderSpace.h"
 #include "RsmPass.h"
 #include "ShadowPass.h"
 #include "SkyHeightPass.h"
@@ -95,9 +96,16 @@ struct ForwardRenderer::Impl {
     std::optional<SceneTraits> traits;
     // Bumped on every scene change: part of every reuse key.
     std::uint64_t sceneGeneration = 0;
-    // scene.worldBounds() of sceneGeneration (it walks every vertex).
+    // The scene as the passes see it (RenderSpace.h), and its bounds there;
+    // worldBounds is scene.worldBounds() of sceneGeneration (it walks every vertex).
+    RenderSpace space;
+    scene::Bounds worldBounds;
     scene::Bounds sceneBounds;
     std::uint64_t sceneBoundsGeneration = ~std::uint64_t(0);
+    // Moves `world`'s objects, lights and sky into render space (per frame:
+    // lights change without a new generation) and updates the bounds.
+    const scene::Scene& enterRenderSpace(const scene::Scene& world);
+    mutable std::optional<LpvSnapshot> worldSnapshot; // lpvSnapshot() in world space
     // The LPV fitted to the scene (LpvFit.h): the scene's lengths per scene
     // generation, this frame's fit, what it means for the light delivered,
     // and the parameters every pass of the frame reads (the fit written in).

@@ -25,8 +25,12 @@ struct FrameContext {
     glm::mat4 projection{1.0f};
     glm::mat4 viewProj{1.0f};
     GpuTimer& timer;
-    // The scene's world bounds (computed once per scene generation).
+    // The scene's bounds (computed once per scene generation).
     scene::Bounds sceneBounds{};
+    // The scene, the camera and every matrix above are in render space
+    // (RenderSpace.h): the world moved by -anchor. A pass that draws data
+    // kept in world space (a baked radiosity mesh) adds the anchor back.
+    glm::dvec3 anchor{0.0};
 };
 
 } // namespace lpv::renderer

@@ -4,6 +4,7 @@
 #include "lpv/radiosity/VertexRadiosity.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace lpv::renderer {
@@ -69,8 +70,13 @@ void RadiosityIndirectPass::render(graph::PassContext& ctx, bool afterPrepass) {
     glDisable(GL_BLEND);
     const GLuint p = program_.id();
     glUseProgram(p);
-    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-    glProgramUniform3fv(p, loc(p, "uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+    // The solution's patches are in world space; the frame's matrices in
+    // render space (FrameContext::anchor): move the patches there.
+    const glm::mat4 worldViewProj =
+        glm::mat4(glm::dmat4(frame.viewProj) * glm::translate(glm::dmat4(1.0), -frame.anchor));
+    const glm::vec3 worldCamera = glm::vec3(glm::dvec3(frame.camera.position) + frame.anchor);
+    glProgramUniformMatrix4fv(p, loc(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(worldViewProj));
+    glProgramUniform3fv(p, loc(p, "uCameraPos"), 1, glm::value_ptr(worldCamera));
     glProgramUniform1i(p, loc(p, "uTestSceneDepth"), afterPrepass ? 1 : 0);
     glProgramUniform1f(p, loc(p, "uDepthTolerance"), kDepthTolerance);
     glProgramUniform2f(p, loc(p, "uProjectionZ"), frame.projection[2][2], frame.projection[3][2]);
