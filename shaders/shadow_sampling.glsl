@@ -10,6 +10,10 @@
 const int MAX_CASCADES = 8;
 const int MAX_LOCAL_SHADOWS = 4;
 const float MAX_FILTER_TEXELS = 24.0;
+// A spot or point map's near plane over its far plane (ShadowLights.h
+// kLocalShadowNearFraction): no blocker is nearer the light than that, so
+// the mean blocker distance is floored there, not at a length in metres.
+const float LOCAL_SHADOW_NEAR_FRACTION = 1e-3;
 
 uniform float uShadowBias;            // shadow.bias, in texels
 uniform mat4 uShadowCameraView;       // view depth selects the cascade
@@ -52,7 +56,7 @@ const vec2 SHADOW_POISSON[16] = vec2[](
 // tan of the angle between the normal and the light, for slope-scaled bias.
 float shadowSlope(vec3 n, vec3 toLight) {
     float c = clamp(dot(n, toLight), 0.0, 1.0);
-    return min(sqrt(1.0 - c * c) / max(c, 1e-3), 8.0);
+    return min(sqrt(1.0 - c * c) / max(c, 1e-3), 8.0); // a cosine: unitless
 }
 
 // Visibility of `worldPos` in cascade k, or -1 when it falls outside the cascade.
@@ -161,7 +165,7 @@ float spotVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     }
     if (blockers == 0.0)
         return 1.0;
-    float blocker = max(blockerSum / blockers * far, 1e-4);
+    float blocker = max(blockerSum / blockers, LOCAL_SHADOW_NEAR_FRACTION) * far;
     float penumbra = uLocalLightRadius * (receiver - blocker) / blocker; // world, at the receiver
     float filterTexels = clamp(penumbra / texel, 1.0, MAX_FILTER_TEXELS);
     reference -= filterTexels * texel * min(slope, 2.0) / far;
@@ -181,7 +185,7 @@ float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     vec3 p = worldPos + n * (uShadowBias * texel * (1.0 + min(slope, 2.0)));
     vec3 d = p - uPointPosition[layer];
     float receiver = length(d);
-    vec3 dir = d / max(receiver, 1e-6);
+    vec3 dir = receiver > 0.0 ? d / receiver : vec3(0.0, 0.0, 1.0); // a float guard only: a receiver on the light
     float reference = (receiver - uShadowBias * texel * (1.0 + min(slope, 4.0))) / far;
     if (radius <= 0.0)
         return texture(uPointCompare, vec4(dir, float(layer)), reference);
@@ -202,7 +206,7 @@ float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     }
     if (blockers == 0.0)
         return 1.0;
-    float blocker = max(blockerSum / blockers * far, 1e-4);
+    float blocker = max(blockerSum / blockers, LOCAL_SHADOW_NEAR_FRACTION) * far;
     float penumbra = radius * (receiver - blocker) / blocker;
     float filterTexels = clamp(penumbra / texel, 1.0, MAX_FILTER_TEXELS);
     reference -= filterTexels * texel * min(slope, 2.0) / far;

@@ -10,7 +10,12 @@ namespace lpv::renderer {
 
 std::vector<float> cascadeSplits(int count, float near, float far, float lambda) {
     count = std::max(count, 1);
-    near = std::max(near, 1e-4f);
+    // The log spacing needs near > 0: a float guard relative to far (the
+    // camera's planes scale with the scene), not the 0.1 mm it was, which
+    // cut into a centimetre scene's view.
+    if (far > 0.0f && std::isfinite(far))
+        near = std::max(near, far * 1e-7f);
+    near = std::max(near, std::numeric_limits<float>::min());
     far = std::max(far, near * 1.001f);
     std::vector<float> splits(std::size_t(count) + 1);
     for (int i = 0; i <= count; ++i) {
@@ -48,7 +53,11 @@ glm::vec2 sceneDepthRange(const glm::mat4& lightView, const scene::Bounds& bound
         lo = std::min(lo, depth);
         hi = std::max(hi, depth);
     });
-    const float margin = std::max(0.01f * (hi - lo), 1e-3f);
+    // 1% of the depth span; a scene flat across the light (a floor under a
+    // zenith sun) gets a thousandth of its size instead: no millimetre floor.
+    const float margin = std::max(0.01f * (hi - lo), 1e-3f * glm::length(bounds.size()));
+    if (!(margin > 0.0f)) // a scene of one point: nothing to scale with
+        return {lo - 1.0f, hi + 1.0f};
     return {lo - margin, hi + margin};
 }
 

@@ -30,9 +30,11 @@ ShadowLightSelection selectShadowLights(const scene::Scene& scene) {
 
 namespace {
 
-// Distance from the light to the farthest scene corner (or its range, if shorter).
+// Distance from the light to the farthest scene corner (or its range, if
+// shorter). Scene-relative: no metre floor (which made a 2 cm scene's map 1 m
+// deep); 1 remains only for a light with no scene and no range around it.
 float farDistance(const scene::Light& light, const scene::Bounds& b) {
-    float far = 1.0f;
+    float far = 0.0f;
     if (!b.empty())
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 p{corner & 1 ? b.max.x : b.min.x, corner & 2 ? b.max.y : b.min.y,
@@ -40,7 +42,9 @@ float farDistance(const scene::Light& light, const scene::Bounds& b) {
             far = std::max(far, glm::length(p - light.position));
         }
     if (light.range > 0.0f)
-        far = std::min(far, light.range);
+        far = far > 0.0f ? std::min(far, light.range) : light.range;
+    if (!(far > 0.0f) || !std::isfinite(far))
+        far = 1.0f;
     return far * 1.01f;
 }
 
@@ -59,7 +63,7 @@ LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& b
     LocalShadowView v;
     v.faces = 1;
     v.farPlane = farDistance(light, bounds);
-    v.nearPlane = std::max(v.farPlane * 1e-3f, 1e-3f);
+    v.nearPlane = v.farPlane * kLocalShadowNearFraction;
     // Cover the cone, clamped below 180 degrees where a perspective projection degenerates.
     const float fov = std::min(2.0f * light.outerConeAngle, glm::radians(170.0f));
     v.tanHalfFov = std::tan(0.5f * fov);
@@ -73,7 +77,7 @@ LocalShadowView pointShadowView(const scene::Light& light, const scene::Bounds& 
     LocalShadowView v;
     v.faces = 6;
     v.farPlane = farDistance(light, bounds);
-    v.nearPlane = std::max(v.farPlane * 1e-3f, 1e-3f);
+    v.nearPlane = v.farPlane * kLocalShadowNearFraction;
     v.tanHalfFov = 1.0f;
     const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, v.nearPlane, v.farPlane);
     // The GL cube-map face conventions (the face's "up" is -t of the spec's table).

@@ -23,6 +23,12 @@ struct ShadowLightSelection {
 
 ShadowLightSelection selectShadowLights(const scene::Scene& scene);
 
+// A spot or point map's near plane as a fraction of its far plane (the
+// distance to the farthest scene corner): scene-relative, so a 2 cm and a
+// 2 km scene get the same depth layout. shadow_sampling.glsl's blocker floor
+// is the same fraction.
+inline constexpr float kLocalShadowNearFraction = 1e-3f;
+
 // Perspective view of one local light: 1 face for a spot, 6 cube faces for a
 // point light (in GL cube-map face order +X, -X, +Y, -Y, +Z, -Z). The map
 // stores distance to the light divided by `far`.

@@ -6,11 +6,20 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lpv::renderer {
 
 using scene::ErrorCode;
 using scene::makeError;
+
+float skyHeightMargin(const scene::Bounds& bounds) {
+    if (bounds.empty())
+        return 1.0f; // no scene to scale with; nothing is drawn either
+    const glm::vec3 size = bounds.size();
+    const float margin = 0.01f * std::max(size.y, 1e-3f * std::max(size.x, size.z));
+    return margin > 0.0f && std::isfinite(margin) ? margin : 1.0f;
+}
 
 scene::Expected<SkyHeightPass> SkyHeightPass::create() {
     SkyHeightPass pass;
@@ -49,7 +58,7 @@ scene::Expected<LpvSkyInput> SkyHeightPass::render(const FrameContext& frame, co
         size_ = resolution;
     }
     const scene::Bounds bounds = frame.sceneBounds;
-    const float margin = 0.01f * std::max(bounds.size().y, 1.0f);
+    const float margin = skyHeightMargin(bounds);
     LpvSkyInput out;
     out.depth = depth_.id();
     out.size = resolution;

@@ -14,6 +14,11 @@
 
 namespace lpv::renderer {
 
+// How far the map's top and bottom stand beyond the scene: 1% of its height,
+// or of a thousandth of its width for a flat scene (issue #41: no 1 m floor,
+// which put the planes of a 2 cm scene 50% of its size away).
+float skyHeightMargin(const scene::Bounds& bounds);
+
 class SkyHeightPass {
   public:
     static scene::Expected<SkyHeightPass> create();
