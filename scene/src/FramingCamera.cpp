@@ -129,7 +129,10 @@ Camera framingCamera(const Scene& scene) {
     if (b.empty())
         return camera;
     const glm::vec3 size = b.size();
-    const float radius = std::max(0.5f * glm::length(size), 1e-3f);
+    // Planes below are fractions of the radius; the fallback is a float guard
+    // for a scene of one point (nothing to scale with), not a length.
+    const float diagonal = 0.5f * glm::length(size);
+    const float radius = diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f;
     const Enclosure e = enclosure(scene, b);
     if (e.enclosed) {
         // Stand 12% in from one end of the longest horizontal axis, at a
@@ -159,6 +162,25 @@ Camera framingCamera(const Scene& scene) {
         camera.farPlane = 10.0f * radius;
     }
     return camera;
+}
+
+void fitClipPlanes(Camera& camera, const Bounds& bounds) {
+    if (bounds.empty())
+        return;
+    const glm::dvec3 eye(camera.position), lo(bounds.min), hi(bounds.max);
+    double farthest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
+        farthest = std::max(farthest, glm::length(p - eye));
+    }
+    const double nearest = glm::length(glm::max(glm::max(lo - eye, eye - hi), glm::dvec3(0.0)));
+    const double far = farthest * 1.01;
+    if (!(far > 0.0) || !std::isfinite(far))
+        return; // the eye on a bounds of one point: nothing to scale with
+    // Far / near stays well inside the depth buffer's 1.6e7 (ValueChecks.h).
+    const double near = std::max(nearest > 0.0 ? 0.5 * nearest : 0.0, far * 1e-4);
+    camera.nearPlane = float(near);
+    camera.farPlane = float(far);
 }
 
 } // namespace lpv::scene

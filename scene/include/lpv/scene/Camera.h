@@ -13,6 +13,10 @@ struct Camera {
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovY = 0.785398f; // radians
+    // In metres, for a camera nobody fitted to a scene: one made for an
+    // imported or generated scene takes its planes from the scene's bounds
+    // (scene::fitClipPlanes and framingCamera, FramingCamera.h; issue #41),
+    // since these clip a 2 cm scene whole and cut a 2 km one.
     float nearPlane = 0.05f;
     float farPlane = 500.0f;
 
