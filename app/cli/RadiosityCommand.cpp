@@ -236,7 +236,6 @@ int runRadiosityCommand(const RadiosityCommand& c) {
         if (!ignored.empty())
             std::printf("ignoring the saved solution: %s\n", ignored.c_str());
     }
-    const float maxPatchArea = params.getFloat("radiosity.maxPatchArea");
     const auto meshStart = std::chrono::steady_clock::now();
     auto created = radiosity::RadiositySession::create(project->scene, params, textures.images, std::move(saved));
     if (!created) {
@@ -244,9 +243,11 @@ int runRadiosityCommand(const RadiosityCommand& c) {
         return kFailure;
     }
     radiosity::RadiositySession& session = *created;
-    std::printf("patches: %zu (%zu source quads, %zu source triangles, max area %g m^2), meshed in %.2f s\n",
+    // radiosity.maxPatchArea, or unset the scene's own (radiosity::patchAreaFor).
+    std::printf("patches: %zu (%zu source quads, %zu source triangles, max area %g m^2%s), meshed in %.2f s\n",
                 session.mesh().size(), session.mesh().sourceQuads, session.mesh().sourceTriangles,
-                maxPatchArea,
+                session.maxPatchArea(),
+                params.isSet("radiosity.maxPatchArea") ? "" : ": 1/25 of the scene's largest side, squared",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count());
     if (!session.note().empty())
         std::printf("%s\n", session.note().c_str());
