@@ -144,10 +144,11 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
             addRange(sub.firstIndex, sub.indexCount, int(sub.materialIndex));
     }
 
-    // The frame: the bounds' centre snapped to a grid of the power of two at
-    // or above the extent. A scene around the world origin keeps origin 0
-    // (bit for bit the coordinates it always had); one 100 km away is moved
-    // by an exact multiple of that power of two.
+    // The frame: for a scene farther from the world origin than its own size,
+    // the bounds' centre snapped to a grid of the power of two at or above
+    // that size, so it is moved by an exact amount (100 km for a box 100 km
+    // away). A scene within its size of the origin keeps origin 0, bit for
+    // bit the coordinates it always had: they are already as small as it is.
     if (!corners.empty()) {
         glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
         for (const glm::dvec3& c : corners) {
@@ -156,7 +157,9 @@ Expected<EmbreeScene> EmbreeScene::build(const scene::Scene& s, const scene::Tex
         }
         const double side = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
         const double grid = side > 0.0 ? std::exp2(std::ceil(std::log2(side))) : 1.0;
-        d.origin = glm::round(0.5 * (lo + hi) / grid) * grid;
+        const glm::dvec3 centre = 0.5 * (lo + hi);
+        if (std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)}) > side)
+            d.origin = glm::round(centre / grid) * grid;
         d.extent = float(side);
     }
     std::vector<glm::vec3> positions(corners.size());

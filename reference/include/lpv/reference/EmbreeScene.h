@@ -71,10 +71,10 @@ class EmbreeScene {
 
     std::size_t triangleCount() const;
 
-    // The world point the frame's coordinates are measured from: the centre of
-    // the scene's bounds snapped to a power-of-two grid as coarse as the
-    // scene's extent, so a scene around the world origin keeps origin 0 (its
-    // coordinates unchanged) and a far one is moved by an exact amount.
+    // The world point the frame's coordinates are measured from: 0 for a
+    // scene within its own size of the world origin (its coordinates
+    // unchanged), else the centre of its bounds snapped to a power-of-two
+    // grid as coarse as the scene, so a far one is moved by an exact amount.
     const glm::dvec3& frameOrigin() const;
     // A world position (or a light's, a camera's) in the frame, computed in double.
     glm::vec3 toFrame(const glm::vec3& world) const;
