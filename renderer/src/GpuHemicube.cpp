@@ -63,6 +63,12 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
     for (const radiosity::Patch& p : mesh.patches)
         for (int k = 0; k < p.cornerCount; ++k)
             bounds.extend(p.corners[std::size_t(k)]);
+    if (!bounds.empty()) {
+        const glm::vec3 c = bounds.center();
+        if (std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)}) > glm::length(bounds.size()))
+            h->frame_ = c;
+    }
+    const glm::vec3 frame = h->frame_;
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
     order.reserve(mesh.size());
     // A float guard only (a flat axis divides): the Morton order needs no length.
@@ -87,7 +93,9 @@ scene::Expected<std::unique_ptr<GpuHemicube>> GpuHemicube::create(const radiosit
         for (std::size_t k = start; k < std::min(order.size(), start + kClusterPatches); ++k) {
             const std::uint32_t i = order[k].second;
             const radiosity::Patch& p = mesh.patches[i];
-            const auto& c = p.corners;
+            std::array<glm::vec3, 4> c{};
+            for (int j = 0; j < p.cornerCount; ++j)
+                c[std::size_t(j)] = p.corners[std::size_t(j)] - frame;
             verts.push_back({c[0], i});
             verts.push_back({c[1], i});
             verts.push_back({c[2], i});
@@ -158,8 +166,13 @@ void GpuHemicube::renderShooter(const radiosity::Patch& shooter, int row) const 
     const glm::vec3 n = shooter.normal;
     const glm::vec3 t = perpendicular(n);
     const glm::vec3 b = glm::cross(n, t);
-    // Just off the surface, so the shooter's own plane falls behind the near plane.
-    const glm::vec3 eye = shooter.center + n * (near_ * 0.5f);
+    // Just off the surface, so the shooter's own plane falls behind the near
+    // plane, and past the float rounding of the patch's world position (8 mm
+    // 100 km out), which may have put its centre behind its own wall.
+    const glm::vec3& c = shooter.center;
+    const float rounding =
+        2.0f * std::numeric_limits<float>::epsilon() * std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)});
+    const glm::vec3 eye = (c - frame_) + n * std::max(near_ * 0.5f, rounding);
     const radiosity::HemicubeLayout layout{resolution_};
     const GLint loc = glGetUniformLocation(raster_.id(), "uViewProj");
     for (const radiosity::HemicubeFace& face : layout.faces()) {

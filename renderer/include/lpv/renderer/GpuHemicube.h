@@ -56,6 +56,12 @@ class GpuHemicube final : public radiosity::FormFactorSource {
     GLsizei vertexCount_ = 0;
     float near_ = 0.001f;
     float far_ = 100.0f;
+    // Patches are drawn relative to this point: the centre of the patches'
+    // bounds when they lie farther from the world origin than their size, else
+    // 0 (issue #41). 100 km out a float view matrix alone rounds to 8 mm, far
+    // above the near plane (1e-5 of the scene); corners minus a nearby centre
+    // are exact.
+    glm::vec3 frame_{0.0f};
     Buffer vertices_;
     VertexArray vao_;
     Texture ids_;
