@@ -197,14 +197,10 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
     const scene::Camera camera = d.space.toRender(worldCamera);
     const glm::mat4 view = camera.view();
     const glm::mat4 projection = camera.projection(float(width) / float(height));
-    if (d.sceneScaleGeneration != d.sceneGeneration) {
-        d.sceneScale = measureSceneScale(scene);
-        d.sceneScaleGeneration = d.sceneGeneration;
-    }
     // Every pass reads the parameters with the LPV's fit written in.
-    d.lpvFit = fitLpv(params, d.sceneScale, camera.position);
+    d.lpvFit = fitLpv(params, d.sceneBounds, camera.position);
     d.frameParams = withFit(params, d.lpvFit);
-    d.lpvDelivery = renderer::lpvDelivery(d.lpvFit, params.getInt("lpv.gridSize"), d.sceneScale, camera.position);
+    d.lpvDelivery = renderer::lpvDelivery(d.lpvFit, params.getInt("lpv.gridSize"), d.sceneBounds, camera.position);
     const FrameContext frame{scene,      d.frameParams,   camera,  width, height, view, projection,
                              projection * view, d.timer, d.sceneBounds, d.space.anchor()};
     d.materialGpu->setAnisotropy(float(params.getInt("output.anisotropy")));

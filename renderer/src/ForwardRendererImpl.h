@@ -106,11 +106,9 @@ struct ForwardRenderer::Impl {
     // lights change without a new generation) and updates the bounds.
     const scene::Scene& enterRenderSpace(const scene::Scene& world);
     mutable std::optional<LpvSnapshot> worldSnapshot; // lpvSnapshot() in world space
-    // The LPV fitted to the scene (LpvFit.h): the scene's lengths per scene
-    // generation, this frame's fit, what it means for the light delivered,
-    // and the parameters every pass of the frame reads (the fit written in).
-    SceneScale sceneScale;
-    std::uint64_t sceneScaleGeneration = ~std::uint64_t(0);
+    // The LPV fitted to the scene (LpvFit.h): this frame's fit, what it
+    // means for the light delivered, and the parameters every pass of the
+    // frame reads (the fit written in).
     LpvFit lpvFit;
     LpvDelivery lpvDelivery;
     scene::ParameterSet frameParams;

@@ -1,6 +1,5 @@
 #include "lpv/renderer/LpvFit.h"
 
-#include "lpv/scene/WorldMatrices.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,42 +44,16 @@ double nearestAxisDistance(const scene::Bounds& b, const glm::dvec3& p) {
 
 } // namespace
 
-SceneScale measureSceneScale(const scene::Scene& scene) {
-    SceneScale s;
-    const std::vector<glm::mat4> worlds = scene::worldMatrices(scene);
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        const scene::Object& obj = scene.objects[o];
-        if (!obj.visible || obj.mesh < 0 || std::size_t(obj.mesh) >= scene.meshes.size())
-            continue;
-        const scene::Mesh& mesh = scene.meshes[std::size_t(obj.mesh)];
-        const glm::dmat4 m = glm::dmat4(worlds[o]);
-        auto world = [&](std::uint32_t i) { return glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0)); };
-        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-            const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
-            if (a >= mesh.positions.size() || b >= mesh.positions.size() || c >= mesh.positions.size())
-                continue;
-            const glm::dvec3 pa = world(a), pb = world(b), pc = world(c);
-            s.surfaceArea += 0.5 * glm::length(glm::cross(pb - pa, pc - pa));
-            s.bounds.extend(glm::vec3(pa));
-            s.bounds.extend(glm::vec3(pb));
-            s.bounds.extend(glm::vec3(pc));
-        }
-    }
-    if (s.bounds.empty() || !(s.surfaceArea > 0.0) || !std::isfinite(s.surfaceArea))
-        return s;
-    // A flat scene (a ground plane, a single wall) has no volume: give its
-    // box a thickness of 1% of its largest side, so the free path stays a
-    // length of the scene rather than 0.
-    glm::dvec3 size = glm::dvec3(s.bounds.size());
-    const double largest = std::max({size.x, size.y, size.z});
-    size = glm::max(size, glm::dvec3(0.01 * largest));
-    s.meanFreePath = 4.0 * size.x * size.y * size.z / s.surfaceArea;
-    // Never longer than the box itself (a few small objects in a big empty box).
-    s.meanFreePath = std::min(s.meanFreePath, largest);
-    return s;
+namespace {
+
+double largestSide(const scene::Bounds& b) {
+    const glm::vec3 size = b.size();
+    return double(std::max({size.x, size.y, size.z}));
 }
 
-LpvFit fitLpv(const scene::ParameterSet& params, const SceneScale& scale, const glm::vec3& camera) {
+} // namespace
+
+LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
     LpvFit fit;
     const int gridSize = params.getInt("lpv.gridSize");
     fit.cascades = std::min(params.getInt("lpv.cascades"), params.getInt("rsm.cascades"));
@@ -92,40 +65,33 @@ LpvFit fitLpv(const scene::ParameterSet& params, const SceneScale& scale, const 
         return fit;
     }
     fit.fitted = true;
-    if (!(scale.meanFreePath > 0.0)) {
-        // Nothing to light: any size serves; 1 keeps the numbers finite.
+    const double side = sceneBounds.empty() ? 0.0 : largestSide(sceneBounds);
+    if (!(side > 0.0) || !std::isfinite(side)) {
+        // Nothing to light (or a single point): any size serves; 1 keeps the numbers finite.
         fit.cellSize = 1.0;
-        fit.reason = "cell 1 m: the scene has no visible surface to fit to";
+        fit.reason = "cell 1 m: the scene has no extent to fit to";
         return fit;
     }
-    fit.cellSize = scale.meanFreePath / kCellsPerFreePath;
-    fit.stepsFitted = !params.isSet("lpv.propagationSteps");
-    if (fit.stepsFitted)
-        fit.steps = int(kCellsPerFreePath);
-    // Cascades: double the cells until the coarsest serves the whole scene
-    // around the camera, at most lpv.cascades' upper bound (6). When even
-    // that cannot, the cells grow instead, so no part of the scene goes
-    // without indirect light.
-    fit.cascadesFitted = !params.isSet("lpv.cascades") && !params.isSet("rsm.cascades");
-    const glm::dvec3 eye = glm::dvec3(camera);
-    const double farthest = farthestAxisDistance(scale.bounds, eye);
-    constexpr int kMaxCascades = 6;
-    if (fit.cascadesFitted) {
-        fit.cascades = 1;
-        while (fit.cascades < kMaxCascades &&
-               servedReach(std::ldexp(fit.cellSize, fit.cascades - 1), gridSize) < farthest)
-            ++fit.cascades;
-        const double coarsest = servedReach(std::ldexp(fit.cellSize, fit.cascades - 1), gridSize);
-        if (coarsest < farthest)
-            fit.cellSize *= farthest / coarsest;
+    // lpv.cascades and rsm.cascades keep their meaning (4 by default): the
+    // fit chooses the sizes, not how many.
+    double finest = side / double(kFinestCellsPerScene);
+    // The camera far from the scene: double every cascade until the
+    // coarsest serves the scene's middle and a quarter of it beyond.
+    const glm::dvec3 middle = glm::dvec3(sceneBounds.center());
+    const glm::dvec3 offset = glm::abs(middle - glm::dvec3(camera));
+    const double needed = std::max({offset.x, offset.y, offset.z}) + 0.25 * side;
+    int doublings = 0;
+    while (servedReach(std::ldexp(finest, fit.cascades - 1), gridSize) < needed && doublings < 60) {
+        finest *= 2.0;
+        ++doublings;
     }
-    const double sceneSize = double(std::max({scale.bounds.size().x, scale.bounds.size().y, scale.bounds.size().z}));
-    fit.reason = "cell " + length(fit.cellSize) + " (1/" + std::to_string(int(kCellsPerFreePath)) + " of the " +
-                 length(scale.meanFreePath) + " mean free path), " + std::to_string(fit.cascades) +
-                 (fit.cascades == 1 ? " cascade" : " cascades") +
-                 (fit.cascadesFitted ? " to hold the " + length(sceneSize) + " scene around the view"
-                                     : " (lpv.cascades)") +
-                 ", " + std::to_string(fit.steps) + " steps" + (fit.stepsFitted ? "" : " (lpv.propagationSteps)");
+    fit.cellSize = finest;
+    const double coarsest = std::ldexp(finest, fit.cascades - 1);
+    fit.reason = "cell " + length(fit.cellSize) + " (1/" + std::to_string(kFinestCellsPerScene) + " of the " +
+                 length(side) + " scene" + (doublings == 0 ? "" : ", x" + std::to_string(1 << std::min(doublings, 30)) +
+                                                                     " to reach it from the camera") +
+                 "), " + std::to_string(fit.cascades) + (fit.cascades == 1 ? " cascade" : " cascades up to ") +
+                 (fit.cascades == 1 ? "" : length(coarsest)) + ", " + std::to_string(fit.steps) + " steps";
     return fit;
 }
 
@@ -135,41 +101,34 @@ scene::ParameterSet withFit(const scene::ParameterSet& params, const LpvFit& fit
     scene::ParameterSet out = params;
     // The registry's range holds every fit (1e-6 .. 1e6 m); a scene beyond
     // it is refused at load (ValueChecks' kMaxLength bounds every length).
-    const double cell = std::clamp(fit.cellSize, 1e-6, 1e6);
-    (void)out.set("lpv.cellSize", cell);
-    if (fit.cascadesFitted) {
-        (void)out.set("lpv.cascades", fit.cascades);
-        (void)out.set("rsm.cascades", fit.cascades);
-    }
-    if (fit.stepsFitted)
-        (void)out.set("lpv.propagationSteps", fit.steps);
+    (void)out.set("lpv.cellSize", std::clamp(fit.cellSize, 1e-6, 1e6));
     return out;
 }
 
-LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const SceneScale& scale, const glm::vec3& camera) {
+LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
     using Problem = LpvDelivery::Problem;
-    if (scale.bounds.empty() || !(fit.cellSize > 0.0) || fit.cascades < 1)
+    if (sceneBounds.empty() || !(fit.cellSize > 0.0) || fit.cascades < 1)
         return {};
     const glm::dvec3 eye = glm::dvec3(camera);
     const double coarsestCell = std::ldexp(fit.cellSize, fit.cascades - 1);
     const double served = servedReach(coarsestCell, gridSize);
-    const double nearest = nearestAxisDistance(scale.bounds, eye);
+    const double nearest = nearestAxisDistance(sceneBounds, eye);
     if (nearest > served)
         return {Problem::OutsideCascades, "the scene lies outside every cascade: the coarsest reaches " +
                                               length(served) + " from the camera, the scene starts " +
                                               length(nearest) + " away"};
-    // Light travels `steps` cells of a cascade. Where even the coarsest
-    // carries it less than half a mean free path, little of it reaches
-    // another surface (measured: the Cornell box keeps 3% of its light at
-    // 0.4 mean free paths, docs/lpv.md).
-    const double reach = double(fit.steps) * coarsestCell;
     if (fit.steps == 0)
         return {Problem::NoSteps, "lpv.propagationSteps is 0: light stays in the cells it was injected into"};
-    if (scale.meanFreePath > 0.0 && reach < 0.5 * scale.meanFreePath)
+    // Light travels `steps` cells of a cascade. Where even the coarsest
+    // carries it less than 1/8 of the scene, little of it reaches another
+    // surface: one cascade of a quarter of the Cornell box's side kept 3%
+    // of its indirect light (docs/lpv.md); the fit's own is 0.4.
+    const double side = largestSide(sceneBounds);
+    const double reach = double(fit.steps) * coarsestCell;
+    if (reach < side / 8.0)
         return {Problem::ShortReach, "light travels at most " + length(reach) + " (" + std::to_string(fit.steps) +
-                                         " steps of " + length(coarsestCell) + " cells), under half the " +
-                                         length(scale.meanFreePath) +
-                                         " between the scene's surfaces: little reaches another surface"};
+                                         " steps of " + length(coarsestCell) + " cells), under 1/8 of the " +
+                                         length(side) + " scene: little reaches another surface"};
     return {};
 }
 

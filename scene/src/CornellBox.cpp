@@ -151,21 +151,9 @@ Project makeCornellBoxProject() {
     scene.sky.color = glm::vec3(0.0f);
     scene.sky.intensity = 0.0f; // closed box: no sky light
 
-    project.parameters.set("lpv.cellSize", 0.2).value();
-    // Read the LPV half a cell in front of each surface: the box's walls are
-    // one-sided and everything behind them is dark, so at the wall itself the
-    // trilinear lookup takes half its taps from outside the room. Measured
-    // against the path tracer (docs/lpv.md): indirect MARE 77.9% -> 65.3%,
-    // mean 0.55x -> 0.82x of the reference's. The registry default stays 0
-    // (Sponza's error grows with it).
-    project.parameters.set("lpv.lookupOffset", 0.5).value();
-    // Inject the lamp's VPLs where they land, not a cell along their normal:
-    // the box is 5.5 m across in 0.2-0.8 m cells, and a cell's lift moves the
-    // light off the floor and walls it came from. With the scene's geometry
-    // volume (docs/lpv.md): indirect MARE 59.9% -> 52.5% at the same mean
-    // (0.83x), dolly-path flicker 3.16% -> 1.93%. The registry default stays
-    // 1 (Sibenik's error more than doubles at 0).
-    project.parameters.set("lpv.injectionOffset", 0.0).value();
+    // No LPV settings of its own (issue #41): lpv.cellSize = auto fits the
+    // cells to the box, and the registry's offsets serve it as they serve
+    // an imported copy of it, which renders the same.
     // No exposure of its own: auto exposure (the default) meters the box.
     return project;
 }
