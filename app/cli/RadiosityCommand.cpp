@@ -244,11 +244,12 @@ int runRadiosityCommand(const RadiosityCommand& c) {
     }
     radiosity::RadiositySession& session = *created;
     // radiosity.maxPatchArea, or unset the scene's own (radiosity::patchAreaFor).
-    std::printf("patches: %zu (%zu source quads, %zu source triangles, max area %g m^2%s), meshed in %.2f s\n",
-                session.mesh().size(), session.mesh().sourceQuads, session.mesh().sourceTriangles,
-                session.maxPatchArea(),
-                params.isSet("radiosity.maxPatchArea") ? "" : ": 1/25 of the scene's largest side, squared",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count());
+    std::printf(
+        "patches: %zu (%zu source quads, %zu source triangles, max area %g m^2%s), meshed in %.2f s\n",
+        session.mesh().size(), session.mesh().sourceQuads, session.mesh().sourceTriangles,
+        session.maxPatchArea(),
+        params.isSet("radiosity.maxPatchArea") ? "" : ": 1/25 of the scene's largest side, squared",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - meshStart).count());
     if (!session.note().empty())
         std::printf("%s\n", session.note().c_str());
 

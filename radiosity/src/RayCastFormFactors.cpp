@@ -13,7 +13,8 @@ namespace lpv::radiosity {
 namespace {
 
 struct ShooterSamples {
-    std::vector<glm::vec3> points; // in Embree's frame, already lifted off the shooter (EmbreeScene::offsetWorldPoint)
+    std::vector<glm::vec3>
+        points; // in Embree's frame, already lifted off the shooter (EmbreeScene::offsetWorldPoint)
     glm::vec3 normal{0.0f};
     float pieceArea = 0.0f; // A_i / S
     float area = 0.0f;

@@ -327,7 +327,8 @@ glm::vec3 EmbreeScene::offsetWorldPoint(const glm::vec3& world, const glm::vec3&
     const glm::vec3 p = toFrame(world);
     const float frameScale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 0.125f * impl_->extent});
     const float worldScale = std::max({std::abs(world.x), std::abs(world.y), std::abs(world.z)});
-    const float lift = std::max(2e-5f * frameScale, 2.0f * std::numeric_limits<float>::epsilon() * worldScale);
+    const float lift =
+        std::max(2e-5f * frameScale, 2.0f * std::numeric_limits<float>::epsilon() * worldScale);
     return p + n * lift;
 }
 

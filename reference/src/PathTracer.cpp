@@ -169,8 +169,8 @@ glm::vec3 PathTracer::directIrradiance(const glm::vec3& p, const glm::vec3& offs
     // past them, or its shadow rays could start behind its own wall.
     const glm::vec3 q = embree_.toFrame(p);
     const glm::vec3 lifted = embree_.offsetWorldPoint(p, offsetNormal);
-    return directIrradianceInFrame(lifted == embree_.offsetOrigin(q, offsetNormal) ? q : lifted, offsetNormal, n,
-                                   rng);
+    return directIrradianceInFrame(lifted == embree_.offsetOrigin(q, offsetNormal) ? q : lifted, offsetNormal,
+                                   n, rng);
 }
 
 glm::vec3 PathTracer::directIrradianceInFrame(const glm::vec3& p, const glm::vec3& offsetNormal,

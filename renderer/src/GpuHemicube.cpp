@@ -170,8 +170,8 @@ void GpuHemicube::renderShooter(const radiosity::Patch& shooter, int row) const 
     // plane, and past the float rounding of the patch's world position (8 mm
     // 100 km out), which may have put its centre behind its own wall.
     const glm::vec3& c = shooter.center;
-    const float rounding =
-        2.0f * std::numeric_limits<float>::epsilon() * std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)});
+    const float rounding = 2.0f * std::numeric_limits<float>::epsilon() *
+                           std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)});
     const glm::vec3 eye = (c - frame_) + n * std::max(near_ * 0.5f, rounding);
     const radiosity::HemicubeLayout layout{resolution_};
     const GLint loc = glGetUniformLocation(raster_.id(), "uViewProj");

@@ -87,7 +87,8 @@ TEST(RadiosityScale, PatchAreaIsAFractionOfTheScene) {
     const float metreArea = radiosity::patchAreaFor(cornell(), none);
     EXPECT_NEAR(metreArea, 0.05f, 0.0005f);
     for (const double s : {0.01, 1000.0})
-        EXPECT_NEAR(radiosity::patchAreaFor(scaled(cornell(), s), none), metreArea * s * s, 1e-5 * metreArea * s * s);
+        EXPECT_NEAR(radiosity::patchAreaFor(scaled(cornell(), s), none), metreArea * s * s,
+                    1e-5 * metreArea * s * s);
     scene::ParameterSet forced;
     ASSERT_TRUE(forced.set("radiosity.maxPatchArea", 0.3));
     EXPECT_FLOAT_EQ(radiosity::patchAreaFor(scaled(cornell(), 1000.0), forced), 0.3f);

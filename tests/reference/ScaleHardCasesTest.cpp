@@ -96,7 +96,8 @@ Means trace(const scene::Scene& s) {
 void expectSame(const Means& a, const Means& b, const char* what) {
     // Far from the origin the camera itself is rounded to millimetres: an edge pixel may change.
     EXPECT_NEAR(a.covered, b.covered, 0.005 * b.covered) << what;
-    EXPECT_NEAR(a.image, b.image, std::max(4.0 * std::hypot(a.imageSigma, b.imageSigma), 0.01 * b.image)) << what;
+    EXPECT_NEAR(a.image, b.image, std::max(4.0 * std::hypot(a.imageSigma, b.imageSigma), 0.01 * b.image))
+        << what;
     EXPECT_NEAR(a.one, b.one, std::max(4.0 * std::hypot(a.oneSigma, b.oneSigma), 0.01 * b.one)) << what;
 }
 
@@ -148,7 +149,8 @@ TEST(ReferenceScale, RayLiftIsAFractionOfTheSceneAtEveryScale) {
         auto embree = reference::EmbreeScene::build(scaled(cornell(), s), {});
         ASSERT_TRUE(embree);
         EXPECT_NEAR(embree->extent(), 5.592 * s, 0.01 * s);
-        for (const glm::vec3 p : {glm::vec3(0.1f), glm::vec3(2.78f, 0.0f, 2.8f), glm::vec3(5.5f, 5.4f, 5.5f)}) {
+        for (const glm::vec3 p :
+             {glm::vec3(0.1f), glm::vec3(2.78f, 0.0f, 2.8f), glm::vec3(5.5f, 5.4f, 5.5f)}) {
             const glm::vec3 q = embree->toFrame(glm::vec3(glm::dvec3(p) * s));
             const glm::vec3 lifted = embree->offsetOrigin(q, {0.0f, 1.0f, 0.0f});
             lifts.push_back(double(lifted.y - q.y) / s);

@@ -80,8 +80,9 @@ TEST_F(HemicubeScaleGLTest, FormFactorsAreTheSameAtEveryScaleAndDistance) {
         // 8 mm (0.8% of this box) and the eye is lifted past that: 0.03. Drawn
         // in world coordinates the rows summed to 0.81 there.
         EXPECT_LT(worst, c.side == 1.0f ? 0.03 : 2e-3) << c.side << " at " << c.corner.x;
-        EXPECT_NEAR(sum / double(r.size() / radiosity::buildPatchMesh(box(1.0f, glm::dvec3(0.0)), {0.04f}).size()),
-                    1.0, 2e-3)
+        EXPECT_NEAR(
+            sum / double(r.size() / radiosity::buildPatchMesh(box(1.0f, glm::dvec3(0.0)), {0.04f}).size()),
+            1.0, 2e-3)
             << c.side;
     }
 }

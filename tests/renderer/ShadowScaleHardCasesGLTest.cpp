@@ -33,7 +33,8 @@ glm::vec3 at(const glm::vec3& p, double s) {
 constexpr double kScales[] = {0.01, 1000.0};
 
 void expectScaled(float value, float metre, double s, const char* what) {
-    EXPECT_NEAR(double(value), double(metre) * s, 1e-4 * std::abs(double(metre)) * s) << what << " at scale " << s;
+    EXPECT_NEAR(double(value), double(metre) * s, 1e-4 * std::abs(double(metre)) * s)
+        << what << " at scale " << s;
 }
 
 } // namespace

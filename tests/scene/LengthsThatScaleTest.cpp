@@ -103,8 +103,8 @@ TEST(LengthsThatScale, FittedPlanesHoldA2CmAndA2KmBox) {
 // under the real one) is not. The 1 mm floor of the slack counted it, and
 // 100 km out the quad's corners, rounded to 8 mm steps, fell outside it.
 TEST(LengthsThatScale, AnAreaLightsOwnSurfaceIsFoundAtEveryScaleAndDistance) {
-    const glm::vec3 q[4] = {{3.43f, 5.487f, 2.27f}, {3.43f, 5.487f, 3.32f}, {2.13f, 5.487f, 3.32f},
-                            {2.13f, 5.487f, 2.27f}};
+    const glm::vec3 q[4] = {
+        {3.43f, 5.487f, 2.27f}, {3.43f, 5.487f, 3.32f}, {2.13f, 5.487f, 3.32f}, {2.13f, 5.487f, 2.27f}};
     auto onLight = [&](double s, const glm::dvec3& offset, double drop) {
         std::vector<scene::Light> lights = cornell().lights;
         lights[0].position = glm::vec3(glm::dvec3(lights[0].position) * s + offset);

@@ -76,8 +76,8 @@ class PathTracer {
     const EmbreeScene& embree_;
     const scene::Scene& scene_;
     PathTracerSettings settings_;
-    CameraRays cameraRays_;               // in the EmbreeScene's frame
-    std::vector<scene::Light> lights_;    // the scene's lights, positions in that frame
+    CameraRays cameraRays_;            // in the EmbreeScene's frame
+    std::vector<scene::Light> lights_; // the scene's lights, positions in that frame
     glm::vec3 background_{0.0f};
 
     glm::vec3 escapedRadiance() const;
