@@ -16,7 +16,9 @@ float rayHitDistance(const glm::vec3& origin, const glm::vec3& dir, const glm::v
     const glm::vec3 e1 = b - a, e2 = c - a;
     const glm::vec3 p = glm::cross(dir, e2);
     const float det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-12f)
+    // Parallel up to rounding, relative to the edges (det is a length squared
+    // for a unit dir), so a 0.1 mm triangle is hit like a 10 m one.
+    if (!(std::abs(det) > 1e-7f * glm::length(e1) * glm::length(e2)))
         return -1.0f;
     const float inv = 1.0f / det;
     const glm::vec3 s = origin - a;

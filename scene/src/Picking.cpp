@@ -44,7 +44,9 @@ std::optional<float> rayTriangle(const glm::vec3& o, const glm::vec3& d, const g
                                  const glm::vec3& c) {
     const glm::vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
     const float det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-12f)
+    // Parallel up to rounding, relative to the edges and the direction (det
+    // is their product), so a 0.1 mm triangle is picked like a 10 m one.
+    if (!(std::abs(det) > 1e-7f * glm::length(e1) * glm::length(e2) * glm::length(d)))
         return std::nullopt;
     const float inv = 1.0f / det;
     const glm::vec3 s = o - a;
