@@ -22,12 +22,17 @@ float rayHitDistance(const glm::vec3& origin, const glm::vec3& dir, const glm::v
         return -1.0f;
     const float inv = 1.0f / det;
     const glm::vec3 s = origin - a;
+    // Edges overlap by 1e-5 of the triangle (barycentric, unitless): a probe
+    // on a seam (a symmetric nave's centre line) hits one of the two
+    // triangles whatever the rounding at this scale, instead of slipping
+    // through to the back of the wall behind (Sibenik read at 1000x).
+    constexpr float kEdge = 1e-5f;
     const float u = glm::dot(s, p) * inv;
-    if (u < 0.0f || u > 1.0f)
+    if (u < -kEdge || u > 1.0f + kEdge)
         return -1.0f;
     const glm::vec3 q = glm::cross(s, e1);
     const float v = glm::dot(dir, q) * inv;
-    if (v < 0.0f || u + v > 1.0f)
+    if (v < -kEdge || u + v > 1.0f + kEdge)
         return -1.0f;
     return glm::dot(e2, q) * inv;
 }
