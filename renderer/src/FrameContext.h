@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace lpv::renderer {
@@ -31,6 +33,13 @@ struct FrameContext {
     // (RenderSpace.h): the world moved by -anchor. A pass that draws data
     // kept in world space (a baked radiosity mesh) adds the anchor back.
     glm::dvec3 anchor{0.0};
+    // How far from the world origin the scene's positions were rounded to
+    // float before render space moved them (tolerances that compare them).
+    float worldMagnitude() const {
+        const glm::vec3 size = sceneBounds.empty() ? glm::vec3(0.0f) : sceneBounds.size();
+        return float(std::max({std::abs(anchor.x), std::abs(anchor.y), std::abs(anchor.z)}) +
+                     double(std::max({size.x, size.y, size.z})));
+    }
 };
 
 } // namespace lpv::renderer

@@ -45,7 +45,7 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
     }
     plan.sun = findSun(frame.scene) >= 0;
     plan.local = decideLocalLightInjection(frame.scene, params);
-    plan.emissive = decideEmissiveInjection(frame.scene, params);
+    plan.emissive = decideEmissiveInjection(frame.scene, params, frame.worldMagnitude());
     if (!plan.sun && !plan.local.runs() && !plan.emissive.runs()) {
         plan.lpvOffReason = "nothing to inject: no directional light; local lights: " + plan.local.reason +
                             "; emissive surfaces: " + plan.emissive.reason;
@@ -224,7 +224,8 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
             // Two VPLs per finest cell along an emitter, at most 256^2.
             emissiveVpls.emplace();
             emissiveVpls->upload(lpvref::sampleEmissiveVpls(
-                ctx.frame.scene, float(ctx.frame.params.getFloat("lpv.cellSize")) * 0.5f, 65536));
+                ctx.frame.scene, float(ctx.frame.params.getFloat("lpv.cellSize")) * 0.5f, 65536,
+                ctx.frame.worldMagnitude()));
             return scene::Expected<void>{};
         };
         graph.addPass(std::move(p));

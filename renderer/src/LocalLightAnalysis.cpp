@@ -47,12 +47,13 @@ EffectDecision decideLocalLightInjection(const scene::Scene& scene, const scene:
     return d;
 }
 
-EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::ParameterSet& params) {
+EffectDecision decideEmissiveInjection(const scene::Scene& scene, const scene::ParameterSet& params,
+                                       float worldMagnitude) {
     EffectDecision d;
     d.effect = "Emissive VPLs";
     d.parameter = "lpv.emissive";
     d.setting = params.getEnum(d.parameter);
-    const bool emissive = lpvref::sceneHasEmissiveSurface(scene);
+    const bool emissive = lpvref::sceneHasEmissiveSurface(scene, worldMagnitude);
     if (!giMethodRuns(params)) {
         d.reason = giMethodOffReason(params);
     } else if (d.setting == "off") {

@@ -64,10 +64,17 @@ glm::vec2 sceneDepthRange(const glm::mat4& lightView, const scene::Bounds& bound
 // The splits follow the scene's far corner, which moves with the camera; a
 // radius rounded up to 1/16 of its power of two keeps the texel size (and so
 // the texel grid) fixed under small moves, at most 6.25% larger.
-float quantizeRadius(float r) {
+// The power of two is taken of r relative to `unit` (the scene's largest
+// side), so the same scene in another unit quantises the same way: in
+// absolute powers of two a scene scaled by 0.01 got other texel sizes
+// relative to its walls, and Sibenik's sunlit slivers 24% more direct light
+// (issue #41, LpvFitHardCasesGLTest).
+float quantizeRadius(float r, float unit) {
     if (!(r > 0.0f))
         return r;
-    const float step = std::exp2(std::floor(std::log2(r))) / 16.0f;
+    if (!(unit > 0.0f) || !std::isfinite(unit))
+        unit = 1.0f;
+    const float step = unit * std::exp2(std::floor(std::log2(r / unit))) / 16.0f;
     return std::ceil(r / step) * step;
 }
 
@@ -105,7 +112,9 @@ std::vector<ShadowCascade> buildCascades(const CascadeCamera& camera, const glm:
         c.radius = std::sqrt((f - along) * (f - along) + f * f * k2);
         c.sphereRadius = c.radius;
         if (settings.stabilize)
-            c.radius = quantizeRadius(c.radius);
+            c.radius = quantizeRadius(c.radius, bounds.empty() ? 1.0f
+                                                               : std::max({bounds.size().x, bounds.size().y,
+                                                                           bounds.size().z}));
         c.center = camera.position + forward * along;
         c.texelWorld = 2.0f * c.radius / mapSize;
 

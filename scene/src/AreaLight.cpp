@@ -133,7 +133,8 @@ bool hasAreaLight(std::span<const Light> lights) {
     return std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.type == LightType::Area; });
 }
 
-bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                       float worldMagnitude) {
     for (const Light& light : lights) {
         if (light.type != LightType::Area)
             continue;
@@ -145,7 +146,8 @@ bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const 
         // the float rounding of positions that far from the origin (8 mm at
         // 100 km): lengths that scale (issue #41), no millimetre floor, which
         // was 7% of the Cornell lamp in centimetres.
-        const float magnitude = std::max({std::abs(f.center.x), std::abs(f.center.y), std::abs(f.center.z)});
+        const float magnitude =
+            std::max({std::abs(f.center.x), std::abs(f.center.y), std::abs(f.center.z), worldMagnitude});
         const float slack = 1e-3f * (u + v) + 4.0f * std::numeric_limits<float>::epsilon() * magnitude;
         bool inside = true;
         for (const glm::vec3& p : {a, b, c}) {

@@ -22,20 +22,20 @@ struct EmissiveTriangle {
 // Calls `visit` with each emissive triangle (world space) that is not an area
 // light's visible surface, until it returns false.
 template <class Visit>
-void forEachEmissiveTriangle(const scene::Scene& scene, Visit&& visit) {
+void forEachEmissiveTriangle(const scene::Scene& scene, float worldMagnitude, Visit&& visit) {
     detail::forEachWorldTriangle(
         scene,
         [&](std::uint32_t material) { return material < scene.materials.size() && emits(scene.materials[material]); },
         [&](const detail::WorldTriangle& t) {
-            if (scene::liesOnAnAreaLight(scene.lights, t.a, t.b, t.c))
+            if (scene::liesOnAnAreaLight(scene.lights, t.a, t.b, t.c, worldMagnitude))
                 return true; // an area light's visible surface: injected as that light
             return bool(visit(EmissiveTriangle{t.a, t.b, t.c, t.normal, scene.materials[t.material].emissive, t.area}));
         });
 }
 
-std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene) {
+std::vector<EmissiveTriangle> emissiveTriangles(const scene::Scene& scene, float worldMagnitude) {
     std::vector<EmissiveTriangle> out;
-    forEachEmissiveTriangle(scene, [&](const EmissiveTriangle& t) {
+    forEachEmissiveTriangle(scene, worldMagnitude, [&](const EmissiveTriangle& t) {
         out.push_back(t);
         return true;
     });
@@ -49,17 +49,17 @@ int subdivisions(float area, float spacing) {
 } // namespace
 
 // Asked every frame by the scene analysis: stops at the first emitter, allocates nothing.
-bool sceneHasEmissiveSurface(const scene::Scene& scene) {
+bool sceneHasEmissiveSurface(const scene::Scene& scene, float worldMagnitude) {
     bool found = false;
-    forEachEmissiveTriangle(scene, [&](const EmissiveTriangle&) {
+    forEachEmissiveTriangle(scene, worldMagnitude, [&](const EmissiveTriangle&) {
         found = true;
         return false;
     });
     return found;
 }
 
-std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls) {
-    const std::vector<EmissiveTriangle> triangles = emissiveTriangles(scene);
+std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls, float worldMagnitude) {
+    const std::vector<EmissiveTriangle> triangles = emissiveTriangles(scene, worldMagnitude);
     if (triangles.empty() || maxVpls <= 0)
         return {};
     // Coarser until it fits: each triangle keeps at least one VPL, so the cap can still be passed by the

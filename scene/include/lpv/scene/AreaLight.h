@@ -58,6 +58,10 @@ bool hasAreaLight(std::span<const Light> lights);
 // outline of one of `lights`' area lights: the lamp's visible surface (the
 // Cornell light quad), which the LPV's emissive VPLs and the reference's
 // emitter sampling leave out, so a lamp modelled both ways counts once.
-bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+// `worldMagnitude`: for positions moved near the origin from far away (the
+// renderer's render space), how far from the origin they were rounded to
+// float: the slack covers that rounding too.
+bool liesOnAnAreaLight(std::span<const Light> lights, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                       float worldMagnitude = 0.0f);
 
 } // namespace lpv::scene

@@ -17,9 +17,11 @@ namespace lpv::renderer::lpvref {
 // `spacing`: target distance between VPLs (m = ceil(edge-ish size / spacing)
 // per triangle, from sqrt(area) / spacing); `maxVpls`: the spacing grows until
 // the scene fits. Emissive textures are not read (the material's factor only).
-std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls);
+// `worldMagnitude`: scene::liesOnAnAreaLight's, for a scene in render space.
+std::vector<Vpl> sampleEmissiveVpls(const scene::Scene& scene, float spacing, int maxVpls,
+                                    float worldMagnitude = 0.0f);
 
-// Whether a visible object draws with a material that emits.
-bool sceneHasEmissiveSurface(const scene::Scene& scene);
+// Whether a visible object draws with a material that emits (not as an area light's surface).
+bool sceneHasEmissiveSurface(const scene::Scene& scene, float worldMagnitude = 0.0f);
 
 } // namespace lpv::renderer::lpvref
