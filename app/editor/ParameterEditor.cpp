@@ -166,6 +166,20 @@ class FloatEditor final : public ParameterEditor {
         if (!slider_)
             row()->addStretch(1);
         row()->addWidget(spin_);
+        // A word besides numbers (lpv.cellSize's "auto": the renderer fits
+        // it): a check box; while it is on the number is not used.
+        if (!info.enumValues.empty()) {
+            word_ = new QCheckBox(QString::fromStdString(info.enumValues.front()), this);
+            word_->setToolTip(tr("%1: chosen by the renderer; off: the number beside it")
+                                  .arg(QString::fromStdString(info.enumValues.front())));
+            row()->addWidget(word_);
+            connect(word_, &QCheckBox::toggled, this, [this](bool on) {
+                showWord(on);
+                userEdited();
+            });
+        }
+        // The number a word gives way to: the middle of the range (log or linear).
+        number_ = log_ ? std::sqrt(info.minValue * info.maxValue) : 0.5 * (info.minValue + info.maxValue);
         finishLayout();
 
         connect(spin_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
@@ -173,7 +187,7 @@ class FloatEditor final : public ParameterEditor {
                 const QSignalBlocker block(slider_);
                 slider_->setValue(toSlider(v));
             }
-            value_ = v;
+            number_ = v;
             userEdited();
         });
         if (slider_)
@@ -181,20 +195,38 @@ class FloatEditor final : public ParameterEditor {
                 // The spin box rounds to its decimals; what it shows is what is emitted.
                 const QSignalBlocker block(spin_);
                 spin_->setValue(fromSlider(position));
-                value_ = spin_->value();
+                number_ = spin_->value();
                 userEdited();
             });
     }
     // Exactly as set: a project value with more digits than the spin box
     // shows is not rounded until the user edits it.
-    ParameterValue value() const override { return value_; }
+    ParameterValue value() const override {
+        if (word_ && word_->isChecked())
+            return info().enumValues.front();
+        return number_;
+    }
     QWidget* input() const override { return spin_; }
     QAbstractSlider* slider() const override { return slider_; }
 
   protected:
     void display(const ParameterValue& v) override {
+        if (std::holds_alternative<std::string>(v)) {
+            if (word_) {
+                const QSignalBlocker block(word_);
+                word_->setChecked(true);
+                showWord(true);
+            }
+            return;
+        }
+        if (word_) {
+            const QSignalBlocker block(word_);
+            word_->setChecked(false);
+            showWord(false);
+        }
         const double d = toDouble(v);
-        value_ = d;
+        number_ = d;
+        const QSignalBlocker block(spin_);
         spin_->setValue(d);
         if (slider_ && !slider_->isSliderDown())
             slider_->setValue(toSlider(d));
@@ -214,10 +246,25 @@ class FloatEditor final : public ParameterEditor {
         return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kFloatSliderSteps));
     }
 
+    void showWord(bool on) {
+        spin_->setEnabled(!on);
+        if (slider_)
+            slider_->setEnabled(!on);
+        if (!on) {
+            const QSignalBlocker block(spin_);
+            spin_->setValue(number_);
+            if (slider_) {
+                const QSignalBlocker blockSlider(slider_);
+                slider_->setValue(toSlider(number_));
+            }
+        }
+    }
+
     bool log_ = false;
-    double value_ = 0.0;
+    double number_ = 0.0; // the number, kept while a word is checked
     QDoubleSpinBox* spin_ = nullptr;
     QSlider* slider_ = nullptr;
+    QCheckBox* word_ = nullptr;
 };
 
 class EnumEditor final : public ParameterEditor {
@@ -391,6 +438,8 @@ QString formatParameterValue(const ParameterInfo& info, const ParameterValue& v)
         text = QString::number(std::lround(toDouble(v)));
         break;
     case ParameterType::Float:
+        if (const auto* word = std::get_if<std::string>(&v))
+            return QString::fromStdString(*word); // "auto"
         text = QString::number(toDouble(v), 'g', 6);
         break;
     }
@@ -428,8 +477,9 @@ QString parameterToolTip(const ParameterInfo& info) {
 }
 
 int parameterDecimals(const ParameterInfo& info) {
-    int d = std::max(
-        {2, decimalsOf(info.minValue), decimalsOf(info.maxValue), decimalsOf(toDouble(info.defaultValue))});
+    const bool numericDefault = !std::holds_alternative<std::string>(info.defaultValue); // not "auto"
+    int d = std::max({2, decimalsOf(info.minValue), decimalsOf(info.maxValue),
+                      numericDefault ? decimalsOf(toDouble(info.defaultValue)) : 0});
     if (!isLogScale(info))
         d = std::max(d, decimalsOf(linearStep(info)));
     return std::min(d, 6);

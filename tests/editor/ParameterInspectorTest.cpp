@@ -65,6 +65,11 @@ ParameterValue otherInt(const ParameterInfo& p, int avoid) {
     return mid != avoid ? mid : mid + 1;
 }
 
+// The check box of a Float parameter's word ("auto"), beside its spin box `w`.
+QCheckBox* wordBox(QWidget* w) {
+    return w->parentWidget() ? w->parentWidget()->findChild<QCheckBox*>() : nullptr;
+}
+
 // Changes the editor of `p` to a value other than its current one, through
 // the widget, as a click, a typed value or a pick would; returns the value
 // now shown (for floats, as rounded by the spin box).
@@ -87,6 +92,10 @@ ParameterValue editLikeAUser(QWidget* w, const ParameterInfo& p, double fraction
     }
     case ParameterType::Float: {
         auto* spin = qobject_cast<QDoubleSpinBox*>(w);
+        if (QCheckBox* word = wordBox(w); word && word->isChecked()) {
+            word->click(); // from "auto" to the number beside it: one edit
+            return spin->value();
+        }
         double v = p.minValue + (p.maxValue - p.minValue) * fraction;
         if (std::abs(spin->valueFromText(spin->textFromValue(v)) - spin->value()) < 1e-12)
             v = p.maxValue;
@@ -111,6 +120,8 @@ ParameterValue shown(QWidget* w, const ParameterInfo& p) {
     case ParameterType::Int:
         return qobject_cast<QSpinBox*>(w)->value();
     case ParameterType::Float:
+        if (QCheckBox* word = wordBox(w); word && word->isChecked())
+            return word->text().toStdString();
         return qobject_cast<QDoubleSpinBox*>(w)->value();
     case ParameterType::Enum:
         return qobject_cast<QComboBox*>(w)->currentText().toStdString();
@@ -175,10 +186,13 @@ TEST(ParameterInspector, EveryParameterHasAnEditorThatRoundTripsItsValue) {
         ASSERT_EQ(edits.count(), 1);
         const Edit e = editAt(edits, 0);
         EXPECT_EQ(e.key, qKey(p));
-        EXPECT_EQ(e.value.index(), p.defaultValue.index()) << "type: " << describe(e.value);
+        // A Float whose default is a word ("auto") is edited to a number.
+        const bool wordDefault = p.type == ParameterType::Float && !p.enumValues.empty();
+        EXPECT_EQ(e.value.index(), wordDefault ? ParameterValue(0.0).index() : p.defaultValue.index())
+            << "type: " << describe(e.value);
         EXPECT_EQ(e.value, edited) << describe(e.value) << " vs " << describe(edited);
         EXPECT_TRUE(registry().validate(p.key, e.value, "test")) << "the value is in range";
-        if (p.type == ParameterType::Float) {
+        if (p.type == ParameterType::Float && !wordDefault) {
             // Within the precision the spin box shows.
             const double target = p.minValue + (p.maxValue - p.minValue) * 0.3;
             const double precision = std::pow(10.0, -qobject_cast<QDoubleSpinBox*>(w)->decimals());
@@ -325,7 +339,7 @@ TEST(ParameterInspector, SliderDragEmitsEveryStepAndKeepsSpinBoxInStep) {
     ASSERT_NE(slider, nullptr);
     auto* spin = qobject_cast<QDoubleSpinBox*>(offset->input());
 
-    ASSERT_EQ(slider->value(), slider->maximum() / 4) << "the default, 1 cell";
+    ASSERT_EQ(slider->value(), std::lround(slider->maximum() * 0.875 / 4.0)) << "the default, 0.875 cells";
     slider->setSliderDown(true);
     slider->setValue(slider->maximum() / 2);
     slider->setValue(slider->maximum() * 3 / 4);
@@ -354,16 +368,19 @@ TEST(ParameterInspector, WideRangesGetALogarithmicSlider) {
     ParameterInspector inspector;
     inspector.show();
     QSignalSpy edits(&inspector, &ParameterInspector::parameterEdited);
-    const ParameterInfo* cell = registry().find("lpv.cellSize"); // [0.001, 100] m
+    const ParameterInfo* cell = registry().find("lpv.cellSize"); // auto, or [1e-6, 1e6] m
     ASSERT_NE(cell, nullptr);
+    auto* spin = qobject_cast<QDoubleSpinBox*>(inspector.editorFor("lpv.cellSize"));
+    wordBox(spin)->click(); // off auto: the number is used
+    edits.clear();
     QAbstractSlider* slider = inspector.parameterEditor("lpv.cellSize")->slider();
     ASSERT_NE(slider, nullptr);
-    slider->setValue(slider->maximum() / 2);
+    slider->setValue(slider->maximum() / 4);
     ASSERT_EQ(edits.count(), 1);
-    // Half way on a log scale is the geometric mean, sqrt(0.001 * 100) = 0.316.
-    EXPECT_NEAR(std::get<double>(editAt(edits, 0).value), std::sqrt(cell->minValue * cell->maxValue), 0.001);
-    auto* spin = qobject_cast<QDoubleSpinBox*>(inspector.editorFor("lpv.cellSize"));
-    EXPECT_GE(spin->decimals(), 3) << "the minimum, 1 mm, must be reachable";
+    // A quarter of the way on a log scale: 1e-6 * (1e12)^0.25 = 1e-3.
+    EXPECT_NEAR(std::get<double>(editAt(edits, 0).value), std::pow(cell->minValue, 0.75) * std::pow(cell->maxValue, 0.25),
+                1e-5);
+    EXPECT_GE(spin->decimals(), 6) << "the minimum, 1 micrometre, must be reachable";
     auto* threshold = qobject_cast<QDoubleSpinBox*>(inspector.editorFor("radiosity.convergenceThreshold"));
     EXPECT_GE(threshold->decimals(), 5);
     EXPECT_EQ(threshold->stepType(), QAbstractSpinBox::AdaptiveDecimalStepType);
@@ -503,4 +520,45 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
+}
+
+// lpv.cellSize = auto (issue #41): a check box beside the number. On, the
+// number is greyed out and the value is the word; off, the number is used;
+// a project's number unticks it.
+TEST(ParameterInspector, AFloatThatAdmitsAutoHasACheckBoxForIt) {
+    ParameterInspector inspector;
+    inspector.show();
+    QSignalSpy edits(&inspector, &ParameterInspector::parameterEdited);
+    QWidget* spin = inspector.editorFor("lpv.cellSize");
+    ASSERT_NE(spin, nullptr);
+    QCheckBox* word = wordBox(spin);
+    ASSERT_NE(word, nullptr);
+    EXPECT_EQ(word->text(), "auto");
+    EXPECT_TRUE(word->isChecked());
+    EXPECT_FALSE(spin->isEnabled());
+    EXPECT_EQ(inspector.parameterEditor("lpv.cellSize")->value(), ParameterValue(std::string("auto")));
+
+    word->click();
+    ASSERT_EQ(edits.count(), 1);
+    EXPECT_TRUE(spin->isEnabled());
+    const ParameterValue number = editAt(edits, 0).value;
+    ASSERT_TRUE(std::holds_alternative<double>(number));
+    EXPECT_TRUE(registry().validate("lpv.cellSize", number, "test"));
+
+    qobject_cast<QDoubleSpinBox*>(spin)->setValue(0.3);
+    ASSERT_EQ(edits.count(), 2);
+    EXPECT_DOUBLE_EQ(std::get<double>(editAt(edits, 1).value), 0.3);
+    word->click();
+    ASSERT_EQ(edits.count(), 3);
+    EXPECT_EQ(editAt(edits, 2).value, ParameterValue(std::string("auto")));
+    EXPECT_FALSE(spin->isEnabled());
+
+    ParameterSet values;
+    ASSERT_TRUE(values.set("lpv.cellSize", 0.125, "test"));
+    inspector.setParameters(values);
+    EXPECT_EQ(edits.count(), 3) << "setParameters must not report edits";
+    EXPECT_FALSE(word->isChecked());
+    EXPECT_DOUBLE_EQ(qobject_cast<QDoubleSpinBox*>(spin)->value(), 0.125);
+    inspector.setParameters(ParameterSet{});
+    EXPECT_TRUE(word->isChecked());
 }
