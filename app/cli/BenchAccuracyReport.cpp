@@ -54,6 +54,7 @@ the same size), then runs `lpv bench --sweep` once per question, each key
 varied alone around the project's settings:
   steps      lpv.propagationSteps=0,1,2,4,8,16,32,64
   grid       lpv.gridSize=16,32,64
+  cellSize   lpv.cellSize=auto,0.0625,0.125,0.25,0.5,1 (auto: fitted to the scene)
   cascades   lpv.cascades=1,2,3,4
   rsm        rsm.tileSize=64,128,256,512,1024
   variant    lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter
@@ -65,10 +66,10 @@ varied alone around the project's settings:
   bounces    lpv.bounces=1,2,3 (one sweep and one reference per value)
   viewShift  lpv.viewShift=0,0.5,0.75,1
   damping    lpv.bleedingDamping=0,1,2,4
-  offset     lpv.injectionOffset=0,0.5,1,2
+  offset     lpv.injectionOffset=0,0.5,0.875,1,2
   firstStep  lpv.occlusionFirstStep=true,false
   strength   lpv.occlusionStrength=0.5,1,1.333,2
-  lookupOffset lpv.lookupOffset=0,0.5,1
+  lookupOffset lpv.lookupOffset=0,0.25,0.5,1
   visibility lpv.visibilityLookup=false,true
   clampToScene lpv.clampToScene=false,true
   twoSided   lpv.twoSidedOcclusion=false,true

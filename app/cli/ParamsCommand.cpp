@@ -34,8 +34,11 @@ int runParams(Args args) {
     std::string group;
     for (const scene::ParameterInfo& p : registry.all()) {
         std::ostringstream range;
-        if (p.type == scene::ParameterType::Int || p.type == scene::ParameterType::Float)
+        if (p.type == scene::ParameterType::Int || p.type == scene::ParameterType::Float) {
+            for (const std::string& word : p.enumValues) // a Float's words: lpv.cellSize's "auto"
+                range << word << "|";
             range << "[" << p.minValue << ", " << p.maxValue << "]";
+        }
         else if (p.type == scene::ParameterType::Enum)
             for (std::size_t i = 0; i < p.enumValues.size(); ++i)
                 range << (i ? "|" : "") << p.enumValues[i];

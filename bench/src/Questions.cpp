@@ -6,6 +6,8 @@ const std::vector<Question>& reportQuestions() {
     static const std::vector<Question> questions = {
         {"steps", "lpv.propagationSteps=0,1,2,4,8,16,32,64", "lpv.propagationSteps=0,4,16"},
         {"grid", "lpv.gridSize=16,32,64", "lpv.gridSize=16,32"},
+        // The fitted cell size (issue #41) against fixed ones, in metres as the report's scenes are.
+        {"cellSize", "lpv.cellSize=auto,0.0625,0.125,0.25,0.5,1", "lpv.cellSize=auto,0.25"},
         {"cascades", "lpv.cascades=1,2,3,4", ""},
         {"rsm", "rsm.tileSize=64,128,256,512,1024", ""},
         {"variant", "lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter", ""},
@@ -17,10 +19,10 @@ const std::vector<Question>& reportQuestions() {
         {"bounces", "lpv.bounces=1,2,3", ""},
         {"viewShift", "lpv.viewShift=0,0.5,0.75,1", ""},
         {"damping", "lpv.bleedingDamping=0,1,2,4", ""},
-        {"offset", "lpv.injectionOffset=0,0.5,1,2", ""},
+        {"offset", "lpv.injectionOffset=0,0.5,0.875,1,2", ""},
         {"firstStep", "lpv.occlusionFirstStep=true,false", ""},
         {"strength", "lpv.occlusionStrength=0.5,1,1.333,2", ""},
-        {"lookupOffset", "lpv.lookupOffset=0,0.5,1", ""},
+        {"lookupOffset", "lpv.lookupOffset=0,0.25,0.5,1", ""},
         {"visibility", "lpv.visibilityLookup=false,true", ""},
         {"clampToScene", "lpv.clampToScene=false,true", ""},
         {"twoSided", "lpv.twoSidedOcclusion=false,true", ""},

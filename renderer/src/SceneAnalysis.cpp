@@ -1,6 +1,7 @@
 #include "lpv/renderer/SceneAnalysis.h"
 
 #include "lpv/renderer/LocalLightAnalysis.h"
+#include "lpv/renderer/LpvFit.h"
 
 #include "lpv/scene/Picking.h"
 
@@ -140,6 +141,22 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
                  : local.wanted          ? "spot, point or area lights light the scene: their RSMs are injected"
                  : emissive.wanted       ? "emissive surfaces light the scene: their VPLs are injected"
                                          : "no directional light (and no spot, point or area light): nothing to inject";
+    if (lpv.wanted && camera) {
+        // The fitted (or forced) cell size, and an LPV that cannot deliver
+        // light to this view (LpvFit.h): the renderer skips the one whose
+        // cascades miss the scene, and warns about the others.
+        const scene::Bounds bounds = s.worldBounds();
+        const LpvFit fit = fitLpv(params, bounds, camera->position);
+        const LpvDelivery delivery = lpvDelivery(fit, params.getInt("lpv.gridSize"), bounds, camera->position);
+        if (delivery.skipsLpv()) {
+            lpv.wanted = false;
+            lpv.reason = delivery.reason;
+        } else {
+            lpv.reason += "; " + (fit.fitted ? "fitted: " : std::string()) + fit.reason;
+            if (delivery.problem != LpvDelivery::Problem::None)
+                lpv.reason += "; warning: almost no indirect light: " + delivery.reason;
+        }
+    }
     out.push_back(lpv);
 
     out.push_back(decideDirectedPropagation(params, lpv.wanted, lpv.reason));

@@ -112,9 +112,12 @@ std::vector<ShadowCascade> buildCascades(const CascadeCamera& camera, const glm:
         c.radius = std::sqrt((f - along) * (f - along) + f * f * k2);
         c.sphereRadius = c.radius;
         if (settings.stabilize)
-            c.radius = quantizeRadius(c.radius, bounds.empty() ? 1.0f
-                                                               : std::max({bounds.size().x, bounds.size().y,
-                                                                           bounds.size().z}));
+            // Two texels (2 r / mapSize each) of room before rounding: the
+            // centre's snapping moves the square by up to one, and the square
+            // must still hold its own slice (cascadeCovers).
+            c.radius = quantizeRadius(c.radius * (1.0f + 4.0f / mapSize),
+                                      bounds.empty() ? 1.0f
+                                                     : std::max({bounds.size().x, bounds.size().y, bounds.size().z}));
         c.center = camera.position + forward * along;
         c.texelWorld = 2.0f * c.radius / mapSize;
 

@@ -129,7 +129,39 @@ bool isEnclosed(const Scene& scene) {
     return !bounds.empty() && enclosure(scene, bounds).enclosed;
 }
 
+namespace {
+
+Camera framingCameraNearOrigin(const Scene& scene);
+
+} // namespace
+
 Camera framingCamera(const Scene& scene) {
+    // A scene far from the origin relative to its size is framed near the
+    // origin (its root objects and lights moved in double) and the camera
+    // moved back: the probe rays of a 2 m box 1,000 km away, in float world
+    // space, slipped through its walls and put the camera inside it (issue #41).
+    const Bounds b = scene.worldBounds();
+    if (b.empty())
+        return framingCameraNearOrigin(scene);
+    const glm::dvec3 centre = 0.5 * (glm::dvec3(b.min) + glm::dvec3(b.max));
+    const double size = double(glm::length(b.size()));
+    if (!(glm::length(centre) > 16.0 * std::max(size, 1e-30)))
+        return framingCameraNearOrigin(scene);
+    Scene local = scene;
+    for (Object& o : local.objects)
+        if (o.parent < 0 || std::size_t(o.parent) >= local.objects.size())
+            o.transform.translation = glm::vec3(glm::dvec3(o.transform.translation) - centre);
+    for (Light& l : local.lights)
+        l.position = glm::vec3(glm::dvec3(l.position) - centre);
+    Camera camera = framingCameraNearOrigin(local);
+    camera.position = glm::vec3(glm::dvec3(camera.position) + centre);
+    camera.target = glm::vec3(glm::dvec3(camera.target) + centre);
+    return camera;
+}
+
+namespace {
+
+Camera framingCameraNearOrigin(const Scene& scene) {
     Camera camera;
     camera.name = "framing";
     const Bounds b = scene.worldBounds();
@@ -170,6 +202,8 @@ Camera framingCamera(const Scene& scene) {
     }
     return camera;
 }
+
+} // namespace
 
 void fitClipPlanes(Camera& camera, const Bounds& bounds) {
     if (bounds.empty())

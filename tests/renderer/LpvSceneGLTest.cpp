@@ -278,6 +278,10 @@ TEST_F(LpvSceneGLTest, SceneGeometryVolumeIsTheCpuTwinsWindowOfEachCascade) {
     ASSERT_TRUE(r.has_value()) << r.error().describe();
     const scene::Project project = openCornellBox(1.0f);
     scene::ParameterSet params = project.parameters;
+    // A cell size of its own (the fitted one follows the view): the twin
+    // below needs the cascades' cells. The box's bounds start at the world
+    // origin, so render space (RenderSpace.h) is world space here.
+    ASSERT_TRUE(params.set("lpv.cellSize", 0.2).has_value());
     r->setScene(project.scene);
     const int cascades = params.getInt("lpv.cascades");
     std::vector<float> cellSizes;

@@ -439,7 +439,7 @@ TEST_F(Rsm, WithoutSunNothingIsAllocated) {
     b.sun(kDown);
     const auto lit = render(b.scene, rsmParams(64, 2));
     ASSERT_TRUE(lit);
-    EXPECT_EQ(lit->bytes, std::size_t(64 * 64 * 2 * 36));
+    EXPECT_EQ(lit->bytes, std::size_t(64 * 64 * 2 * 44)); // position 16, normal 8, flux 16, depth 4
     b.scene.lights.front().type = scene::LightType::Point;
     const auto dark = render(b.scene, rsmParams(64, 2));
     ASSERT_TRUE(dark);
@@ -467,7 +467,7 @@ TEST_F(Rsm, TargetsBeyondGlLimitsAreErrorValues) {
     b.sun(kDown);
     const auto r = render(b.scene, rsmParams(1024, 6));
     ASSERT_TRUE(r);
-    EXPECT_EQ(r->bytes, std::size_t(1024) * 1024 * 6 * 36);
+    EXPECT_EQ(r->bytes, std::size_t(1024) * 1024 * 6 * 44);
     EXPECT_EQ(r->images.size(), 18u);
 }
 

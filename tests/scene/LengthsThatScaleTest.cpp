@@ -66,6 +66,27 @@ TEST(LengthsThatScale, FramingCameraHoldsTheBoxAtEveryScale) {
     }
 }
 
+// A scene far from the origin is framed as at the origin, moved: at 1,000 km
+// the probe rays in float world space slipped through the box's walls and
+// put the camera inside it (issue #41).
+TEST(LengthsThatScale, FramingCameraFramesABoxAThousandKilometresAwayAsAtTheOrigin) {
+    const scene::Camera here = scene::framingCamera(scaled(cornell(), 1.0));
+    for (const double km : {100.0, 1000.0}) {
+        scene::Scene far = scaled(cornell(), 1.0);
+        const glm::dvec3 offset(km * 1000.0, 0.0, -km * 1000.0);
+        for (scene::Object& o : far.objects)
+            o.transform.translation = glm::vec3(glm::dvec3(o.transform.translation) + offset);
+        for (scene::Light& l : far.lights)
+            l.position = glm::vec3(glm::dvec3(l.position) + offset);
+        const scene::Camera c = scene::framingCamera(far);
+        // Float positions out there are 6 cm apart at 1,000 km: the same camera within that.
+        const double ulp = 2.0 * std::ldexp(1.0, int(std::ceil(std::log2(km * 1000.0))) - 24);
+        EXPECT_NEAR(glm::length(glm::dvec3(c.position) - offset - glm::dvec3(here.position)), 0.0, 2.0 * ulp) << km;
+        EXPECT_NEAR(glm::length(glm::dvec3(c.target) - offset - glm::dvec3(here.target)), 0.0, 2.0 * ulp) << km;
+        EXPECT_FLOAT_EQ(c.nearPlane, here.nearPlane);
+    }
+}
+
 // A camera that kept the Camera defaults (0.05 m near, 500 m far) sees none
 // of a 2 cm box from 3 cm away and cuts a 2 km one; fitted to the bounds it
 // holds both, with the same ratios.
