@@ -1,6 +1,5 @@
 #include "lpv/renderer/LpvFit.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -30,21 +29,12 @@ std::string length(double metres) {
 // camera (along each axis) the cascade still serves a lookup.
 double servedReach(double cell, int cells) { return cell * (0.5 * double(cells) - 2.0); }
 
-// Largest per-axis distance from `p` to a point of `b` (a cube around p
-// holds b when its half extent is at least this), and the smallest.
-double farthestAxisDistance(const scene::Bounds& b, const glm::dvec3& p) {
-    const glm::dvec3 lo = glm::dvec3(b.min) - p, hi = glm::dvec3(b.max) - p;
-    const glm::dvec3 far = glm::max(glm::abs(lo), glm::abs(hi));
-    return std::max({far.x, far.y, far.z});
-}
+// The per-axis distance from `p` to the nearest point of `b` (0 inside): a
+// cube around p reaches b when its half extent is more than this.
 double nearestAxisDistance(const scene::Bounds& b, const glm::dvec3& p) {
     const glm::dvec3 outside = glm::max(glm::dvec3(b.min) - p, glm::max(p - glm::dvec3(b.max), glm::dvec3(0.0)));
     return std::max({outside.x, outside.y, outside.z});
 }
-
-} // namespace
-
-namespace {
 
 double largestSide(const scene::Bounds& b) {
     const glm::vec3 size = b.size();
