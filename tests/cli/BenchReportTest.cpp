@@ -32,8 +32,8 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     const auto& scene = j["scenes"][0];
     EXPECT_EQ(scene["name"], "cornell-box");
     EXPECT_TRUE(scene["failures"].empty()) << scene["failures"].dump();
-    // --quick: steps 0,4,16; grid 16,32; occlusion false,true.
-    ASSERT_EQ(scene["runs"].size(), 7u);
+    // --quick: steps 0,4,16; grid 16,32; cellSize auto,0.25; occlusion false,true.
+    ASSERT_EQ(scene["runs"].size(), 9u);
     int projectRuns = 0;
     double ratioAt0Steps = -1.0, ratioAt16Steps = -1.0;
     for (const auto& run : scene["runs"]) {
@@ -46,8 +46,8 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
         if (run["setting"] == "lpv.propagationSteps=16")
             ratioAt16Steps = run["indirectMeanRatio"];
     }
-    // The grid and occlusion questions each contain the project's value (32, true).
-    EXPECT_EQ(projectRuns, 2);
+    // The grid, cellSize and occlusion questions each contain the project's value (32, auto, true).
+    EXPECT_EQ(projectRuns, 3);
     // Propagation is what carries the lamp's bounce across the box: without it
     // the LPV holds a fraction of the reference's one-bounce light.
     ASSERT_GE(ratioAt0Steps, 0.0);
@@ -80,7 +80,7 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     for (std::size_t at = again.output.find("(--resume: made by the same sweep command)"); at != std::string::npos;
          at = again.output.find("(--resume: made by the same sweep command)", at + 1))
         ++reused;
-    EXPECT_EQ(reused, 3u) << again.output; // steps, grid, occlusion
+    EXPECT_EQ(reused, 4u) << again.output; // steps, grid, cellSize, occlusion
     EXPECT_EQ(again.output.find("$ lpv bench "), std::string::npos) << "no sweep may run again";
     std::ifstream in2(dir / "report.json");
     const auto j2 = nlohmann::json::parse(in2, nullptr, false);

@@ -5,6 +5,7 @@
 #include "lpv/scene/AreaLight.h"
 #include "lpv/scene/CornellBox.h"
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/SceneScale.h"
 
 #include <gtest/gtest.h>
 
@@ -14,15 +15,9 @@ using namespace lpv;
 
 namespace {
 
+// The scene's lengths times s (lpv import --scale's function).
 scene::Scene scaled(scene::Scene sc, double s) {
-    auto mul = [s](const glm::vec3& v) { return glm::vec3(glm::dvec3(v) * s); };
-    for (scene::Mesh& m : sc.meshes)
-        for (glm::vec3& p : m.positions)
-            p = mul(p);
-    for (scene::Light& l : sc.lights) {
-        l.position = mul(l.position);
-        l.size = glm::vec2(glm::dvec2(l.size) * s);
-    }
+    scene::scaleSceneLengths(sc, s);
     sc.cameras.clear(); // the framing camera's turn
     return sc;
 }
