@@ -117,19 +117,27 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
         m.meanTest += t;
         m.relMse += d * d / (r * r + eps * eps);
         m.mare += std::abs(d) / (std::abs(r) + eps);
+        double sigma = 0.0;
         if (referenceVariance) {
             // Channels of one path are correlated: sigma_Y <= sum w_c sigma_c, taken as the noise.
             const glm::vec3 v = glm::max((*referenceVariance)[i], glm::vec3(0.0f));
-            const double sigma = 0.2126 * std::sqrt(v.r) + 0.7152 * std::sqrt(v.g) + 0.0722 * std::sqrt(v.b);
+            sigma = 0.2126 * std::sqrt(v.r) + 0.7152 * std::sqrt(v.g) + 0.0722 * std::sqrt(v.b);
             m.noiseRelMse += sigma * sigma / (r * r + eps * eps);
             m.noiseMare += std::sqrt(2.0 / 3.14159265358979) * sigma / (std::abs(r) + eps);
         }
+        // The log ratio's floor follows the reference's noise where it is
+        // larger: a noisy dark pixel cannot tell 0 from its noise.
+        const double floor = std::max(eps, sigma);
+        m.logError += std::abs(std::log((std::max(t, 0.0) + floor) / (std::max(r, 0.0) + floor)));
+        m.noiseLogError += std::sqrt(2.0 / 3.14159265358979) * sigma / (std::max(r, 0.0) + floor);
     }
     const double count = double(m.pixels);
     m.meanTest /= count;
     m.meanReference = meanRef;
     m.relMse /= count;
     m.mare /= count;
+    m.logError /= count;
+    m.noiseLogError /= count;
     m.noiseRelMse /= count;
     m.noiseMare /= count;
     if (options.ssim)
@@ -138,13 +146,14 @@ ErrorMetrics compareImages(const ImageView& test, const ImageView& reference,
 }
 
 std::string describe(const ErrorMetrics& m) {
-    char text[320];
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "relMSE %.4g (reference noise %.2g%s), MARE %.2f%% (noise %.2f%%%s), SSIM %.4f, mean %.4g "
-                  "(reference %.4g)",
+                  "relMSE %.4g (reference noise %.2g%s), MARE %.2f%% (noise %.2f%%%s), symmetric %.2f%% (noise "
+                  "%.2f%%%s), SSIM %.4f, mean %.4g (reference %.4g)",
                   m.relMse, m.noiseRelMse, m.relMseBelowNoise() ? ", below noise" : "", 100.0 * m.mare,
-                  100.0 * m.noiseMare, m.mareBelowNoise() ? ", below noise" : "", m.ssim, m.meanTest,
-                  m.meanReference);
+                  100.0 * m.noiseMare, m.mareBelowNoise() ? ", below noise" : "", 100.0 * m.symmetricError(),
+                  100.0 * m.noiseSymmetricError(), m.symmetricBelowNoise() ? ", below noise" : "", m.ssim,
+                  m.meanTest, m.meanReference);
     return text;
 }
 

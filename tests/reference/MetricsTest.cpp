@@ -118,3 +118,55 @@ TEST(Metrics, SsimDropsWithNoiseButNotWithIdenticalStructure) {
 }
 
 } // namespace
+
+// The symmetric error (issue #43) counts too dark and too bright alike:
+// half and twice the reference are both a factor of 2 off (100%), where
+// MARE says 50% and 100%, so a dark LPV no longer scores better.
+TEST(Metrics, SymmetricErrorCountsTooDarkAndTooBrightAlike) {
+    const auto ref = constant(8, 8, 4.0f), half = constant(8, 8, 2.0f), twice = constant(8, 8, 8.0f);
+    MetricOptions noEps;
+    noEps.epsilonFraction = 0.0f; // the closed form without the floor (1e-20 remains)
+    noEps.ssim = false;
+    const ErrorMetrics dark = compareImages({8, 8, &half}, {8, 8, &ref}, nullptr, nullptr, noEps);
+    const ErrorMetrics bright = compareImages({8, 8, &twice}, {8, 8, &ref}, nullptr, nullptr, noEps);
+    EXPECT_NEAR(dark.mare, 0.5, 1e-9);
+    EXPECT_NEAR(bright.mare, 1.0, 1e-9);
+    EXPECT_NEAR(dark.logError, std::log(2.0), 1e-9);
+    EXPECT_NEAR(bright.logError, std::log(2.0), 1e-9);
+    EXPECT_NEAR(dark.symmetricError(), 1.0, 1e-9);
+    EXPECT_NEAR(bright.symmetricError(), 1.0, 1e-9);
+
+    // lpv.intensity = 0.7 against 1.3: MARE calls both 30%; the symmetric
+    // error calls the darker one further off (a factor 1/0.7 = 1.43 against 1.3).
+    const auto dim = constant(8, 8, 2.8f), hot = constant(8, 8, 5.2f);
+    const ErrorMetrics d = compareImages({8, 8, &dim}, {8, 8, &ref}, nullptr, nullptr, noEps);
+    const ErrorMetrics h = compareImages({8, 8, &hot}, {8, 8, &ref}, nullptr, nullptr, noEps);
+    EXPECT_NEAR(d.mare, h.mare, 1e-6);
+    EXPECT_NEAR(d.symmetricError(), 1.0 / 0.7 - 1.0, 1e-6);
+    EXPECT_NEAR(h.symmetricError(), 0.3, 1e-6);
+
+    // A black image is far off, not at most 100%: with the default floor of
+    // 1% of the mean, ln(101) = a factor of 101.
+    const auto black = constant(8, 8, 0.0f);
+    const ErrorMetrics none = compareImages({8, 8, &black}, {8, 8, &ref}, nullptr, nullptr);
+    EXPECT_NEAR(none.mare, 1.0 / 1.01, 1e-6);
+    EXPECT_NEAR(none.symmetricError(), 100.0, 1e-3);
+
+    const ErrorMetrics same = compareImages({8, 8, &ref}, {8, 8, &ref}, nullptr, nullptr);
+    EXPECT_EQ(same.logError, 0.0);
+}
+
+// The reference's noise raises the floor of the log ratio and gives the
+// symmetric error its own noise share, which an image equal to the
+// reference's noisy mean is below.
+TEST(Metrics, SymmetricErrorHasANoiseShare) {
+    auto ref = constant(16, 16, 1.0f), test = ref;
+    for (std::size_t i = 0; i < test.size(); ++i)
+        test[i] *= i % 2 ? 1.05f : 0.95f; // 5% either way
+    const std::vector<glm::vec3> variance(ref.size(), glm::vec3(0.1f * 0.1f)); // sigma 0.1 per channel
+    const ErrorMetrics m = compareImages({16, 16, &test}, {16, 16, &ref}, &variance, nullptr);
+    // sigma_Y = 0.1, floor 0.1: first order sqrt(2/pi) 0.1 / 1.1 = 0.0725.
+    EXPECT_NEAR(m.noiseLogError, std::sqrt(2.0 / 3.14159265358979) * 0.1 / 1.1, 1e-4);
+    EXPECT_TRUE(m.symmetricBelowNoise());
+    EXPECT_NE(describe(m).find("symmetric"), std::string::npos);
+}

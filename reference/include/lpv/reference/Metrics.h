@@ -6,6 +6,8 @@
 // alone would cause, so an error below the noise is reported as such.
 #include <glm/glm.hpp>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -30,6 +32,11 @@ struct ErrorMetrics {
     std::size_t pixels = 0; // pixels compared (mask > 0.5)
     double relMse = 0.0;    // mean (t - r)^2 / (r^2 + eps^2)
     double mare = 0.0;      // mean |t - r| / (r + eps)
+    // Symmetric in too dark and too bright (issue #43): mean |ln((t + e) / (r + e))|
+    // with e = max(eps, the reference pixel's noise). Half and twice the
+    // reference both give ln 2, where MARE gives 50% and 100%: a dark image
+    // no longer scores better than a bright one that is as far off.
+    double logError = 0.0;
     double ssim = 1.0;      // mean SSIM over kept pixels, 1 = identical
     // Mean luminance of each image over the kept pixels: their ratio shows a
     // global bias (a missing pi or albedo, an intensity setting) at a glance.
@@ -38,10 +45,16 @@ struct ErrorMetrics {
     // What the reference's noise alone contributes (0 for a noiseless reference).
     double noiseRelMse = 0.0; // mean sigma^2 / (r^2 + eps^2)
     double noiseMare = 0.0;   // mean sqrt(2/pi) sigma / (r + eps): E|N(0, sigma)|
+    double noiseLogError = 0.0; // mean sqrt(2/pi) sigma / (r + e): logError's first-order noise share
     // relMse minus the noise's expected share (the bias the test image has), >= 0.
     double relMseDenoised() const { return relMse > noiseRelMse ? relMse - noiseRelMse : 0.0; }
     bool relMseBelowNoise() const { return relMse <= noiseRelMse; }
     bool mareBelowNoise() const { return mare <= noiseMare; }
+    // logError as a factor off, in percent of the reference: exp(logError) - 1
+    // (1.0 = on average a factor of 2 too dark or too bright).
+    double symmetricError() const { return std::expm1(logError); }
+    double noiseSymmetricError() const { return std::expm1(noiseLogError); }
+    bool symmetricBelowNoise() const { return logError <= noiseLogError; }
 };
 
 float luminance(const glm::vec3& c);
