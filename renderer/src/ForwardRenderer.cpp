@@ -80,7 +80,7 @@ const scene::Scene& ForwardRenderer::Impl::enterRenderSpace(const scene::Scene& 
         sceneBoundsGeneration = sceneGeneration;
     }
     const glm::dvec3 before = space.anchor();
-    const scene::Scene& rs = space.update(world, worldBounds);
+    const scene::Scene& rs = space.update(world, worldBounds, sceneGeneration);
     sceneBounds = worldBounds.empty() ? scene::Bounds{}
                                       : scene::Bounds{space.toRender(worldBounds.min), space.toRender(worldBounds.max)};
     if (space.anchor() != before)
@@ -145,12 +145,7 @@ int ForwardRenderer::shadowCascadesStale() const { return impl_->shadows->staleC
 std::string ForwardRenderer::lpvNote() const {
     // The LPV's line, then how its size was chosen, then why it delivers
     // (almost) nothing when it does not: a silent zero is a bug to a user.
-    std::string note = impl_->lpv->note();
-    if (impl_->lpvFit.fitted)
-        note += "; fitted: " + impl_->lpvFit.reason;
-    if (impl_->lpvDelivery.problem != LpvDelivery::Problem::None && !impl_->lpvDelivery.skipsLpv())
-        note += "; warning: almost no indirect light: " + impl_->lpvDelivery.reason;
-    return note;
+    return impl_->lpv->note() + fitNote(impl_->lpvFit, impl_->lpvDelivery);
 }
 const LpvFit& ForwardRenderer::lpvFit() const { return impl_->lpvFit; }
 const LpvDelivery& ForwardRenderer::lpvDelivery() const { return impl_->lpvDelivery; }

@@ -111,8 +111,9 @@ LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sc
         return {Problem::NoSteps, "lpv.propagationSteps is 0: light stays in the cells it was injected into"};
     // Light travels `steps` cells of a cascade. Where even the coarsest
     // carries it less than 1/8 of the scene, little of it reaches another
-    // surface: one cascade of a quarter of the Cornell box's side kept 3%
-    // of its indirect light (docs/lpv.md); the fit's own is 0.4.
+    // surface: a single cascade whose steps carried light a quarter of the
+    // Cornell box's side kept 3% of its indirect light (docs/lpv.md's
+    // measurements); the fit's coarsest carries it 0.4 of the scene.
     const double side = largestSide(sceneBounds);
     const double reach = double(fit.steps) * coarsestCell;
     if (reach < side / 8.0)
@@ -120,6 +121,13 @@ LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sc
                                          " steps of " + length(coarsestCell) + " cells), under 1/8 of the " +
                                          length(side) + " scene: little reaches another surface"};
     return {};
+}
+
+std::string fitNote(const LpvFit& fit, const LpvDelivery& delivery) {
+    std::string note = fit.fitted ? "; fitted: " + fit.reason : std::string();
+    if (delivery.problem != LpvDelivery::Problem::None && !delivery.skipsLpv())
+        note += "; warning: almost no indirect light: " + delivery.reason;
+    return note;
 }
 
 } // namespace lpv::renderer

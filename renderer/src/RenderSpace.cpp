@@ -1,5 +1,7 @@
 #include "RenderSpace.h"
 
+#include "lpv/scene/SceneScale.h"
+
 #include <cmath>
 
 namespace lpv::renderer {
@@ -12,21 +14,27 @@ glm::dvec3 renderAnchor(const scene::Bounds& worldBounds) {
     return finite ? corner : glm::dvec3(0.0);
 }
 
-void RenderSpace::setScene(const scene::Scene& world) { scene_.meshes = world.meshes; }
+void RenderSpace::setScene(const scene::Scene& world) {
+    scene_.meshes = world.meshes;
+    generation_ = ~std::uint64_t(0);
+}
 
-const scene::Scene& RenderSpace::update(const scene::Scene& world, const scene::Bounds& worldBounds) {
-    anchor_ = renderAnchor(worldBounds);
-    scene_.materials = world.materials;
-    scene_.objects = world.objects;
+const scene::Scene& RenderSpace::update(const scene::Scene& world, const scene::Bounds& worldBounds,
+                                        std::uint64_t generation) {
+    if (generation != generation_) {
+        generation_ = generation;
+        anchor_ = renderAnchor(worldBounds);
+        scene_.materials = world.materials;
+        scene_.objects = world.objects;
+        scene_.lights.clear();
+        scene_.cameras.clear(); // the frame's camera comes separately (toRender)
+        scene_.cameraPaths.clear();
+        scene::moveScene(scene_, -anchor_);
+    }
     scene_.lights = world.lights;
-    scene_.cameras.clear(); // the frame's camera comes separately (toRender)
-    scene_.cameraPaths.clear();
-    scene_.sky = world.sky;
-    for (scene::Object& o : scene_.objects)
-        if (o.parent < 0 || std::size_t(o.parent) >= scene_.objects.size())
-            o.transform.translation = toRender(o.transform.translation);
     for (scene::Light& l : scene_.lights)
         l.position = toRender(l.position);
+    scene_.sky = world.sky;
     return scene_;
 }
 

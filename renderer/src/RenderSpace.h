@@ -24,9 +24,12 @@ class RenderSpace {
 public:
     // A new scene (its meshes are copied once: they do not move).
     void setScene(const scene::Scene& world);
-    // Objects, materials, lights and sky of `world` moved into render space;
-    // the anchor follows the world bounds (`bounds`, of this generation).
-    const scene::Scene& update(const scene::Scene& world, const scene::Bounds& worldBounds);
+    // `world` moved into render space. Objects, materials and the anchor
+    // (from `worldBounds`) are taken when `generation` changes (every scene
+    // edit bumps it); lights and sky every call (they change without one),
+    // so a frame copies only a handful of lights.
+    const scene::Scene& update(const scene::Scene& world, const scene::Bounds& worldBounds,
+                               std::uint64_t generation);
     const scene::Scene& scene() const { return scene_; }
 
     // The world position of render space's origin.
@@ -38,6 +41,7 @@ public:
 private:
     scene::Scene scene_;
     glm::dvec3 anchor_{0.0};
+    std::uint64_t generation_ = ~std::uint64_t(0);
 };
 
 // The anchor of a scene: the minimum corner of its world bounds (the origin

@@ -67,6 +67,7 @@ SceneTraits analyseSceneTraits(const scene::Scene& s) {
         t.maxGlossiness = std::max(t.maxGlossiness, s.materials[m].glossiness);
     }
     const scene::Bounds b = s.worldBounds();
+    t.bounds = b;
     if (b.empty())
         return t;
     // Per column of a grid over the inner part of the footprint (the outer
@@ -145,16 +146,13 @@ std::vector<EffectDecision> decideEffects(const scene::Scene& s, const SceneTrai
         // The fitted (or forced) cell size, and an LPV that cannot deliver
         // light to this view (LpvFit.h): the renderer skips the one whose
         // cascades miss the scene, and warns about the others.
-        const scene::Bounds bounds = s.worldBounds();
-        const LpvFit fit = fitLpv(params, bounds, camera->position);
-        const LpvDelivery delivery = lpvDelivery(fit, params.getInt("lpv.gridSize"), bounds, camera->position);
+        const LpvFit fit = fitLpv(params, t.bounds, camera->position);
+        const LpvDelivery delivery = lpvDelivery(fit, params.getInt("lpv.gridSize"), t.bounds, camera->position);
         if (delivery.skipsLpv()) {
             lpv.wanted = false;
             lpv.reason = delivery.reason;
         } else {
-            lpv.reason += "; " + (fit.fitted ? "fitted: " : std::string()) + fit.reason;
-            if (delivery.problem != LpvDelivery::Problem::None)
-                lpv.reason += "; warning: almost no indirect light: " + delivery.reason;
+            lpv.reason += fitNote(fit, delivery);
         }
     }
     out.push_back(lpv);

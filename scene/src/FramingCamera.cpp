@@ -1,4 +1,5 @@
 #include "lpv/scene/FramingCamera.h"
+#include "lpv/scene/SceneScale.h"
 #include "lpv/scene/WorldMatrices.h"
 
 #include <algorithm>
@@ -148,11 +149,7 @@ Camera framingCamera(const Scene& scene) {
     if (!(glm::length(centre) > 16.0 * std::max(size, 1e-30)))
         return framingCameraNearOrigin(scene);
     Scene local = scene;
-    for (Object& o : local.objects)
-        if (o.parent < 0 || std::size_t(o.parent) >= local.objects.size())
-            o.transform.translation = glm::vec3(glm::dvec3(o.transform.translation) - centre);
-    for (Light& l : local.lights)
-        l.position = glm::vec3(glm::dvec3(l.position) - centre);
+    moveScene(local, -centre);
     Camera camera = framingCameraNearOrigin(local);
     camera.position = glm::vec3(glm::dvec3(camera.position) + centre);
     camera.target = glm::vec3(glm::dvec3(camera.target) + centre);

@@ -47,4 +47,20 @@ void scaleSceneLengths(Scene& s, double factor, const SceneScaleParts& parts) {
             key.position = scaled(key.position, factor);
 }
 
+void moveScene(Scene& s, const glm::dvec3& offset) {
+    auto moved = [&](const glm::vec3& p) { return glm::vec3(glm::dvec3(p) + offset); };
+    for (Object& o : s.objects)
+        if (o.parent < 0 || std::size_t(o.parent) >= s.objects.size())
+            o.transform.translation = moved(o.transform.translation);
+    for (Light& l : s.lights)
+        l.position = moved(l.position);
+    for (Camera& c : s.cameras) {
+        c.position = moved(c.position);
+        c.target = moved(c.target);
+    }
+    for (CameraPath& path : s.cameraPaths)
+        for (CameraKeyframe& key : path.keyframes)
+            key.position = moved(key.position);
+}
+
 } // namespace lpv::scene

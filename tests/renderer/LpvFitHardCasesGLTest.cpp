@@ -71,16 +71,11 @@ scene::Camera scaled(scene::Camera c, double factor) {
     return c;
 }
 
-// Root objects, lights and the camera moved by `offset` (computed in double).
+// The scene and the view's camera moved by `offset` (computed in double).
 void move(scene::Scene& s, scene::Camera& camera, const glm::dvec3& offset) {
-    auto moved = [&](const glm::vec3& p) { return glm::vec3(glm::dvec3(p) + offset); };
-    for (scene::Object& o : s.objects)
-        if (o.parent < 0)
-            o.transform.translation = moved(o.transform.translation);
-    for (scene::Light& l : s.lights)
-        l.position = moved(l.position);
-    camera.position = moved(camera.position);
-    camera.target = moved(camera.target);
+    scene::moveScene(s, offset);
+    camera.position = glm::vec3(glm::dvec3(camera.position) + offset);
+    camera.target = glm::vec3(glm::dvec3(camera.target) + offset);
 }
 
 // A sun for scenes that bring no light (the same at every scale: a direction).

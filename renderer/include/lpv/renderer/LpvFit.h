@@ -63,4 +63,9 @@ struct LpvDelivery {
 };
 LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sceneBounds, const glm::vec3& camera);
 
+// What the LPV line (`lpv render`, the Effects dock) and the scene analysis
+// (`--explain`) append for a running LPV: "; fitted: <reason>" when fitted,
+// "; warning: almost no indirect light: <why>" when it delivers little.
+std::string fitNote(const LpvFit& fit, const LpvDelivery& delivery);
+
 } // namespace lpv::renderer

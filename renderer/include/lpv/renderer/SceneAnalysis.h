@@ -34,6 +34,9 @@ struct SceneTraits {
     int skyProbes = 0;
     // The largest glossiness of a visible material (auto compares it with effects.glossyThreshold).
     float maxGlossiness = 0.0f;
+    // The scene's world bounds, which the LPV's fit needs (LpvFit.h): walked
+    // once here, not on every camera move of the Effects dock.
+    scene::Bounds bounds;
 };
 
 // A share of open sky above which `auto` injects sky light.

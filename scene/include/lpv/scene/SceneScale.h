@@ -25,4 +25,11 @@ struct SceneScaleParts {
 // factor is exact.
 void scaleSceneLengths(Scene& s, double factor, const SceneScaleParts& parts = {});
 
+// Moves every world position of `s` by `offset`, computed in double and
+// rounded once: root objects' translations (children and meshes stay in
+// their parents' space), light positions, cameras and camera path keys.
+// The renderer's render space and the framing camera move a scene far from
+// the origin near it this way (issue #41).
+void moveScene(Scene& s, const glm::dvec3& offset);
+
 } // namespace lpv::scene
