@@ -223,7 +223,7 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
                     reference::describe(report.radiosity.back().indirect).c_str());
         if (runs.front().solveResidual <= solve.residual) {
             // Converged inside this budget: a longer one would solve nothing more (one row, not five equal ones).
-            std::printf("radiosity converged to the residual %g in %.1f s\n", solve.residual,
+            std::printf("radiosity converged to the residual %g in %.1f s\n", *solve.residual,
                         runs.front().solveSeconds);
             break;
         }
