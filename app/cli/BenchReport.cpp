@@ -1,4 +1,5 @@
 #include "BenchReport.h"
+#include "Cli.h"
 
 
 #include "lpv/bench/SweepOutput.h"
@@ -112,8 +113,8 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
 
 bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
                      const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-                     const std::string& note) {
-    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note);
+                     const std::string& note, const bench::SweepTimingInfo& timing) {
+    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note, timing);
     if (!written) {
         std::cerr << "lpv: " << written.error().describe() << "\n";
         return false;
@@ -121,6 +122,62 @@ bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<Swee
     for (const auto& file : *written)
         std::printf("wrote %s\n", file.string().c_str());
     return true;
+}
+
+const char* const kRoundOptionsHelp = R"(  --rounds N            Timing rounds at most (default 9; 0: no timing). The
+                        settings are timed in interleaved rounds (A B C, then
+                        C B A, ...), --frames frames each after one untimed
+                        frame; every time is the median over the rounds with
+                        its interquartile range, and settings whose times lie
+                        within each other's noise are called the same cost
+  --time-budget S       Seconds of timing: no round starts that would end
+                        past it (default: no budget)
+  --spread-target P     Stop after 3 rounds once every setting's interquartile
+                        range is within P% of its median (default 10)
+)";
+
+std::string parseRoundOptions(Args& args, bench::RoundPlan& plan) {
+    const auto rounds = args.option("--rounds");
+    const auto budget = args.option("--time-budget");
+    const auto target = args.option("--spread-target");
+    if (rounds) {
+        const auto n = parseCount(*rounds, 0);
+        if (!n)
+            return "--rounds must be a whole number, 0 or more";
+        plan.maxRounds = *n;
+        plan.minRounds = std::min(plan.minRounds, *n);
+    }
+    auto positive = [](const std::string& text) -> std::optional<double> {
+        double v = 0.0;
+        auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v <= 0.0)
+            return std::nullopt;
+        return v;
+    };
+    if (budget) {
+        const auto v = positive(*budget);
+        if (!v)
+            return "--time-budget must be a positive number of seconds";
+        plan.timeBudgetSeconds = *v;
+    }
+    if (target) {
+        const auto v = positive(*target);
+        if (!v)
+            return "--spread-target must be a positive percentage";
+        plan.spreadTarget = *v / 100.0;
+    }
+    return {};
+}
+
+std::string roundOptionsText(const bench::RoundPlan& plan) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, " --rounds %d --spread-target %g", plan.maxRounds, 100.0 * plan.spreadTarget);
+    std::string text = buf;
+    if (plan.timeBudgetSeconds > 0.0) {
+        std::snprintf(buf, sizeof buf, " --time-budget %g", plan.timeBudgetSeconds);
+        text += buf;
+    }
+    return text;
 }
 
 std::optional<int> parseCount(const std::string& text, int minimum) {

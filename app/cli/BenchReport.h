@@ -5,6 +5,8 @@
 #include "lpv/bench/Machine.h"
 #include "lpv/bench/Settings.h"
 #include "lpv/bench/Sweep.h"
+#include "lpv/bench/SweepOutput.h"
+#include "lpv/bench/Timing.h"
 
 #include "lpv/renderer/GpuTimer.h"
 
@@ -46,7 +48,16 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
 // on failure prints the error and returns false.
 bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
                      const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-                     const std::string& note = "");
+                     const std::string& note = "", const bench::SweepTimingInfo& timing = {});
+
+// --rounds N, --time-budget S and --spread-target PERCENT into `plan` (its
+// fields are the defaults); a usage error's text, or empty. Shared by every
+// bench command that times (bench.md "Timing with its spread").
+std::string parseRoundOptions(class Args& args, bench::RoundPlan& plan);
+// The same options as a command line would give them (" --rounds 9 ...").
+std::string roundOptionsText(const bench::RoundPlan& plan);
+// The help lines of those options.
+extern const char* const kRoundOptionsHelp;
 
 // A whole number >= minimum (command-line counts), or nullopt.
 std::optional<int> parseCount(const std::string& text, int minimum);

@@ -35,27 +35,34 @@ void printBenchSweepHelp() {
 bench PROJECT --sweep KEY=V1,V2,... [--sweep ...] [options]:
 renders every combination of the swept values (e.g. --sweep
 lpv.propagationSteps=0,4,8,16 --sweep lpv.gridSize=16,32), and for each
-measures per-pass GPU time (median/min/max over --frames after --warmup) and
-the error of the LPV's indirect irradiance (output.view=indirect) and of the
-final image against the path-traced reference (`lpv reference`): relMSE,
-MARE, SSIM and the mean's ratio, background masked, beside the reference's
-own noise. Like for like: a run with lpv.bounces = k is measured against the
-reference's k-bounce light (its indirect1 layer for k = 1, its multi-bounce
-layer when traced with --bounces k), and the reference traces the sky and
-emissive surfaces where the LPV injects them (reference.skyLight and
-reference.emissiveLight on auto). Writes
-into --out: sweep.csv, sweep.json, sweep.md (the cheapest settings reaching
-10% and 5% indirect MARE), time-<KEY>.png (time per pass against each swept
-key), error-time.png (indirect MARE against total time, Pareto front
-marked) and crops.png (reference and each setting's indirect light).
+measures the error of the LPV's indirect irradiance (output.view=indirect)
+and of the final image against the path-traced reference (`lpv reference`):
+the symmetric error (too dark and too bright alike), the mean's ratio (a
+mean outside 0.8-1.25x is marked biased), relMSE, MARE and SSIM, background
+masked, beside the reference's own noise; the GPU memory of the frame's
+resources, to the byte; and per-pass GPU time in interleaved rounds (see
+--rounds), each a median with its spread. Like for like: a run with
+lpv.bounces = k is measured against the reference's k-bounce light (its
+indirect1 layer for k = 1, its multi-bounce layer when traced with
+--bounces k), and the reference traces the sky and emissive surfaces where
+the LPV injects them (reference.skyLight and reference.emissiveLight on
+auto). Writes into --out: sweep.csv, sweep.json, sweep.md (the cheapest unbiased
+settings within 10% and 25% of the lowest unbiased error; settings of the
+same cost within the noise), time-<KEY>.png (time per pass against each
+swept key), error-time.png (symmetric error against total time on a log
+axis, the times' spread as bars, Pareto front and biased runs marked),
+error-memory.png (the same against GPU memory) and crops.png (reference
+and each setting's indirect light, one exposure).
 
   --reference REF.exr   Reference traced beforehand at the same size and
                         camera; without it one is traced first (--spp,
                         --max-seconds, reference.* parameters)
   --out DIR             Output folder (default bench-sweep)
   --width N --height N  Image size (default 320x180, as `lpv reference`)
-  --frames N --warmup N Timed frames (default 20) after warm-up frames (default 3)
+  --frames N --warmup N Timed frames per round (default 20); warm-up frames
+                        (default 3) before a setting's image is measured
   --camera NAME --set KEY=VALUE
+)" << kRoundOptionsHelp << R"(
   --shard I/N           Render only the combinations whose index is I modulo N
                         (0-based), for a cluster: needs --reference; writes
                         DIR/shard.json and DIR/run-K.exr, which `lpv bench merge`
@@ -77,6 +84,8 @@ int benchSweep(Args args) {
     c.spp = args.option("--spp");
     c.seconds = args.option("--max-seconds");
     const auto shardText = args.option("--shard");
+    if (const std::string error = parseRoundOptions(args, c.rounds); !error.empty())
+        return usageError(error, "bench");
     if (!args.missingValue().empty())
         return usageError(args.missingValue() + " needs a value", "bench");
     if (auto unknown = args.unknownOption())
@@ -172,6 +181,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     spec.height = *height;
     spec.frames = *frames;
     spec.warmup = *warmup;
+    spec.rounds = c.rounds;
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
     int maxBounces = 1;
@@ -230,15 +240,28 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
             spec.combinations.push_back(combinations[index]);
         }
     bench::SweepCallbacks callbacks;
-    callbacks.progress = [](const bench::SweepProgress& p) {
-        if (p.done < p.total)
+    int lastRound = -1;
+    callbacks.progress = [&lastRound](const bench::SweepProgress& p) {
+        if (p.round < 0 && p.done < p.total)
             std::printf("\n== %s\n", p.label.c_str());
+        if (p.round >= 0 && p.round != lastRound) {
+            lastRound = p.round;
+            std::printf("timing round %d ...\n", p.round + 1);
+            std::fflush(stdout);
+        }
         return true;
     };
-    callbacks.runDone = [](const SweepRun& run) {
-        std::printf("%s", renderer::formatTimingTable(run.passes).c_str());
-        std::printf("indirect: %s\nimage:    %s\n", reference::describe(run.indirect).c_str(),
-                    reference::describe(run.image).c_str());
+    callbacks.runMeasured = [](const SweepRun& run) {
+        std::printf("GPU memory: %s (LPV volumes %s)\nindirect: %s\nimage:    %s\n",
+                    renderer::formatBytes(run.gpuBytes).c_str(), renderer::formatBytes(run.lpvBytes).c_str(),
+                    reference::describe(run.indirect).c_str(), reference::describe(run.image).c_str());
+    };
+    callbacks.runDone = [&spec](const SweepRun& run) {
+        if (spec.rounds.maxRounds <= 0)
+            return;
+        std::printf("\n== %s: %s over %d rounds (quartiles %.2f-%.2f ms)\n%s", sweepLabel(run.settings).c_str(),
+                    bench::formatTiming(run.total).c_str(), run.total.rounds, run.total.q1, run.total.q3,
+                    renderer::formatTimingTable(run.passes).c_str());
     };
     callbacks.warning = [](const std::string& w) { std::cerr << "lpv: warning: " << w << "\n"; };
     auto swept = bench::runSweep(spec, ref, callbacks);
@@ -247,11 +270,15 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
         return kFailure;
     }
     std::vector<SweepRun> runs = std::move(swept->runs);
+    const bench::SweepTimingInfo timing{swept->rounds, swept->stopReason, swept->load};
+    if (spec.rounds.maxRounds > 0)
+        std::printf("\ntimed in %d interleaved rounds (%s); %s\n", swept->rounds, swept->stopReason.c_str(),
+                    swept->load.c_str());
 
     const renderer::GlInfo& gl = swept->gl;
     std::string command = "lpv bench " + request.projectFile + " --width " + std::to_string(*width) +
                           " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup);
+                          " --warmup " + std::to_string(*warmup) + roundOptionsText(c.rounds);
     for (const std::string& s : sweeps)
         command += " --sweep " + s;
     for (const std::string& s : sets)
@@ -273,7 +300,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
                     reference::formatShard(shard).c_str(), out.runs.size(), combinations.size());
         return kOk;
     }
-    if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref))
+    if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref, "", timing))
         return kFailure;
     if (runsOut)
         *runsOut = std::move(runs);

@@ -21,6 +21,7 @@ struct SweepCommand {
     std::optional<std::string> referenceFile; // else one is traced (spp, seconds)
     std::filesystem::path outDir = "bench-sweep";
     int width = 320, height = 180, frames = 20, warmup = 3;
+    bench::RoundPlan rounds; // interleaved timing rounds (--rounds, --time-budget, --spread-target)
     std::optional<std::string> spp, seconds;
     reference::ShardSpec shard;
 };

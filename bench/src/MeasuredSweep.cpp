@@ -70,7 +70,6 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
     };
     MeasuredSweep result;
     result.runs.resize(std::size_t(runCount));
-    const Clock::time_point runsStart = Clock::now();
     int runsDone = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::vector<int>& group = groups[g];
@@ -113,6 +112,7 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
         sweep.height = spec.height;
         sweep.frames = spec.frames;
         sweep.warmup = spec.warmup;
+        sweep.rounds = spec.rounds;
         sweep.referenceBounces = bounces;
         for (int i : group)
             sweep.combinations.push_back(spec.combinations[std::size_t(i)]);
@@ -120,21 +120,25 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
             return scene::makeError(scene::ErrorCode::InvalidValue, "", "sweep", *problem);
         SweepCallbacks sweepCallbacks;
         sweepCallbacks.warning = callbacks.warning;
+        const double groupStart = unitsDone;
+        const Clock::time_point groupClock = Clock::now();
         sweepCallbacks.progress = [&](const SweepProgress& p) {
-            if (p.done == p.total)
+            if (p.fraction >= 1.0)
                 return true;
-            std::string text = "Setting " + std::to_string(runsDone + 1) + " of " + std::to_string(runCount) + ": " +
-                               (p.label == "defaults" ? std::string("current settings") : p.label);
-            if (runsDone > 0) {
-                const double perRun = std::chrono::duration<double>(Clock::now() - runsStart).count() / runsDone;
-                text += " (" + timeLeft(perRun * (runCount - runsDone)) + ")";
-            }
-            return report((unitsDone + p.done) / units, text);
+            const double done = groupStart + p.fraction * double(group.size());
+            std::string text = p.round < 0 ? "Setting " + std::to_string(runsDone + p.done + 1) + " of " +
+                                                 std::to_string(runCount) + ": "
+                                           : "Timing round " + std::to_string(p.round + 1) + ": ";
+            text += p.label == "defaults" ? std::string("current settings") : p.label;
+            // Time left in this group's sweep, from its own pace so far.
+            const double elapsed = std::chrono::duration<double>(Clock::now() - groupClock).count();
+            if (p.fraction > 0.05)
+                text += " (" + timeLeft(elapsed / p.fraction * (1.0 - p.fraction)) + ")";
+            return report(done / units, text);
         };
         std::size_t inGroup = 0;
         sweepCallbacks.runDone = [&](const SweepRun& run) {
             const int index = group[inGroup++];
-            ++runsDone;
             if (callbacks.runDone)
                 callbacks.runDone(index, run, layer, ref.coverage);
             result.runs[std::size_t(index)] = run;
@@ -143,6 +147,10 @@ scene::Expected<MeasuredSweep> measureSweep(const MeasuredSweepSpec& spec, const
         if (!swept)
             return std::unexpected(swept.error());
         unitsDone += double(group.size());
+        runsDone += int(group.size());
+        result.rounds = std::max(result.rounds, swept->rounds);
+        result.stopReason = swept->stopReason;
+        result.load = swept->load;
         if (g == 0) {
             result.gl = swept->gl;
             result.referenceBounces = bounces;

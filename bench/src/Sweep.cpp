@@ -5,6 +5,7 @@
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/GpuMemory.h"
 #include "lpv/renderer/SceneAnalysis.h"
 
 #include <memory>
@@ -94,37 +95,38 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
     }
     SweepResult result;
     result.gl = gl.context.info();
+    result.load = describeLoad();
     const int total = int(combinations.size());
+    const bool timed = spec.rounds.maxRounds > 0;
+    // Accuracy takes one unit per combination, each timing round about as many.
+    const double units = double(total) * (1.0 + (timed ? double(std::max(1, spec.rounds.minRounds)) : 0.0));
+    auto parametersOf = [&](int index) {
+        scene::ParameterSet parameters = spec.project.parameters;
+        for (const auto& [key, value] : combinations[std::size_t(index)])
+            (void)parameters.setFromText(key, value, "--sweep");
+        (void)parameters.setFromText("output.view", "final", "sweep");
+        return parameters;
+    };
     for (int index = 0; index < total; ++index) {
         const auto& combination = combinations[std::size_t(index)];
-        if (callbacks.progress && !callbacks.progress({index, total, sweepLabel(combination)}))
+        if (callbacks.progress &&
+            !callbacks.progress({index, total, sweepLabel(combination), -1, double(index) / units}))
             return scene::makeError(scene::ErrorCode::Cancelled, "", "",
                                     "stopped after " + std::to_string(index) + " of " + std::to_string(total) +
                                         " settings");
         SweepRun run;
         run.settings = combination;
-        scene::ParameterSet parameters = spec.project.parameters;
-        for (const auto& [key, value] : combination)
-            (void)parameters.setFromText(key, value, "--sweep");
-        (void)parameters.setFromText("output.view", "final", "sweep");
-        if (spec.warmup > 0)
-            if (auto ok = gl.frames(spec, parameters, spec.warmup); !ok)
-                return std::unexpected(ok.error());
-        gl.renderer.timer().clearHistory();
-        if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
-            return std::unexpected(ok.error());
-        run.passes = gl.renderer.timer().table();
-        std::erase_if(run.passes, [](const renderer::PassTiming& t) { return t.samples == 0; });
-        for (const auto& p : run.passes)
-            run.totalMs += p.medianMs;
+        scene::ParameterSet parameters = parametersOf(index);
         // The measured frame must follow a frame of the same settings: the
         // camera's geometry volume reads the previous frame's G-buffer, so
         // the first frame of a combination depends on what ran before it
         // (in a shard, another combination than in one process).
-        if (spec.warmup == 0 && spec.frames == 1)
-            if (auto ok = gl.frames(spec, parameters, 1); !ok)
-                return std::unexpected(ok.error());
+        if (auto ok = gl.frames(spec, parameters, std::max(spec.warmup, 1)); !ok)
+            return std::unexpected(ok.error());
         const auto image = rgbOf(gl.renderer.readHdr());
+        const renderer::GpuMemory memory = gl.renderer.gpuMemory();
+        run.gpuBytes = memory.totalBytes;
+        run.lpvBytes = memory.bytesOf("lpv.");
         // The indirect view: the LPV irradiance at the same pixels, no albedo, no tonemap.
         (void)parameters.setFromText("output.view", "indirect", "sweep");
         if (auto ok = gl.frames(spec, parameters, 1); !ok)
@@ -148,12 +150,50 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
                                         : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
         run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
         run.image = measure(image, ref.image, ref.imageVariance);
-        if (callbacks.runDone)
-            callbacks.runDone(run);
+        if (callbacks.runMeasured)
+            callbacks.runMeasured(run);
         result.runs.push_back(std::move(run));
     }
+    if (timed) {
+        // Interleaved rounds (Timing.h): each setting in turn, one untimed
+        // frame after the switch, then spec.frames timed ones.
+        RoundCallbacks rounds;
+        rounds.timeOnce = [&](int index) -> scene::Expected<std::vector<renderer::PassTiming>> {
+            const scene::ParameterSet parameters = parametersOf(index);
+            if (auto ok = gl.frames(spec, parameters, 1); !ok)
+                return std::unexpected(ok.error());
+            gl.renderer.timer().clearHistory();
+            if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
+                return std::unexpected(ok.error());
+            return gl.renderer.timer().table();
+        };
+        rounds.progress = [&](int round, int position, int index) {
+            if (!callbacks.progress)
+                return true;
+            const double done = double(total) * (1.0 + double(round)) + double(position);
+            return callbacks.progress({total, total, sweepLabel(combinations[std::size_t(index)]), round,
+                                       std::min(done / units, 0.99)});
+        };
+        auto timing = timeInRounds(total, spec.rounds, rounds);
+        if (!timing)
+            return std::unexpected(timing.error());
+        result.rounds = timing->rounds;
+        result.stopReason = timing->stopReason;
+        for (int index = 0; index < total; ++index) {
+            SweepRun& run = result.runs[std::size_t(index)];
+            SettingTiming& t = timing->settings[std::size_t(index)];
+            run.passes = std::move(t.passes);
+            run.passStats = std::move(t.passStats);
+            run.total = t.total;
+            run.totalMs = t.total.median;
+        }
+    }
+    result.load += " -> " + describeLoad();
+    for (const SweepRun& run : result.runs)
+        if (callbacks.runDone)
+            callbacks.runDone(run);
     if (callbacks.progress)
-        (void)callbacks.progress({total, total, ""});
+        (void)callbacks.progress({total, total, "", -1, 1.0});
     return result;
 }
 

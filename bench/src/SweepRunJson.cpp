@@ -15,7 +15,9 @@ Json metricsToJson(const reference::ErrorMetrics& m) {
             {"meanTest", m.meanTest},
             {"meanReference", m.meanReference},
             {"noiseRelMse", m.noiseRelMse},
-            {"noiseMare", m.noiseMare}};
+            {"noiseMare", m.noiseMare},
+            {"logError", m.logError},
+            {"noiseLogError", m.noiseLogError}};
 }
 
 reference::ErrorMetrics metricsFromJson(const Json& j) {
@@ -28,26 +30,43 @@ reference::ErrorMetrics metricsFromJson(const Json& j) {
     m.meanReference = j.at("meanReference").get<double>();
     m.noiseRelMse = j.at("noiseRelMse").get<double>();
     m.noiseMare = j.at("noiseMare").get<double>();
+    // Absent in files written before the symmetric error (issue #43).
+    m.logError = j.value("logError", 0.0);
+    m.noiseLogError = j.value("noiseLogError", 0.0);
     return m;
 }
 
 } // namespace
+
+Json timingToJson(const TimingStats& t) {
+    return {{"medianMs", t.median}, {"q1Ms", t.q1}, {"q3Ms", t.q3}, {"minMs", t.min}, {"maxMs", t.max},
+            {"rounds", t.rounds}};
+}
+
+TimingStats timingFromJson(const Json& j) {
+    return {j.at("medianMs").get<double>(), j.at("q1Ms").get<double>(), j.at("q3Ms").get<double>(),
+            j.at("minMs").get<double>(),    j.at("maxMs").get<double>(), j.at("rounds").get<int>()};
+}
 
 Json sweepRunToJson(const SweepRun& r) {
     Json settings = Json::array();
     for (const auto& [key, value] : r.settings)
         settings.push_back({key, value});
     Json passes = Json::array();
-    for (const auto& p : r.passes)
-        passes.push_back({{"pass", p.pass},
-                          {"medianMs", p.medianMs},
-                          {"minMs", p.minMs},
-                          {"maxMs", p.maxMs},
-                          {"lastMs", p.lastMs},
-                          {"frames", p.samples}});
+    for (std::size_t i = 0; i < r.passes.size(); ++i) {
+        const auto& p = r.passes[i];
+        Json pass{{"pass", p.pass}, {"medianMs", p.medianMs}, {"minMs", p.minMs},
+                  {"maxMs", p.maxMs}, {"lastMs", p.lastMs},   {"frames", p.samples}};
+        if (i < r.passStats.size())
+            pass["rounds"] = timingToJson(r.passStats[i]);
+        passes.push_back(pass);
+    }
     return {{"settings", settings},
             {"bounces", r.bounces},
             {"totalMs", r.totalMs},
+            {"total", timingToJson(r.total)},
+            {"gpuBytes", r.gpuBytes},
+            {"lpvBytes", r.lpvBytes},
             {"passes", passes},
             {"indirect", metricsToJson(r.indirect)},
             {"indirectOneBounce", metricsToJson(r.indirectOne)},
@@ -62,10 +81,20 @@ SweepRun sweepRunFromJson(const Json& r) {
         run.settings.emplace_back(kv.at(0).get<std::string>(), kv.at(1).get<std::string>());
     run.bounces = r.at("bounces").get<int>();
     run.totalMs = r.at("totalMs").get<double>();
-    for (const Json& p : r.at("passes"))
+    for (const Json& p : r.at("passes")) {
         run.passes.push_back({p.at("pass").get<std::string>(), p.at("medianMs").get<double>(),
                               p.at("minMs").get<double>(), p.at("maxMs").get<double>(),
                               p.at("lastMs").get<double>(), p.at("frames").get<std::size_t>()});
+        if (p.contains("rounds"))
+            run.passStats.push_back(timingFromJson(p.at("rounds")));
+    }
+    if (run.passStats.size() != run.passes.size())
+        run.passStats.clear();
+    // Absent in files written before timing rounds and memory (issue #43).
+    if (r.contains("total"))
+        run.total = timingFromJson(r.at("total"));
+    run.gpuBytes = r.value("gpuBytes", std::uint64_t(0));
+    run.lpvBytes = r.value("lpvBytes", std::uint64_t(0));
     run.indirect = metricsFromJson(r.at("indirect"));
     run.indirectOne = metricsFromJson(r.at("indirectOneBounce"));
     run.image = metricsFromJson(r.at("image"));

@@ -38,6 +38,7 @@ const CornellSweep& cornell() {
         s.spec.height = kHeight;
         s.spec.frames = 1;
         s.spec.warmup = 1;
+        s.spec.rounds = {2, 2, 0.10, 0.0}; // two interleaved rounds: forward, then backward
         (void)s.spec.project.parameters.setFromText("lpv.reuse", "false", "test");
         scene::Project traced = s.spec.project;
         (void)traced.parameters.setFromText("reference.samplesPerPixel", "32", "test");
@@ -60,23 +61,46 @@ TEST(SweepGL, EachSettingIsTimedAndMeasuredAgainstTheReference) {
     spec.combinations = {{{"lpv.propagationSteps", "0"}}, {{"lpv.propagationSteps", "8"}}};
     ASSERT_FALSE(bench::checkSweep(spec, "ref").has_value());
     std::vector<std::string> labels;
-    int finished = 0;
+    int measured = 0, finished = 0;
+    double lastFraction = -1.0;
     bench::SweepCallbacks callbacks;
     callbacks.progress = [&](const bench::SweepProgress& p) {
-        labels.push_back(p.label);
+        labels.push_back((p.round < 0 ? "" : "round " + std::to_string(p.round) + ": ") + p.label);
         EXPECT_EQ(p.total, 2);
+        EXPECT_GE(p.fraction, lastFraction) << "progress goes forward";
+        lastFraction = p.fraction;
         return true;
+    };
+    callbacks.runMeasured = [&](const bench::SweepRun& run) {
+        ++measured;
+        EXPECT_EQ(finished, 0) << "accuracy first, then the timing rounds";
+        EXPECT_EQ(run.total.rounds, 0);
     };
     callbacks.runDone = [&](const bench::SweepRun&) { ++finished; };
     auto result = bench::runSweep(spec, c.reference, callbacks);
     ASSERT_TRUE(result.has_value()) << result.error().describe();
     ASSERT_EQ(result->runs.size(), 2u);
+    EXPECT_EQ(measured, 2);
     EXPECT_EQ(finished, 2);
-    EXPECT_EQ(labels, (std::vector<std::string>{"propagationSteps=0", "propagationSteps=8", ""}));
+    // Each setting measured once, then timed in interleaved rounds: forward, then backward.
+    EXPECT_EQ(labels, (std::vector<std::string>{"propagationSteps=0", "propagationSteps=8",
+                                                "round 0: propagationSteps=0", "round 0: propagationSteps=8",
+                                                "round 1: propagationSteps=8", "round 1: propagationSteps=0", ""}));
+    EXPECT_EQ(result->rounds, 2);
+    EXPECT_NE(result->stopReason.find("round limit"), std::string::npos) << result->stopReason;
+    EXPECT_NE(result->load.find("->"), std::string::npos) << result->load;
     EXPECT_FALSE(result->gl.renderer.empty());
     for (const bench::SweepRun& run : result->runs) {
         EXPECT_GT(run.totalMs, 0.0);
+        EXPECT_EQ(run.total.rounds, 2);
+        EXPECT_DOUBLE_EQ(run.totalMs, run.total.median);
+        EXPECT_LE(run.total.min, run.total.median);
+        EXPECT_GE(run.total.max, run.total.median);
         EXPECT_FALSE(run.passes.empty());
+        EXPECT_EQ(run.passStats.size(), run.passes.size());
+        // The frame's memory, counted to the byte: the LPV's volumes are part of it.
+        EXPECT_GT(run.lpvBytes, 0u);
+        EXPECT_GT(run.gpuBytes, run.lpvBytes);
         EXPECT_TRUE(std::isfinite(run.indirect.mare));
         EXPECT_GT(run.indirect.pixels, std::size_t(kWidth * kHeight / 2)); // the box fills most of the view
         EXPECT_EQ(run.indirectPixels.size(), std::size_t(kWidth * kHeight));
@@ -91,14 +115,16 @@ TEST(SweepGL, StoppingFromTheProgressCallbackEndsAfterTheRunInFlight) {
     ASSERT_EQ(c.reference.width, kWidth);
     bench::SweepSpec spec = c.spec;
     spec.combinations = {{{"lpv.gridSize", "16"}}, {{"lpv.gridSize", "32"}}, {{"lpv.gridSize", "64"}}};
-    int finished = 0;
+    int measured = 0, finished = 0;
     bench::SweepCallbacks callbacks;
     callbacks.progress = [](const bench::SweepProgress& p) { return p.done < 1; };
+    callbacks.runMeasured = [&](const bench::SweepRun&) { ++measured; };
     callbacks.runDone = [&](const bench::SweepRun&) { ++finished; };
     auto result = bench::runSweep(spec, c.reference, callbacks);
     ASSERT_FALSE(result.has_value());
     EXPECT_EQ(result.error().code, scene::ErrorCode::Cancelled);
-    EXPECT_EQ(finished, 1);
+    EXPECT_EQ(measured, 1);
+    EXPECT_EQ(finished, 0) << "a stopped sweep has no times to give";
 }
 
 TEST(SweepGL, ARunOfMoreBouncesThanTheReferenceIsRefusedBeforeRendering) {
@@ -134,7 +160,7 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     fs::create_directories(dir);
     auto written = bench::writeSweepOutputs(dir, result->runs, kWidth, kHeight, "test", "machine", c.reference);
     ASSERT_TRUE(written.has_value()) << written.error().describe();
-    for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "crops.png"})
+    for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "error-memory.png", "crops.png"})
         EXPECT_TRUE(fs::exists(dir / name)) << name;
     std::ifstream in(dir / "sweep.json");
     const auto json = nlohmann::json::parse(in);
@@ -143,6 +169,17 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     // The figures read back exactly (a report resumed from sweep.json is the report).
     EXPECT_EQ(json.at("runs")[0].at("totalMs").get<double>(), result->runs[0].totalMs);
     EXPECT_EQ(json.at("runs")[1].at("indirect").at("mare").get<double>(), result->runs[1].indirect.mare);
+    // The spread, the memory and the symmetric error with its bias travel with every run.
+    const auto& run0 = json.at("runs")[0];
+    EXPECT_EQ(run0.at("total").at("rounds").get<int>(), result->runs[0].total.rounds);
+    EXPECT_EQ(run0.at("total").at("q3Ms").get<double>(), result->runs[0].total.q3);
+    EXPECT_EQ(run0.at("gpuBytes").get<std::uint64_t>(), result->runs[0].gpuBytes);
+    EXPECT_EQ(run0.at("indirect").at("logError").get<double>(), result->runs[0].indirect.logError);
+    EXPECT_EQ(run0.at("biased").get<bool>(), bench::biasedMean(bench::meanRatio(result->runs[0].indirect)));
+    std::ifstream md(dir / "sweep.md");
+    const std::string markdown((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(markdown.find("same cost as"), std::string::npos);
+    EXPECT_NE(markdown.find("symmetric error"), std::string::npos);
     fs::remove_all(dir);
 }
 

@@ -25,6 +25,9 @@ struct MeasuredSweepSpec {
     int frames = 3;
     int warmup = 1;
     int referenceSpp = 512;
+    // Timing rounds: few, for an editor that waits on them; each run still
+    // gets a median and a spread.
+    RoundPlan rounds{3, 5, 0.10, 0.0};
 };
 
 struct MeasuredSweepCallbacks {
@@ -46,6 +49,9 @@ struct MeasuredSweep {
     int referenceBounces = 1;              // of that reference's measured layer
     int references = 0;                    // traced in all
     renderer::GlInfo gl;
+    int rounds = 0;                        // timing rounds (the most any group ran)
+    std::string stopReason;                // why the last group's rounds stopped
+    std::string load;                      // the machine's load before and after (describeLoad)
 };
 
 // Groups of combinations that share a like-for-like reference, in order of

@@ -1,11 +1,14 @@
 #pragma once
-// A sweep: every combination of swept settings rendered on the GPU, each
-// timed per pass (median/min/max after warm-up) and measured against the
-// path-traced reference (the LPV's indirect irradiance and the final image).
+// A sweep: every combination of swept settings rendered on the GPU and
+// measured against the path-traced reference (the LPV's indirect irradiance
+// and the final image), then timed per pass in interleaved rounds (Timing.h)
+// with each figure's median and spread, and its GPU memory counted.
 // `lpv bench PROJECT --sweep`, its shards, `lpv bench report` and the
 // editor's sweep dock all run it; results come back in memory, and
 // SweepOutput.h writes them as files.
 #include "lpv/bench/Settings.h"
+#include "lpv/bench/Pareto.h"
+#include "lpv/bench/Timing.h"
 
 #include "lpv/reference/Metrics.h"
 #include "lpv/reference/ReferenceImage.h"
@@ -15,6 +18,7 @@
 #include "lpv/scene/Error.h"
 #include "lpv/scene/Project.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -25,8 +29,16 @@ namespace lpv::bench {
 
 struct SweepRun {
     std::vector<Setting> settings;
+    // Per pass over the timing rounds: medianMs, minMs and maxMs of the
+    // rounds' medians; passStats holds each one's quartiles.
     std::vector<renderer::PassTiming> passes;
-    double totalMs = 0.0;
+    std::vector<TimingStats> passStats;
+    TimingStats total;   // the frame: each round's sum of pass medians
+    double totalMs = 0.0; // total.median
+    // GPU memory of the resources the frame used (frame graph and LPV
+    // volumes, renderer::GpuMemory), exact bytes; 0 when not counted.
+    std::uint64_t gpuBytes = 0;
+    std::uint64_t lpvBytes = 0; // of which the LPV's volumes
     int bounces = 1;                     // lpv.bounces of this run
     reference::ErrorMetrics indirect;    // like for like: against the reference layer with lpv.bounces bounces
     reference::ErrorMetrics indirectOne; // against the one-bounce indirect irradiance
@@ -41,6 +53,13 @@ struct SweepRun {
 // A run's settings as "steps=8 gridSize=32" ("defaults" when none).
 std::string sweepLabel(const std::vector<Setting>& settings);
 
+// The test's mean over the reference's (0 when the reference is black).
+double meanRatio(const reference::ErrorMetrics& m);
+// A run as a point of time (with its spread) or GPU memory against its
+// indirect light's symmetric error, biased when its mean is outside 0.8-1.25x.
+CostPoint timeErrorPoint(const SweepRun& run);
+CostPoint memoryErrorPoint(const SweepRun& run);
+
 struct SweepSpec {
     // Its parameters are the base every combination changes. Set lpv.reuse
     // to false there for timings of every pass every frame (the CLI does).
@@ -53,8 +72,9 @@ struct SweepSpec {
     scene::Camera camera;
     int width = 320;
     int height = 180;
-    int frames = 20; // timed frames per combination
-    int warmup = 3;  // untimed frames before them
+    int frames = 20; // timed frames per combination and round
+    int warmup = 3;  // untimed frames before a combination is measured (one more before each timing round)
+    RoundPlan rounds; // how long timing goes on; rounds.maxRounds = 0: accuracy and memory only
     std::vector<std::vector<Setting>> combinations; // {} runs the project's own settings once
     int referenceBounces = 0; // the reference's multi-bounce layer's bounces; 0: unknown
 };
@@ -63,19 +83,27 @@ struct SweepSpec {
 // and its label) and once at the end (done == total). Returning false stops
 // the sweep after the combination in flight (runSweep then gives Cancelled).
 struct SweepProgress {
-    int done = 0;
+    int done = 0;  // combinations measured (accuracy); == total once timing starts
     int total = 0;
     std::string label;
+    int round = -1;        // the timing round under way (0-based), -1 while measuring accuracy
+    double fraction = 0.0; // of the whole sweep, timing rounds estimated at rounds.minRounds
 };
 struct SweepCallbacks {
     std::function<bool(const SweepProgress&)> progress;
-    std::function<void(const SweepRun&)> runDone; // each finished run, in order
+    // Each run once its accuracy and memory are measured, before any timing
+    // round (its times are still empty), in order.
+    std::function<void(const SweepRun&)> runMeasured;
+    std::function<void(const SweepRun&)> runDone; // each finished run, with its times, in order, at the end
     std::function<void(const std::string&)> warning; // e.g. a missing texture
 };
 
 struct SweepResult {
     std::vector<SweepRun> runs;
     renderer::GlInfo gl; // the context the runs were timed in
+    int rounds = 0;        // timing rounds run
+    std::string stopReason; // why they stopped
+    std::string load;       // describeLoad() before and after: "load 0.10 0.20 0.30 -> load 1.90 ..."
 };
 
 // lpv.bounces of `base` with `combination` applied.

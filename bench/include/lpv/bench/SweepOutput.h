@@ -1,12 +1,15 @@
 #pragma once
-// A sweep's files: sweep.csv, sweep.json, sweep.md (the cheapest settings
-// reaching 10% and 5% indirect MARE) and the PNG plots (time per pass
-// against each swept key, error against time with the Pareto front, crops
-// of each run's indirect light). Written by a sweep itself and, from its
+// A sweep's files: sweep.csv, sweep.json, sweep.md (each run's time with
+// its spread, GPU memory, symmetric error and bias; the cheapest unbiased
+// settings whose error is within 10% and 25% of the lowest unbiased one) and the PNG plots (time per
+// pass against each swept key, error against time on a log axis with the
+// times' spread and the Pareto front, error against GPU memory, crops of
+// each run's indirect light). Written by a sweep itself and, from its
 // shards, by `lpv bench merge`, so both give the same files.
 #include "lpv/bench/Sweep.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +21,27 @@ namespace lpv::bench {
 // `note` (may be empty) is a paragraph added under them (a sharded sweep's
 // machines, say). Returns the files written, in order; each is written
 // atomically.
+// How the times were taken, headed beside the machine.
+struct SweepTimingInfo {
+    int rounds = 0;          // interleaved timing rounds (0: times not measured in rounds)
+    std::string stopReason;  // why they stopped
+    std::string load;        // the machine's load before -> after
+};
+
+// "Cheapest within X% of the best" in sweep.md and the report: the cheapest
+// unbiased run whose symmetric error is at most (1 + X) times the lowest
+// unbiased one. Relative, because the LPV's error has a floor of its own on
+// every scene (tens of percent) that no fixed bound suits.
+inline constexpr double kWithinBest[] = {0.10, 0.25};
+// The index of that run (nullopt when no run is unbiased).
+std::optional<std::size_t> cheapestWithinBest(const std::vector<SweepRun>& runs, double fraction);
+
 scene::Expected<std::vector<std::filesystem::path>> writeSweepOutputs(
     const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
     const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-    const std::string& note = "");
+    const std::string& note = "", const SweepTimingInfo& timing = {});
+
+// The runs that cost the same as run `index` within the noise (sameCost), by index.
+std::vector<std::size_t> sameCostAs(const std::vector<SweepRun>& runs, std::size_t index);
 
 } // namespace lpv::bench

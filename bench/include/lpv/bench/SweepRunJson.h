@@ -10,6 +10,9 @@
 namespace lpv::bench {
 
 nlohmann::json sweepRunToJson(const SweepRun& run);
+// A time over rounds: {"medianMs", "q1Ms", "q3Ms", "minMs", "maxMs", "rounds"}.
+nlohmann::json timingToJson(const TimingStats& t);
+TimingStats timingFromJson(const nlohmann::json& j);
 // Throws nlohmann::json::exception on a missing or mistyped field.
 SweepRun sweepRunFromJson(const nlohmann::json& j);
 
