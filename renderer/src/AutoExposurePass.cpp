@@ -1,5 +1,6 @@
 #include "AutoExposurePass.h"
 
+#include "GpuMemoryLedger.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <array>
@@ -59,6 +60,11 @@ double AutoExposurePass::readExposure() const {
     std::array<float, 4> values{};
     glGetNamedBufferSubData(exposure_.id(), 0, sizeof(values), values.data());
     return double(values[1]);
+}
+
+void AutoExposurePass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    ledger.addBuffer("exposure", exposure_.id());
+    ledger.addBuffer("exposure.tiles", tiles_.id());
 }
 
 } // namespace lpv::renderer

@@ -7,6 +7,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 class AutoExposurePass {
 public:
     static scene::Expected<AutoExposurePass> create();
@@ -22,6 +24,8 @@ public:
     // The exposure of the last meter() (1 before any frame with lit pixels).
     // Reads the GPU buffer back, so it waits for the frame: for the CLI and tests.
     double readExposure() const;
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
 
 private:
     AutoExposurePass() = default;

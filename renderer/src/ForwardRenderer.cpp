@@ -1,6 +1,7 @@
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include "ForwardRendererImpl.h"
+#include "GpuMemoryLedger.h"
 #include "ImageRows.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/scene/LtcSpecular.h"
@@ -151,6 +152,41 @@ const LpvFit& ForwardRenderer::lpvFit() const { return impl_->lpvFit; }
 const LpvDelivery& ForwardRenderer::lpvDelivery() const { return impl_->lpvDelivery; }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
     return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;
+}
+GpuMemory ForwardRenderer::gpuMemory() const {
+    const Impl& m = *impl_;
+    GpuMemoryLedger ledger;
+    // The passes name what they own first, so the graph's one representative
+    // of a set (lpv.volumes is the first of six textures) counts under the set's name.
+    if (m.shadows)
+        m.shadows->addGpuMemory(ledger);
+    if (m.rsm) {
+        ledger.addTexture("rsm.position", m.rsm->positionArray());
+        ledger.addTexture("rsm.normal", m.rsm->normalArray());
+        ledger.addTexture("rsm.flux", m.rsm->fluxArray());
+        ledger.addTexture("rsm.depth", m.rsm->depthArray());
+    }
+    if (m.localRsm)
+        m.localRsm->addGpuMemory(ledger);
+    if (m.emissiveVpls) {
+        const LpvLocalInput vpls = m.emissiveVpls->input();
+        for (GLuint t : {vpls.position, vpls.normal, vpls.flux})
+            ledger.addTexture("emissiveVpls", t);
+    }
+    if (m.lpv)
+        m.lpv->addGpuMemory(ledger);
+    if (m.subsurface)
+        m.subsurface->addGpuMemory(ledger);
+    if (m.exposure)
+        m.exposure->addGpuMemory(ledger);
+    if (m.radiosityIndirect)
+        m.radiosityIndirect->addGpuMemory(ledger);
+    ledger.addBuffer("shading.ltcTable", m.ltcTable.id());
+    // Then every resource the frame graph declared: its own targets and what the passes imported.
+    for (const std::string& name : m.graph.resourceNames())
+        if (const std::optional<graph::ResourceDesc> desc = m.graph.resourceDesc(name))
+            ledger.addResource(name, m.graph.resourceId(name), *desc);
+    return ledger.finish();
 }
 const std::vector<EffectDecision>& ForwardRenderer::frameEffects() const { return impl_->frameEffects; }
 

@@ -1,5 +1,6 @@
 #include "LocalRsmPass.h"
 
+#include "GpuMemoryLedger.h"
 #include "lpv/scene/AreaLight.h"
 
 #include "ShadowLights.h"
@@ -194,6 +195,13 @@ std::vector<DebugImage> LocalRsmPass::debugImages() const {
             images.push_back(std::move(image));
         }
     return images;
+}
+
+void LocalRsmPass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    ledger.addTexture("localRsm.position", position_.id());
+    ledger.addTexture("localRsm.normal", normal_.id());
+    ledger.addTexture("localRsm.flux", flux_.id());
+    ledger.addTexture("localRsm.depth", depth_.id());
 }
 
 } // namespace lpv::renderer

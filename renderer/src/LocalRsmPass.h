@@ -16,6 +16,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 // At most this many spot / point lights are injected (the first in scene
 // order among the shaded lights); 4 point lights are 24 layers.
 inline constexpr int kMaxInjectedLocalLights = 4;
@@ -40,6 +42,8 @@ class LocalRsmPass {
     GLuint normalArray() const { return normal_.id(); }
     GLuint fluxArray() const { return flux_.id(); }
     std::size_t allocatedBytes() const;
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
     // "localrsm-L-position", "-normal", "-flux" per layer L.
     std::vector<DebugImage> debugImages() const;
 

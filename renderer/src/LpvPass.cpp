@@ -1,5 +1,6 @@
 #include "LpvPass.h"
 
+#include "GpuMemoryLedger.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/renderer/lpv/LpvVisibility.h"
 
@@ -798,6 +799,12 @@ std::vector<DebugImage> LpvPass::debugImages() const {
         images.push_back(sliceImage("lpv-" + std::to_string(k) + "-gv", volumes_.gridSize() + 1, {&gv, &gv, &gv}));
     }
     return images;
+}
+
+void LpvPass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    volumes_.addGpuMemory(ledger);
+    for (const Texture& t : captureCopy_)
+        ledger.addTexture("lpv.captureCopy", t.id());
 }
 
 } // namespace lpv::renderer

@@ -27,6 +27,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 enum class LpvVariant { ComputeGather, ComputeScatter, RasterGather, RasterScatter };
 // "computeGather" ... (the lpv.variant choices); nullopt for anything else.
 std::optional<LpvVariant> lpvVariantFromName(const std::string& name);
@@ -200,6 +202,9 @@ class LpvPass {
     // "lpv-K-accum" (rgb = DC of each channel per cell, slices side by side) and "lpv-K-gv".
     std::vector<DebugImage> debugImages() const;
     std::size_t allocatedBytes() const { return volumes_.allocatedBytes(); }
+    // Names its volumes (LpvVolumes::addGpuMemory) and the visualizers' copy
+    // for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
     // For passes that build on this frame's LPV (LpvSubsurfacePass): its
     // volumes (fixed-point sums and scales) and cascades (empty when inactive).
     const LpvVolumes& volumes() const { return volumes_; }

@@ -1,5 +1,6 @@
 #include "LpvSubsurfacePass.h"
 
+#include "GpuMemoryLedger.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -164,6 +165,12 @@ std::array<std::vector<glm::vec4>, 3> LpvSubsurfacePass::readAccumulator(int cas
                              GLsizei(cells * sizeof(glm::vec4)), out[std::size_t(c)].data());
     }
     return out;
+}
+
+void LpvSubsurfacePass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    for (const Texture& t : volume_)
+        ledger.addTexture("subsurface.volumes", t.id());
+    ledger.addTexture("subsurface.accumulator", accumulator_.id());
 }
 
 } // namespace lpv::renderer

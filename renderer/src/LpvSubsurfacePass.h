@@ -26,6 +26,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 struct LpvSubsurfaceSettings {
     int steps = 4;            // effects.subsurfaceSteps
     float attenuation = 0.5f; // effects.subsurfaceAttenuation: fraction lost per step (cell)
@@ -50,6 +52,8 @@ class LpvSubsurfacePass {
     // Read-back for tests: per channel N^3 SH of cascade k.
     std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
     std::size_t allocatedBytes() const;
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
     GLuint accumulatorTexture() const { return accumulator_.id(); }
     int steps() const { return steps_; }
 

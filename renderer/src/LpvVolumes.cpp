@@ -1,5 +1,7 @@
 #include "LpvVolumes.h"
 
+#include "GpuMemoryLedger.h"
+
 #include <algorithm>
 #include <string>
 
@@ -177,6 +179,28 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
                              "); lower lpv.gridSize or lpv.cascades");
     }
     return {};
+}
+
+void LpvVolumes::addGpuMemory(GpuMemoryLedger& ledger) const {
+    auto addSet = [&](std::string_view name, const LpvVolumeSet& set) {
+        for (const Texture& t : set.channel)
+            ledger.addTexture(name, t.id());
+    };
+    for (const LpvVolumeSet& set : volume)
+        addSet("lpv.volumes", set);
+    addSet("lpv.accumulator", accumulator);
+    ledger.addTexture("lpv.geometry", geometry.id());
+    ledger.addTexture("lpv.faceBlocking", faceBlocking.id());
+    ledger.addBuffer("lpv.lpvSums", lpvSums.id());
+    ledger.addBuffer("lpv.gvSums", gvSums.id());
+    ledger.addBuffer("lpv.scales", scales.id());
+    for (const Texture& t : normals)
+        ledger.addTexture("lpv.normals", t.id());
+    ledger.addBuffer("lpv.normalSums", normalSums.id());
+    addSet("lpv.bounceTotal", bounceTotal);
+    for (const Texture& t : interleaved)
+        ledger.addTexture("lpv.interleaved", t.id());
+    ledger.addTexture("lpv.visibility", visibility.id());
 }
 
 } // namespace lpv::renderer

@@ -13,6 +13,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 struct LpvVolumeSet {
     std::array<Texture, 3> channel; // R, G, B
 };
@@ -38,6 +40,9 @@ class LpvVolumes {
     std::uint64_t generation() const { return generation_; }
     int cascades() const { return cascades_; }
     std::size_t allocatedBytes() const;
+    // Names every volume and buffer allocated now ("lpv.volumes",
+    // "lpv.geometry"...) for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
 
     std::array<LpvVolumeSet, 2> volume; // ping-pong
     LpvVolumeSet accumulator;

@@ -1,5 +1,6 @@
 #include "RadiosityIndirectPass.h"
 
+#include "GpuMemoryLedger.h"
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/radiosity/VertexRadiosity.h"
 #include "lpv/renderer/ShaderLibrary.h"
@@ -87,6 +88,10 @@ void RadiosityIndirectPass::render(graph::PassContext& ctx, bool afterPrepass) {
         glDrawArrays(GL_TRIANGLES, 0, draw_.vertices);
     }
     glBindVertexArray(0);
+}
+
+void RadiosityIndirectPass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    ledger.addBuffer("radiosity.patches", draw_.buffer.id());
 }
 
 } // namespace lpv::renderer

@@ -19,6 +19,8 @@ struct BakedSolution;
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 class RadiosityIndirectPass {
   public:
     static scene::Expected<RadiosityIndirectPass> create();
@@ -38,6 +40,8 @@ class RadiosityIndirectPass {
     void render(graph::PassContext& ctx, bool afterPrepass);
 
     std::size_t patchTriangleVertices() const { return std::size_t(draw_.vertices); }
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
 
   private:
     RadiosityIndirectPass() = default;

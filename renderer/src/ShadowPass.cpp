@@ -1,5 +1,6 @@
 #include "ShadowPass.h"
 
+#include "GpuMemoryLedger.h"
 #include "graph/ContentHash.h"
 
 #include "lpv/renderer/ShaderLibrary.h"
@@ -454,6 +455,13 @@ std::vector<DebugImage> ShadowPass::debugImages() const {
         for (int f = 0; f < 6; ++f)
             readLayer(pointMap_, int(i) * 6 + f, "shadow-point-" + std::to_string(i) + "-" + faces[f]);
     return images;
+}
+
+void ShadowPass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    // compareView is a view of the same storage: nothing of its own.
+    ledger.addTexture("shadowMaps.sun", cascadeMap_.texture.id());
+    ledger.addTexture("shadowMaps.spot", spotMap_.texture.id());
+    ledger.addTexture("shadowMaps.point", pointMap_.texture.id());
 }
 
 } // namespace lpv::renderer

@@ -22,6 +22,8 @@
 
 namespace lpv::renderer {
 
+class GpuMemoryLedger;
+
 class ShadowPass {
 public:
     static scene::Expected<ShadowPass> create();
@@ -56,6 +58,9 @@ public:
         return cascadeMap_.texture ? cascadeMap_.texture.id()
                                    : spotMap_.texture ? spotMap_.texture.id() : pointMap_.texture.id();
     }
+
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const;
 
     // Whether the last render() gave any spot or point light a shadow map
     // (shading leaves their sampling code out otherwise: LPV_NO_LOCAL_SHADOWS).

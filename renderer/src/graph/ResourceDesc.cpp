@@ -9,6 +9,7 @@ namespace {
 const char* formatName(GLenum format) {
     switch (format) {
     case GL_RGBA8: return "RGBA8";
+    case GL_SRGB8_ALPHA8: return "SRGB8_ALPHA8";
     case GL_RGBA16F: return "RGBA16F";
     case GL_RGBA32F: return "RGBA32F";
     case GL_R32F: return "R32F";

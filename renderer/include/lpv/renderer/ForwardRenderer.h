@@ -7,6 +7,7 @@
 // file (ShadowPass, ...); the graph orders them, culls and reuses them.
 #include "lpv/renderer/DrawList.h"
 #include "lpv/renderer/FrameGraphReport.h"
+#include "lpv/renderer/GpuMemory.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/LpvFit.h"
 #include "lpv/renderer/LpvSnapshot.h"
@@ -127,6 +128,10 @@ public:
     const LpvDelivery& lpvDelivery() const;
     // GPU memory of the subsurface LPV's volumes (0 while it does not run).
     std::size_t subsurfaceAllocatedBytes() const;
+    // The GPU memory the last frame's resources hold (GpuMemory.h): every
+    // frame-graph resource and the LPV's own volumes, each GL object once, at
+    // the bytes its format and size give; scene meshes and textures left out.
+    GpuMemory gpuMemory() const;
     // The effect decisions of the last frame, each with its reason: directed
     // propagation and sky light injection (when the LPV ran), then sun rays.
     const std::vector<EffectDecision>& frameEffects() const;
