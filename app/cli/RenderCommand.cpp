@@ -208,6 +208,14 @@ int runRender(Args args) {
         std::printf("%s", formatPerFrameTimes(setup->renderer->timer()).c_str());
         const auto table = setup->renderer->timer().table();
         std::printf("%s", renderer::formatTimingTable(table).c_str());
+        {
+            // Memory beside time (issue #43): what the last frame's resources hold.
+            const renderer::GpuMemory memory = setup->renderer->gpuMemory();
+            const std::uint64_t lpv = memory.bytesOf("lpv.");
+            std::printf("GPU memory: %s (LPV %s, rest of the frame graph %s)\n",
+                        renderer::formatBytes(memory.totalBytes).c_str(), renderer::formatBytes(lpv).c_str(),
+                        renderer::formatBytes(memory.totalBytes - lpv).c_str());
+        }
         double total = 0.0;
         for (const auto& row : table)
             total += row.medianMs;
