@@ -17,6 +17,7 @@
 #include "ReferenceTrace.h"
 
 #include "lpv/bench/Report.h"
+#include "lpv/bench/SharedTiming.h"
 #include "lpv/radiosity/PatchMesh.h"
 #include "lpv/reference/Metrics.h"
 #include "lpv/scene/Project.h"
@@ -46,64 +47,61 @@ void printBenchAccuracyReportHelp() {
 bench report [--out DIR] [--scenes DIR] [--scene NAME ...] [--quick] [options]:
 the README's accuracy-against-time report from one command. For each scene
 (cornell-box: the built-in template as `lpv new` makes it, lit by its
-ceiling lamp, an area light; sibenik and sponza: imported from --scenes,
-default ../shared/scenes, with the sun `lpv import` adds) it creates the
-project in DIR/NAME/, traces the reference once (DIR/NAME/reference.exr,
-with as many bounces as the project's lpv.bounces, kept for later runs of
-the same size), then runs `lpv bench --sweep` once per question, each key
-varied alone around the project's settings:
-  steps      lpv.propagationSteps=0,1,2,4,8,16,32,64
-  grid       lpv.gridSize=16,32,64
-  cellSize   lpv.cellSize=auto,0.0625,0.125,0.25,0.5,1 (auto: fitted to the scene)
-  cascades   lpv.cascades=1,2,3,4
-  rsm        rsm.tileSize=64,128,256,512,1024
-  variant    lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter
-  occlusion  lpv.occlusion=false,true
-  directed   lpv.directedPropagation=off,on
-  sky        effects.skyInjection=off,on (one sweep and one reference per value)
-  subsurface effects.subsurface=off,on
-  glossy     effects.glossyReflections=off,on
-  bounces    lpv.bounces=1,2,3 (one sweep and one reference per value)
-  viewShift  lpv.viewShift=0,0.5,0.75,1
-  damping    lpv.bleedingDamping=0,1,2,4
-  offset     lpv.injectionOffset=0,0.5,0.875,1,2
-  firstStep  lpv.occlusionFirstStep=true,false
-  strength   lpv.occlusionStrength=0.5,1,1.333,2
-  lookupOffset lpv.lookupOffset=0,0.25,0.5,1
-  visibility lpv.visibilityLookup=false,true
-  clampToScene lpv.clampToScene=false,true
-  twoSided   lpv.twoSidedOcclusion=false,true
-  geometrySource lpv.geometrySource=views,scene
-Like for like: each LPV is measured against the reference's light reflected
+ceiling lamp, an area light; cornell-obj, sibenik and sponza: imported from
+--scenes, default ../shared/scenes, as `lpv import` makes them) it creates
+the project in DIR/NAME/, then
+ 1. times every distinct setting of the questions below once, all together,
+    in interleaved rounds (A B C, then C B A, ...; --rounds, --time-budget,
+    --spread-target): each time is a median over the rounds with its
+    interquartile range, and a setting that several questions contain has
+    one time (DIR/NAME/timing.json);
+ 2. traces the reference once per bounce count and sky setting a question
+    needs (kept for later runs of the same size);
+ 3. runs `lpv bench --sweep` once per question, each key varied alone
+    around the project's settings, its times taken from timing.json:
+)";
+    for (const bench::Question& q : kQuestions)
+        std::printf("  %-14s %s%s\n", q.name.c_str(), q.sweep.c_str(),
+                    q.name == "bounces" || q.name == "sky" ? " (one sweep and one reference per value)" : "");
+    std::cout << R"(Like for like: each LPV is measured against the reference's light reflected
 as many times as its lpv.bounces, and the reference traces the sky and
 emissive surfaces where the LPV injects them (reference.skyLight and
-reference.emissiveLight on auto). The tables give the indirect MARE and the
-ratio of the LPV's mean indirect irradiance to the reference's.
+reference.emissiveLight on auto). The tables give the indirect light's
+symmetric error (too dark and too bright alike), the ratio of the LPV's
+mean indirect irradiance to the reference's (outside 0.8-1.25x: biased),
+MARE, the GPU time with its spread and the frame's GPU memory.
 Each scene also gets a radiosity solve of its lights (meshed as finely as
 150,000 patches allow), measured at doubling solve times against a
 reference of the same lights reflected 8 times without the sky: the residual,
-the indirect MARE and the mean ratio per solve time. Writes DIR/report.md
-(headline table: the project's settings, and the cheapest settings reaching
-10% and 5% indirect MARE per scene) and DIR/report.json; each sweep's CSV,
-JSON, Markdown and plots stay in DIR/NAME/QUESTION/.
+the indirect error and the mean ratio per solve time. Writes DIR/report.md
+(headline table per scene: the project's settings, the cheapest unbiased
+settings within 10% and 25% of the lowest unbiased error, the lowest error)
+and DIR/report.json; each sweep's CSV, JSON, Markdown and plots stay in
+DIR/NAME/QUESTION/.
 
   --out DIR             Output folder (default bench-report)
-  --scenes DIR          Folder with sibenik/sibenik.obj and sponza/sponza.obj
+  --scenes DIR          Folder with cornell/CornellBox-Original.obj,
+                        sibenik/sibenik.obj and sponza/sponza.obj
                         (default ../shared/scenes)
-  --scene NAME          Only this scene (cornell-box, sibenik, sponza); repeatable
+  --scene NAME          Only this scene (cornell-box, cornell-obj, sibenik,
+                        sponza); repeatable
   --question NAME       Only this question (steps, grid, ...); repeatable
-  --resume              Reuse each sweep whose sweep.json in DIR was made by
-                        the same sweep command after its reference (after an
-                        interruption; not after changing the program)
+  --resume              Reuse a scene's timing.json made by the same options
+                        for the same settings, and each sweep whose sweep.json
+                        was made by the same sweep command after its
+                        reference and timing (after an interruption; not
+                        after changing the program)
   --quick               Three questions with fewer values, 5 s of radiosity:
                         a smoke run (minutes instead of most of an hour)
   --width N --height N  Image size (default 320x180)
-  --frames N --warmup N Timed frames per setting (default 10) after warm-up (default 2)
+  --frames N --warmup N Timed frames per setting and round (default 10);
+                        warm-up frames before a setting is measured (default 2)
   --spp N               Reference samples per pixel (default per scene, so that
                         the reference's own noise stays low: Cornell box 4096,
                         Sibenik 4096, Sponza 2048; --quick: 256)
   --radiosity-seconds S Longest radiosity solve (default 160; solve times
                         double from 5 s up to it)
+)" << kRoundOptionsHelp << R"(                        (the rounds and the budget are per scene)
 
 On a cluster (docs/cluster.md, packaging/cluster/), in pieces that share DIR:
   --merge-shards N      The coordinator: each run does the next step, first
@@ -212,6 +210,7 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         measure.height = height;
         measure.frames = 1;
         measure.warmup = 1;
+        measure.rounds = {1, 1, 0.10, 0.0}; // its frame time is not reported: the solve time is its cost
         std::vector<SweepRun> runs;
         if (runSweepCommand(measure, &runs) != kOk || runs.empty()) {
             report.failures.push_back("measuring the radiosity solution after " + fixed(target, 0) + " s");
@@ -253,6 +252,8 @@ std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode) {
         exitCode = usageError(message, "bench");
         return std::nullopt;
     };
+    if (const std::string error = parseRoundOptions(args, o.rounds); !error.empty())
+        return fail(error);
     if (!args.missingValue().empty())
         return fail(args.missingValue() + " needs a value");
     if (auto unknown = args.unknownOption())
@@ -269,7 +270,7 @@ std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode) {
             return fail("unknown question '" + name + "' (see lpv bench --help)");
     for (const std::string& name : o.scenes)
         if (std::ranges::find(kScenes, name, &SceneSpec::name) == kScenes.end())
-            return fail("unknown scene '" + name + "' (cornell-box, sibenik, sponza)");
+            return fail("unknown scene '" + name + "' (cornell-box, cornell-obj, sibenik, sponza)");
     o.width = *width;
     o.height = *height;
     o.frames = *frames;
@@ -285,7 +286,7 @@ std::string reportCommand(const ReportOptions& o) {
                           " --width " + std::to_string(o.width) + " --height " + std::to_string(o.height) +
                           " --frames " + std::to_string(o.frames) + " --warmup " + std::to_string(o.warmup) +
                           (o.spp ? " --spp " + std::to_string(*o.spp) : std::string()) + " --radiosity-seconds " +
-                          std::to_string(o.radiosityCount);
+                          std::to_string(o.radiosityCount) + roundOptionsText(o.rounds);
     for (const std::string& s : o.scenes)
         command += " --scene " + s;
     for (const std::string& q : o.questions)
@@ -328,6 +329,16 @@ int runWholeReport(const ReportOptions& o) {
             status = kFailure;
             continue;
         }
+        // Every setting timed once, together, before the sweeps take their times from it.
+        if (!timeScene(*plan, o)) {
+            report.failures.push_back("timing the settings");
+            reports.push_back(report);
+            status = kFailure;
+            continue;
+        }
+        if (const auto timing = bench::loadSharedTiming(timingFileOf(*plan)))
+            report.timingNote = std::to_string(timing->rounds) + " interleaved rounds (" + timing->stopReason + "), " +
+                                timing->load;
         std::vector<int> traced(plan->references.size(), -1); // -1 not yet, 0 failed, 1 there
         auto referenceThere = [&](std::size_t i) {
             if (traced[i] < 0) {

@@ -26,7 +26,10 @@ const std::vector<Question>& kQuestions = bench::reportQuestions();
 // yet read as black, so the LPV's MARE came out 1,927% against it and 282%
 // against 4096 spp (noise 19%); Sponza 17% -> 6.5% at 2048, the Cornell
 // box 11% -> 2.7% at 4096 (issue #24, docs/lpv.md).
+// cornell-obj: McGuire's Cornell box as `lpv import` makes it, beside the
+// built-in template (issue #43: measured on scenes as users import them).
 const std::vector<SceneSpec> kScenes = {{"cornell-box", "", 4096},
+                                        {"cornell-obj", "cornell/CornellBox-Original.obj", 4096},
                                         {"sibenik", "sibenik/sibenik.obj", 4096},
                                         {"sponza", "sponza/sponza.obj", 2048}};
 
@@ -119,6 +122,7 @@ SweepCommand sweepCommandOf(const ScenePlan& plan, const PlannedSweep& sweep, co
     c.height = options.height;
     c.frames = options.frames;
     c.warmup = options.warmup;
+    c.timesFrom = timingFileOf(plan);
     return c;
 }
 
@@ -138,6 +142,8 @@ int runEchoed(const SweepCommand& c, std::vector<SweepRun>* runs) {
     std::printf("\n$ lpv bench %s --sweep %s --reference %s --width %d --height %d --frames %d --warmup %d --out %s",
                 c.projectFile.c_str(), c.sweeps.front().c_str(), c.referenceFile.value_or("-").c_str(), c.width,
                 c.height, c.frames, c.warmup, c.outDir.string().c_str());
+    if (c.timesFrom)
+        std::printf(" --times-from %s", c.timesFrom->string().c_str());
     if (!c.shard.whole())
         std::printf(" --shard %s", reference::formatShard(c.shard).c_str());
     std::printf("\n");
@@ -199,8 +205,10 @@ bool referenceMatches(const fs::path& file, int width, int height, int bounces, 
 bool sweepDoneAlready(const fs::path& file, const ScenePlan& plan, const PlannedSweep& sweep,
                       const ReportOptions& options) {
     const fs::path& reference = plan.references[sweep.reference].file;
+    const fs::path timing = timingFileOf(plan);
     std::error_code ec;
-    if (!fs::exists(file, ec) || fs::last_write_time(file, ec) < fs::last_write_time(reference, ec) || ec)
+    if (!fs::exists(file, ec) || fs::last_write_time(file, ec) < fs::last_write_time(reference, ec) || ec ||
+        !fs::exists(timing, ec) || fs::last_write_time(file, ec) < fs::last_write_time(timing, ec) || ec)
         return false;
     std::ifstream in(file);
     const Json j = Json::parse(in, nullptr, false);
@@ -212,7 +220,7 @@ bool sweepDoneAlready(const fs::path& file, const ScenePlan& plan, const Planned
           "--reference " + reference.string() + " ", "--width " + std::to_string(options.width) + " ",
           "--height " + std::to_string(options.height) + " ",
           "--frames " + std::to_string(options.frames) + " ",
-          "--warmup " + std::to_string(options.warmup) + " "})
+          "--warmup " + std::to_string(options.warmup) + " ", "--times-from " + timing.string() + " "})
         if (command.find(part) == std::string::npos)
             return false;
     return true;

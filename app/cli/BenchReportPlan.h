@@ -42,6 +42,7 @@ struct ReportOptions {
     int width = 320, height = 180, frames = 10, warmup = 2;
     std::optional<int> spp; // --spp; else per scene
     int radiosityCount = 160;
+    bench::RoundPlan rounds; // the timing step's rounds (--rounds, --time-budget, --spread-target), per scene
 
     bool wantsScene(const std::string& name) const;
     bool wantsQuestion(const std::string& name) const;
@@ -107,6 +108,12 @@ bool sweepDoneAlready(const std::filesystem::path& file, const ScenePlan& plan, 
 std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode);
 // The command line that gives these options (headed in report.md; printed as the next step).
 std::string reportCommand(const ReportOptions& options);
+
+// OUT/NAME/timing.json: every distinct setting of the scene's sweeps timed
+// once, together, in interleaved rounds (BenchReportTiming.cpp); the sweeps
+// take their times from it. False after printing why it failed.
+std::filesystem::path timingFileOf(const ScenePlan& plan);
+bool timeScene(const ScenePlan& plan, const ReportOptions& options);
 
 // The whole report in this process (BenchAccuracyReport.cpp).
 int runWholeReport(const ReportOptions& options);

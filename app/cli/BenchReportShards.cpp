@@ -3,7 +3,8 @@
 // output folder (a cluster's shared file system) and run the same options;
 // each run of a shard does its part of whatever comes next, and the
 // coordinator (--merge-shards) joins what the shards made:
-//   coordinator  makes the projects (imports once, so shards never race on them)
+//   coordinator  makes the projects (imports once, so shards never race on
+//                them), then times every scene's settings (timing.json)
 //   N shards     trace their tiles of every reference (lpv reference --shard)
 //   coordinator  merges the references (lpv merge)
 //   N shards     run their combinations of every sweep (lpv bench --sweep --shard)
@@ -152,6 +153,16 @@ int runReportCoordinator(const ReportOptions& o, int shardCount) {
     const auto plans = planAll(o, shardCount);
     if (!plans)
         return kFailure;
+
+    // 1b. The settings' times, here on the coordinator's machine, all of a
+    // scene's in one process (interleaved rounds; timing.json): the shards'
+    // sweeps take their times from them. Kept once made: a sweep merged
+    // from the shards is older than a timing made after it.
+    ReportOptions keepTiming = o;
+    keepTiming.resume = true;
+    for (const ScenePlan& plan : *plans)
+        if (!timeScene(plan, keepTiming))
+            return kFailure;
 
     // 2. The references, from their shards.
     std::vector<std::string> missing;

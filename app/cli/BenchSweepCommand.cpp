@@ -12,6 +12,7 @@
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
 #include "lpv/bench/Settings.h"
+#include "lpv/bench/SharedTiming.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/reference/Metrics.h"
@@ -63,6 +64,10 @@ and each setting's indirect light, one exposure).
                         (default 3) before a setting's image is measured
   --camera NAME --set KEY=VALUE
 )" << kRoundOptionsHelp << R"(
+  --times-from FILE     Take each setting's times and GPU memory from FILE, a
+                        timing.json that `lpv bench report` wrote for the
+                        scene (one time per setting for all its questions);
+                        no timing rounds run here
   --shard I/N           Render only the combinations whose index is I modulo N
                         (0-based), for a cluster: needs --reference; writes
                         DIR/shard.json and DIR/run-K.exr, which `lpv bench merge`
@@ -84,6 +89,8 @@ int benchSweep(Args args) {
     c.spp = args.option("--spp");
     c.seconds = args.option("--max-seconds");
     const auto shardText = args.option("--shard");
+    if (const auto times = args.option("--times-from"))
+        c.timesFrom = *times;
     if (const std::string error = parseRoundOptions(args, c.rounds); !error.empty())
         return usageError(error, "bench");
     if (!args.missingValue().empty())
@@ -182,6 +189,16 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     spec.frames = *frames;
     spec.warmup = *warmup;
     spec.rounds = c.rounds;
+    std::optional<bench::SharedTiming> sharedTiming;
+    if (c.timesFrom) {
+        auto loaded = bench::loadSharedTiming(*c.timesFrom);
+        if (!loaded) {
+            std::cerr << "lpv: " << loaded.error().describe() << "\n";
+            return kFailure;
+        }
+        sharedTiming = std::move(*loaded);
+        spec.rounds.maxRounds = 0;
+    }
     const std::vector<std::vector<Setting>> combinations =
         plan.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : plan.combinations;
     int maxBounces = 1;
@@ -270,7 +287,20 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
         return kFailure;
     }
     std::vector<SweepRun> runs = std::move(swept->runs);
-    const bench::SweepTimingInfo timing{swept->rounds, swept->stopReason, swept->load};
+    bench::SweepTimingInfo timing{swept->rounds, swept->stopReason, swept->load};
+    if (sharedTiming) {
+        if (auto ok = bench::applySharedTiming(*sharedTiming, project.parameters, runs); !ok) {
+            std::cerr << "lpv: " << c.timesFrom->string() << ": " << ok.error().message << "\n";
+            return kFailure;
+        }
+        timing = {sharedTiming->rounds,
+                  sharedTiming->stopReason + "; times from " + c.timesFrom->filename().string() +
+                      ", measured once per setting for all the scene's questions",
+                  sharedTiming->load};
+        for (const SweepRun& run : runs)
+            std::printf("%s: %s (from %s)\n", sweepLabel(run.settings).c_str(), bench::formatTiming(run.total).c_str(),
+                        c.timesFrom->string().c_str());
+    }
     if (spec.rounds.maxRounds > 0)
         std::printf("\ntimed in %d interleaved rounds (%s); %s\n", swept->rounds, swept->stopReason.c_str(),
                     swept->load.c_str());
@@ -278,7 +308,8 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     const renderer::GlInfo& gl = swept->gl;
     std::string command = "lpv bench " + request.projectFile + " --width " + std::to_string(*width) +
                           " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup) + roundOptionsText(c.rounds);
+                          " --warmup " + std::to_string(*warmup) +
+                          (c.timesFrom ? " --times-from " + c.timesFrom->string() : roundOptionsText(c.rounds));
     for (const std::string& s : sweeps)
         command += " --sweep " + s;
     for (const std::string& s : sets)

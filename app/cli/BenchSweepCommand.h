@@ -22,6 +22,9 @@ struct SweepCommand {
     std::filesystem::path outDir = "bench-sweep";
     int width = 320, height = 180, frames = 20, warmup = 3;
     bench::RoundPlan rounds; // interleaved timing rounds (--rounds, --time-budget, --spread-target)
+    // --times-from: each run's times and memory from this timing.json (`lpv
+    // bench report` times a scene's settings once, for all its questions); no rounds here.
+    std::optional<std::filesystem::path> timesFrom;
     std::optional<std::string> spp, seconds;
     reference::ShardSpec shard;
 };

@@ -56,6 +56,122 @@ std::optional<std::string> checkSweep(const SweepSpec& spec, const std::string& 
     return std::nullopt;
 }
 
+namespace {
+
+std::vector<std::vector<Setting>> combinationsOf(const SweepSpec& spec) {
+    return spec.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : spec.combinations;
+}
+
+scene::ParameterSet finalParameters(const SweepSpec& spec, const std::vector<Setting>& combination) {
+    scene::ParameterSet parameters = spec.project.parameters;
+    for (const auto& [key, value] : combination)
+        (void)parameters.setFromText(key, value, "--sweep");
+    (void)parameters.setFromText("output.view", "final", "sweep");
+    return parameters;
+}
+
+// The context, the renderer with the scene and its textures, and a baked
+// radiosity solution where a combination shows one.
+scene::Expected<std::unique_ptr<SweepRenderer>> openSweep(const SweepSpec& spec, const SweepCallbacks& callbacks,
+                                                          std::shared_ptr<const radiosity::BakedSolution>& baked) {
+    auto context = renderer::HeadlessContext::create();
+    if (!context)
+        return std::unexpected(context.error());
+    auto forward = renderer::ForwardRenderer::create();
+    if (!forward)
+        return std::unexpected(forward.error());
+    auto gl = std::make_unique<SweepRenderer>(SweepRenderer{std::move(*context), std::move(*forward)});
+    const auto textures = importers::loadSceneTextures(spec.project.scene, spec.projectDir);
+    for (const std::string& w : textures.warnings)
+        if (callbacks.warning)
+            callbacks.warning(w);
+    gl->renderer.setScene(spec.project.scene, textures.images);
+    // Radiosity is a GI method beside the LPV settings (issue #27 item 5):
+    // its solution is read once, before any run, and must fit the scene.
+    for (const auto& combination : combinationsOf(spec)) {
+        if (!renderer::showsBakedRadiosity(finalParameters(spec, combination)) || baked)
+            continue;
+        auto solution = radiosity::loadBakedSolution(spec.project.scene, textures.images, spec.projectFile);
+        if (!solution)
+            return std::unexpected(solution.error());
+        baked = std::make_shared<const radiosity::BakedSolution>(std::move(*solution));
+        gl->renderer.setBakedRadiosity(baked);
+    }
+    return gl;
+}
+
+// Every combination timed in interleaved rounds (Timing.h): each in turn,
+// one untimed frame after the switch, then spec.frames timed ones. Its
+// figures go into result.runs (which has one run per combination).
+scene::Expected<void> timeRounds(SweepRenderer& gl, const SweepSpec& spec, const SweepCallbacks& callbacks,
+                                 double unitsBefore, double units, SweepResult& result) {
+    const std::vector<std::vector<Setting>> combinations = combinationsOf(spec);
+    const int total = int(combinations.size());
+    RoundCallbacks rounds;
+    rounds.timeOnce = [&](int index) -> scene::Expected<std::vector<renderer::PassTiming>> {
+        const scene::ParameterSet parameters = finalParameters(spec, combinations[std::size_t(index)]);
+        if (auto ok = gl.frames(spec, parameters, 1); !ok)
+            return std::unexpected(ok.error());
+        gl.renderer.timer().clearHistory();
+        if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
+            return std::unexpected(ok.error());
+        return gl.renderer.timer().table();
+    };
+    rounds.progress = [&](int round, int position, int index) {
+        if (!callbacks.progress)
+            return true;
+        const double done = unitsBefore + double(total) * double(round) + double(position);
+        return callbacks.progress({total, total, sweepLabel(combinations[std::size_t(index)]), round,
+                                   std::min(done / units, 0.99)});
+    };
+    auto timing = timeInRounds(total, spec.rounds, rounds);
+    if (!timing)
+        return std::unexpected(timing.error());
+    result.rounds = timing->rounds;
+    result.stopReason = timing->stopReason;
+    for (int index = 0; index < total; ++index) {
+        SweepRun& run = result.runs[std::size_t(index)];
+        SettingTiming& t = timing->settings[std::size_t(index)];
+        run.passes = std::move(t.passes);
+        run.passStats = std::move(t.passStats);
+        run.total = t.total;
+        run.totalMs = t.total.median;
+    }
+    return {};
+}
+
+} // namespace
+
+scene::Expected<SweepResult> timeSettings(const SweepSpec& spec, const SweepCallbacks& callbacks) {
+    std::shared_ptr<const radiosity::BakedSolution> baked;
+    auto gl = openSweep(spec, callbacks, baked);
+    if (!gl)
+        return std::unexpected(gl.error());
+    const std::vector<std::vector<Setting>> combinations = combinationsOf(spec);
+    SweepResult result;
+    result.gl = (*gl)->context.info();
+    result.load = describeLoad();
+    // Each combination warmed once (shaders compiled, volumes allocated) before the rounds.
+    for (const auto& combination : combinations) {
+        SweepRun run;
+        run.settings = combination;
+        if (auto ok = (*gl)->frames(spec, finalParameters(spec, combination), std::max(spec.warmup, 1)); !ok)
+            return std::unexpected(ok.error());
+        const renderer::GpuMemory memory = (*gl)->renderer.gpuMemory();
+        run.gpuBytes = memory.totalBytes;
+        run.lpvBytes = memory.bytesOf("lpv.");
+        result.runs.push_back(std::move(run));
+    }
+    const double units = double(combinations.size()) * double(std::max(1, spec.rounds.minRounds));
+    if (auto ok = timeRounds(**gl, spec, callbacks, 0.0, units, result); !ok)
+        return std::unexpected(ok.error());
+    result.load += " -> " + describeLoad();
+    for (const SweepRun& run : result.runs)
+        if (callbacks.runDone)
+            callbacks.runDone(run);
+    return result;
+}
+
 scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::ReferenceImage& ref,
                                       const SweepCallbacks& callbacks) {
     if (ref.width != spec.width || ref.height != spec.height)
@@ -63,36 +179,12 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
                                 "the reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                                     " and the sweep renders " + std::to_string(spec.width) + "x" +
                                     std::to_string(spec.height) + ": give the same size");
-    auto context = renderer::HeadlessContext::create();
-    if (!context)
-        return std::unexpected(context.error());
-    auto forward = renderer::ForwardRenderer::create();
-    if (!forward)
-        return std::unexpected(forward.error());
-    SweepRenderer gl{std::move(*context), std::move(*forward)};
-    const auto textures = importers::loadSceneTextures(spec.project.scene, spec.projectDir);
-    for (const std::string& w : textures.warnings)
-        if (callbacks.warning)
-            callbacks.warning(w);
-    gl.renderer.setScene(spec.project.scene, textures.images);
-
-    const std::vector<std::vector<Setting>> combinations =
-        spec.combinations.empty() ? std::vector<std::vector<Setting>>{{}} : spec.combinations;
-    // Radiosity is a GI method beside the LPV settings (issue #27 item 5):
-    // its solution is read once, before any run, and must fit the scene.
     std::shared_ptr<const radiosity::BakedSolution> baked;
-    for (const auto& combination : combinations) {
-        scene::ParameterSet p = spec.project.parameters;
-        for (const auto& [key, value] : combination)
-            (void)p.setFromText(key, value, "--sweep");
-        if (!renderer::showsBakedRadiosity(p) || baked)
-            continue;
-        auto solution = radiosity::loadBakedSolution(spec.project.scene, textures.images, spec.projectFile);
-        if (!solution)
-            return std::unexpected(solution.error());
-        baked = std::make_shared<const radiosity::BakedSolution>(std::move(*solution));
-        gl.renderer.setBakedRadiosity(baked);
-    }
+    auto opened = openSweep(spec, callbacks, baked);
+    if (!opened)
+        return std::unexpected(opened.error());
+    SweepRenderer& gl = **opened;
+    const std::vector<std::vector<Setting>> combinations = combinationsOf(spec);
     SweepResult result;
     result.gl = gl.context.info();
     result.load = describeLoad();
@@ -100,13 +192,6 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
     const bool timed = spec.rounds.maxRounds > 0;
     // Accuracy takes one unit per combination, each timing round about as many.
     const double units = double(total) * (1.0 + (timed ? double(std::max(1, spec.rounds.minRounds)) : 0.0));
-    auto parametersOf = [&](int index) {
-        scene::ParameterSet parameters = spec.project.parameters;
-        for (const auto& [key, value] : combinations[std::size_t(index)])
-            (void)parameters.setFromText(key, value, "--sweep");
-        (void)parameters.setFromText("output.view", "final", "sweep");
-        return parameters;
-    };
     for (int index = 0; index < total; ++index) {
         const auto& combination = combinations[std::size_t(index)];
         if (callbacks.progress &&
@@ -116,7 +201,7 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
                                         " settings");
         SweepRun run;
         run.settings = combination;
-        scene::ParameterSet parameters = parametersOf(index);
+        scene::ParameterSet parameters = finalParameters(spec, combination);
         // The measured frame must follow a frame of the same settings: the
         // camera's geometry volume reads the previous frame's G-buffer, so
         // the first frame of a combination depends on what ran before it
@@ -154,40 +239,9 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
             callbacks.runMeasured(run);
         result.runs.push_back(std::move(run));
     }
-    if (timed) {
-        // Interleaved rounds (Timing.h): each setting in turn, one untimed
-        // frame after the switch, then spec.frames timed ones.
-        RoundCallbacks rounds;
-        rounds.timeOnce = [&](int index) -> scene::Expected<std::vector<renderer::PassTiming>> {
-            const scene::ParameterSet parameters = parametersOf(index);
-            if (auto ok = gl.frames(spec, parameters, 1); !ok)
-                return std::unexpected(ok.error());
-            gl.renderer.timer().clearHistory();
-            if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
-                return std::unexpected(ok.error());
-            return gl.renderer.timer().table();
-        };
-        rounds.progress = [&](int round, int position, int index) {
-            if (!callbacks.progress)
-                return true;
-            const double done = double(total) * (1.0 + double(round)) + double(position);
-            return callbacks.progress({total, total, sweepLabel(combinations[std::size_t(index)]), round,
-                                       std::min(done / units, 0.99)});
-        };
-        auto timing = timeInRounds(total, spec.rounds, rounds);
-        if (!timing)
-            return std::unexpected(timing.error());
-        result.rounds = timing->rounds;
-        result.stopReason = timing->stopReason;
-        for (int index = 0; index < total; ++index) {
-            SweepRun& run = result.runs[std::size_t(index)];
-            SettingTiming& t = timing->settings[std::size_t(index)];
-            run.passes = std::move(t.passes);
-            run.passStats = std::move(t.passStats);
-            run.total = t.total;
-            run.totalMs = t.total.median;
-        }
-    }
+    if (timed)
+        if (auto ok = timeRounds(gl, spec, callbacks, double(total), units, result); !ok)
+            return std::unexpected(ok.error());
     result.load += " -> " + describeLoad();
     for (const SweepRun& run : result.runs)
         if (callbacks.runDone)

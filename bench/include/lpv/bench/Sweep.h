@@ -120,4 +120,10 @@ std::optional<std::string> checkSweep(const SweepSpec& spec, const std::string& 
 scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::ReferenceImage& reference,
                                       const SweepCallbacks& callbacks = {});
 
+// Times every combination in interleaved rounds and counts its GPU memory,
+// measuring no error (no reference needed): `lpv bench report` times all
+// the distinct settings of a scene's questions at once, so that a setting in
+// several questions has one time (issue #43).
+scene::Expected<SweepResult> timeSettings(const SweepSpec& spec, const SweepCallbacks& callbacks = {});
+
 } // namespace lpv::bench
