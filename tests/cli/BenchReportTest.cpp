@@ -22,8 +22,12 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     const fs::path dir = fs::temp_directory_path() / ("lpv-bench-report-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     const RunResult r = runLpv("bench report --quick --scene cornell-box --out '" + dir.string() +
-                               "' --width 64 --height 48 --spp 64 --frames 1 --warmup 0");
+                               "' --width 64 --height 48 --spp 64 --frames 1 --warmup 0 --rounds 2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Issue #43: the scene's 7 distinct settings (9 rows, the project's own in 3 of them) timed once, together.
+    EXPECT_NE(r.output.find("timing 7 distinct settings of 4 sweeps in interleaved rounds"), std::string::npos)
+        << r.output;
+    EXPECT_TRUE(fs::exists(dir / "cornell-box" / "timing.json"));
     ASSERT_TRUE(fs::exists(dir / "report.md")) << r.output;
     std::ifstream in(dir / "report.json");
     const auto j = nlohmann::json::parse(in, nullptr, false);
@@ -46,8 +50,21 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
         if (run["setting"] == "lpv.propagationSteps=16")
             ratioAt16Steps = run["indirectMeanRatio"];
     }
-    // The grid, cellSize and occlusion questions each contain the project's value (32, auto, true).
+    // The grid, cellSize and occlusion questions each contain the project's value (32, auto, true),
+    // and it has one time, one memory figure and one spread in all three.
     EXPECT_EQ(projectRuns, 3);
+    std::vector<nlohmann::json> projectTimes;
+    for (const auto& run : scene["runs"]) {
+        EXPECT_EQ(run["time"]["rounds"].get<int>(), 2) << run.dump();
+        EXPECT_LE(run["time"]["q1Ms"].get<double>(), run["time"]["medianMs"].get<double>()) << run.dump();
+        EXPECT_GT(run["gpuBytes"].get<std::uint64_t>(), 0u) << run.dump();
+        EXPECT_TRUE(std::isfinite(run["indirectSymmetric"].get<double>())) << run.dump();
+        if (run["projectSettings"].get<bool>())
+            projectTimes.push_back({run["time"], run["gpuBytes"]});
+    }
+    ASSERT_EQ(projectTimes.size(), 3u);
+    EXPECT_EQ(projectTimes[0], projectTimes[1]);
+    EXPECT_EQ(projectTimes[0], projectTimes[2]);
     // Propagation is what carries the lamp's bounce across the box: without it
     // the LPV holds a fraction of the reference's one-bounce light.
     ASSERT_GE(ratioAt0Steps, 0.0);
@@ -69,13 +86,18 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     EXPECT_NE(text.str().find("| cornell-box |"), std::string::npos);
     EXPECT_NE(text.str().find("like for like"), std::string::npos);
     EXPECT_NE(text.str().find("Radiosity against solve time"), std::string::npos);
-    EXPECT_NE(text.str().find("lowest error with the mean within 0.8-1.25x"), std::string::npos);
+    EXPECT_NE(text.str().find("lowest unbiased error"), std::string::npos);
+    EXPECT_NE(text.str().find("indirect symmetric error"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir / "cornell-box" / "steps" / "error-time.png"));
 
     // --resume reuses every sweep the same command made, and gives the same error figures.
     const RunResult again = runLpv("bench report --quick --scene cornell-box --out '" + dir.string() +
-                                   "' --width 64 --height 48 --spp 64 --frames 1 --warmup 0 --resume");
+                                   "' --width 64 --height 48 --spp 64 --frames 1 --warmup 0 --rounds 2 --resume");
     ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_NE(again.output.find("timing.json (--resume: the same 7 settings timed by the same command)"),
+              std::string::npos)
+        << again.output;
+    EXPECT_EQ(again.output.find("distinct settings of"), std::string::npos) << "no setting may be timed again";
     std::size_t reused = 0;
     for (std::size_t at = again.output.find("(--resume: made by the same sweep command)"); at != std::string::npos;
          at = again.output.find("(--resume: made by the same sweep command)", at + 1))
@@ -86,11 +108,13 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
     const auto j2 = nlohmann::json::parse(in2, nullptr, false);
     ASSERT_FALSE(j2.is_discarded());
     ASSERT_EQ(j2["scenes"][0]["runs"].size(), scene["runs"].size());
-    for (std::size_t i = 0; i < scene["runs"].size(); ++i)
+    for (std::size_t i = 0; i < scene["runs"].size(); ++i) {
         EXPECT_EQ(j2["scenes"][0]["runs"][i]["indirectMare"], scene["runs"][i]["indirectMare"]);
+        EXPECT_EQ(j2["scenes"][0]["runs"][i]["time"], scene["runs"][i]["time"]);
+    }
     // A different size is another command: nothing is reused.
     const RunResult other = runLpv("bench report --quick --scene cornell-box --question occlusion --out '" +
-                                   dir.string() + "' --width 48 --height 32 --spp 16 --frames 1 --warmup 0 --resume");
+                                   dir.string() + "' --width 48 --height 32 --spp 16 --frames 1 --warmup 0 --rounds 2 --resume");
     ASSERT_EQ(other.exitCode, 0) << other.output;
     EXPECT_EQ(other.output.find("(--resume: made by the same sweep command)"), std::string::npos) << other.output;
     fs::remove_all(dir);
@@ -104,7 +128,7 @@ TEST(BenchReport, BouncesAndSkyAreMeasuredAgainstTheirOwnReferences) {
     fs::remove_all(dir);
     const RunResult r = runLpv("bench report --scene cornell-box --question bounces --question sky --out '" +
                                dir.string() +
-                               "' --width 48 --height 32 --spp 32 --frames 1 --warmup 0 --radiosity-seconds 5");
+                               "' --width 48 --height 32 --spp 32 --frames 1 --warmup 0 --rounds 1 --radiosity-seconds 5");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* ref : {"reference-1-bounce.exr", "reference-2-bounce.exr", "reference-3-bounce.exr",
                             "reference-1-bounce-sky-off.exr", "reference-1-bounce-sky-on.exr"})
@@ -136,7 +160,7 @@ TEST(BenchReport, ShardedReportMatchesTheOneProcessReport) {
     const fs::path dir = fs::temp_directory_path() / ("lpv-bench-report-shards-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     const std::string options = " --quick --scene cornell-box --question steps --width 48 --height 32 --spp 16 "
-                                "--frames 1 --warmup 0 --radiosity-seconds 5 --out '";
+                                "--frames 1 --warmup 0 --rounds 1 --radiosity-seconds 5 --out '";
     const std::string sharded = "bench report" + options + (dir / "sharded").string() + "'";
     // A shard before the coordinator made the projects is told to wait for it.
     RunResult r = runLpv(sharded + " --shard 0/2");
@@ -177,6 +201,7 @@ TEST(BenchReport, ShardedReportMatchesTheOneProcessReport) {
         EXPECT_EQ(a[i]["indirectMeanRatio"], b[i]["indirectMeanRatio"]) << a[i]["setting"];
         EXPECT_EQ(a[i]["imageMare"], b[i]["imageMare"]) << a[i]["setting"];
         EXPECT_GT(b[i]["totalMs"].get<double>(), 0.0);
+        EXPECT_EQ(b[i]["time"]["rounds"].get<int>(), 1) << "the coordinator timed the settings";
     }
     fs::remove_all(dir);
 }
