@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -93,6 +95,87 @@ scene::Expected<void> applySharedTiming(const SharedTiming& timing, const scene:
         run.lpvBytes = e->run.lpvBytes;
     }
     return {};
+}
+
+namespace {
+
+std::vector<double> averageRanks(const std::vector<double>& v) {
+    std::vector<std::size_t> order(v.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::ranges::sort(order, [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+    std::vector<double> ranks(v.size());
+    for (std::size_t i = 0; i < order.size();) {
+        std::size_t j = i;
+        while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]])
+            ++j;
+        for (std::size_t k = i; k <= j; ++k)
+            ranks[order[k]] = 0.5 * double(i + j) + 1.0;
+        i = j + 1;
+    }
+    return ranks;
+}
+
+} // namespace
+
+double spearman(const std::vector<double>& x, const std::vector<double>& y) {
+    const std::size_t n = std::min(x.size(), y.size());
+    if (n < 2)
+        return 1.0;
+    const std::vector<double> rx = averageRanks(x), ry = averageRanks(y);
+    double mx = 0.0, my = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        mx += rx[i];
+        my += ry[i];
+    }
+    mx /= double(n);
+    my /= double(n);
+    double sxy = 0.0, sxx = 0.0, syy = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        sxy += (rx[i] - mx) * (ry[i] - my);
+        sxx += (rx[i] - mx) * (rx[i] - mx);
+        syy += (ry[i] - my) * (ry[i] - my);
+    }
+    return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : 1.0;
+}
+
+TimingAgreement compareTimings(const SharedTiming& a, const SharedTiming& b) {
+    TimingAgreement out;
+    std::vector<const SweepRun*> first, second;
+    for (const SharedTiming::Entry& e : a.entries)
+        if (const SharedTiming::Entry* other = findTiming(b, parametersOf(e.parameters))) {
+            first.push_back(&e.run);
+            second.push_back(&other->run);
+        }
+    out.settings = int(first.size());
+    std::vector<double> x, y, spreads;
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        x.push_back(first[i]->total.median);
+        y.push_back(second[i]->total.median);
+        spreads.push_back(first[i]->total.relativeSpread());
+        spreads.push_back(second[i]->total.relativeSpread());
+        const double ratio = std::max(x.back(), y.back()) / std::max(std::min(x.back(), y.back()), 1e-12);
+        if (ratio > out.largestRatio) {
+            out.largestRatio = ratio;
+            out.largestRatioSetting = sweepLabel(first[i]->settings);
+        }
+        if (sameCost(first[i]->total, second[i]->total))
+            ++out.sameCostInBoth;
+    }
+    out.spearman = spearman(x, y);
+    for (std::size_t i = 0; i < first.size(); ++i)
+        for (std::size_t j = i + 1; j < first.size(); ++j) {
+            if (sameCost(first[i]->total, first[j]->total) || sameCost(second[i]->total, second[j]->total))
+                continue;
+            ++out.distinctPairs;
+            if ((x[i] < x[j]) != (y[i] < y[j]))
+                ++out.discordantPairs;
+        }
+    if (!spreads.empty()) {
+        std::ranges::sort(spreads);
+        out.medianSpread = spreads[spreads.size() / 2];
+    }
+    return out;
 }
 
 } // namespace lpv::bench

@@ -142,3 +142,43 @@ TEST(TimingRounds, PassesAndTotalsAreTheRoundsMediansAndAStopIsAnError) {
     ASSERT_FALSE(stopped.has_value());
     EXPECT_EQ(stopped.error().code, scene::ErrorCode::Cancelled);
 }
+
+// Issue #43's target for two runs of one report: the same order of settings.
+#include "lpv/bench/SharedTiming.h"
+
+namespace {
+bench::SharedTiming timingOf(const std::vector<double>& medians, double spread) {
+    bench::SharedTiming t;
+    for (std::size_t i = 0; i < medians.size(); ++i) {
+        bench::SharedTiming::Entry e;
+        e.parameters = {{"lpv.propagationSteps", std::to_string(i + 1)}};
+        e.run.settings = e.parameters;
+        const double m = medians[i];
+        e.run.total = {m, m * (1.0 - spread / 2), m * (1.0 + spread / 2), m * (1.0 - spread), m * (1.0 + spread), 5};
+        e.run.totalMs = m;
+        t.entries.push_back(e);
+    }
+    return t;
+}
+} // namespace
+
+TEST(TimingAgreement, TwoRunsInTheSameOrderAgreeAndASwapIsCounted) {
+    EXPECT_DOUBLE_EQ(bench::spearman({1, 2, 3, 4}, {10, 20, 30, 40}), 1.0);
+    EXPECT_DOUBLE_EQ(bench::spearman({1, 2, 3, 4}, {40, 30, 20, 10}), -1.0);
+    EXPECT_DOUBLE_EQ(bench::spearman({1, 2, 2, 3}, {1, 2, 2, 3}), 1.0) << "ties take average ranks";
+    // The second run 3% slower throughout: the same order, every setting the same cost as before.
+    const auto a = timingOf({10, 20, 40, 80, 160}, 0.04);
+    const auto same = bench::compareTimings(a, timingOf({10.3, 20.6, 41.2, 82.4, 164.8}, 0.04));
+    EXPECT_EQ(same.settings, 5);
+    EXPECT_DOUBLE_EQ(same.spearman, 1.0);
+    EXPECT_EQ(same.distinctPairs, 10);
+    EXPECT_EQ(same.discordantPairs, 0);
+    EXPECT_EQ(same.sameCostInBoth, 5);
+    EXPECT_NEAR(same.largestRatio, 1.03, 1e-9);
+    // The two dearest swap places, and one setting took twice as long.
+    const auto swapped = bench::compareTimings(a, timingOf({10, 40, 20, 160, 80}, 0.04));
+    EXPECT_LT(swapped.spearman, 0.95);
+    EXPECT_EQ(swapped.discordantPairs, 2);
+    EXPECT_NEAR(swapped.largestRatio, 2.0, 1e-9);
+    EXPECT_EQ(swapped.sameCostInBoth, 1);
+}

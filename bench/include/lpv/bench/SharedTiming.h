@@ -43,4 +43,24 @@ const SharedTiming::Entry* findTiming(const SharedTiming& timing, const scene::P
 scene::Expected<void> applySharedTiming(const SharedTiming& timing, const scene::ParameterSet& base,
                                         std::vector<SweepRun>& runs);
 
+// Whether two timings of the same settings (a report run twice) tell the
+// same story: the target of issue #43 is a Spearman rank correlation of at
+// least 0.95 between the runs' medians, no pair of settings that both runs
+// call different costs in opposite order, and each setting's second median
+// within its first spread.
+struct TimingAgreement {
+    int settings = 0;        // in both timings
+    double spearman = 0.0;   // rank correlation of the medians (ties: average ranks)
+    int distinctPairs = 0;   // pairs both runs call different costs
+    int discordantPairs = 0; // of those, the pairs the two runs order oppositely
+    int sameCostInBoth = 0;  // settings whose two medians are the same cost (sameCost)
+    double largestRatio = 1.0; // the largest max/min of one setting's two medians
+    std::string largestRatioSetting;
+    double medianSpread = 0.0; // the median relative spread (IQR / median) over both runs' settings
+};
+TimingAgreement compareTimings(const SharedTiming& a, const SharedTiming& b);
+
+// Spearman's rank correlation of two equally long samples (average ranks for ties).
+double spearman(const std::vector<double>& x, const std::vector<double>& y);
+
 } // namespace lpv::bench
