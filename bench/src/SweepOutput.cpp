@@ -75,8 +75,8 @@ std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::s
             out << (it == r.settings.end() ? "" : it->second) << ",";
         }
         std::string same;
-        for (std::size_t j : sameCostAs(runs, i))
-            same += (same.empty() ? "" : " ") + std::to_string(j);
+        for (std::size_t j : sameCostAs(runs, i)) // 1-based: the data row, as sweep.md numbers them
+            same += (same.empty() ? "" : " ") + std::to_string(j + 1);
         out << r.totalMs << "," << r.total.q1 << "," << r.total.q3 << "," << r.total.min << "," << r.total.max
             << "," << r.total.rounds << "," << same << "," << r.gpuBytes << "," << r.lpvBytes;
         for (const auto& p : passes) {
