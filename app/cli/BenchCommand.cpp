@@ -28,7 +28,8 @@ void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
        lpv bench render PROJECT [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
-                                 --thesis-settings --turn DEG --csv FILE --markdown FILE]
+                                 --thesis-settings --turn DEG --csv FILE --markdown FILE
+                                 --rounds N --time-budget S --spread-target P]
        lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
        lpv bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]
@@ -36,28 +37,39 @@ void printBenchHelp() {
        lpv bench PROJECT --flicker (--path NAME | --sun-rotate DEG) [--frames N ... see below]
 
 bench render: renders the project headless at the given size (default
-1280x720) for --warmup frames (default 5, not counted) and then --frames
-frames (default 60), and prints each pass's GPU time (timer queries):
-median, min and max, plus every frame with --per-frame. A --set with a list
-of values sweeps that key (several lists: every combination), each with its
-own warm-up. --csv and --markdown write the tables (the Markdown one headed
-by the command and the machine: CPU, cores, GL renderer and version).
+1280x720) and prints each pass's GPU time (timer queries). Each setting gets
+--warmup frames first (default 5, not counted); then the settings are timed
+in interleaved rounds (A B C, then C B A, ...), each round one untimed frame
+after the switch and --frames timed frames (default 20). A pass's sample in
+a round is its median over that round's frames; the table gives per pass
+and for the total (each round's sum of pass medians) the median over the
+rounds, the quartiles q1-q3, the interquartile range in % of the median,
+min-max, rounds and frames. A --set with a list of values sweeps that key
+(several lists: every combination); settings whose totals lie within each
+other's noise are listed as the same cost. --per-frame also prints every
+timed frame of every round. --csv and --markdown write the tables (the
+Markdown one headed by the command, the machine: CPU, cores, GL renderer and
+version, its load before -> after and why the rounds stopped).
 --thesis-settings measures as the thesis application was measured beside us
 (issue #25): 1024x600 (unless --width/--height), its start camera (-2.2, 5.7,
 4.3, pitched 5 degrees down along +x, 60 degrees vertical), 4 LPV cascades of
 32^3, RSM tiles of 128^2, 6 shadow cascades of 1024^2, 8 propagation steps
-(a --set wins); then the same frames with gi.method=off, and a table of the
-thesis application's phases (shadow maps, RSM, injection, propagation, final
-shading, whole frame, LPV off) with its medians beside ours. Use it on
-Sibenik imported from sibenik.4ds.
+(a --set wins); the same frames with gi.method=off are the second setting of
+the rounds; then a table of the thesis application's phases (shadow maps,
+RSM, injection, propagation, final shading, whole frame, LPV off) with its
+medians beside ours (per round a phase's pass medians summed, then the
+median over the rounds). Use it on Sibenik imported from sibenik.4ds.
 --turn DEG measures the frame where only the camera turned, as the editor
 draws it while the user looks around: the camera yaws by +DEG and back on
 alternate frames about the up axis, the frame graph's reuse stays on (what
 does not depend on the view direction is kept), and it prints, per pass,
 the median over the frames it ran in and in how many, and the median of
-the per-frame totals (every pass that ran in that frame).
-
+the per-frame totals (every pass that ran in that frame). --turn times
+frame by frame, each setting once, not in rounds (the passes that run
+differ from frame to frame): it takes no round options, --csv or --markdown.
+Round options of bench render (it only times: --rounds at least 1):
 )";
+    std::cout << kRoundOptionsHelp << "\n";
     printBenchLpvHelp();
     printBenchSweepHelp();
     printBenchMergeHelp();

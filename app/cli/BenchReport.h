@@ -1,7 +1,7 @@
 #pragma once
 // The tables `lpv bench render` writes: per combination of swept settings,
-// each pass's median/min/max GPU time, as CSV and as Markdown headed by the
-// machine it ran on.
+// each pass's GPU time over interleaved rounds (median, quartiles, extremes),
+// as CSV and as Markdown headed by the machine it ran on and its load.
 #include "lpv/bench/Machine.h"
 #include "lpv/bench/Settings.h"
 #include "lpv/bench/Sweep.h"
@@ -30,15 +30,39 @@ using bench::describeMachine;
 
 struct BenchRun {
     std::vector<Setting> settings; // the swept values of this run ({} when nothing is swept)
+    // Per pass over the rounds (bench::SettingTiming): medianMs, minMs and
+    // maxMs of the rounds' medians, samples = frames timed in all.
     std::vector<renderer::PassTiming> passes;
+    std::vector<bench::TimingStats> passStats; // per pass, in the order of `passes` (empty: not timed in rounds)
+    bench::TimingStats total;                  // of each round's sum of pass medians
 };
 
-// One row per (run, pass): the swept keys as columns, then pass, median_ms, min_ms, max_ms, frames.
+// A run's label: its swept values ("shadow.mapSize=512 lpv.gridSize=16"), or "project settings".
+std::string benchRunLabel(const std::vector<Setting>& settings);
+
+// The other runs whose totals are the same cost as run `index` within the noise (bench::sameCost).
+std::vector<std::size_t> benchSameCostAs(const std::vector<BenchRun>& runs, std::size_t index);
+
+// One row per (run, pass) and a "total" row per run: the swept keys as
+// columns, then pass, median_ms, q1_ms, q3_ms, min_ms, max_ms, rounds,
+// frames, same_cost_as (on total rows: the labels of the runs of the same
+// cost, separated by ';').
 std::string benchCsv(const std::vector<BenchRun>& runs);
 
-// A Markdown report: the command and machine, then one row per run and one
-// column per pass, "median (min-max)" in ms, and the total of the medians.
-std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& command, const std::string& machine);
+// A Markdown report: the command, the machine, its load before -> after and
+// why the rounds stopped, then one row per run and one column per pass,
+// "median ±half the interquartile range" in ms, the total with its quartiles
+// and rounds, and, with several runs, which cost the same within the noise.
+std::string benchMarkdown(const std::vector<BenchRun>& runs, const std::string& command, const std::string& machine,
+                          const bench::SweepTimingInfo& timing = {});
+
+// The printed table of one run: per pass and for the total, the median over
+// rounds, q1-q3, the interquartile range in % of the median, min-max, rounds
+// and frames.
+std::string benchTable(const BenchRun& run);
+
+// With several runs: each total and the runs of the same cost ("" for one run).
+std::string benchComparison(const std::vector<BenchRun>& runs);
 
 // Writes each (file, text) whose file is given, atomically, and says so; on
 // failure prints the error and returns false.

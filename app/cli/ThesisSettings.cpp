@@ -1,5 +1,6 @@
 #include "ThesisSettings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -48,49 +49,71 @@ scene::Camera thesisStartCamera() {
     return c;
 }
 
-std::vector<ThesisPhase> thesisPhases(const std::vector<renderer::PassTiming>& table,
-                                      std::optional<double> lpvOffTotalMs) {
+std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::PassTiming>>& rounds,
+                                      std::optional<bench::TimingStats> lpvOff) {
+    // Our passes in the order they first ran, and which phase counts each.
+    std::vector<std::string> ran;
+    for (const auto& table : rounds)
+        for (const renderer::PassTiming& t : table)
+            if (t.samples > 0 && std::find(ran.begin(), ran.end(), t.pass) == ran.end())
+                ran.push_back(t.pass);
+    auto phaseOf = [&](const std::string& name, const std::string& passes, auto counts,
+                       std::optional<double> thesisMs) {
+        ThesisPhase phase{name, passes, {}, thesisMs};
+        std::vector<double> sums;
+        for (const auto& table : rounds) {
+            double sum = 0.0;
+            for (const renderer::PassTiming& t : table)
+                if (t.samples > 0 && counts(t.pass))
+                    sum += t.medianMs;
+            sums.push_back(sum);
+        }
+        phase.ours = bench::timingStatsOf(std::move(sums));
+        return phase;
+    };
     std::vector<ThesisPhase> out;
-    double whole = 0.0;
     std::set<std::string> counted;
     for (const PhaseSpec& spec : phaseSpecs()) {
-        ThesisPhase phase{spec.name, "", 0.0, spec.thesisMs};
-        for (const renderer::PassTiming& t : table)
-            if (spec.passes.contains(t.pass) && t.samples > 0) {
-                phase.oursMs += t.medianMs;
-                phase.ourPasses += (phase.ourPasses.empty() ? "" : " + ") + t.pass;
-                counted.insert(t.pass);
+        std::string ours;
+        for (const std::string& pass : ran)
+            if (spec.passes.contains(pass)) {
+                ours += (ours.empty() ? "" : " + ") + pass;
+                counted.insert(pass);
             }
-        out.push_back(phase);
+        out.push_back(phaseOf(spec.name, ours, [&](const std::string& pass) { return spec.passes.contains(pass); },
+                              spec.thesisMs));
     }
     // The whole frame is every pass that ran, grouped or not.
     std::string others;
-    for (const renderer::PassTiming& t : table)
-        if (t.samples > 0) {
-            whole += t.medianMs;
-            if (!counted.contains(t.pass))
-                others += (others.empty() ? "" : " + ") + t.pass;
-        }
-    out.push_back({"whole frame", others.empty() ? "every pass" : "every pass (also " + others + ")", whole,
-                   kThesisWholeFrameMs});
-    if (lpvOffTotalMs)
-        out.push_back({"LPV off (whole frame)", "every pass, gi.method=off", *lpvOffTotalMs, kThesisLpvOffMs});
+    for (const std::string& pass : ran)
+        if (!counted.contains(pass))
+            others += (others.empty() ? "" : " + ") + pass;
+    out.push_back(phaseOf("whole frame", others.empty() ? "every pass" : "every pass (also " + others + ")",
+                          [](const std::string&) { return true; }, kThesisWholeFrameMs));
+    if (lpvOff)
+        out.push_back({"LPV off (whole frame)", "every pass, gi.method=off", *lpvOff, kThesisLpvOffMs});
     return out;
 }
 
 std::string formatThesisPhases(const std::vector<ThesisPhase>& phases) {
-    std::string out = "phase                   ours ms  thesis app ms  ours/thesis  our passes\n";
+    std::string out = "phase                   ours ms   ±IQR/2  thesis app ms  ours/thesis  our passes\n";
+    int rounds = 0;
     for (const ThesisPhase& p : phases) {
         char line[256];
+        rounds = std::max(rounds, p.ours.rounds);
+        const double half = 0.5 * p.ours.spread();
         if (p.thesisMs)
-            std::snprintf(line, sizeof line, "%-22s %8.1f %14.0f %11.2fx  ", p.name.c_str(), p.oursMs, *p.thesisMs,
-                          p.oursMs / *p.thesisMs);
+            std::snprintf(line, sizeof line, "%-22s %8.1f %8.1f %14.0f %11.2fx  ", p.name.c_str(), p.ours.median,
+                          half, *p.thesisMs, p.ours.median / *p.thesisMs);
         else
-            std::snprintf(line, sizeof line, "%-22s %8.1f %14s %12s  ", p.name.c_str(), p.oursMs, "-", "-");
+            std::snprintf(line, sizeof line, "%-22s %8.1f %8.1f %14s %12s  ", p.name.c_str(), p.ours.median, half,
+                          "-", "-");
         out += line + p.ourPasses + "\n";
     }
     out += "thesis app: its own phase timer (glFinish and a wall clock), raster gather, on a 2-core llvmpipe machine "
-           "(issue #25); ours: GPU timer queries, medians per pass summed\n";
+           "(issue #25); ours: GPU timer queries, per round the medians of a phase's passes summed, then the median "
+           "over " +
+           std::to_string(rounds) + " round" + (rounds == 1 ? "" : "s") + " and half its interquartile range\n";
     return out;
 }
 

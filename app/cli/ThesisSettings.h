@@ -3,6 +3,7 @@
 // phase grouping under which the thesis application (djbozkosz, raster
 // gather, its fastest) was measured beside us on a 2-core llvmpipe machine,
 // so later changes compare with those figures like for like.
+#include "lpv/bench/Timing.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/scene/Camera.h"
 
@@ -25,18 +26,21 @@ std::vector<std::string> thesisSettingsSets();
 scene::Camera thesisStartCamera();
 
 // One phase as the thesis application times it, with our passes summed
-// into it (median ms of each pass) and the thesis application's figure.
+// into it and the thesis application's figure. Ours is over timing rounds:
+// in each round the phase's passes' medians summed, then the median and
+// quartiles of those sums (issue #43).
 struct ThesisPhase {
     std::string name;
     std::string ourPasses; // which of our passes it sums
-    double oursMs = 0.0;
+    bench::TimingStats ours;
     std::optional<double> thesisMs;
 };
 
 // shadow maps | RSM | injection | propagation | final shading | whole frame,
-// then the whole frame with the LPV off when `lpvOffTotalMs` is given.
-std::vector<ThesisPhase> thesisPhases(const std::vector<renderer::PassTiming>& table,
-                                      std::optional<double> lpvOffTotalMs);
+// then the whole frame with the LPV off when `lpvOff` is given. `rounds`
+// holds the per-pass table of each timing round (medians over its frames).
+std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::PassTiming>>& rounds,
+                                      std::optional<bench::TimingStats> lpvOff);
 
 std::string formatThesisPhases(const std::vector<ThesisPhase>& phases);
 

@@ -40,12 +40,20 @@ TEST(BenchLpv, WritesTheThesisTablesForEveryVariant) {
     ASSERT_EQ(imported.exitCode, 0) << imported.output;
     const fs::path md = dir / "lpv.md", csv = dir / "lpv.csv";
     const RunResult r = runLpv("bench lpv '" + project.string() +
-                               "' --tiles 32,64 --steps 1,2 --frames 1 --warmup 0 --width 64 --height 48 --markdown '" +
+                               "' --tiles 32,64 --steps 1,2 --frames 1 --warmup 0 --rounds 2 --width 64 --height 48 --markdown '" +
                                md.string() + "' --csv '" + csv.string() + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Fastest variant"), std::string::npos) << r.output;
     const std::string table = readText(md);
     EXPECT_NE(table.find("Machine: "), std::string::npos);
+    // Issue #43: all 18 settings timed in the same interleaved rounds, each
+    // figure with its spread, and settings within the noise named.
+    EXPECT_NE(table.find("Load: load "), std::string::npos) << table;
+    EXPECT_NE(table.find("Timing: 2 interleaved rounds"), std::string::npos) << table;
+    EXPECT_NE(table.find("stopped: round limit after 2 rounds"), std::string::npos) << table;
+    EXPECT_NE(table.find("| rsm + injection | same cost as |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| fastest | median ms | same cost within the noise |"), std::string::npos) << table;
+    EXPECT_NE(table.find(" ±"), std::string::npos) << table;
     EXPECT_NE(table.find("| 32^2 |"), std::string::npos);
     EXPECT_NE(table.find("| 64^2 |"), std::string::npos);
     for (const char* variant : {"computeGather", "computeScatter", "rasterGather", "rasterScatter"})
@@ -54,10 +62,16 @@ TEST(BenchLpv, WritesTheThesisTablesForEveryVariant) {
     // Every propagation row has a measured time, not a dash.
     EXPECT_EQ(count(table, " | - |"), 0u) << table;
     const std::string rows = readText(csv);
+    EXPECT_EQ(rows.substr(0, rows.find('\n')),
+              "table,rsm.tileSize,lpv.variant,lpv.occlusion,lpv.propagationSteps,pass,median_ms,q1_ms,q3_ms,min_ms,"
+              "max_ms,rounds,frames");
     std::size_t propagationRows = 0;
     std::istringstream lines(rows);
     for (std::string line; std::getline(lines, line);)
-        propagationRows += line.rfind("steps,", 0) == 0 && line.find(",lpvPropagation,") != std::string::npos;
+        if (line.rfind("steps,", 0) == 0 && line.find(",lpvPropagation,") != std::string::npos) {
+            ++propagationRows;
+            EXPECT_TRUE(line.ends_with(",2,2")) << "2 rounds of 1 frame: " << line;
+        }
     EXPECT_EQ(propagationRows, 16u) << rows; // 4 variants x 2 step counts x occlusion off/on
     fs::remove_all(dir);
 }

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 using namespace lpv::test;
@@ -80,7 +82,8 @@ TEST(RenderDump, EveryFrameGetsARowOfPassTimes) {
 TEST(BenchRender, PrintsMedianPassTimesAfterWarmUp) {
     const RunResult r = runLpv("bench render " + cornellProject() + " --width 64 --height 64 --frames 3 --warmup 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("3 frames after 1 warm-up"), std::string::npos) << r.output;
+    // The default round plan: at least 3 rounds of --frames frames each.
+    EXPECT_NE(r.output.find(" rounds of 3 frames (after 1 warm-up frame, "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("median"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("shading"), std::string::npos) << r.output;
     EXPECT_EQ(runLpv("bench render").exitCode, 2);
@@ -90,8 +93,14 @@ TEST(BenchRender, PrintsMedianPassTimesAfterWarmUp) {
 TEST(BenchRender, ThesisSettingsPrintTheThesisPhasesBesideItsFigures) {
     // Small frames: the table's rows and its own settings are what is checked.
     const RunResult r = runLpv("bench render " + cornellProject() +
-                               " --thesis-settings --width 64 --height 64 --frames 1 --warmup 0");
+                               " --thesis-settings --width 64 --height 64 --frames 1 --warmup 0 --rounds 2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    // The thesis settings and gi.method=off are timed against each other in
+    // the same rounds; each phase is a median over them with its spread.
+    EXPECT_NE(r.output.find("\n== gi.method=off\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("timed in 2 interleaved rounds"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("±IQR/2"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("then the median over 2 rounds"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("LPV: 4 cascades of 32^3, 8 steps"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("the thesis application's phases (--thesis-settings: 64x64, its start camera)"),
               std::string::npos)
@@ -118,6 +127,12 @@ TEST(BenchRender, TurnMeasuresFramesWhereOnlyTheCameraTurned) {
     EXPECT_EQ(r.output.find("shadowMaps"), std::string::npos) << r.output;
     for (const char* bad : {" --turn 0", " --turn -3", " --turn abc", " --turn 181"})
         EXPECT_EQ(runLpv("bench render " + cornellProject() + bad).exitCode, 2) << bad;
+    // A turning camera is timed frame by frame, not in rounds: round options are refused.
+    for (const char* bad : {" --turn 5 --rounds 3", " --turn 5 --time-budget 10", " --turn 5 --csv /tmp/never.csv"}) {
+        const RunResult refused = runLpv("bench render " + cornellProject() + bad);
+        EXPECT_EQ(refused.exitCode, 2) << bad;
+        EXPECT_NE(refused.output.find("--turn"), std::string::npos) << refused.output;
+    }
 }
 
 TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
@@ -195,17 +210,107 @@ TEST(BenchRender, SweepsWriteCsvAndMarkdownTables) {
     std::ifstream csv(dir / "t.csv");
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header, "shadow.mapSize,pass,median_ms,min_ms,max_ms,frames");
+    EXPECT_EQ(header, "shadow.mapSize,pass,median_ms,q1_ms,q3_ms,min_ms,max_ms,rounds,frames,same_cost_as");
     std::size_t rows256 = 0, rows512 = 0;
     while (std::getline(csv, line)) {
         rows256 += line.starts_with("256,") ? 1 : 0;
         rows512 += line.starts_with("512,") ? 1 : 0;
     }
-    EXPECT_GE(rows256, 3u) << "shadowMaps, shading, tonemap";
+    EXPECT_GE(rows256, 4u) << "shadowMaps, shading, tonemap, total";
     EXPECT_EQ(rows256, rows512);
     std::ifstream md(dir / "t.md");
     const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
     EXPECT_NE(report.find("Machine: "), std::string::npos) << report;
     EXPECT_NE(report.find("| 512 |"), std::string::npos) << report;
+    // Two settings compared: each says which others cost the same within the noise.
+    EXPECT_NE(report.find("| same cost as |"), std::string::npos) << report;
+    EXPECT_NE(r.output.find("same cost within the noise as"), std::string::npos) << r.output;
     fs::remove_all(dir);
+}
+
+namespace {
+
+std::vector<std::string> splitCsv(const std::string& line) {
+    std::vector<std::string> fields;
+    std::string field;
+    for (char c : line) {
+        if (c == ',') {
+            fields.push_back(field);
+            field.clear();
+        } else {
+            field += c;
+        }
+    }
+    fields.push_back(field);
+    return fields;
+}
+
+} // namespace
+
+// Issue #43: `lpv bench render` times in interleaved rounds; every pass and
+// the total carry their median, quartiles, extremes and rounds, in the CSV,
+// the Markdown (headed by the machine, its load and why the rounds stopped)
+// and the printed table.
+TEST(BenchRender, CornellTemplateInRoundsWritesTheSpread) {
+    const fs::path dir = tempDir("rounds");
+    const fs::path project = dir / "cb.lpvproj";
+    const RunResult made = runLpv("new '" + project.string() + "' --template cornell-box");
+    ASSERT_EQ(made.exitCode, 0) << made.output;
+    const RunResult r = runLpv("bench render '" + project.string() +
+                               "' --width 64 --height 36 --frames 2 --warmup 1 --rounds 2 --csv '" +
+                               (dir / "t.csv").string() + "' --markdown '" + (dir / "t.md").string() + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("64x36, 2 rounds of 2 frames (after 1 warm-up frame, and one untimed frame per round)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("q1-q3"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("timed in 2 interleaved rounds (round limit after 2 rounds); load "), std::string::npos)
+        << r.output;
+
+    std::ifstream csv(dir / "t.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header, "pass,median_ms,q1_ms,q3_ms,min_ms,max_ms,rounds,frames,same_cost_as");
+    std::size_t rows = 0, totals = 0;
+    while (std::getline(csv, line)) {
+        const std::vector<std::string> f = splitCsv(line);
+        ASSERT_EQ(f.size(), 9u) << line;
+        ++rows;
+        totals += f[0] == "total" ? 1 : 0;
+        const double median = std::stod(f[1]), q1 = std::stod(f[2]), q3 = std::stod(f[3]), lo = std::stod(f[4]),
+                     hi = std::stod(f[5]);
+        EXPECT_LE(lo, q1) << line;
+        EXPECT_LE(q1, median) << line;
+        EXPECT_LE(median, q3) << line;
+        EXPECT_LE(q3, hi) << line;
+        EXPECT_GT(median, 0.0) << line;
+        EXPECT_EQ(f[6], "2") << "rounds: " << line;
+        EXPECT_EQ(f[7], "4") << "frames: 2 rounds of 2: " << line;
+    }
+    EXPECT_GE(rows, 4u) << "shadowMaps, shading, tonemap, total";
+    EXPECT_EQ(totals, 1u);
+
+    std::ifstream md(dir / "t.md");
+    const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    for (const char* expected : {"Machine: ", "Load: load ", " -> load ",
+                                 "Timing: 2 rounds; stopped: round limit after 2 rounds",
+                                 "| total | q1-q3 | rounds |", " --rounds 2 "})
+        EXPECT_NE(report.find(expected), std::string::npos) << expected << "\n" << report;
+    // The one row: "median ±half the IQR" per pass, then the total, its quartiles and 2 rounds.
+    EXPECT_NE(report.find(" ±"), std::string::npos) << report;
+    EXPECT_NE(report.find(" | 2 |\n"), std::string::npos) << report;
+    // One setting: nothing to compare.
+    EXPECT_EQ(report.find("same cost"), std::string::npos) << report;
+    fs::remove_all(dir);
+}
+
+TEST(BenchRender, BadRoundOptionsAreUsageErrors) {
+    for (const char* bad : {" --rounds 0", " --rounds x", " --rounds -1", " --time-budget abc", " --time-budget 0",
+                            " --time-budget -5", " --spread-target 0", " --spread-target ten"}) {
+        const RunResult r = runLpv("bench render " + cornellProject() + bad);
+        EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.output;
+        EXPECT_EQ(r.output.find("GPU frame rate"), std::string::npos) << "nothing may render: " << bad;
+    }
+    EXPECT_EQ(runLpv("bench lpv " + cornellProject() + " --rounds 0").exitCode, 2);
+    EXPECT_EQ(runLpv("bench lpv " + cornellProject() + " --time-budget never").exitCode, 2);
 }
