@@ -34,6 +34,7 @@ void printBenchHelp() {
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
        lpv bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]
        lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
+       lpv bench compare-times A/timing.json B/timing.json
        lpv bench PROJECT --flicker (--path NAME | --sun-rotate DEG) [--frames N ... see below]
 
 bench render: renders the project headless at the given size (default
@@ -74,6 +75,7 @@ Round options of bench render (it only times: --rounds at least 1):
     printBenchSweepHelp();
     printBenchMergeHelp();
     printBenchAccuracyReportHelp();
+    printBenchCompareTimesHelp();
     printBenchFlickerHelp();
     std::cout << R"(
 bench import:
@@ -176,7 +178,9 @@ int benchImport(Args& args) {
 int runBench(Args args) {
     const auto pos = args.positionals();
     if (pos.empty())
-        return usageError("which benchmark? (import, render, lpv, or a project with --sweep)", "bench");
+        return usageError("which benchmark? (import, render, lpv, report, merge, compare-times, or a project with "
+                          "--sweep)",
+                          "bench");
     if (fs::path(pos.front()).extension() == ".lpvproj")
         return args.flag("--flicker") ? benchFlicker(std::move(args)) : benchSweep(std::move(args));
     if (pos.front() == "render")
@@ -185,6 +189,8 @@ int runBench(Args args) {
         return benchLpv(std::move(args));
     if (pos.front() == "report")
         return benchAccuracyReport(std::move(args));
+    if (pos.front() == "compare-times")
+        return benchCompareTimes(std::move(args));
     if (pos.front() == "merge")
         return benchMerge(std::move(args));
     if (pos.front() == "import") {

@@ -66,6 +66,8 @@ int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
 int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
 int benchAccuracyReport(Args args); // `lpv bench report`, in BenchAccuracyReport.cpp
+int benchCompareTimes(Args args);   // `lpv bench compare-times`, in BenchCompareTimes.cpp
+void printBenchCompareTimesHelp();
 int benchFlicker(Args args); // `lpv bench PROJECT --flicker`, in BenchFlickerCommand.cpp
 
 void printRenderHelp();

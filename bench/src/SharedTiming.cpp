@@ -155,7 +155,7 @@ TimingAgreement compareTimings(const SharedTiming& a, const SharedTiming& b) {
         spreads.push_back(first[i]->total.relativeSpread());
         spreads.push_back(second[i]->total.relativeSpread());
         const double ratio = std::max(x.back(), y.back()) / std::max(std::min(x.back(), y.back()), 1e-12);
-        if (ratio > out.largestRatio) {
+        if (ratio > out.largestRatio || out.largestRatioSetting.empty()) {
             out.largestRatio = ratio;
             out.largestRatioSetting = sweepLabel(first[i]->settings);
         }

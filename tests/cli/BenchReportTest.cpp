@@ -112,6 +112,15 @@ TEST(BenchReport, QuickCornellReportHasSweepsAndRadiosity) {
         EXPECT_EQ(j2["scenes"][0]["runs"][i]["indirectMare"], scene["runs"][i]["indirectMare"]);
         EXPECT_EQ(j2["scenes"][0]["runs"][i]["time"], scene["runs"][i]["time"]);
     }
+    // The ranking check of two runs (issue #43): a timing agrees with itself; a file that is no timing is an error.
+    const std::string timing = (dir / "cornell-box" / "timing.json").string();
+    const RunResult agree = runLpv("bench compare-times '" + timing + "' '" + timing + "'");
+    EXPECT_EQ(agree.exitCode, 0) << agree.output;
+    EXPECT_NE(agree.output.find("settings in both:                         7"), std::string::npos) << agree.output;
+    EXPECT_NE(agree.output.find("Spearman rank correlation of the medians: 1.000"), std::string::npos) << agree.output;
+    const RunResult notTiming = runLpv("bench compare-times '" + timing + "' '" + (dir / "report.json").string() + "'");
+    EXPECT_EQ(notTiming.exitCode, 1) << notTiming.output;
+    EXPECT_NE(notTiming.output.find("not a timing file"), std::string::npos) << notTiming.output;
     // A different size is another command: nothing is reused.
     const RunResult other = runLpv("bench report --quick --scene cornell-box --question occlusion --out '" +
                                    dir.string() + "' --width 48 --height 32 --spp 16 --frames 1 --warmup 0 --rounds 2 --resume");
