@@ -90,7 +90,11 @@ void SweepJob::run(SweepJobSpec spec) {
     if (!saved->runs.empty())
         saved->referenceNoiseMare = saved->runs.front().indirect.noiseMare;
     std::shared_ptr<const bench::SavedSweep> done = saved;
-    post([this, done] { emit finished(done); });
+    const QString timing =
+        tr("%1 interleaved timing rounds (%2); %3")
+            .arg(result->rounds)
+            .arg(QString::fromStdString(result->stopReason), QString::fromStdString(result->load));
+    post([this, done, timing] { emit finished(done, timing); });
 }
 
 } // namespace lpv::editor

@@ -40,7 +40,9 @@ signals:
     void progress(double fraction, const QString& text);
     // Run `index` of the spec's combinations, with a preview of its indirect light.
     void runFinished(int index, const lpv::bench::SweepRun& run, const QImage& preview);
-    void finished(std::shared_ptr<const lpv::bench::SavedSweep> sweep);
+    // `timing`: how the times were taken ("3 rounds (spread within 10% after 3 rounds), load 0.10 ... ->
+    // ...").
+    void finished(std::shared_ptr<const lpv::bench::SavedSweep> sweep, const QString& timing);
     void failed(const QString& message, bool cancelled);
 
 private:

@@ -3,15 +3,21 @@
 #include "Document.h"
 
 #include "lpv/bench/Pareto.h"
+#include "lpv/bench/Plots.h"
 #include "lpv/bench/Questions.h"
+#include "lpv/bench/SweepOutput.h"
+#include "lpv/renderer/GpuMemory.h"
 
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QPainter>
 #include <QProgressBar>
@@ -37,6 +43,16 @@ const char* const kDefaultQuestions[] = {"steps", "grid", "cascades", "occlusion
                                          "strength", "visibility"};
 
 enum QuestionColumn { kQuestion, kValues };
+enum RunColumn { kRunSetting, kRunTime, kRunSame, kRunMemory, kRunError, kRunMean, kRunColumns };
+
+const QColor kBiasedColor(235, 140, 20);
+const QColor kPointColor(40, 110, 180);
+const QColor kFrontColor(200, 60, 40);
+constexpr double kMiB = 1024.0 * 1024.0;
+
+QString biasedName() {
+    return QObject::tr("biased (mean outside 0.8-1.25x)");
+}
 
 QString percent(double v) {
     return QString::number(100.0 * v, 'f', 1) + "%";
@@ -44,6 +60,30 @@ QString percent(double v) {
 
 QString labelOf(const std::vector<bench::Setting>& settings) {
     return settings.empty() ? QObject::tr("current settings") : QString::fromStdString(bench::sweepLabel(settings));
+}
+
+// "12.30 ms ±0.40 over 5 rounds" (± half the interquartile range), or the single time of an older sweep.
+QString timeText(const bench::SweepRun& r) {
+    if (r.total.rounds <= 0)
+        return QObject::tr("%1 ms (one sample)").arg(r.totalMs, 0, 'f', 2);
+    if (r.total.rounds == 1)
+        return QObject::tr("%1 ms (1 round)").arg(r.total.median, 0, 'f', 2);
+    return QObject::tr("%1 ms ±%2 over %3 rounds")
+        .arg(r.total.median, 0, 'f', 2)
+        .arg(0.5 * r.total.spread(), 0, 'f', 2)
+        .arg(r.total.rounds);
+}
+
+QString memoryText(const bench::SweepRun& r) {
+    return r.gpuBytes ? QString::fromStdString(renderer::formatBytes(r.gpuBytes)) : QStringLiteral("-");
+}
+
+bool biased(const bench::SweepRun& r) {
+    return bench::biasedMean(bench::meanRatio(r.indirect));
+}
+
+double axisCostMs(const bench::SweepRun& r) {
+    return r.total.rounds > 0 ? r.total.median : r.totalMs;
 }
 
 } // namespace
@@ -126,16 +166,43 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     connect(run_, &QPushButton::clicked, this, &SweepPanel::startSweep);
     connect(stop_, &QPushButton::clicked, this, &SweepPanel::stopSweep);
 
-    // Middle: the plot.
+    // Middle: the plot (log cost against the symmetric error) over the runs' table.
+    auto* middle = new QWidget(split);
+    auto* middleLayout = new QVBoxLayout(middle);
+    middleLayout->setContentsMargins(0, 0, 0, 0);
+    auto* axisRow = new QHBoxLayout();
+    axisRow->addWidget(new QLabel(tr("Cost"), middle));
+    axisChoice_ = new QComboBox(middle);
+    axisChoice_->setObjectName("sweepAxis");
+    axisChoice_->addItem(tr("GPU time (ms)"));
+    axisChoice_->addItem(tr("GPU memory (MiB)"));
+    axisChoice_->setToolTip(
+        tr("The chart's x axis, its Pareto front and \"Cheapest within\": the frame's GPU time "
+           "(median over interleaved rounds, the bar its interquartile range) or the GPU "
+           "memory of the resources the frame allocated (frame graph and LPV volumes)"));
+    connect(axisChoice_, &QComboBox::currentIndexChanged, this, [this] {
+        rebuildChart();
+        showRun(selected_);
+    });
+    axisRow->addWidget(axisChoice_);
+    axisRow->addStretch(1);
+    middleLayout->addLayout(axisRow);
     chart_ = new QChart();
     chart_->setAnimationOptions(QChart::NoAnimation);
-    chart_->setTitle(tr("Indirect light error against GPU time"));
-    axisX_ = new QValueAxis(chart_);
-    axisX_->setTitleText(tr("GPU ms per frame (sum of pass medians)"));
+    // A log axis with round ticks: QCategoryAxis labels placed on log10 of 1, 2, 5 x 10^k
+    // (QLogValueAxis labels powers of ten only, none inside a range such as 2..8 ms).
+    axisX_ = new QCategoryAxis(chart_);
+    axisX_->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
     axisY_ = new QValueAxis(chart_);
-    axisY_->setTitleText(tr("indirect MARE %"));
+    axisY_->setTitleText(tr("indirect error % (symmetric)"));
+    axisY_->setLabelFormat("%.0f");
     chart_->addAxis(axisX_, Qt::AlignBottom);
     chart_->addAxis(axisY_, Qt::AlignLeft);
+    // Beside the plot, one entry a line: along the top the names were cut short.
+    chart_->legend()->setAlignment(Qt::AlignRight);
+    QFont legendFont = chart_->legend()->font();
+    legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+    chart_->legend()->setFont(legendFont);
     auto addSeries = [this](QXYSeries* s, const QString& name) {
         s->setName(name);
         chart_->addSeries(s);
@@ -146,16 +213,21 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     noiseLine_->setPen(QPen(Qt::gray, 1, Qt::DashLine));
     addSeries(noiseLine_, tr("reference noise"));
     frontLine_ = new QLineSeries(chart_);
-    frontLine_->setPen(QPen(QColor(200, 60, 40), 1.5));
+    frontLine_->setPen(QPen(kFrontColor, 1.5));
     addSeries(frontLine_, tr("Pareto front"));
     allPoints_ = new QScatterSeries(chart_);
     allPoints_->setMarkerSize(8);
-    allPoints_->setColor(QColor(40, 110, 180));
+    allPoints_->setColor(kPointColor);
     addSeries(allPoints_, tr("settings"));
     frontPoints_ = new QScatterSeries(chart_);
     frontPoints_->setMarkerSize(10);
-    frontPoints_->setColor(QColor(200, 60, 40));
+    frontPoints_->setColor(kFrontColor);
     addSeries(frontPoints_, tr("on the front"));
+    biasedPoints_ = new QScatterSeries(chart_);
+    biasedPoints_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+    biasedPoints_->setMarkerSize(9);
+    biasedPoints_->setColor(kBiasedColor);
+    addSeries(biasedPoints_, biasedName());
     currentPoints_ = new QScatterSeries(chart_);
     currentPoints_->setMarkerShape(QScatterSeries::MarkerShapeStar);
     currentPoints_->setMarkerSize(18);
@@ -166,7 +238,7 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     selectedPoint_->setColor(Qt::transparent);
     selectedPoint_->setBorderColor(Qt::black);
     addSeries(selectedPoint_, tr("selected"));
-    for (QScatterSeries* s : {allPoints_, frontPoints_, currentPoints_, selectedPoint_}) {
+    for (QScatterSeries* s : {allPoints_, frontPoints_, biasedPoints_, currentPoints_, selectedPoint_}) {
         connect(s, &QScatterSeries::hovered, this, [this](const QPointF& p, bool on) {
             if (on)
                 showRun(runAt(p));
@@ -177,9 +249,38 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
             QMetaObject::invokeMethod(this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
         });
     }
-    chartView_ = new QChartView(chart_, split);
+    chartView_ = new QChartView(chart_, middle);
     chartView_->setRenderHint(QPainter::Antialiasing);
     chartView_->setMinimumWidth(320);
+    chartView_->setMinimumHeight(240);
+    middleLayout->addWidget(chartView_, 3);
+    runsTable_ = new QTableWidget(0, kRunColumns, middle);
+    runsTable_->setObjectName("sweepRuns");
+    runsTable_->setHorizontalHeaderLabels(
+        {tr("Setting"), tr("GPU time"), tr("Same cost as"), tr("GPU memory"), tr("Error"), tr("Mean")});
+    runsTable_->horizontalHeaderItem(kRunTime)->setToolTip(
+        tr("GPU ms per frame: the median over the interleaved timing rounds ± half the interquartile "
+           "range (the rounds, min and max on each cell's tip)"));
+    runsTable_->horizontalHeaderItem(kRunSame)->setToolTip(
+        tr("Runs (by row) whose time is the same within the noise"));
+    runsTable_->horizontalHeaderItem(kRunError)->setToolTip(
+        tr("Indirect light's symmetric error: exp(mean |ln((t+e)/(r+e))|) - 1, too dark and too "
+           "bright alike"));
+    runsTable_->horizontalHeaderItem(kRunMean)->setToolTip(
+        tr("The indirect light's mean over the reference's; outside 0.8-1.25x it is biased"));
+    runsTable_->verticalHeader()->setDefaultSectionSize(20);
+    runsTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    runsTable_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    runsTable_->setSelectionMode(QAbstractItemView::SingleSelection);
+    runsTable_->horizontalHeader()->setSectionResizeMode(kRunSetting, QHeaderView::Stretch);
+    connect(runsTable_, &QTableWidget::cellClicked, this, [this](int row, int) {
+        if (!sweep_)
+            return;
+        selected_ = row;
+        rebuildChart();
+        showRun(row);
+    });
+    middleLayout->addWidget(runsTable_, 2);
 
     // Right: the hovered or selected point.
     auto* detail = new QWidget(split);
@@ -190,9 +291,11 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     maxError_->setRange(0.1, 100000.0);
     maxError_->setValue(10.0);
     maxError_->setSuffix(" %");
-    maxError_->setToolTip(tr("Indirect MARE bound"));
+    maxError_->setToolTip(tr("Bound on the indirect light's symmetric error"));
     auto* pick = new QPushButton(tr("Cheapest within"), detail);
-    pick->setToolTip(tr("Select the fastest setting whose indirect error is at most this"));
+    pick->setToolTip(
+        tr("Select the cheapest setting (on the chart's axis) whose indirect symmetric error is at "
+           "most this; biased settings (mean outside 0.8-1.25x) are passed over"));
     connect(pick, &QPushButton::clicked, this, [this] { selectCheapestWithin(maxError_->value()); });
     cheapest->addWidget(pick);
     cheapest->addWidget(maxError_);
@@ -210,6 +313,7 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     detailLayout->addWidget(detailImage_);
     detailLayout->addStretch(1);
     split->setStretchFactor(1, 1);
+    rebuildChart();
 
     connect(&job_, &SweepJob::progress, this, [this](double f, const QString& text) {
         progress_->setValue(int(std::lround(1000.0 * std::clamp(f, 0.0, 1.0))));
@@ -345,7 +449,7 @@ void SweepPanel::onRunFinished(int index, const bench::SweepRun& run, const QIma
     rebuildChart();
 }
 
-void SweepPanel::onFinished(std::shared_ptr<const bench::SavedSweep> sweep) {
+void SweepPanel::onFinished(std::shared_ptr<const bench::SavedSweep> sweep, const QString& timing) {
     sweep_ = std::move(sweep);
     runningCombinations_.clear();
     partialRuns_.clear();
@@ -360,11 +464,13 @@ void SweepPanel::onFinished(std::shared_ptr<const bench::SavedSweep> sweep) {
     const QString path = document_->path();
     if (!path.isEmpty())
         saveBesideProject(path);
-    status_->setText(tr("%1 settings measured against a %2 spp reference (its own noise: MARE %3)%4")
-                         .arg(sweep_->runs.size())
-                         .arg(sweep_->referenceSpp)
-                         .arg(percent(sweep_->referenceNoiseMare))
-                         .arg(path.isEmpty() ? tr("; saved with the project when it is saved") : QString()));
+    // One pass over the text: the timing note holds "%" signs of its own.
+    status_->setText(
+        tr("%1 settings measured against a %2 spp reference (its own noise: %3 symmetric error); "
+           "%4%5")
+            .arg(QString::number(sweep_->runs.size()), QString::number(sweep_->referenceSpp),
+                 percent(sweep_->runs.empty() ? 0.0 : sweep_->runs.front().indirect.noiseSymmetricError()),
+                 timing, path.isEmpty() ? tr("; saved with the project when it is saved") : QString()));
     emit sweepFinished();
 }
 
@@ -423,13 +529,78 @@ void SweepPanel::loadBesideProject() {
     rebuildChart();
 }
 
+std::vector<const bench::SweepRun*> SweepPanel::shownRuns() const {
+    std::vector<const bench::SweepRun*> runs;
+    if (sweep_)
+        for (const bench::SweepRun& r : sweep_->runs)
+            runs.push_back(&r);
+    else
+        for (const auto& r : partialRuns_)
+            runs.push_back(r ? &*r : nullptr);
+    return runs;
+}
+
+SweepPanel::CostAxis SweepPanel::costAxis() const {
+    return axisChoice_->currentIndex() == 1 ? CostAxis::Memory : CostAxis::Time;
+}
+
+void SweepPanel::setCostAxis(CostAxis axis) {
+    axisChoice_->setCurrentIndex(axis == CostAxis::Memory ? 1 : 0);
+}
+
+double SweepPanel::axisCost(const bench::SweepRun& r) const {
+    if (costAxis() == CostAxis::Memory)
+        return double(r.gpuBytes) / kMiB;
+    return r.total.rounds > 0 ? r.total.median : r.totalMs;
+}
+
+double SweepPanel::costOf(int index) const {
+    const auto runs = shownRuns();
+    if (index < 0 || std::size_t(index) >= runs.size() || !runs[std::size_t(index)])
+        return 0.0;
+    return axisCost(*runs[std::size_t(index)]);
+}
+
+std::optional<QPointF> SweepPanel::plottedPoint(int index) const {
+    if (index < 0 || std::size_t(index) >= plotted_.size())
+        return std::nullopt;
+    return plotted_[std::size_t(index)];
+}
+
+bench::CostPoint SweepPanel::costPoint(const bench::SweepRun& r) const {
+    return costAxis() == CostAxis::Memory ? bench::memoryErrorPoint(r) : bench::timeErrorPoint(r);
+}
+
+namespace {
+
+// The front among the runs with a cost on this axis (a sweep saved before
+// memory was counted has none); the others are not on it.
+template <typename CostPointOf, typename CostOf>
+std::vector<bool> frontOf(const std::vector<const bench::SweepRun*>& runs, bool memory, CostPointOf point,
+                          CostOf cost) {
+    std::vector<bench::CostPoint> points;
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        if (runs[i] && cost(*runs[i]) > 0.0) {
+            points.push_back(point(*runs[i]));
+            index.push_back(i);
+        }
+    const std::vector<bool> front = bench::paretoFront(points, memory ? 0.0 : bench::kSameCostFraction);
+    std::vector<bool> out(runs.size(), false);
+    for (std::size_t k = 0; k < index.size(); ++k)
+        out[index[k]] = front[k];
+    return out;
+}
+
+} // namespace
+
 std::vector<bool> SweepPanel::front() const {
     if (!sweep_)
         return {};
-    std::vector<std::pair<double, double>> points;
-    for (const bench::SweepRun& r : sweep_->runs)
-        points.emplace_back(r.totalMs, r.indirect.mare);
-    return bench::paretoFront(points);
+    return frontOf(
+        shownRuns(), costAxis() == CostAxis::Memory,
+        [this](const bench::SweepRun& r) { return costPoint(r); },
+        [this](const bench::SweepRun& r) { return axisCost(r); });
 }
 
 std::vector<int> SweepPanel::currentRuns() const {
@@ -443,51 +614,181 @@ std::vector<int> SweepPanel::currentRuns() const {
 }
 
 void SweepPanel::rebuildChart() {
-    for (QXYSeries* s : std::initializer_list<QXYSeries*>{allPoints_, frontPoints_, frontLine_, currentPoints_,
-                                                           selectedPoint_, noiseLine_})
+    for (QXYSeries* s : std::initializer_list<QXYSeries*>{allPoints_, frontPoints_, biasedPoints_, frontLine_,
+                                                          currentPoints_, selectedPoint_, noiseLine_})
         s->clear();
-    // The points shown: the finished sweep's, or those of the one running.
-    std::vector<const bench::SweepRun*> runs;
-    if (sweep_)
-        for (const bench::SweepRun& r : sweep_->runs)
-            runs.push_back(&r);
-    else
-        for (const auto& r : partialRuns_)
-            runs.push_back(r ? &*r : nullptr);
-    double xMax = 1.0, yMax = 1.0;
-    std::vector<std::pair<double, double>> points;
-    std::vector<int> shown;
-    for (std::size_t i = 0; i < runs.size(); ++i)
-        if (runs[i]) {
-            points.emplace_back(runs[i]->totalMs, runs[i]->indirect.mare);
-            shown.push_back(int(i));
-        }
-    const std::vector<bool> onFront = bench::paretoFront(points);
-    std::vector<std::pair<double, double>> frontXY;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        const QPointF p(points[k].first, 100.0 * points[k].second);
-        xMax = std::max(xMax, p.x());
-        yMax = std::max(yMax, p.y());
-        (onFront[k] ? frontPoints_ : allPoints_)->append(p);
-        if (onFront[k])
-            frontXY.emplace_back(p.x(), p.y());
+    for (QLineSeries* bar : spreadBars_) {
+        chart_->removeSeries(bar);
+        delete bar;
     }
-    std::ranges::sort(frontXY);
-    for (const auto& [x, y] : frontXY)
-        frontLine_->append(x, y);
+    spreadBars_.clear();
+
+    const std::vector<const bench::SweepRun*> runs = shownRuns();
+    const bool memory = costAxis() == CostAxis::Memory;
+    const std::vector<bool> onFront = frontOf(
+        runs, memory, [this](const bench::SweepRun& r) { return costPoint(r); },
+        [this](const bench::SweepRun& r) { return axisCost(r); });
+    plotted_.assign(runs.size(), std::nullopt);
+    double lo = 0.0, hi = 0.0, yMax = 1.0;
+    std::vector<QPointF> frontXY;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (!runs[i])
+            continue;
+        const bench::SweepRun& r = *runs[i];
+        const double cost = axisCost(r);
+        if (!(cost > 0.0))
+            continue; // not measured on this axis (memory in an older sweep)
+        const double error = 100.0 * r.indirect.symmetricError();
+        const QPointF p(std::log10(cost), error);
+        plotted_[i] = p;
+        double low = cost, high = cost;
+        const bool bar = !memory && r.total.rounds > 1 && r.total.q3 > r.total.q1 && r.total.q1 > 0.0;
+        if (bar) {
+            low = std::min(low, r.total.q1);
+            high = std::max(high, r.total.q3);
+        }
+        lo = lo > 0.0 ? std::min(lo, low) : low;
+        hi = std::max(hi, high);
+        yMax = std::max(yMax, error);
+        const bool isBiased = biased(r);
+        (isBiased ? biasedPoints_ : onFront[i] ? frontPoints_ : allPoints_)->append(p);
+        if (onFront[i])
+            frontXY.push_back(p);
+        if (bar) {
+            // The time's interquartile range over the rounds, as a bar through the point.
+            auto* line = new QLineSeries(chart_);
+            line->setName(tr("time spread (quartiles over rounds)"));
+            line->setPen(QPen(isBiased ? kBiasedColor : onFront[i] ? kFrontColor : kPointColor, 1.5));
+            line->append(std::log10(r.total.q1), error);
+            line->append(std::log10(r.total.q3), error);
+            chart_->addSeries(line);
+            line->attachAxis(axisX_);
+            line->attachAxis(axisY_);
+            const bool firstBar = spreadBars_.empty();
+            for (QLegendMarker* m : chart_->legend()->markers(line))
+                m->setVisible(firstBar);
+            spreadBars_.push_back(line);
+        }
+    }
+    std::ranges::sort(frontXY, [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
+    for (const QPointF& p : frontXY)
+        frontLine_->append(p);
     for (int i : currentRuns())
-        currentPoints_->append(sweep_->runs[std::size_t(i)].totalMs, 100.0 * sweep_->runs[std::size_t(i)].indirect.mare);
-    if (sweep_ && selected_ >= 0 && std::size_t(selected_) < sweep_->runs.size())
-        selectedPoint_->append(sweep_->runs[std::size_t(selected_)].totalMs,
-                               100.0 * sweep_->runs[std::size_t(selected_)].indirect.mare);
-    if (sweep_ && sweep_->referenceNoiseMare > 0.0) {
-        const double noise = 100.0 * sweep_->referenceNoiseMare;
-        noiseLine_->append(0.0, noise);
-        noiseLine_->append(xMax * 1.08, noise);
+        if (plotted_[std::size_t(i)])
+            currentPoints_->append(*plotted_[std::size_t(i)]);
+    if (selected_ >= 0 && std::size_t(selected_) < plotted_.size() && plotted_[std::size_t(selected_)])
+        selectedPoint_->append(*plotted_[std::size_t(selected_)]);
+
+    // The x range: the points with a margin, wide enough for two round ticks.
+    if (!(lo > 0.0)) {
+        lo = memory ? 1.0 : 1.0;
+        hi = 10.0;
+    }
+    double x0 = lo / 1.15, x1 = hi * 1.15;
+    const std::vector<double> ticks = bench::logTicks(x0, x1);
+    auto inside = [&] { return std::ranges::count_if(ticks, [&](double t) { return t >= x0 && t <= x1; }); };
+    if (inside() < 2) {
+        for (double t : ticks) { // the round ticks just around the range
+            if (t < x0)
+                lo = t;
+            if (t > x1 && hi < t) {
+                hi = t;
+                break;
+            }
+        }
+        x0 = std::min(x0, lo);
+        x1 = std::max(x1, hi);
+    }
+    for (const QString& label : axisX_->categoriesLabels())
+        axisX_->remove(label);
+    axisX_->setStartValue(std::log10(x0));
+    for (double t : ticks)
+        if (t >= x0 && t <= x1)
+            axisX_->append(QString::fromStdString(bench::tickLabel(t)), std::log10(t));
+    axisX_->setRange(std::log10(x0), std::log10(x1));
+    axisX_->setTitleText(memory ? tr("GPU memory, MiB (log scale)") : tr("GPU ms per frame (log scale)"));
+    chart_->setTitle(memory ? tr("Indirect light error against GPU memory")
+                            : tr("Indirect light error against GPU time"));
+
+    const bench::SweepRun* first = runs.empty() ? nullptr : runs.front();
+    if (first && first->indirect.noiseLogError > 0.0) {
+        const double noise = 100.0 * first->indirect.noiseSymmetricError();
+        noiseLine_->append(std::log10(x0), noise);
+        noiseLine_->append(std::log10(x1), noise);
         yMax = std::max(yMax, noise);
     }
-    axisX_->setRange(0.0, xMax * 1.08);
     axisY_->setRange(0.0, yMax * 1.08);
+    axisY_->applyNiceNumbers(); // ticks at 0, 50, 100 %, not at 70.2
+    rebuildRunsTable(runs, onFront);
+}
+
+void SweepPanel::rebuildRunsTable(const std::vector<const bench::SweepRun*>& runs,
+                                  const std::vector<bool>& onFront) {
+    const QSignalBlocker block(runsTable_);
+    runsTable_->setRowCount(int(runs.size()));
+    auto cell = [this](int row, int column, const QString& text, const QString& tip = {}) {
+        auto* item = new QTableWidgetItem(text);
+        if (!tip.isEmpty())
+            item->setToolTip(tip);
+        runsTable_->setItem(row, column, item);
+        return item;
+    };
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const int row = int(i);
+        const bench::SweepRun* r = runs[i];
+        const std::vector<bench::Setting>& settings = r ? r->settings
+                                                      : i < runningCombinations_.size()
+                                                          ? runningCombinations_[i]
+                                                          : std::vector<bench::Setting>{};
+        QTableWidgetItem* name = cell(row, kRunSetting, labelOf(settings));
+        if (!r) {
+            for (int c = kRunTime; c < kRunColumns; ++c)
+                cell(row, c, c == kRunTime ? tr("measuring...") : QStringLiteral("-"));
+            continue;
+        }
+        if (onFront[i])
+            name->setToolTip(tr("On the Pareto front of the chart's axis"));
+        cell(row, kRunTime,
+             r->total.rounds > 1
+                 ? tr("%1 ms ±%2").arg(r->total.median, 0, 'f', 2).arg(0.5 * r->total.spread(), 0, 'f', 2)
+                 : tr("%1 ms").arg(axisCostMs(*r), 0, 'f', 2),
+             r->total.rounds > 0 ? tr("%1; min %2 ms, max %3 ms")
+                                       .arg(timeText(*r))
+                                       .arg(r->total.min, 0, 'f', 2)
+                                       .arg(r->total.max, 0, 'f', 2)
+                                 : timeText(*r));
+        QStringList same;
+        if (r->total.rounds > 0)
+            for (std::size_t j = 0; j < runs.size(); ++j)
+                if (j != i && runs[j] && runs[j]->total.rounds > 0 &&
+                    bench::sameCost(r->total, runs[j]->total))
+                    same << QString::number(j + 1);
+        cell(row, kRunSame, same.join(", "));
+        cell(row, kRunMemory, memoryText(*r),
+             r->lpvBytes
+                 ? tr("LPV volumes %1").arg(QString::fromStdString(renderer::formatBytes(r->lpvBytes)))
+                 : QString());
+        cell(row, kRunError,
+             percent(r->indirect.symmetricError()) +
+                 (r->indirect.symmetricBelowNoise() ? tr(" (below noise)") : QString()),
+             tr("reference noise %1; MARE %2")
+                 .arg(percent(r->indirect.noiseSymmetricError()), percent(r->indirect.mare)));
+        const double ratio = bench::meanRatio(r->indirect);
+        QTableWidgetItem* mean =
+            cell(row, kRunMean,
+                 biased(*r) ? tr("%1x biased").arg(ratio, 0, 'f', 2) : tr("%1x").arg(ratio, 0, 'f', 2));
+        if (biased(*r)) {
+            mean->setForeground(kBiasedColor.darker(130));
+            mean->setToolTip(
+                tr("Mean outside 0.8-1.25x the reference's: biased, passed over by \"Cheapest within\""));
+        }
+    }
+    runsTable_->resizeColumnsToContents();
+    runsTable_->horizontalHeader()->setSectionResizeMode(kRunSetting, QHeaderView::Stretch);
+    if (selected_ >= 0 && selected_ < runsTable_->rowCount())
+        runsTable_->selectRow(selected_);
+    else
+        runsTable_->clearSelection();
 }
 
 int SweepPanel::runAt(const QPointF& point) const {
@@ -495,9 +796,13 @@ int SweepPanel::runAt(const QPointF& point) const {
         return -1;
     int best = -1;
     double bestDistance = 0.0;
-    for (std::size_t i = 0; i < sweep_->runs.size(); ++i) {
-        const double dx = (sweep_->runs[i].totalMs - point.x()) / std::max(axisX_->max(), 1e-9);
-        const double dy = (100.0 * sweep_->runs[i].indirect.mare - point.y()) / std::max(axisY_->max(), 1e-9);
+    const double xSpan = std::max(axisX_->max() - axisX_->min(), 1e-9);
+    const double ySpan = std::max(axisY_->max() - axisY_->min(), 1e-9);
+    for (std::size_t i = 0; i < plotted_.size(); ++i) {
+        if (!plotted_[i])
+            continue;
+        const double dx = (plotted_[i]->x() - point.x()) / xSpan;
+        const double dy = (plotted_[i]->y() - point.y()) / ySpan;
         const double d = dx * dx + dy * dy;
         if (best < 0 || d < bestDistance) {
             best = int(i);
@@ -507,6 +812,23 @@ int SweepPanel::runAt(const QPointF& point) const {
     return bestDistance < 1e-4 ? best : -1;
 }
 
+void SweepPanel::showSweep(std::shared_ptr<const bench::SavedSweep> sweep) {
+    job_.cancel();
+    sweep_ = std::move(sweep);
+    selected_ = -1;
+    runningCombinations_.clear();
+    partialRuns_.clear();
+    previews_.clear();
+    referencePreview_ = QImage();
+    if (sweep_) {
+        for (const scene::Image8& p : sweep_->previews)
+            previews_.push_back(toQImage(p));
+        referencePreview_ = toQImage(sweep_->referencePreview);
+    }
+    rebuildChart();
+    showRun(-1);
+}
+
 void SweepPanel::showRun(int index) {
     if (!sweep_ || index < 0 || std::size_t(index) >= sweep_->runs.size()) {
         detailText_->setText(tr("Hover a point to see its settings; click it to apply them."));
@@ -514,15 +836,41 @@ void SweepPanel::showRun(int index) {
         return;
     }
     const bench::SweepRun& r = sweep_->runs[std::size_t(index)];
-    const double ratio = r.indirect.meanReference > 0.0 ? r.indirect.meanTest / r.indirect.meanReference : 0.0;
-    detailText_->setText(tr("<b>%1</b><br>%2 ms per frame<br>indirect MARE %3 (reference noise %4)<br>"
-                            "indirect mean %5x the reference's<br>image MARE %6, SSIM %7")
-                             .arg(labelOf(r.settings).toHtmlEscaped())
-                             .arg(r.totalMs, 0, 'f', 1)
-                             .arg(percent(r.indirect.mare), percent(r.indirect.noiseMare))
-                             .arg(ratio, 0, 'f', 2)
-                             .arg(percent(r.image.mare))
-                             .arg(r.image.ssim, 0, 'f', 3));
+    const double ratio = bench::meanRatio(r.indirect);
+    QStringList same;
+    for (std::size_t j : bench::sameCostAs(sweep_->runs, std::size_t(index)))
+        same << labelOf(sweep_->runs[j].settings).toHtmlEscaped();
+    QString time = tr("GPU time %1 per frame").arg(timeText(r).toHtmlEscaped());
+    if (r.total.rounds > 1)
+        time += tr(" (median ± half the interquartile range; %1-%2 ms)")
+                    .arg(r.total.min, 0, 'f', 2)
+                    .arg(r.total.max, 0, 'f', 2);
+    const QString sameText = r.total.rounds == 0 ? QString()
+                             : same.isEmpty()
+                                 ? tr("no other setting costs the same within the noise")
+                                 : tr("the same cost within the noise as %1").arg(same.join(", "));
+    const QString memory = r.gpuBytes ? tr("GPU memory %1 (LPV volumes %2)")
+                                            .arg(QString::fromStdString(renderer::formatBytes(r.gpuBytes)),
+                                                 QString::fromStdString(renderer::formatBytes(r.lpvBytes)))
+                                      : tr("GPU memory not measured in this sweep");
+    const QString mean =
+        biased(r)
+            ? tr("<span style=\"color:#c06000\">mean %1x: biased</span> (outside 0.8-1.25x the reference's "
+                 "light; \"Cheapest within\" passes it over)")
+                  .arg(ratio, 0, 'f', 2)
+            : tr("mean %1x the reference's").arg(ratio, 0, 'f', 2);
+    QStringList lines{QStringLiteral("<b>%1</b>").arg(labelOf(r.settings).toHtmlEscaped()), time};
+    if (!sameText.isEmpty())
+        lines << sameText;
+    lines << memory
+          << tr("indirect error %1 symmetric (reference noise %2)%3")
+                 .arg(percent(r.indirect.symmetricError()), percent(r.indirect.noiseSymmetricError()),
+                      r.indirect.symmetricBelowNoise() ? tr(", below the noise") : QString())
+          << mean
+          << tr("indirect MARE %1 (reference noise %2)")
+                 .arg(percent(r.indirect.mare), percent(r.indirect.noiseMare))
+          << tr("image MARE %1, SSIM %2").arg(percent(r.image.mare)).arg(r.image.ssim, 0, 'f', 3);
+    detailText_->setText(lines.join("<br>"));
     const QImage run = std::size_t(index) < previews_.size() ? previews_[std::size_t(index)] : QImage();
     if (run.isNull() || referencePreview_.isNull()) {
         detailImage_->clear();
@@ -556,15 +904,30 @@ int SweepPanel::selectCheapestWithin(double maxErrorPercent) {
         status_->setText(tr("Run a sweep first"));
         return -1;
     }
-    std::vector<std::pair<double, double>> points;
-    for (const bench::SweepRun& r : sweep_->runs)
-        points.emplace_back(r.totalMs, 100.0 * r.indirect.mare);
-    const auto best = bench::cheapestWithin(points, maxErrorPercent);
-    selected_ = best ? int(*best) : -1;
+    const bool memory = costAxis() == CostAxis::Memory;
+    std::vector<bench::CostPoint> points;
+    std::vector<std::size_t> index;
+    bool biasedReach = false;
+    for (std::size_t i = 0; i < sweep_->runs.size(); ++i) {
+        const bench::SweepRun& r = sweep_->runs[i];
+        if (!(axisCost(r) > 0.0))
+            continue;
+        points.push_back(costPoint(r));
+        index.push_back(i);
+        biasedReach = biasedReach || (points.back().biased && 100.0 * points.back().error <= maxErrorPercent);
+    }
+    const auto best =
+        bench::cheapestWithin(points, maxErrorPercent / 100.0, memory ? 0.0 : bench::kSameCostFraction);
+    selected_ = best ? int(index[*best]) : -1;
     rebuildChart();
     showRun(selected_);
     if (!best)
-        detailText_->setText(tr("No setting of this sweep reaches %1% indirect MARE.").arg(maxErrorPercent));
+        detailText_->setText(
+            biasedReach
+                ? tr("Only biased settings (mean outside 0.8-1.25x the reference's) reach %1% symmetric "
+                     "error; none is chosen.")
+                      .arg(maxErrorPercent)
+                : tr("No setting of this sweep reaches %1% symmetric error.").arg(maxErrorPercent));
     return selected_;
 }
 

@@ -3,22 +3,30 @@
 // editor. The user picks parameters and values (by default the questions of
 // `lpv bench report`, each varied alone around the current settings), runs
 // them in the background with progress, time left and Stop, and sees each
-// setting's indirect-light error against its GPU time, with the Pareto front
-// and the current setting marked. Hovering a point shows its settings and
-// its indirect light beside the reference's; clicking applies its settings as
-// one undoable edit; "Cheapest within" selects the fastest setting under an
-// error bound. The last sweep is saved beside the project
-// (`Name.assets/sweep.json`) and shown again when it is opened.
+// setting's indirect-light error (the symmetric one, which does not reward a
+// dark LPV, issue #43) against its GPU time (median over interleaved rounds,
+// on a log axis with round ticks and the interquartile range as an error
+// bar) or its GPU memory, with the Pareto front, the current setting and the
+// biased settings (mean light outside 0.8-1.25x the reference's) marked. A
+// table lists every run with its time and spread, memory, error and mean.
+// Hovering a point shows its settings and its indirect light beside the
+// reference's; clicking applies its settings as one undoable edit; "Cheapest
+// within" selects the cheapest unbiased setting under an error bound. The
+// last sweep is saved beside the project (`Name.assets/sweep.json`) and
+// shown again when it is opened.
 #include "SweepJob.h"
 
+#include <QPointF>
 #include <QWidget>
 
 #include <memory>
 #include <optional>
 #include <functional>
 
+class QCategoryAxis;
 class QChart;
 class QChartView;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineSeries;
@@ -55,18 +63,32 @@ public:
     void applyRun(int index);
     // What hovering run `index`'s point shows (-1 clears it).
     void showRun(int index);
-    // Selects the fastest run whose indirect MARE is at most `maxErrorPercent`;
-    // returns its index, or -1 (and says so) when none is.
+    // Selects the cheapest unbiased run (on the chart's cost axis) whose
+    // indirect symmetric error is at most `maxErrorPercent`; returns its
+    // index, or -1 (and says why) when none is.
     int selectCheapestWithin(double maxErrorPercent);
     int selectedRun() const { return selected_; }
     // Runs whose settings are the document's current ones (marked in the plot).
     std::vector<int> currentRuns() const;
-    // Runs on the Pareto front of time against error.
+    // Runs on the Pareto front of the chart's cost against the symmetric error.
     std::vector<bool> front() const;
 
+    // The chart's x axis: GPU time (ms, the median over the timing rounds) or GPU memory (MiB).
+    enum class CostAxis { Time, Memory };
+    void setCostAxis(CostAxis axis);
+    CostAxis costAxis() const;
+    // Run `index`'s cost on that axis (ms or MiB; 0 when not measured).
+    double costOf(int index) const;
+    // Where run `index` is drawn in the chart's coordinates (x: log10 of its
+    // cost, y: symmetric error in %), or nothing when it is not drawn.
+    std::optional<QPointF> plottedPoint(int index) const;
+    // Shows `sweep` as if it had just been loaded (tests: synthetic runs).
+    void showSweep(std::shared_ptr<const bench::SavedSweep> sweep);
     // Test access.
     QTableWidget* questionTable() const { return questions_; }
     QChartView* chartView() const { return chartView_; }
+    QComboBox* axisBox() const { return axisChoice_; }
+    QTableWidget* runsTable() const { return runsTable_; }
     QLabel* detailText() const { return detailText_; }
     QLabel* detailImage() const { return detailImage_; }
     QString statusText() const;
@@ -84,12 +106,17 @@ private:
     void buildQuestions();
     void rebuildChart();
     void onRunFinished(int index, const bench::SweepRun& run, const QImage& preview);
-    void onFinished(std::shared_ptr<const bench::SavedSweep> sweep);
+    void onFinished(std::shared_ptr<const bench::SavedSweep> sweep, const QString& timing);
     void onFailed(const QString& message, bool cancelled);
     void onDocumentChanged(bool newProject);
     void saveBesideProject(const QString& projectPath);
     void loadBesideProject();
     int runAt(const QPointF& point) const;
+    // The runs shown: the finished sweep's, or those of the one running (null: not measured yet).
+    std::vector<const bench::SweepRun*> shownRuns() const;
+    bench::CostPoint costPoint(const bench::SweepRun& run) const;
+    double axisCost(const bench::SweepRun& run) const;
+    void rebuildRunsTable(const std::vector<const bench::SweepRun*>& runs, const std::vector<bool>& onFront);
 
     Document* document_;
     std::function<scene::Camera()> currentView_;
@@ -120,8 +147,13 @@ private:
     QLineSeries* frontLine_ = nullptr;
     QScatterSeries* currentPoints_ = nullptr;
     QScatterSeries* selectedPoint_ = nullptr;
+    QScatterSeries* biasedPoints_ = nullptr;
     QLineSeries* noiseLine_ = nullptr;
-    QValueAxis* axisX_ = nullptr;
+    std::vector<QLineSeries*> spreadBars_;        // one per timed point: its interquartile range
+    std::vector<std::optional<QPointF>> plotted_; // per run, in chart coordinates
+    QComboBox* axisChoice_ = nullptr;
+    QTableWidget* runsTable_ = nullptr;
+    QCategoryAxis* axisX_ = nullptr;
     QValueAxis* axisY_ = nullptr;
     QLabel* detailText_ = nullptr;
     QLabel* detailImage_ = nullptr;

@@ -12,6 +12,7 @@
 #include "TestPaths.h"
 #include "Viewport.h"
 
+#include "lpv/bench/Pareto.h"
 #include "lpv/bench/SavedSweep.h"
 
 #include <QChart>
@@ -99,6 +100,10 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     ASSERT_NE(panel->sweep(), nullptr) << panel->statusText().toStdString();
     const lpv::bench::SavedSweep& sweep = *panel->sweep();
     ASSERT_EQ(sweep.runs.size(), 3u);
+    EXPECT_TRUE(panel->statusText().contains("interleaved timing rounds"))
+        << panel->statusText().toStdString();
+    EXPECT_EQ(panel->runsTable()->rowCount(), 3);
+    EXPECT_TRUE(panel->runsTable()->item(1, 5)->text().contains("biased")) << "steps=0 has no indirect light";
     EXPECT_TRUE(std::ranges::any_of(texts, [](const QString& t) { return t.contains("Reference"); }));
     EXPECT_TRUE(std::ranges::any_of(texts, [](const QString& t) { return t.contains("left"); }))
         << "an estimate of the time left once a setting has run";
@@ -108,19 +113,25 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     }
     EXPECT_EQ(panel->currentRuns(), std::vector<int>{0});
 
-    // Every run is a point; the front is a subset with the fastest run on it.
+    // Every run is a point (steps=0 has no indirect light: biased); the front is
+    // the library's on time against the symmetric error.
     int points = 0;
     for (auto* s : panel->chartView()->chart()->series())
-        if (auto* scatter = qobject_cast<QScatterSeries*>(s); scatter && (scatter->name() == "settings" ||
-                                                                         scatter->name() == "on the front"))
+        if (auto* scatter = qobject_cast<QScatterSeries*>(s);
+            scatter && (scatter->name() == "settings" || scatter->name() == "on the front" ||
+                        scatter->name().startsWith("biased")))
             points += scatter->count();
     EXPECT_EQ(points, 3);
+    std::vector<lpv::bench::CostPoint> costs;
+    for (const auto& run : sweep.runs) {
+        costs.push_back(lpv::bench::timeErrorPoint(run));
+        EXPECT_GE(run.total.rounds, 3) << "timed in interleaved rounds";
+        EXPECT_GT(run.gpuBytes, 0u);
+    }
+    EXPECT_TRUE(costs[1].biased) << "steps=0: no indirect light at all";
     const std::vector<bool> front = panel->front();
-    std::size_t fastest = 0;
-    for (std::size_t i = 1; i < sweep.runs.size(); ++i)
-        if (sweep.runs[i].totalMs < sweep.runs[fastest].totalMs)
-            fastest = i;
-    EXPECT_TRUE(front[fastest]);
+    EXPECT_EQ(front, lpv::bench::paretoFront(costs, lpv::bench::kSameCostFraction));
+    EXPECT_TRUE(std::ranges::any_of(front, [](bool b) { return b; }));
 
     // Hover the steps=0 point with the mouse: its settings and images show.
     QChart* chart = panel->chartView()->chart();
@@ -132,7 +143,8 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     window.dock("sweeps")->show();
     window.dock("sweeps")->raise();
     QApplication::processEvents();
-    const QPointF value(sweep.runs[1].totalMs, 100.0 * sweep.runs[1].indirect.mare);
+    ASSERT_TRUE(panel->plottedPoint(1).has_value());
+    const QPointF value = *panel->plottedPoint(1);
     const QPoint at = panel->chartView()->mapFromScene(chart->mapToPosition(value, anySeries));
     QTest::mouseMove(panel->chartView()->viewport(), at);
     QTRY_VERIFY_WITH_TIMEOUT(panel->detailText()->text().contains("propagationSteps=0"), 5000);
@@ -147,8 +159,10 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     doc->undoStack()->undo();
     EXPECT_EQ(steps(doc), currentSteps);
 
-    // The cheapest under a bound every run meets is the fastest; under none, nothing.
-    EXPECT_EQ(panel->selectCheapestWithin(1e5), int(fastest));
+    // The cheapest unbiased run under a bound every run meets; under none, nothing.
+    const auto cheapest = lpv::bench::cheapestWithin(costs, 1e3, lpv::bench::kSameCostFraction);
+    EXPECT_EQ(panel->selectCheapestWithin(1e5), cheapest ? int(*cheapest) : -1);
+    EXPECT_NE(panel->selectCheapestWithin(1e5), 1) << "steps=0 is biased";
     EXPECT_EQ(panel->selectCheapestWithin(1e-6), -1);
 
     // Saved with the project, and read back when it is opened again.
