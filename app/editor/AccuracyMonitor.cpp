@@ -22,7 +22,13 @@ QImage toQImage(const scene::Image8& rgba) {
         .copy();
 }
 
-// The frame against the reference so far, with the images the viewport shows.
+// What changes the scene the reference traces (a parameter edit or a
+// preset does not; the view's cameras list and paths do not either).
+constexpr Changes kSceneChanges = Change::Transforms | Change::Structure | Change::Geometry |
+                                  Change::Materials | Change::Lights | Change::Sky;
+
+} // namespace
+
 std::shared_ptr<AccuracySample> measureFrame(const HdrFrame& frame, const reference::ReferenceImage& ref) {
     auto sample = std::make_shared<AccuracySample>();
     const auto start = std::chrono::steady_clock::now();
@@ -42,6 +48,12 @@ std::shared_ptr<AccuracySample> measureFrame(const HdrFrame& frame, const refere
     sample->referenceDisplay = toQImage(a.referenceDisplay);
     a.flipMap = {};
     a.testDisplay = a.referenceDisplay = {};
+    // The split as the frame is seen: one exposure (the frame's) and one
+    // operator for both halves, so equal radiance is an equal pixel.
+    const DisplayMapping mapping{frame.exposure, tonemapperOf(frame.tonemapper)};
+    sample->frameTonemapped = toQImage(tonemapImage(frame.pixels, frame.width, frame.height, mapping));
+    sample->referenceTonemapped =
+        toQImage(tonemapImage(indirect ? ref.indirectMulti : ref.image, ref.width, ref.height, mapping));
     sample->accuracy = std::move(a);
     sample->samplesPerPixel = ref.samplesPerPixel;
     sample->referenceSeconds = ref.seconds;
@@ -50,13 +62,6 @@ std::shared_ptr<AccuracySample> measureFrame(const HdrFrame& frame, const refere
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return sample;
 }
-
-// What changes the scene the reference traces (a parameter edit or a
-// preset does not; the view's cameras list and paths do not either).
-constexpr Changes kSceneChanges = Change::Transforms | Change::Structure | Change::Geometry |
-                                  Change::Materials | Change::Lights | Change::Sky;
-
-} // namespace
 
 AccuracyMonitor::AccuracyMonitor(Document* document, Viewport* viewport, QObject* parent)
     : QObject(parent), document_(document), viewport_(viewport) {
@@ -126,11 +131,18 @@ void AccuracyMonitor::setSplitShown(bool on) {
     showImages();
 }
 
+void AccuracyMonitor::setReferenceMapping(ReferenceMapping mapping) {
+    mapping_ = mapping;
+    showImages();
+}
+
 void AccuracyMonitor::showImages() {
     const bool have = tracing_ && latest_;
     viewport_->setErrorOverlay(have && heatMap_ ? latest_->heatMap : QImage());
-    if (have && split_)
+    if (have && split_ && mapping_ == ReferenceMapping::Preview)
         viewport_->setComparisonSplit(latest_->frameDisplay, latest_->referenceDisplay);
+    else if (have && split_)
+        viewport_->setComparisonSplit(latest_->frameTonemapped, latest_->referenceTonemapped);
     else
         viewport_->setComparisonSplit({}, {});
 }

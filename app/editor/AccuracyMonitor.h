@@ -9,6 +9,7 @@
 // the view, its size, the scene or a setting the reference itself depends
 // on changes; the renderer's own settings (the ones being tuned) leave it
 // converging.
+#include "DisplayMapping.h"
 #include "FrameWorker.h"
 #include "LiveReference.h"
 
@@ -40,7 +41,15 @@ struct AccuracySample {
     double measureMs = 0.0;                // how long the measurement took (off the GUI thread)
     QImage heatMap;                        // FLIP per pixel, magma
     QImage frameDisplay, referenceDisplay; // what FLIP compared: both with the reference's exposure
+    // Both through the frame's own exposure and tonemapper (issue #43): the
+    // split shows these unless asked for the preview mapping above.
+    QImage frameTonemapped, referenceTonemapped;
 };
+
+// The frame against the reference so far, with the images the split shows
+// (the reference's layer of the frame's output.view). Any thread.
+std::shared_ptr<AccuracySample> measureFrame(const HdrFrame& frame,
+                                             const reference::ReferenceImage& reference);
 
 class AccuracyMonitor : public QObject {
     Q_OBJECT
@@ -53,6 +62,9 @@ class AccuracyMonitor : public QObject {
     // The FLIP heat map over the view, and the LPV | reference split, from the last measurement.
     void setHeatMapShown(bool on);
     void setSplitShown(bool on);
+    // How the split shows the reference (and, the same, the frame).
+    void setReferenceMapping(ReferenceMapping mapping);
+    ReferenceMapping referenceMapping() const { return mapping_; }
     // The last measurement of the current view (null before the first one and after a change of view).
     const std::shared_ptr<const AccuracySample>& latest() const { return latest_; }
     const QString& status() const { return status_; }
@@ -84,6 +96,7 @@ class AccuracyMonitor : public QObject {
     bool tracing_ = false;
     bool heatMap_ = false;
     bool split_ = false;
+    ReferenceMapping mapping_ = ReferenceMapping::FrameTonemap;
     bool sceneChanged_ = true;
     unsigned generation_ = 0; // one per restart: measurements of an older one are dropped
     // What the reference traces now.

@@ -1,6 +1,9 @@
 #include "AccuracyPanel.h"
 
+#include "Viewport.h"
+
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGridLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -45,14 +48,28 @@ AccuracyPanel::AccuracyPanel(Document* document, Viewport* viewport, QWidget* pa
                             "largest)."));
     split_ = new QCheckBox(tr("Split: LPV | reference"), this);
     split_->setObjectName("referenceSplit");
-    split_->setToolTip(tr("Left half: the frame; right half: the reference, both with the reference's "
-                          "exposure, as they are compared."));
+    split_->setToolTip(tr("Left half: the frame; right half: the reference, both mapped alike (Reference "
+                          "mapping), so equal light shows as equal pixels."));
     auto* toggles = new QHBoxLayout;
     toggles->addWidget(trace_);
     toggles->addWidget(heatMap_);
     toggles->addWidget(split_);
     toggles->addStretch();
     layout->addLayout(toggles);
+    mapping_ = new QComboBox(this);
+    mapping_->setObjectName("referenceMapping");
+    mapping_->addItem(tr("frame's tonemap"));
+    mapping_->addItem(tr("preview x/(x+mean)"));
+    mapping_->setToolTip(tr(
+        "How the split and the live reference view (gi.method = reference) show the reference. frame's "
+        "tonemap: the frame's exposure (output.exposure, and the metered one on auto) and "
+        "output.tonemapper, as the frame itself is shown. preview: lpv reference --preview's x / (x + mean), "
+        "gamma 2.2, with the reference's mean for both halves of the split (what FLIP compares)."));
+    auto* mappingRow = new QHBoxLayout;
+    mappingRow->addWidget(new QLabel(tr("Reference mapping"), this));
+    mappingRow->addWidget(mapping_);
+    mappingRow->addStretch();
+    layout->addLayout(mappingRow);
 
     auto* grid = new QGridLayout;
     grid->addWidget(new QLabel(tr("<b>Frame</b>"), this), 0, 1);
@@ -91,6 +108,12 @@ AccuracyPanel::AccuracyPanel(Document* document, Viewport* viewport, QWidget* pa
     connect(trace_, &QCheckBox::toggled, monitor_, &AccuracyMonitor::setTracing);
     connect(heatMap_, &QCheckBox::toggled, monitor_, &AccuracyMonitor::setHeatMapShown);
     connect(split_, &QCheckBox::toggled, monitor_, &AccuracyMonitor::setSplitShown);
+    connect(mapping_, &QComboBox::currentIndexChanged, this, [this, viewport](int index) {
+        const ReferenceMapping mapping =
+            index == 1 ? ReferenceMapping::Preview : ReferenceMapping::FrameTonemap;
+        monitor_->setReferenceMapping(mapping);
+        viewport->setReferenceMapping(mapping);
+    });
     connect(monitor_, &AccuracyMonitor::measured, this, &AccuracyPanel::showSample);
     connect(monitor_, &AccuracyMonitor::statusChanged, this, [this](const QString& status) {
         status_->setText(status);

@@ -5,7 +5,10 @@
 // error against it (MARE, relMSE, SSIM, FLIP), each beside the error the
 // reference's own noise alone would cause, next to the frame's GPU time;
 // both update as the reference converges and as settings change. It can
-// lay the FLIP heat map over the view and split the view LPV | reference.
+// lay the FLIP heat map over the view and split the view LPV | reference,
+// both halves through the frame's exposure and tonemapper (or, as an
+// option, `--preview`'s mapping; the live reference view follows the same
+// choice).
 // The measuring happens in AccuracyMonitor; this only shows it.
 #include "AccuracyMonitor.h"
 
@@ -14,6 +17,7 @@
 #include <memory>
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 
 namespace lpv::editor {
@@ -30,6 +34,8 @@ class AccuracyPanel : public QWidget {
     QCheckBox* traceBox() const { return trace_; }
     QCheckBox* heatMapBox() const { return heatMap_; }
     QCheckBox* splitBox() const { return split_; }
+    // "frame's tonemap" (0) or "preview x/(x+mean)" (1).
+    QComboBox* mappingBox() const { return mapping_; }
     // The figure shown for a row ("MARE", "relMSE", "SSIM", "FLIP") in the
     // frame's column (noise = false) or the reference noise's.
     QString figureText(const QString& row, bool noise) const;
@@ -44,6 +50,7 @@ class AccuracyPanel : public QWidget {
     QCheckBox* trace_;
     QCheckBox* heatMap_;
     QCheckBox* split_;
+    QComboBox* mapping_;
     QLabel* values_[4][2] = {};
     QLabel* gpuTime_;
     QLabel* referenceInfo_;

@@ -59,7 +59,8 @@ std::vector<renderer::PassTiming> timingsOfThisFrame(std::vector<renderer::PassT
 // The frame's HDR image as the Accuracy dock measures it (RGBA floats to RGB).
 std::shared_ptr<const HdrFrame> readHdrFrame(const renderer::ForwardRenderer& renderer,
                                              const FrameRequest& request,
-                                             const std::vector<renderer::PassTiming>& timings) {
+                                             const std::vector<renderer::PassTiming>& timings,
+                                             const QImage& display) {
     const std::vector<float> rgba = renderer.readHdr();
     auto frame = std::make_shared<HdrFrame>();
     frame->width = renderer.width();
@@ -73,6 +74,9 @@ std::shared_ptr<const HdrFrame> readHdrFrame(const renderer::ForwardRenderer& re
     frame->camera = request.camera;
     frame->giMethod = request.parameters.getEnum("gi.method");
     frame->outputView = request.parameters.getEnum("output.view");
+    frame->exposure = renderer.displayExposure(request.parameters);
+    frame->tonemapper = request.parameters.getEnum("output.tonemapper");
+    frame->display = display;
     for (const renderer::PassTiming& t : timings)
         frame->gpuMs += t.lastMs;
     return frame;
@@ -257,7 +261,7 @@ void FrameWorker::run() {
         result->gpuMemory = gpuMemory;
         result->lpvNote = QString::fromStdString(renderer->lpvNote());
         if (result->error.isEmpty() && request.readHdr && !request.split)
-            result->hdr = readHdrFrame(*renderer, request, result->timings);
+            result->hdr = readHdrFrame(*renderer, request, result->timings, result->image);
         if (result->error.isEmpty() && request.visualizers.active()) {
             auto frame = std::make_shared<VisualizerFrame>();
             frame->cascades = renderer->lpvCascadeFrames();

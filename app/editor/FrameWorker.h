@@ -66,6 +66,11 @@ struct HdrFrame {
     std::string giMethod;          // gi.method of the frame
     std::string outputView;        // output.view: final, indirect or direct
     double gpuMs = 0.0;            // the frame's GPU time: the sum of its passes' times
+    // How the frame's display image was mapped (issue #43): a reference shown
+    // beside it goes through the same (DisplayMapping.h).
+    double exposure = 1.0;  // the scale tonemap.frag applied (renderer::ForwardRenderer::displayExposure)
+    std::string tonemapper; // output.tonemapper of the frame
+    QImage display;         // the frame as the GPU mapped it (RGBA8)
 };
 
 struct FrameResult {

@@ -22,16 +22,17 @@ struct LiveReference::Prepared {
     std::optional<reference::EmbreeScene> embree;
 };
 
-namespace {
-
-// As `lpv reference --preview` shows it (reference/Preview.h).
-QImage displayImage(const reference::ReferenceImage& r) {
-    const scene::Image8 rgba = reference::previewImage(r.image, r.width, 0, 0, r.width, r.height,
-                                                       reference::meanLuminance(r.image, r.coverage));
+QImage displayReference(const LinearImage& r, ReferenceMapping mapping,
+                        const scene::ParameterSet& parameters) {
+    if (r.width <= 0 || r.height <= 0)
+        return {};
+    const scene::Image8 rgba =
+        mapping == ReferenceMapping::Preview
+            ? reference::previewImage(r.pixels, r.width, 0, 0, r.width, r.height,
+                                      reference::meanLuminance(r.pixels, r.coverage))
+            : tonemapImage(r.pixels, r.width, r.height, meteredMapping(r.pixels, parameters));
     return QImage(rgba.pixels.data(), rgba.width, rgba.height, rgba.width * 4, QImage::Format_RGBA8888).copy();
 }
-
-} // namespace
 
 LiveReference::LiveReference(QObject* parent) : QObject(parent) {}
 
@@ -96,7 +97,7 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
         settings.emissiveLight = lights.emissive;
         const reference::PathTracer tracer(*prepared->embree, prepared->scene, camera, settings);
         tracer.render([this](const reference::TraceProgress&) { return !cancel_; },
-                      [this, generation](const reference::ReferenceImage& image) {
+                      [this, generation, params](const reference::ReferenceImage& image) {
                           // Its own noise: the MARE a noiseless copy of itself would show.
                           reference::MetricOptions noSsim;
                           noSsim.ssim = false;
@@ -104,7 +105,12 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
                               reference::compareImages({image.width, image.height, &image.image},
                                                        {image.width, image.height, &image.image},
                                                        &image.imageVariance, &image.coverage, noSsim);
-                          const QImage shown = displayImage(image);
+                          auto linear = std::make_shared<LinearImage>();
+                          linear->width = image.width;
+                          linear->height = image.height;
+                          linear->pixels = image.image;
+                          linear->coverage = image.coverage;
+                          const QImage shown = displayReference(*linear, mapping_, params);
                           const int spp = image.samplesPerPixel;
                           const double seconds = image.seconds;
                           std::shared_ptr<const reference::ReferenceImage> copy;
@@ -112,10 +118,11 @@ void LiveReference::restart(const scene::Scene& scene, const scene::ParameterSet
                               copy = std::make_shared<const reference::ReferenceImage>(image);
                           QMetaObject::invokeMethod(
                               this,
-                              [this, generation, shown, spp, noise, seconds, copy] {
+                              [this, generation, shown, linear = std::shared_ptr<const LinearImage>(linear),
+                               spp, noise, seconds, copy] {
                                   if (generation != generation_)
                                       return;
-                                  emit passDone(shown, spp, noise.noiseMare, seconds);
+                                  emit passDone(shown, linear, spp, noise.noiseMare, seconds);
                                   if (copy)
                                       emit imageDone(copy);
                               },

@@ -62,8 +62,10 @@ Viewport::Viewport(Document* document, QWidget* parent) : QWidget(parent), docum
     connect(&referenceTimer_, &QTimer::timeout, this, &Viewport::restartReference);
     connect(this, &Viewport::viewCameraChanged, this, [this] { scheduleReference(false); });
     connect(&reference_, &LiveReference::passDone, this,
-            [this](const QImage& image, int spp, double noise, double seconds) {
+            [this](const QImage& image, std::shared_ptr<const LinearImage> linear, int spp, double noise,
+                   double seconds) {
                 referenceImage_ = image;
+                referenceLinear_ = std::move(linear);
                 emit referenceProgress(spp, noise, seconds);
                 update();
             });
@@ -92,6 +94,9 @@ void Viewport::onDocumentChanged(Changes changes) {
         emit viewCameraChanged();
     }
     pending_ |= changes;
+    // An exposure or tonemapper edit shows on the last pass at once, before the restart's first.
+    if ((changes & Change::Parameters) && referenceLinear_ && showsReference())
+        referenceImage_ = displayReference(*referenceLinear_, referenceMapping_, document_->parameters());
     scheduleReference(changes & ~Changes(Change::Parameters | Change::Presets));
     update();
 }
@@ -109,6 +114,7 @@ void Viewport::scheduleReference(bool sceneChanged) {
         if (reference_.running() || !referenceImage_.isNull()) {
             reference_.stop();
             referenceImage_ = {};
+            referenceLinear_.reset();
             referenceSceneChanged_ = true;
             emit referenceProgress(0, 0.0, 0.0);
         }
@@ -485,6 +491,14 @@ void Viewport::setHdrReadback(bool on) {
 
 void Viewport::setErrorOverlay(const QImage& heatMap) {
     errorOverlay_ = heatMap;
+    update();
+}
+
+void Viewport::setReferenceMapping(ReferenceMapping mapping) {
+    referenceMapping_ = mapping;
+    reference_.setMapping(mapping);
+    if (referenceLinear_)
+        referenceImage_ = displayReference(*referenceLinear_, mapping, document_->parameters());
     update();
 }
 

@@ -120,6 +120,15 @@ public:
     // instead of the frame; null images: the frame as usual.
     void setComparisonSplit(const QImage& left, const QImage& right);
     bool comparisonSplitShown() const { return !comparisonLeft_.isNull() && !comparisonRight_.isNull(); }
+    // gi.method = reference: how the live reference is shown (issue #43): through
+    // the frame's exposure and tonemapper (the default) or `--preview`'s mapping.
+    void setReferenceMapping(ReferenceMapping mapping);
+    ReferenceMapping referenceMapping() const { return referenceMapping_; }
+    // The live reference's last pass as the view shows it (null before one), and before mapping.
+    const QImage& referenceDisplay() const { return referenceImage_; }
+    const std::shared_ptr<const LinearImage>& referenceLinear() const { return referenceLinear_; }
+    // The last frame as rendered (the GPU's display image, without overlays).
+    const QImage& frameImage() const { return shownImage_; }
     // The size frames render at (the widget's pixels times the resolution scale).
     QSize renderSize() const { return {renderWidth(), renderHeight()}; }
 
@@ -191,7 +200,9 @@ private:
     FrameWorker* worker_ = nullptr;
     QImage shownImage_;       // the last finished frame
     LiveReference reference_;
-    QImage referenceImage_;   // the live reference's last pass (gi.method = reference)
+    QImage referenceImage_; // the live reference's last pass (gi.method = reference), mapped for display
+    std::shared_ptr<const LinearImage> referenceLinear_; // the same pass before mapping
+    ReferenceMapping referenceMapping_ = ReferenceMapping::FrameTonemap;
     QTimer referenceTimer_;   // gathers changes before a restart
     bool referenceSceneChanged_ = true;
     std::optional<renderer::GpuMemoryInfo> gpuMemory_;

@@ -2,15 +2,20 @@
 // a reference of the view gives finite figures that change as samples add up
 // while the reference's noise falls; a renderer setting leaves the
 // reference converging; the heat map lies over the view and goes again; the
-// LPV | reference split shows the reference on its right half.
+// LPV | reference split shows the reference on its right half, both halves
+// through the frame's own exposure and tonemapper (issue #43: equal light is
+// an equal pixel; the CPU mapping is the GPU's to within one step of 8 bits),
+// or `--preview`'s mapping when asked.
 #include "AccuracyPanel.h"
 #include "Autosave.h"
+#include "DisplayMapping.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "Viewport.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QTest>
@@ -65,6 +70,24 @@ int differingPixels(const QImage& a, const QImage& b, const QRect& region, int t
                 ++count;
         }
     return count;
+}
+
+// The largest difference of any channel between two images of one size (255 when the sizes differ).
+int maxDifference(const QImage& a, const QImage& b) {
+    if (a.size() != b.size() || a.isNull())
+        return 255;
+    const QImage x = a.convertToFormat(QImage::Format_RGBA8888),
+                 y = b.convertToFormat(QImage::Format_RGBA8888);
+    int most = 0;
+    for (int row = 0; row < x.height(); ++row)
+        for (int i = 0; i < x.width() * 4; ++i)
+            most = std::max(most, std::abs(int(x.constScanLine(row)[i]) - int(y.constScanLine(row)[i])));
+    return most;
+}
+
+QImage toQImage(const lpv::scene::Image8& image) {
+    return QImage(image.pixels.data(), image.width, image.height, image.width * 4, QImage::Format_RGBA8888)
+        .copy();
 }
 
 } // namespace
@@ -149,9 +172,10 @@ TEST(AccuracyDock, HeatMapAndSplitShowOverTheView) {
     const auto sample = panel->monitor()->latest();
     ASSERT_TRUE(sample);
     const QImage split = vp->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
-    ASSERT_EQ(sample->referenceDisplay.size(), split.size()) << "rendered at the widget's size";
-    const QImage reference = sample->referenceDisplay.convertToFormat(QImage::Format_RGB32);
-    const QImage frame = sample->frameDisplay.convertToFormat(QImage::Format_RGB32);
+    ASSERT_EQ(sample->referenceTonemapped.size(), split.size()) << "rendered at the widget's size";
+    // By default both halves go through the frame's exposure and tonemapper.
+    const QImage reference = sample->referenceTonemapped.convertToFormat(QImage::Format_RGB32);
+    const QImage frame = sample->frameTonemapped.convertToFormat(QImage::Format_RGB32);
     const QRect right(split.width() / 2 + 4, 40, split.width() / 2 - 8, split.height() - 41);
     const QRect left(2, 40, split.width() / 2 - 8, split.height() - 41);
     const int samples = (right.width() / 2) * (right.height() / 2);
@@ -159,6 +183,98 @@ TEST(AccuracyDock, HeatMapAndSplitShowOverTheView) {
     EXPECT_LT(differingPixels(split, frame, left, 3), samples / 50) << "the left half is the frame";
     EXPECT_GT(differingPixels(frame, reference, right, 3), samples / 20)
         << "and the two differ (the reference's noise at least)";
+    EXPECT_LT(differingPixels(plain, frame, left, 3), samples / 50)
+        << "the left half is the frame as the view shows it (the GPU's mapping)";
+
+    // The preview mapping, as an option: x / (x + mean) with the reference's mean for both.
+    panel->mappingBox()->setCurrentIndex(1);
+    const QImage preview = vp->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    const QImage previewReference = sample->referenceDisplay.convertToFormat(QImage::Format_RGB32);
+    EXPECT_LT(differingPixels(preview, previewReference, right, 3), samples / 50);
+    EXPECT_GT(differingPixels(preview, split, right, 3), samples / 20) << "another mapping";
+    panel->mappingBox()->setCurrentIndex(0);
     panel->splitBox()->setChecked(false);
     EXPECT_FALSE(vp->comparisonSplitShown());
+}
+
+// The CPU mapping the split and the live reference use is the frame's own:
+// each tonemapper, on auto and on manual exposure, maps the frame's HDR
+// read-back to the GPU's display pixels within one step of 8 bits.
+TEST(AccuracyDock, CpuTonemapIsTheFramesOwn) {
+    Fixture f;
+    ASSERT_TRUE(f.open());
+    Viewport* vp = f.window->viewport();
+    Document* doc = f.window->document();
+    std::shared_ptr<const HdrFrame> last;
+    QObject::connect(vp, &Viewport::hdrFrameRendered,
+                     [&](std::shared_ptr<const HdrFrame> frame) { last = frame; });
+    vp->setHdrReadback(true);
+    for (const char* mode : {"auto", "manual"})
+        for (const char* tonemapper : {"aces", "reinhard", "uncharted2", "linear"}) {
+            doc->setParameter("output.exposureMode", lpv::scene::ParameterValue(std::string(mode)));
+            doc->setParameter("output.exposure",
+                              lpv::scene::ParameterValue(std::string(mode) == "manual" ? 1.5 : 0.5));
+            doc->setParameter("output.tonemapper", lpv::scene::ParameterValue(std::string(tonemapper)));
+            last.reset();
+            QTRY_VERIFY_WITH_TIMEOUT(vp->frameUpToDate() && last && last->tonemapper == tonemapper, 60000);
+            ASSERT_FALSE(last->display.isNull());
+            if (std::string(mode) == "manual") {
+                EXPECT_NEAR(last->exposure, std::exp2(1.5), 1e-6);
+            }
+            const lpv::editor::DisplayMapping mapping{last->exposure, tonemapperOf(last->tonemapper)};
+            const QImage cpu = toQImage(tonemapImage(last->pixels, last->width, last->height, mapping));
+            EXPECT_LE(maxDifference(cpu, last->display), 1) << mode << " " << tonemapper;
+        }
+    vp->setHdrReadback(false);
+}
+
+// Identical HDR images in both halves give identical pixels in both halves:
+// through the frame's mapping (the default) and through the preview's.
+TEST(AccuracyDock, EqualLightShowsAsEqualPixelsInBothHalves) {
+    Fixture f;
+    ASSERT_TRUE(f.open());
+    Viewport* vp = f.window->viewport();
+    const QSize size = vp->renderSize();
+    HdrFrame frame;
+    frame.width = size.width();
+    frame.height = size.height();
+    frame.outputView = "final";
+    frame.exposure = 1.7;
+    frame.tonemapper = "aces";
+    // Light that changes down the view and not across it (dark to bright, coloured).
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) {
+            const float t = float(y) / float(frame.height - 1);
+            frame.pixels.push_back(glm::vec3(4.0f * t * t, 2.0f * t, 0.05f + 0.5f * t));
+        }
+    lpv::reference::ReferenceImage reference;
+    reference.resize(frame.width, frame.height);
+    reference.samplesPerPixel = 16;
+    reference.image = frame.pixels;
+    std::fill(reference.coverage.begin(), reference.coverage.end(), 1.0f);
+    const std::shared_ptr<AccuracySample> sample = measureFrame(frame, reference);
+    ASSERT_TRUE(sample);
+    EXPECT_LE(maxDifference(sample->frameTonemapped, sample->referenceTonemapped), 1);
+    EXPECT_LE(maxDifference(sample->frameDisplay, sample->referenceDisplay), 1);
+    EXPECT_GT(maxDifference(sample->frameTonemapped, sample->frameDisplay), 8) << "two different mappings";
+    // The frame's mapping is the CPU twin of tonemap.frag with the frame's exposure.
+    const glm::vec3 expected =
+        mapToDisplay(frame.pixels[std::size_t(frame.width) * 20], {1.7, Tonemapper::Aces});
+    const QRgb got = sample->referenceTonemapped.pixel(frame.width - 1, 20);
+    EXPECT_NEAR(qRed(got), expected.r * 255.0, 1.0);
+    EXPECT_NEAR(qGreen(got), expected.g * 255.0, 1.0);
+
+    // In the view: the left half (frame) and the right half (reference) of each row agree.
+    vp->setComparisonSplit(sample->frameTonemapped, sample->referenceTonemapped);
+    ASSERT_TRUE(vp->comparisonSplitShown());
+    const QImage shown = vp->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    int differing = 0, rows = 0;
+    for (int y = 40; y < shown.height() - 4; y += 3, ++rows) {
+        const QRgb l = shown.pixel(shown.width() / 4, y), r = shown.pixel(3 * shown.width() / 4, y);
+        if (std::abs(qRed(l) - qRed(r)) > 1 || std::abs(qGreen(l) - qGreen(r)) > 1 ||
+            std::abs(qBlue(l) - qBlue(r)) > 1)
+            ++differing;
+    }
+    EXPECT_EQ(differing, 0) << "of " << rows << " rows";
+    vp->setComparisonSplit({}, {});
 }

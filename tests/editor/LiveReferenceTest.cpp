@@ -1,12 +1,16 @@
 // gi.method = reference in the editor (issue #26 item 2): the view shows the
 // path tracer's image, its samples add up while nothing changes, a camera
-// move starts it again, and leaving reference stops it.
+// move starts it again, and leaving reference stops it. It is shown through
+// the frame's exposure and tonemapper (issue #43), `--preview`'s mapping
+// being an option of the Accuracy dock.
+#include "AccuracyPanel.h"
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "Viewport.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSignalSpy>
@@ -46,6 +50,24 @@ TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
         for (int x = 0; x < shown.width(); x += 8)
             sum += qGray(shown.pixel(x, y));
     EXPECT_GT(sum / double((shown.height() / 8) * (shown.width() / 8)), 20.0);
+
+    // Mapped as a frame of these parameters would be; the preview's mapping on request.
+    ASSERT_TRUE(vp->referenceLinear());
+    const lpv::scene::ParameterSet& params = window.document()->parameters();
+    const QImage framed = displayReference(*vp->referenceLinear(), ReferenceMapping::FrameTonemap, params);
+    EXPECT_EQ(vp->referenceDisplay(), framed);
+    const lpv::editor::LinearImage& linear = *vp->referenceLinear();
+    const DisplayMapping mapping = meteredMapping(linear.pixels, params);
+    const std::size_t middle =
+        std::size_t(linear.height / 2) * std::size_t(linear.width) + std::size_t(linear.width / 2);
+    const glm::vec3 expected = mapToDisplay(linear.pixels[middle], mapping);
+    EXPECT_NEAR(qRed(framed.pixel(linear.width / 2, linear.height / 2)), expected.r * 255.0, 1.0);
+    window.accuracy()->mappingBox()->setCurrentIndex(1);
+    const QImage preview = displayReference(*vp->referenceLinear(), ReferenceMapping::Preview, params);
+    EXPECT_EQ(vp->referenceDisplay(), preview);
+    EXPECT_NE(preview, framed);
+    window.accuracy()->mappingBox()->setCurrentIndex(0);
+    EXPECT_EQ(vp->referenceDisplay(), framed);
 
     // A camera move starts again from one sample.
     lpv::scene::Camera moved = vp->viewCamera();
