@@ -242,8 +242,9 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
 
 bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
                      const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-                     const std::string& note, const bench::SweepTimingInfo& timing) {
-    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note, timing);
+                     const std::string& note, const bench::SweepTimingInfo& timing,
+                     const scene::ParameterSet& display) {
+    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note, timing, display);
     if (!written) {
         std::cerr << "lpv: " << written.error().describe() << "\n";
         return false;

@@ -72,7 +72,8 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
 // on failure prints the error and returns false.
 bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
                      const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-                     const std::string& note = "", const bench::SweepTimingInfo& timing = {});
+                     const std::string& note = "", const bench::SweepTimingInfo& timing = {},
+                     const scene::ParameterSet& display = {});
 
 // --rounds N, --time-budget S and --spread-target PERCENT into `plan` (its
 // fields are the defaults); a usage error's text, or empty. Shared by every

@@ -12,6 +12,7 @@
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
 #include "lpv/bench/Settings.h"
+#include "lpv/bench/SavedSweep.h"
 #include "lpv/bench/SharedTiming.h"
 
 #include "lpv/importers/ImageIO.h"
@@ -52,8 +53,10 @@ settings within 10% and 25% of the lowest unbiased error; settings of the
 same cost within the noise), time-<KEY>.png (time per pass against each
 swept key), error-time.png (symmetric error against total time on a log
 axis, the times' spread as bars, Pareto front and biased runs marked),
-error-memory.png (the same against GPU memory) and crops.png (reference
-and each setting's indirect light, one exposure).
+error-memory.png (the same against GPU memory), crops.png (the reference's
+indirect light and each setting's) and frames.png (the reference image and
+each setting's final frame), each sheet through the project's exposure and
+tonemapper, metered once on the reference.
 
   --reference REF.exr   Reference traced beforehand at the same size and
                         camera; without it one is traced first (--spp,
@@ -324,14 +327,17 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
             return kFailure;
         }
         SweepShard out{shard, int(combinations.size()), command, machine, *width, *height, *referenceFile,
-                       fs::absolute(*referenceFile).string(), *referenceHash, runIndices, std::move(runs)};
+                       fs::absolute(*referenceFile).string(), *referenceHash, runIndices, std::move(runs), {}, timing};
+        for (const auto& [key, value] : bench::settingsOf(project.parameters))
+            if (key.starts_with("output."))
+                out.display.emplace_back(key, value);
         if (!writeSweepShard(outDir, out))
             return kFailure;
         std::printf("shard %s: %zu of %zu combinations; join the shards with `lpv bench merge`\n",
                     reference::formatShard(shard).c_str(), out.runs.size(), combinations.size());
         return kOk;
     }
-    if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref, "", timing))
+    if (!writeSweepFiles(outDir, runs, *width, *height, command, machine, ref, "", timing, project.parameters))
         return kFailure;
     if (runsOut)
         *runsOut = std::move(runs);

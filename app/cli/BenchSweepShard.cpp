@@ -61,21 +61,45 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
         s.referenceFile = j.at("reference").at("file").get<std::string>();
         s.referenceAbsolute = j.at("reference").at("absolute").get<std::string>();
         s.referenceHash = j.at("reference").at("hash").get<std::string>();
+        for (const Json& kv : j.value("display", Json::array()))
+            s.display.emplace_back(kv.at(0).get<std::string>(), kv.at(1).get<std::string>());
+        if (j.contains("timing")) {
+            s.timing.rounds = j["timing"].at("rounds").get<int>();
+            s.timing.stopReason = j["timing"].at("stopReason").get<std::string>();
+            s.timing.load = j["timing"].at("load").get<std::string>();
+        }
         for (const Json& r : j.at("runs")) {
             SweepRun run = bench::sweepRunFromJson(r);
             const int index = r.at("index").get<int>();
             auto pixels = importers::readImageChannels(dir / runImageName(index));
             if (!pixels)
                 return std::unexpected(pixels.error());
-            if (pixels->width != s.width || pixels->height != s.height || pixels->names.size() != 3)
+            // R, G, B: the indirect light; image.R, image.G, image.B: the final frame (absent in older shards).
+            auto channel = [&](const std::string& name) -> int {
+                const auto it = std::ranges::find(pixels->names, name);
+                return it == pixels->names.end() ? -1 : int(it - pixels->names.begin());
+            };
+            const int cr = channel("R"), cg = channel("G"), cb = channel("B");
+            const int ir = channel("image.R"), ig = channel("image.G"), ib = channel("image.B");
+            if (pixels->width != s.width || pixels->height != s.height || cr < 0 || cg < 0 || cb < 0)
                 return scene::makeError(scene::ErrorCode::InvalidValue, (dir / runImageName(index)).string(),
                                         "",
                                         "not this shard's " + std::to_string(s.width) + "x" +
                                             std::to_string(s.height) + " RGB image");
-            run.indirectPixels.resize(pixels->pixels.size() / 3);
-            for (std::size_t i = 0; i < run.indirectPixels.size(); ++i)
-                run.indirectPixels[i] = {pixels->pixels[3 * i], pixels->pixels[3 * i + 1],
-                                         pixels->pixels[3 * i + 2]};
+            const std::size_t n = pixels->names.size();
+            const std::size_t count = pixels->pixels.size() / std::max<std::size_t>(n, 1);
+            run.indirectPixels.resize(count);
+            for (std::size_t i = 0; i < count; ++i)
+                run.indirectPixels[i] = {pixels->pixels[n * i + std::size_t(cr)],
+                                         pixels->pixels[n * i + std::size_t(cg)],
+                                         pixels->pixels[n * i + std::size_t(cb)]};
+            if (ir >= 0 && ig >= 0 && ib >= 0) {
+                run.imagePixels.resize(count);
+                for (std::size_t i = 0; i < count; ++i)
+                    run.imagePixels[i] = {pixels->pixels[n * i + std::size_t(ir)],
+                                          pixels->pixels[n * i + std::size_t(ig)],
+                                          pixels->pixels[n * i + std::size_t(ib)]};
+            }
             s.indices.push_back(index);
             s.runs.push_back(std::move(run));
         }
@@ -92,13 +116,23 @@ bool shardRunsCombination(const reference::ShardSpec& shard, int combinationInde
 }
 
 bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
+    Json display = Json::array();
+    for (const auto& [key, value] : shard.display)
+        display.push_back({key, value});
     Json runs = Json::array();
     for (std::size_t k = 0; k < shard.runs.size(); ++k) {
         const SweepRun& r = shard.runs[k];
         const int index = shard.indices[k];
+        const bool frame = r.imagePixels.size() == r.indirectPixels.size();
         importers::FloatChannels rgb{shard.width, shard.height, {"R", "G", "B"}, {}, {}};
-        for (const glm::vec3& c : r.indirectPixels)
+        if (frame)
+            rgb.names.insert(rgb.names.end(), {"image.R", "image.G", "image.B"});
+        for (std::size_t i = 0; i < r.indirectPixels.size(); ++i) {
+            const glm::vec3& c = r.indirectPixels[i];
             rgb.pixels.insert(rgb.pixels.end(), {c.r, c.g, c.b});
+            if (frame)
+                rgb.pixels.insert(rgb.pixels.end(), {r.imagePixels[i].r, r.imagePixels[i].g, r.imagePixels[i].b});
+        }
         if (auto ok = importers::writeImageChannels(dir / runImageName(index), rgb); !ok) {
             std::cerr << "lpv: " << ok.error().describe() << "\n";
             return false;
@@ -119,6 +153,11 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
                   {{"file", shard.referenceFile},
                    {"absolute", shard.referenceAbsolute},
                    {"hash", shard.referenceHash}}},
+                 {"display", display},
+                 {"timing",
+                  {{"rounds", shard.timing.rounds},
+                   {"stopReason", shard.timing.stopReason},
+                   {"load", shard.timing.load}}},
                  {"runs", runs}};
     return writeReportFiles({{(dir / "shard.json").string(), j.dump(1) + "\n"}});
 }
@@ -234,7 +273,11 @@ int benchMerge(Args args) {
     fs::create_directories(outDir, ec);
     if (ec)
         return refuse(outDir.string(), "cannot create the folder: " + ec.message());
-    if (!writeSweepFiles(outDir, runs, first.width, first.height, first.command, first.machine, ref, note))
+    scene::ParameterSet display;
+    for (const auto& [key, value] : first.display)
+        (void)display.setFromText(key, value, "shard.json");
+    if (!writeSweepFiles(outDir, runs, first.width, first.height, first.command, first.machine, ref, note,
+                         first.timing, display))
         return kFailure;
     std::printf("merged %d shards: %d runs\n", first.shard.count, first.combinations);
     return kOk;

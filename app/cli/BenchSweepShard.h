@@ -2,8 +2,8 @@
 // A sharded sweep (issue #28, docs/cluster.md): `lpv bench PROJECT --sweep ...
 // --reference REF.exr --shard I/N --out DIR` renders the combinations whose
 // index is I modulo N and writes DIR/shard.json (each run's timings and
-// errors, numbers kept exactly) and DIR/run-K.exr (run K's indirect light,
-// for the crops); `lpv bench merge OUT SHARD_DIR...` checks the shards
+// errors, numbers kept exactly) and DIR/run-K.exr (run K's indirect light
+// and final frame, for the crops and frames sheets); `lpv bench merge OUT SHARD_DIR...` checks the shards
 // belong together and writes the files one unsharded sweep would.
 #include "BenchReport.h"
 #include "Cli.h"
@@ -27,6 +27,9 @@ struct SweepShard {
     std::string referenceHash;    // fileContentHash (ReferenceFile.h) of it
     std::vector<int> indices;     // each run's combination index, in run order
     std::vector<SweepRun> runs;
+    // The project's output.* overrides: the pictures' exposure and tonemapper, as one process shows them.
+    std::vector<Setting> display;
+    bench::SweepTimingInfo timing; // how the shard's times were taken
 };
 
 // The combinations shard `shard` renders: those whose index is I modulo N.

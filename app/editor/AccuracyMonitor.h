@@ -9,7 +9,7 @@
 // the view, its size, the scene or a setting the reference itself depends
 // on changes; the renderer's own settings (the ones being tuned) leave it
 // converging.
-#include "DisplayMapping.h"
+#include "lpv/renderer/DisplayMapping.h"
 #include "FrameWorker.h"
 #include "LiveReference.h"
 
@@ -27,6 +27,15 @@
 class QThread;
 
 namespace lpv::editor {
+
+// The display mapping lives in the renderer (Qt-free); the editor names it unqualified.
+using renderer::DisplayMapping;
+using renderer::mapToDisplay;
+using renderer::meteredMapping;
+using renderer::ReferenceMapping;
+using renderer::Tonemapper;
+using renderer::tonemapImage;
+using renderer::tonemapperOf;
 
 class Document;
 class Viewport;

@@ -7,7 +7,7 @@
 // tonemapper, issue #43, or `--preview`'s mapping when asked), its sample
 // count and its own noise level (the MARE its variance implies, as `lpv
 // compare` reports it).
-#include "DisplayMapping.h"
+#include "lpv/renderer/DisplayMapping.h"
 
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/scene/Camera.h"
@@ -22,6 +22,15 @@
 #include <thread>
 
 namespace lpv::editor {
+
+// The display mapping lives in the renderer (Qt-free); the editor names it unqualified.
+using renderer::DisplayMapping;
+using renderer::mapToDisplay;
+using renderer::meteredMapping;
+using renderer::ReferenceMapping;
+using renderer::Tonemapper;
+using renderer::tonemapImage;
+using renderer::tonemapperOf;
 
 // A pass's image before any display mapping.
 struct LinearImage {

@@ -65,6 +65,7 @@ void SweepJob::run(SweepJobSpec spec) {
             key = reference::meanLuminance(layer, coverage);
         bench::SweepRun kept = run;
         kept.indirectPixels.clear();
+        kept.imagePixels.clear();
         const scene::Image8 preview =
             reference::previewImage(run.indirectPixels, spec.width, 0, 0, spec.width, spec.height, key);
         saved->previews[std::size_t(index)] = preview;
@@ -85,8 +86,10 @@ void SweepJob::run(SweepJobSpec spec) {
     saved->referenceSeconds = ref.seconds;
     saved->machine = bench::describeMachine(result->gl.renderer, result->gl.version);
     saved->runs = std::move(result->runs);
-    for (bench::SweepRun& r : saved->runs)
+    for (bench::SweepRun& r : saved->runs) {
         r.indirectPixels.clear();
+        r.imagePixels.clear();
+    }
     if (!saved->runs.empty())
         saved->referenceNoiseMare = saved->runs.front().indirect.noiseMare;
     std::shared_ptr<const bench::SavedSweep> done = saved;

@@ -235,6 +235,7 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
                                         : measure(run.indirectPixels, ref.indirectMulti, ref.indirectMultiVariance);
         run.indirectOne = measure(run.indirectPixels, ref.indirectOne, ref.indirectOneVariance);
         run.image = measure(image, ref.image, ref.imageVariance);
+        run.imagePixels = image;
         if (callbacks.runMeasured)
             callbacks.runMeasured(run);
         result.runs.push_back(std::move(run));

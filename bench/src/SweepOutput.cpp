@@ -4,7 +4,7 @@
 #include "lpv/bench/Plots.h"
 
 #include "lpv/importers/ImageIO.h"
-#include "lpv/reference/Preview.h"
+#include "lpv/renderer/DisplayMapping.h"
 #include "lpv/renderer/GpuMemory.h"
 #include "lpv/scene/Project.h"
 
@@ -23,10 +23,19 @@ namespace {
 
 
 
-// A centre crop of an irradiance image; one key gives every crop the same exposure.
-scene::Image8 crop(const std::vector<glm::vec3>& pixels, int width, int height, float key) {
+// A centre crop of a linear image through the frame's display mapping; one
+// mapping gives every crop the same exposure (issue #43: the reference is
+// shown as the frame is, not through `--preview`'s x / (x + mean)).
+scene::Image8 crop(const std::vector<glm::vec3>& pixels, int width, int height,
+                   const renderer::DisplayMapping& mapping) {
     const int w = std::min(width, 200), h = std::min(height, 150);
-    return reference::previewImage(pixels, width, (width - w) / 2, (height - h) / 2, w, h, key);
+    const int x0 = (width - w) / 2, y0 = (height - h) / 2;
+    std::vector<glm::vec3> part(std::size_t(w) * std::size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            part[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
+                pixels[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)];
+    return renderer::tonemapImage(part, w, h, mapping);
 }
 
 double numeric(const std::string& value, std::size_t index) {
@@ -284,7 +293,8 @@ scene::Expected<std::vector<fs::path>> writeSweepOutputs(const fs::path& outDir,
                                                          int width, int height, const std::string& command,
                                                          const std::string& machine,
                                                          const reference::ReferenceImage& ref,
-                                                         const std::string& note, const SweepTimingInfo& timing) {
+                                                         const std::string& note, const SweepTimingInfo& timing,
+                                                         const scene::ParameterSet& display) {
     // Columns and series: every swept key, every pass any run timed.
     std::vector<std::string> keys, passes;
     for (const SweepRun& r : runs)
@@ -370,14 +380,26 @@ scene::Expected<std::vector<fs::path>> writeSweepOutputs(const fs::path& outDir,
     // The crops show the layer the runs are measured against (the first run's bounce count).
     const std::vector<glm::vec3>& shownLayer =
         runs.empty() || runs.front().bounces == 1 ? ref.indirectOne : ref.indirectMulti;
-    const float key = reference::meanLuminance(shownLayer, ref.coverage);
+    const renderer::DisplayMapping layerMapping = renderer::meteredMapping(shownLayer, display);
     std::vector<std::pair<std::string, scene::Image8>> crops{
         {"reference, " + std::to_string(runs.empty() ? 1 : runs.front().bounces) + " bounce",
-         crop(shownLayer, ref.width, ref.height, key)}};
+         crop(shownLayer, ref.width, ref.height, layerMapping)}};
     for (const SweepRun& r : runs)
-        crops.emplace_back(sweepLabel(r.settings), crop(r.indirectPixels, width, height, key));
+        crops.emplace_back(sweepLabel(r.settings), crop(r.indirectPixels, width, height, layerMapping));
     if (!writePng("crops.png", contactSheet(crops, 4)))
         return std::unexpected(*failure);
+    // The final frames beside the reference's image, one exposure metered on the reference.
+    if (!runs.empty() && std::ranges::all_of(runs, [&](const SweepRun& r) {
+            return r.imagePixels.size() == std::size_t(width) * std::size_t(height);
+        })) {
+        const renderer::DisplayMapping imageMapping = renderer::meteredMapping(ref.image, display);
+        std::vector<std::pair<std::string, scene::Image8>> frames{
+            {"reference", crop(ref.image, ref.width, ref.height, imageMapping)}};
+        for (const SweepRun& r : runs)
+            frames.emplace_back(sweepLabel(r.settings), crop(r.imagePixels, width, height, imageMapping));
+        if (!writePng("frames.png", contactSheet(frames, 4)))
+            return std::unexpected(*failure);
+    }
 
     const std::pair<const char*, std::string> texts[] = {
         {"sweep.csv", sweepCsv(runs, keys, passes)},

@@ -160,7 +160,8 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     fs::create_directories(dir);
     auto written = bench::writeSweepOutputs(dir, result->runs, kWidth, kHeight, "test", "machine", c.reference);
     ASSERT_TRUE(written.has_value()) << written.error().describe();
-    for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "error-memory.png", "crops.png"})
+    for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "error-memory.png", "crops.png",
+                             "frames.png"})
         EXPECT_TRUE(fs::exists(dir / name)) << name;
     std::ifstream in(dir / "sweep.json");
     const auto json = nlohmann::json::parse(in);

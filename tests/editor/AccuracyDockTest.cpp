@@ -8,7 +8,7 @@
 // or `--preview`'s mapping when asked.
 #include "AccuracyPanel.h"
 #include "Autosave.h"
-#include "DisplayMapping.h"
+#include "lpv/renderer/DisplayMapping.h"
 #include "Document.h"
 #include "MainWindow.h"
 #include "TestPaths.h"
@@ -221,7 +221,7 @@ TEST(AccuracyDock, CpuTonemapIsTheFramesOwn) {
             if (std::string(mode) == "manual") {
                 EXPECT_NEAR(last->exposure, std::exp2(1.5), 1e-6);
             }
-            const lpv::editor::DisplayMapping mapping{last->exposure, tonemapperOf(last->tonemapper)};
+            const lpv::renderer::DisplayMapping mapping{last->exposure, tonemapperOf(last->tonemapper)};
             const QImage cpu = toQImage(tonemapImage(last->pixels, last->width, last->height, mapping));
             EXPECT_LE(maxDifference(cpu, last->display), 1) << mode << " " << tonemapper;
         }

@@ -44,6 +44,7 @@ struct SweepRun {
     reference::ErrorMetrics indirectOne; // against the one-bounce indirect irradiance
     reference::ErrorMetrics image;       // final image against the reference image
     std::vector<glm::vec3> indirectPixels;
+    std::vector<glm::vec3> imagePixels; // the final frame, linear HDR (for the files' pictures; not in sweep.json)
     // gi.method = radiosity: the saved solution's solve time (its cost is paid
     // once, before any frame) and residual; 0 for other runs.
     double solveSeconds = 0.0;

@@ -4,7 +4,8 @@
 // settings whose error is within 10% and 25% of the lowest unbiased one) and the PNG plots (time per
 // pass against each swept key, error against time on a log axis with the
 // times' spread and the Pareto front, error against GPU memory, crops of
-// each run's indirect light). Written by a sweep itself and, from its
+// each run's indirect light and of its final frame beside the reference's,
+// all through the frame's exposure and tonemapper: renderer/DisplayMapping.h). Written by a sweep itself and, from its
 // shards, by `lpv bench merge`, so both give the same files.
 #include "lpv/bench/Sweep.h"
 
@@ -39,7 +40,11 @@ std::optional<std::size_t> cheapestWithinBest(const std::vector<SweepRun>& runs,
 scene::Expected<std::vector<std::filesystem::path>> writeSweepOutputs(
     const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
     const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-    const std::string& note = "", const SweepTimingInfo& timing = {});
+    const std::string& note = "", const SweepTimingInfo& timing = {},
+    const scene::ParameterSet& display = {});
+// `display`: the parameters whose output.exposure, output.exposureMode and
+// output.tonemapper show the pictures (the project's; the registry's defaults
+// when empty), metered once on the reference so every picture shares one exposure.
 
 // The runs that cost the same as run `index` within the noise (sameCost), by index.
 std::vector<std::size_t> sameCostAs(const std::vector<SweepRun>& runs, std::size_t index);

@@ -5,7 +5,7 @@
 // Accuracy dock's LPV | reference split, the live reference view) goes
 // through the same curve and equal radiance shows as equal pixels. The
 // `--preview` mapping (x / (x + mean), reference/Preview.h) stays an option.
-// Qt-free: it could move beside renderer/AutoExposure.h's CPU twin.
+// Qt-free, beside AutoExposure.h's CPU twin: the editor and the sweeps' images use it.
 #include "lpv/scene/Image.h"
 #include "lpv/scene/ParameterRegistry.h"
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace lpv::editor {
+namespace lpv::renderer {
 
 // output.tonemapper, in tonemap.frag's numbering.
 enum class Tonemapper { Aces, Reinhard, Uncharted2, Linear };
@@ -44,4 +44,4 @@ scene::Image8 tonemapImage(const std::vector<glm::vec3>& hdr, int width, int hei
 // this image (renderer/AutoExposure.h's CPU twin, at once, no adaptation).
 DisplayMapping meteredMapping(const std::vector<glm::vec3>& hdr, const scene::ParameterSet& parameters);
 
-} // namespace lpv::editor
+} // namespace lpv::renderer

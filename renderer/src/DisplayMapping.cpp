@@ -1,11 +1,11 @@
-#include "DisplayMapping.h"
+#include "lpv/renderer/DisplayMapping.h"
 
 #include "lpv/renderer/AutoExposure.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace lpv::editor {
+namespace lpv::renderer {
 
 namespace {
 
@@ -84,4 +84,4 @@ DisplayMapping meteredMapping(const std::vector<glm::vec3>& hdr, const scene::Pa
     return m;
 }
 
-} // namespace lpv::editor
+} // namespace lpv::renderer
