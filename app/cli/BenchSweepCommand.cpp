@@ -305,7 +305,8 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
                         c.timesFrom->string().c_str());
     }
     if (spec.rounds.maxRounds > 0)
-        std::printf("\ntimed in %d interleaved rounds (%s); %s\n", swept->rounds, swept->stopReason.c_str(),
+        std::printf("\ntimed in %d interleaved round%s (%s); %s\n", swept->rounds, swept->rounds == 1 ? "" : "s",
+                    swept->stopReason.c_str(),
                     swept->load.c_str());
 
     const renderer::GlInfo& gl = swept->gl;

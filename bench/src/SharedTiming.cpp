@@ -118,6 +118,10 @@ std::vector<double> averageRanks(const std::vector<double>& v) {
 
 } // namespace
 
+bool rankingAgrees(const TimingAgreement& g) {
+    return g.settings > 0 && g.distinctSpearman >= 0.95 && g.discordantPairs == 0;
+}
+
 double spearman(const std::vector<double>& x, const std::vector<double>& y) {
     const std::size_t n = std::min(x.size(), y.size());
     if (n < 2)
@@ -163,6 +167,23 @@ TimingAgreement compareTimings(const SharedTiming& a, const SharedTiming& b) {
             ++out.sameCostInBoth;
     }
     out.spearman = spearman(x, y);
+    std::vector<std::size_t> byTime(first.size());
+    for (std::size_t i = 0; i < byTime.size(); ++i)
+        byTime[i] = i;
+    std::ranges::sort(byTime, [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+    std::vector<std::size_t> kept;
+    for (std::size_t i : byTime)
+        if (std::ranges::none_of(kept, [&](std::size_t k) {
+                return sameCost(first[i]->total, first[k]->total) || sameCost(second[i]->total, second[k]->total);
+            }))
+            kept.push_back(i);
+    std::vector<double> keptX, keptY;
+    for (std::size_t i : kept) {
+        keptX.push_back(x[i]);
+        keptY.push_back(y[i]);
+    }
+    out.distinctSettings = int(kept.size());
+    out.distinctSpearman = spearman(keptX, keptY);
     for (std::size_t i = 0; i < first.size(); ++i)
         for (std::size_t j = i + 1; j < first.size(); ++j) {
             if (sameCost(first[i]->total, first[j]->total) || sameCost(second[i]->total, second[j]->total))

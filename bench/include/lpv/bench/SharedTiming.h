@@ -50,7 +50,14 @@ scene::Expected<void> applySharedTiming(const SharedTiming& timing, const scene:
 // within its first spread.
 struct TimingAgreement {
     int settings = 0;        // in both timings
-    double spearman = 0.0;   // rank correlation of the medians (ties: average ranks)
+    double spearman = 0.0;   // rank correlation of all their medians (ties: average ranks)
+    // The settings whose times differ by more than the noise: from the
+    // cheapest up (in A), each setting that is a different cost (sameCost)
+    // from every one kept so far, in both runs; and the rank correlation of
+    // their medians. Settings of the same cost may come in either order in
+    // another run: their order is noise, and issue #43's target counts only these.
+    int distinctSettings = 0;
+    double distinctSpearman = 0.0;
     int distinctPairs = 0;   // pairs both runs call different costs
     int discordantPairs = 0; // of those, the pairs the two runs order oppositely
     int sameCostInBoth = 0;  // settings whose two medians are the same cost (sameCost)
@@ -59,6 +66,9 @@ struct TimingAgreement {
     double medianSpread = 0.0; // the median relative spread (IQR / median) over both runs' settings
 };
 TimingAgreement compareTimings(const SharedTiming& a, const SharedTiming& b);
+
+// Whether the ranking agrees: distinctSpearman >= 0.95 and no pair ordered oppositely.
+bool rankingAgrees(const TimingAgreement& g);
 
 // Spearman's rank correlation of two equally long samples (average ranks for ties).
 double spearman(const std::vector<double>& x, const std::vector<double>& y);
