@@ -467,6 +467,43 @@ bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const 
     return true;
 }
 
+// The size of a file tinygltf 2.9 asks before it reads one (its callback
+// set has GetFileSizeInBytes), inside the same folders only.
+bool gltfFileSize(std::size_t* size, std::string* err, const std::string& path, void* roots) {
+    const std::filesystem::path file = std::filesystem::u8path(path);
+    if (const auto why = static_cast<const scene::ReadRoots*>(roots)->refusal(file)) {
+        if (err)
+            *err += *why + "\n";
+        return false;
+    }
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+    if (ec) {
+        if (err)
+            *err += "cannot read its size: " + ec.message() + "\n";
+        return false;
+    }
+    *size = std::size_t(bytes);
+    return true;
+}
+
+// Our file callbacks for whichever tinygltf the build has (issue #49): 2.8
+// (Debian 12) has four, 2.9 (Debian 13) adds GetFileSizeInBytes and refuses
+// a set with any of them missing. Members are set by name, the new one
+// where the struct has it, so one source builds against both.
+template <typename Callbacks>
+Callbacks gltfCallbacks(const scene::ReadRoots& roots) {
+    Callbacks fs{};
+    fs.FileExists = &gltfFileExists;
+    fs.ExpandFilePath = &tinygltf::ExpandFilePath;
+    fs.ReadWholeFile = &gltfReadWholeFile;
+    fs.WriteWholeFile = &tinygltf::WriteWholeFile;
+    if constexpr (requires { fs.GetFileSizeInBytes; })
+        fs.GetFileSizeInBytes = &gltfFileSize;
+    fs.user_data = const_cast<scene::ReadRoots*>(&roots);
+    return fs;
+}
+
 // tinygltf's warnings about image files it could not find or read: each
 // image gets our own warning in texturePath (with the reason and the
 // placeholder), so these lines would only repeat it.
@@ -496,8 +533,7 @@ scene::Expected<ImportResult> importGltf(const std::filesystem::path& file, cons
     tinygltf::TinyGLTF loader;
     EmbeddedBytes embedded;
     loader.SetImageLoader(keepUriOrEmbeddedBytes, &embedded);
-    loader.SetFsCallbacks({&gltfFileExists, &tinygltf::ExpandFilePath, &gltfReadWholeFile, &tinygltf::WriteWholeFile,
-                           const_cast<scene::ReadRoots*>(&roots)});
+    loader.SetFsCallbacks(gltfCallbacks<tinygltf::FsCallbacks>(roots));
     tinygltf::Model model;
     std::string err, warn;
     // Binary by content ("glTF" magic), whatever the extension says.

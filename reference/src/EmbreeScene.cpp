@@ -5,7 +5,8 @@
 
 #include "lpv/reference/SurfaceLookup.h"
 
-#include <embree3/rtcore.h>
+#include "EmbreeApi.h"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
@@ -233,8 +234,6 @@ std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::ve
                                           float tMax) const {
     if (!embreeAcceptsRay(origin, dir, tMin, tMax))
         return std::nullopt;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRayHit rh{};
     rh.ray.org_x = origin.x;
     rh.ray.org_y = origin.y;
@@ -247,7 +246,7 @@ std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::ve
     rh.ray.mask = 0xFFFFFFFFu;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->scene, &context, &rh);
+    embree::intersect1(impl_->scene, rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
         return std::nullopt;
     const Impl& d = *impl_;
@@ -275,8 +274,6 @@ std::optional<Hit> EmbreeScene::intersect(const glm::vec3& origin, const glm::ve
 bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax) const {
     if (!embreeAcceptsRay(origin, dir, tMin, tMax))
         return true;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay ray{};
     ray.org_x = origin.x;
     ray.org_y = origin.y;
@@ -287,7 +284,7 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float 
     ray.tnear = tMin;
     ray.tfar = tMax;
     ray.mask = 0xFFFFFFFFu;
-    rtcOccluded1(impl_->scene, &context, &ray);
+    embree::occluded1(impl_->scene, ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
 
