@@ -1,9 +1,10 @@
 # Sourced by the chroot tests (test-deb-in-chroot.sh, test-fresh-debian.sh):
-# makes or reuses a minbase Debian 12 chroot, mounts what programs need in it,
-# and runs commands there in a clean environment. Needs root and debootstrap.
+# makes or reuses a minbase Debian chroot (SUITE: bookworm, Debian 12, unless
+# the caller sets trixie, Debian 13), mounts what programs need in it, and
+# runs commands there in a clean environment. Needs root and debootstrap.
 #
-#   ROOT=...; source packaging/chroot-common.sh
-#   chroot_bootstrap            debootstrap --variant=minbase bookworm "$ROOT" when missing
+#   ROOT=...; [SUITE=trixie;] source packaging/chroot-common.sh
+#   chroot_bootstrap            debootstrap --variant=minbase "$SUITE" "$ROOT" when missing
 #   chroot_mount                proc, sys (with its cgroup mounts), dev, dev/pts, dev/shm (unmounted on exit)
 #   chroot_bind SRC DEST [ro]   bind-mount a host folder into the chroot (unmounted on exit)
 #   in_chroot CMD...            run CMD in the chroot, printing it first
@@ -13,6 +14,7 @@ mirrorFor() { # $1: archive path, "debian" or "debian-security"
   { grep -rhoE "^(URIs:|deb) +https?://[^ ]+/$1/?( |\$)" /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null ||
     true; } | awk '{print $2}' | head -n 1
 }
+SUITE=${SUITE:-bookworm}
 MIRROR=${DEBIAN_MIRROR:-$(mirrorFor debian)}
 SECURITY=${DEBIAN_SECURITY_MIRROR:-$(mirrorFor debian-security)}
 [ -n "$MIRROR" ] || { echo "no Debian mirror found: set DEBIAN_MIRROR" >&2; exit 2; }
@@ -20,14 +22,14 @@ command -v debootstrap >/dev/null || { echo "debootstrap is not installed (apt-g
 
 chroot_bootstrap() {
   if [ ! -x "$ROOT/usr/bin/apt-get" ]; then
-    echo "== debootstrap --variant=minbase bookworm $ROOT"
-    debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
+    echo "== debootstrap --variant=minbase $SUITE $ROOT"
+    debootstrap --variant=minbase "$SUITE" "$ROOT" "$MIRROR" >/dev/null
   fi
-  # An installed Debian 12 follows the point-release updates and security fixes.
+  # An installed Debian follows the point-release updates and security fixes.
   {
-    echo "deb $MIRROR bookworm main"
-    echo "deb $MIRROR bookworm-updates main"
-    [ -z "$SECURITY" ] || echo "deb $SECURITY bookworm-security main"
+    echo "deb $MIRROR $SUITE main"
+    echo "deb $MIRROR $SUITE-updates main"
+    [ -z "$SECURITY" ] || echo "deb $SECURITY $SUITE-security main"
   } >"$ROOT/etc/apt/sources.list"
   # The chroot reaches the archive the way this machine does: its resolver and
   # its apt proxy and validity-date settings (a snapshot mirror), in a file of

@@ -6,17 +6,26 @@
 # machine's packages or build reaches the chroot, so a package missing from
 # scripts/setup.sh fails here. Run it whenever a dependency changes.
 #
-#   sudo packaging/test-fresh-debian.sh [--reuse] [CHROOT]
+#   sudo packaging/test-fresh-debian.sh [--suite bookworm|trixie] [--reuse] [CHROOT]
 #
-# CHROOT (default /var/tmp/lpv-fresh-deb12) is deleted and made anew unless
+# --suite: Debian 12 (bookworm, the default) or Debian 13 (trixie, issue #49).
+# CHROOT (default /var/tmp/lpv-fresh-SUITE) is deleted and made anew unless
 # --reuse is given (then its packages and build stay: a second-run check).
 # Logs: CHROOT.logs/{start,test}.log; the rendered PNG: CHROOT.logs/cornell-box.png.
 # Exits non-zero when either command fails; prints both times either way.
 set -euo pipefail
 
 reuse=0
-if [ "${1:-}" = "--reuse" ]; then reuse=1; shift; fi
-ROOT=${1:-/var/tmp/lpv-fresh-deb12}
+SUITE=bookworm
+while [ $# -gt 0 ]; do
+  case $1 in
+    --reuse) reuse=1; shift ;;
+    --suite) SUITE=${2:?--suite needs bookworm or trixie}; shift 2 ;;
+    *) break ;;
+  esac
+done
+case $SUITE in bookworm | trixie) ;; *) echo "--suite: bookworm or trixie, not $SUITE" >&2; exit 2 ;; esac
+ROOT=${1:-/var/tmp/lpv-fresh-$SUITE}
 REPO=$(git -C "$(dirname "$0")/.." rev-parse --show-toplevel)
 SHARED=$(realpath "$REPO/../shared")
 LOGS="$ROOT.logs"
@@ -59,6 +68,6 @@ readme_command start
 cp "$ROOT/work/lpvstudio/out/cornell-box.png" "$LOGS/" 2>/dev/null || true
 readme_command test
 
-echo "== summary (fresh Debian 12 chroot, $(nproc) cores)"
+echo "== summary (fresh $SUITE chroot, $(nproc) cores)"
 for c in start test; do echo "./scripts/$c.sh: exit ${status[$c]}, ${seconds[$c]} s"; done
 [ "${status[start]}" -eq 0 ] && [ "${status[test]}" -eq 0 ]
