@@ -243,6 +243,8 @@ std::vector<double> logTicks(double lo, double hi) {
             if (t >= lo / 10.0 && t <= hi * 10.0)
                 ticks.push_back(t);
         }
+    if (ticks.empty()) // cannot happen for finite lo <= hi (10^floor(log10 lo) is in range); GCC cannot see it
+        return {lo, hi};
     // Keep the largest tick at or below lo, the smallest at or above hi, and those between.
     double below = ticks.front(), above = ticks.back();
     for (double t : ticks)
