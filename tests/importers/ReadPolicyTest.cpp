@@ -195,7 +195,10 @@ TEST_F(ReadPolicy, AGltfBufferOutsideTheFoldersIsAnError) {
     // An escape is found, and refused with the reason.
     auto escape = importers::importScene(writeGltf("esc.gltf", "x.png", json(), "../../../../../../../../etc/passwd"));
     ASSERT_FALSE(escape.has_value());
-    EXPECT_NE(escape.error().message.find("etc/passwd : lies outside the folders it may be read from (" + dir_.string()),
+    // tinygltf 2.8 reads it ("File read error : PATH : why"), 2.9 asks its size
+    // first ("Getting file size failed : PATH, err = why"): the same refusal.
+    EXPECT_NE(escape.error().message.find("etc/passwd"), std::string::npos) << escape.error().message;
+    EXPECT_NE(escape.error().message.find("lies outside the folders it may be read from (" + dir_.string()),
               std::string::npos)
         << escape.error().message;
 }
