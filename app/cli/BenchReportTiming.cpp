@@ -21,9 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// What a sweep of the report renders with: the project, timed frames every frame.
-const std::vector<std::string> kSweepSets = {"lpv.reuse=false"};
-
 // The scene's settings, each once: (the combination, every override it resolves to).
 std::vector<std::pair<std::vector<Setting>, scene::ParameterSet>> distinctSettings(const ScenePlan& plan,
                                                                                 const scene::ParameterSet& base) {
@@ -53,7 +50,7 @@ fs::path timingFileOf(const ScenePlan& plan) { return plan.dir / "timing.json"; 
 
 bool timeScene(const ScenePlan& plan, const ReportOptions& o) {
     int exitCode = kOk;
-    auto project = loadProjectWithSets(plan.project.string(), kSweepSets, "bench", exitCode);
+    auto project = loadProjectWithSets(plan.project.string(), {kSweepBaseSet}, "bench", exitCode);
     if (!project)
         return false;
     const auto settings = distinctSettings(plan, project->parameters);

@@ -164,7 +164,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     }
     // Timed frames must compute the LPV every frame, not reuse the first
     // frame's volumes (a later --set lpv.reuse=true wins).
-    request.sets.push_back("lpv.reuse=false");
+    request.sets.push_back(kSweepBaseSet);
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
     request.projectFile = c.projectFile;

@@ -13,6 +13,12 @@
 
 namespace lpv::cli {
 
+// What every sweep sets before its own settings: timed frames compute the
+// LPV every frame instead of reusing the first frame's volumes. The report's
+// timing step (BenchReportTiming.cpp) renders with the same, so its times
+// match the sweeps' settings by value.
+inline const std::string kSweepBaseSet = "lpv.reuse=false";
+
 struct SweepCommand {
     std::string projectFile;
     std::optional<std::string> cameraName;

@@ -2,6 +2,7 @@
 
 #include "lpv/bench/Pareto.h"
 #include "lpv/bench/Plots.h"
+#include "lpv/bench/SweepRunJson.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/renderer/DisplayMapping.h"
@@ -59,11 +60,6 @@ nlohmann::ordered_json metricsJson(const reference::ErrorMetrics& m) {
             {"noiseMare", m.noiseMare},   {"logError", m.logError},           {"noiseLogError", m.noiseLogError},
             {"symmetricError", m.symmetricError()}, {"ssim", m.ssim},         {"meanTest", m.meanTest},
             {"meanReference", m.meanReference}};
-}
-
-nlohmann::ordered_json timingJson(const TimingStats& t) {
-    return {{"medianMs", t.median}, {"q1Ms", t.q1}, {"q3Ms", t.q3}, {"minMs", t.min}, {"maxMs", t.max},
-            {"rounds", t.rounds}};
 }
 
 std::string sweepCsv(const std::vector<SweepRun>& runs, const std::vector<std::string>& keys,
@@ -125,7 +121,7 @@ std::string sweepJson(const std::vector<SweepRun>& runs, const std::string& comm
             Json pass{{"pass", p.pass}, {"medianMs", p.medianMs}, {"minMs", p.minMs}, {"maxMs", p.maxMs},
                       {"frames", p.samples}};
             if (k < r.passStats.size())
-                pass["rounds"] = timingJson(r.passStats[k]);
+                pass["rounds"] = timingToJson<nlohmann::ordered_json>(r.passStats[k]);
             passes.push_back(pass);
         }
         Json same = Json::array();
@@ -134,7 +130,7 @@ std::string sweepJson(const std::vector<SweepRun>& runs, const std::string& comm
         j["runs"].push_back({{"settings", settings},
                              {"bounces", r.bounces},
                              {"totalMs", r.totalMs},
-                             {"total", timingJson(r.total)},
+                             {"total", timingToJson<nlohmann::ordered_json>(r.total)},
                              {"sameCostAs", same},
                              {"gpuBytes", r.gpuBytes},
                              {"lpvBytes", r.lpvBytes},

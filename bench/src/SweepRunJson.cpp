@@ -38,11 +38,6 @@ reference::ErrorMetrics metricsFromJson(const Json& j) {
 
 } // namespace
 
-Json timingToJson(const TimingStats& t) {
-    return {{"medianMs", t.median}, {"q1Ms", t.q1}, {"q3Ms", t.q3}, {"minMs", t.min}, {"maxMs", t.max},
-            {"rounds", t.rounds}};
-}
-
 TimingStats timingFromJson(const Json& j) {
     return {j.at("medianMs").get<double>(), j.at("q1Ms").get<double>(), j.at("q3Ms").get<double>(),
             j.at("minMs").get<double>(),    j.at("maxMs").get<double>(), j.at("rounds").get<int>()};
