@@ -200,6 +200,8 @@ int benchMerge(Args args) {
         }
         shards.push_back(std::move(*s));
     }
+    if (shards.empty()) // not reached (two positionals at least); GCC 14 cannot see it
+        return usageError("bench merge expects at least one shard folder", "bench");
     const SweepShard& first = shards.front();
     std::vector<const SweepShard*> byIndex(std::size_t(first.shard.count), nullptr);
     std::set<std::string> machines;

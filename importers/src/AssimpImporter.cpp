@@ -4,6 +4,7 @@
 #include "lpv/importers/AssimpImporter.h"
 
 #include "AssimpLog.h"
+#include "TextEncoding.h"
 #include "TextureResolver.h"
 
 #include "lpv/scene/ProjectLimits.h"
@@ -438,11 +439,11 @@ class RootedIOSystem : public Assimp::DefaultIOSystem {
     RootedIOSystem(scene::ReadRoots roots, std::string model)
         : roots_(std::move(roots)), model_(std::move(model)), objModel_(hasExtension(model_, ".obj")) {}
 
-    bool Exists(const char* file) const override { return file && !roots_.refusal(std::filesystem::u8path(file)); }
+    bool Exists(const char* file) const override { return file && !roots_.refusal(utf8Path(file)); }
 
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         const bool reading = mode && mode[0] == 'r';
-        if (!file || !reading || roots_.refusal(std::filesystem::u8path(file)))
+        if (!file || !reading || roots_.refusal(utf8Path(file)))
             return nullptr;
         const std::string name(file);
         if (hasExtension(name, ".mtl") || (objModel_ && *modelOpen_ > 0))

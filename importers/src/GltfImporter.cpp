@@ -1,6 +1,7 @@
 #include "lpv/importers/GltfImporter.h"
 
 #include "EmbeddedImages.h"
+#include "TextEncoding.h"
 #include "TextureResolver.h"
 #include "lpv/importers/Importer.h"
 #include "lpv/scene/FileRead.h"
@@ -161,7 +162,7 @@ std::string texturePath(const Context& ctx, int textureIndex) {
     // Decoded first, so "%2e%2e/" is the "../" it means; then resolved
     // (links and "..") and checked against the folders the import may read.
     const std::string decoded = percentDecode(image.uri);
-    const std::filesystem::path p = ctx.file.parent_path() / std::filesystem::u8path(decoded);
+    const std::filesystem::path p = ctx.file.parent_path() / utf8Path(decoded);
     if (const auto why = ctx.roots.refusal(p)) {
         ctx.result.warnings.push_back(ctx.file.string() + ": texture '" + scene::capErrorText(decoded) + "' " +
                                       (*why == "no such file" ? std::string("not found") : *why) +
@@ -439,13 +440,13 @@ scene::Expected<void> checkNodeNumbers(const tinygltf::Model& model, const std::
 // uri takes the missing-file path (issue #29).
 constexpr std::uintmax_t kMaxGltfFileBytes = std::uintmax_t{2} << 30;
 
-bool gltfFileExists(const std::string& path, void*) { return !scene::notARegularFile(std::filesystem::u8path(path)); }
+bool gltfFileExists(const std::string& path, void*) { return !scene::notARegularFile(utf8Path(path)); }
 
 // Reads only inside the import's folders (user data: the ReadRoots), so a
 // buffer uri of "/etc/shadow" is an error that says why, and an image uri
 // leading out is not read at all (texturePath warns about it).
 bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* roots) {
-    const std::filesystem::path file = std::filesystem::u8path(path);
+    const std::filesystem::path file = utf8Path(path);
     // tinygltf puts "File read error : <path> : " before what we say.
     auto fail = [&](const std::string& why) {
         if (err)
@@ -470,7 +471,7 @@ bool gltfReadWholeFile(std::vector<unsigned char>* out, std::string* err, const 
 // The size of a file tinygltf 2.9 asks before it reads one (its callback
 // set has GetFileSizeInBytes), inside the same folders only.
 bool gltfFileSize(std::size_t* size, std::string* err, const std::string& path, void* roots) {
-    const std::filesystem::path file = std::filesystem::u8path(path);
+    const std::filesystem::path file = utf8Path(path);
     if (const auto why = static_cast<const scene::ReadRoots*>(roots)->refusal(file)) {
         if (err)
             *err += *why + "\n";

@@ -2,9 +2,11 @@
 // Legacy 8-bit names (game formats written on Windows) to valid UTF-8, so a
 // name read from any file can go straight into the project (JSON) and the UI.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace lpv::importers {
 
@@ -21,5 +23,9 @@ std::optional<std::string> legacyNameToUtf8(const std::string& text);
 
 // Appends the UTF-8 encoding of a code point (at most U+FFFF here).
 void appendUtf8(std::string& out, char32_t codePoint);
+
+// A UTF-8 file name (glTF uris, Assimp's char* names) as a path. Replaces
+// std::filesystem::u8path, deprecated since C++20 (GCC 14 warns of it).
+std::filesystem::path utf8Path(std::string_view utf8);
 
 } // namespace lpv::importers

@@ -200,11 +200,12 @@ void GpuHemicube::renderShooter(const radiosity::Patch& shooter, int row) const 
         planes = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
         firsts_.clear();
         counts_.clear();
-        for (const Cluster& c : clusters_) {
+        for (const Cluster& cluster : clusters_) {
             bool outside = false;
             for (const glm::vec4& pl : planes) {
-                const glm::vec3 far(pl.x >= 0 ? c.max.x : c.min.x, pl.y >= 0 ? c.max.y : c.min.y,
-                                    pl.z >= 0 ? c.max.z : c.min.z);
+                const glm::vec3 far(pl.x >= 0 ? cluster.max.x : cluster.min.x,
+                                    pl.y >= 0 ? cluster.max.y : cluster.min.y,
+                                    pl.z >= 0 ? cluster.max.z : cluster.min.z);
                 if (glm::dot(glm::vec3(pl), far) + pl.w < 0.0f) {
                     outside = true;
                     break;
@@ -213,11 +214,11 @@ void GpuHemicube::renderShooter(const radiosity::Patch& shooter, int row) const 
             if (outside)
                 continue;
             // Neighbouring clusters merge into one range.
-            if (!firsts_.empty() && firsts_.back() + counts_.back() == c.first)
-                counts_.back() += c.count;
+            if (!firsts_.empty() && firsts_.back() + counts_.back() == cluster.first)
+                counts_.back() += cluster.count;
             else {
-                firsts_.push_back(c.first);
-                counts_.push_back(c.count);
+                firsts_.push_back(cluster.first);
+                counts_.push_back(cluster.count);
             }
         }
         if (!firsts_.empty())

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace lpv;
 namespace fs = std::filesystem;
@@ -85,7 +86,7 @@ TEST(SavedSweep, ADamagedFileIsAnErrorNamingItNotACrash) {
     std::string text;
     {
         std::ifstream in(file);
-        text.assign(std::istreambuf_iterator<char>(in), {});
+        text = (std::ostringstream() << in.rdbuf()).str();
     }
     // A preview whose pixels do not match its size, a cut file, another format.
     const auto at = text.find("\"rgb\": \"");

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace lpv;
 namespace fs = std::filesystem;
@@ -178,7 +179,7 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     EXPECT_EQ(run0.at("indirect").at("logError").get<double>(), result->runs[0].indirect.logError);
     EXPECT_EQ(run0.at("biased").get<bool>(), bench::biasedMean(bench::meanRatio(result->runs[0].indirect)));
     std::ifstream md(dir / "sweep.md");
-    const std::string markdown((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    const std::string markdown = (std::ostringstream() << md.rdbuf()).str();
     EXPECT_NE(markdown.find("same cost as"), std::string::npos);
     EXPECT_NE(markdown.find("symmetric error"), std::string::npos);
     fs::remove_all(dir);

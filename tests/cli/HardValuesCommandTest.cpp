@@ -13,6 +13,7 @@
 #include <functional>
 
 #include <unistd.h>
+#include <sstream>
 
 using namespace lpv::test;
 namespace fs = std::filesystem;
@@ -132,7 +133,7 @@ TEST_F(HardValues, DegenerateCamerasAreRefusedNamingTheField) {
     };
     const std::string original = [&] {
         std::ifstream in(project_);
-        return std::string(std::istreambuf_iterator<char>(in), {});
+        return (std::ostringstream() << in.rdbuf()).str();
     }();
     for (const auto& [change, field] : cases) {
         std::ofstream(project_, std::ios::trunc) << original;

@@ -53,8 +53,9 @@ TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
                 lo = std::min<int>(lo, image->pixels[i]);
                 hi = std::max<int>(hi, image->pixels[i]);
             }
-            if (name.find("-ny") != std::string::npos)
+            if (name.find("-ny") != std::string::npos) {
                 EXPECT_GT(hi - lo, 100) << name;
+            }
         }
     }
     EXPECT_EQ(pngs, 6u) << r.output; // the six cube faces

@@ -102,8 +102,9 @@ TEST_F(Installed, LaysOutTheClusterJobFiles) {
         ASSERT_TRUE(fs::is_regular_file(copy)) << copy;
         EXPECT_EQ(readFile(copy), readFile(entry.path())) << copy;
         const std::string ext = entry.path().extension().string();
-        if (ext == ".sh" || ext == ".sbatch")
+        if (ext == ".sh" || ext == ".sbatch") {
             EXPECT_NE(fs::status(copy).permissions() & fs::perms::owner_exec, fs::perms::none) << copy;
+        }
         ++files;
     }
     EXPECT_GE(files, 10) << "submit wrappers, batch scripts and manifests";

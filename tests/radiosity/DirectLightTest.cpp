@@ -36,8 +36,9 @@ TEST(DirectLight, SamplePointsLieOnThePatchAndAverageToItsCentre) {
             EXPECT_NEAR(glm::dot(q - p.center, p.normal), 0.0f, 1e-6f);
             mean += q / 9.0f;
         }
-        if (p.cornerCount == 4)
+        if (p.cornerCount == 4) {
             EXPECT_LT(glm::distance(mean, p.center), 1e-5f);
+        }
     }
 }
 

@@ -193,9 +193,10 @@ TEST(RsmCascades, ViewShiftMovesEachCascadeAheadAndKeepsThemNested) {
                         EXPECT_GE(camera[a] - c.origin[a], 1.5f * c.cellSize - 1e-3f) << "axis " << a;
                         EXPECT_GE(c.origin[a] + c.extent() - camera[a], 1.5f * c.cellSize - 1e-3f) << "axis " << a;
                     }
-                    if (k > 0)
+                    if (k > 0) {
                         EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds()))
                             << "shift " << shift << ": cascade " << k << " must hold " << k - 1;
+                    }
                 }
             }
 }
@@ -253,11 +254,13 @@ TEST(RsmCascades, ClampedToTheSceneCascadesCoverItAndStayNested) {
                     EXPECT_LE(c.origin[a] + c.extent(), hall.max[a] + 0.5f * c.cellSize + 1e-3f);
                 }
             }
-            if (k > 0)
+            if (k > 0) {
                 EXPECT_TRUE(contains(c.bounds(), cascades[k - 1].bounds())) << "cascade " << k << " must hold " << k - 1;
+            }
         }
         // Inside the hall, away from its walls, the finest cascade does not move.
-        if (camera == glm::vec3(-15.3f, 3.0f, 0.4f))
+        if (camera == glm::vec3(-15.3f, 3.0f, 0.4f)) {
             EXPECT_EQ(cascades[0].origin, centred[0].origin);
+        }
     }
 }

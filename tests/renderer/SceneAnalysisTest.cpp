@@ -125,14 +125,14 @@ TEST(SceneAnalysis, SubsurfaceRunsOnlyWithTheLpvAndIsImplemented) {
     s.materials[0].translucency = 0.5f;
     const auto traits = renderer::analyseSceneTraits(s);
     const auto byDefault = renderer::decideEffects(s, traits, {}, nullptr);
-    const auto& on = find(byDefault, "effects.subsurface");
+    const auto on = find(byDefault, "effects.subsurface");
     EXPECT_TRUE(on.runs()) << on.reason;
     EXPECT_TRUE(on.implemented);
     scene::ParameterSet params;
     ASSERT_TRUE(params.setFromText("lpv.intensity", "0"));
     ASSERT_TRUE(params.setFromText("effects.subsurface", "on"));
     const auto decisions = renderer::decideEffects(s, traits, params, nullptr);
-    const auto& noLpv = find(decisions, "effects.subsurface");
+    const auto noLpv = find(decisions, "effects.subsurface");
     EXPECT_FALSE(noLpv.runs());
     EXPECT_NE(noLpv.reason.find("the LPV does not run"), std::string::npos) << noLpv.reason;
 }

@@ -117,14 +117,14 @@ glm::vec2 pixelOf(const scene::Camera& cam, const glm::vec3& world) {
 
 class ShadowRender : public GlTest {
 protected:
-    Frame render(const scene::Scene& s, const scene::ParameterSet& params, const scene::Camera& cam,
+    Frame render(const scene::Scene& s, const scene::ParameterSet& settings, const scene::Camera& cam,
                  const scene::TextureImages& textures = {}) {
         auto r = renderer::ForwardRenderer::create();
         EXPECT_TRUE(r.has_value()) << (r ? "" : r.error().describe());
         if (!r)
             return {};
         r->setScene(s, textures);
-        auto ok = r->render(s, params, cam, kSize, kSize);
+        auto ok = r->render(s, settings, cam, kSize, kSize);
         EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
         lastShadowImages = r->debugImages("shadowMaps");
         return Frame{r->readHdr(), r->readDepth()};
