@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages LPV Studio needs (only those missing) and
+# Installs the Debian 12 or 13 packages LPV Studio needs (only those missing) and
 # builds it with Ninja into ./build. Idempotent: a second run only rebuilds
 # what changed. Used by start.sh and test.sh; sourcing is not required.
 #
@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 # pulls in fails it, naming the package.
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git file
-  qt6-base-dev libqt6opengl6-dev qt6-charts-dev libqt6charts6 libglm-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0
+  qt6-base-dev qt6-charts-dev libqt6charts6 libglm-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0
   libopenimageio-dev libtinygltf-dev libassimp-dev zlib1g-dev libopenmesh-dev libxxhash-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libembree-dev fonts-dejavu-core
@@ -29,6 +29,23 @@ PACKAGES=(
   # data only: Assimp's own test models, which the corpus test imports (issue #42)
   assimp-testmodels
 )
+
+# Where Debian 12 (bookworm) and 13 (trixie) name a package differently, the
+# release in /etc/os-release (LPV_OS_RELEASE: another file, for the tests)
+# chooses. Every name here must be a real package of its release: a name that
+# is only provided by another package is never "installed" for dpkg-query, so
+# the check below would run apt on every build.
+os_release=${LPV_OS_RELEASE:-/etc/os-release}
+release=$( . "$os_release" 2>/dev/null && echo "${VERSION_CODENAME:-}" ) || release=""
+case "$release" in
+  bookworm)
+    # Qt's OpenGL headers: their own package on 12; part of qt6-base-dev on 13,
+    # which only provides this name.
+    PACKAGES+=(libqt6opengl6-dev) ;;
+  trixie) ;;
+  *)
+    echo "== warning: scripts/setup.sh knows Debian 12 (bookworm) and 13 (trixie); $os_release names '${release:-no release}': using Debian 13's package names" >&2 ;;
+esac
 
 if [ "${1:-}" = "--print-packages" ]; then
   printf '%s\n' "${PACKAGES[@]}"
