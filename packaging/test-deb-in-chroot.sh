@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
-# Installs a built lpvstudio .deb into a fresh Debian 12 (bookworm) and checks
+# Installs a built lpvstudio .deb into a fresh Debian 12 (bookworm) or 13
+# (trixie; a package built on that release, issue #49) and checks
 # that both programs work there, as on a user's new machine: apt resolves the
 # package's dependencies from the Debian archive, `lpv render` renders the
 # installed Cornell box, and `lpvstudio` starts and renders under Xvfb.
 #
-#   sudo packaging/test-deb-in-chroot.sh build/lpvstudio_0.1.0_amd64.deb [CHROOT]
+#   sudo packaging/test-deb-in-chroot.sh [--suite bookworm|trixie] build/lpvstudio_0.1.0_amd64.deb [CHROOT]
 #
-# CHROOT (default /var/tmp/lpv-deb12) is made with `debootstrap --variant=minbase`
+# CHROOT (default /var/tmp/lpv-deb-SUITE) is made with `debootstrap --variant=minbase`
 # when missing and reused otherwise (the package is purged first). Needs root,
 # debootstrap and a Debian mirror: DEBIAN_MIRROR, else the one this machine's
 # apt uses. Prints every command it runs; exits non-zero on the first failure.
 set -euo pipefail
 
+SUITE=bookworm
+if [ "${1:-}" = "--suite" ]; then
+  SUITE=${2:?--suite needs bookworm or trixie}
+  shift 2
+fi
+case $SUITE in bookworm | trixie) ;; *) echo "--suite: bookworm or trixie, not $SUITE" >&2; exit 2 ;; esac
 DEB=$(realpath "$1")
-ROOT=${2:-/var/tmp/lpv-deb12}
+ROOT=${2:-/var/tmp/lpv-deb-$SUITE}
 
 source "$(dirname "$0")/chroot-common.sh"
 chroot_bootstrap
@@ -33,7 +40,7 @@ in_chroot rm -f /tmp/x.png
 in_chroot lpv render /usr/share/lpvstudio/projects/cornell-box/cornell-box.lpvproj -o /tmp/x.png
 in_chroot test -s /tmp/x.png
 in_chroot ls -l /tmp/x.png
-cp "$ROOT/tmp/x.png" "${LPV_CHROOT_RENDER_COPY:-/tmp/lpv-deb12-cornell-box.png}"
+cp "$ROOT/tmp/x.png" "${LPV_CHROOT_RENDER_COPY:-/tmp/lpv-deb-$SUITE-cornell-box.png}"
 
 echo "== the editor (Xvfb: the package does not bring an X server, a desktop has one)"
 in_chroot apt-get install -y -qq --no-install-recommends xvfb xauth >/dev/null

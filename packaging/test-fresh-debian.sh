@@ -11,7 +11,9 @@
 # --suite: Debian 12 (bookworm, the default) or Debian 13 (trixie, issue #49).
 # CHROOT (default /var/tmp/lpv-fresh-SUITE) is deleted and made anew unless
 # --reuse is given (then its packages and build stay: a second-run check).
-# Logs: CHROOT.logs/{start,test}.log; the rendered PNG: CHROOT.logs/cornell-box.png.
+# Logs: CHROOT.logs/{start,test,artefacts}.log; the rendered PNG: CHROOT.logs/cornell-box.png;
+# then, for comparing releases, CHROOT.logs/cornell.{exr,png} (a 256x256 render),
+# cornell-reference.exr (1024 spp of the same view) and the .deb from cpack.
 # Exits non-zero when either command fails; prints both times either way.
 set -euo pipefail
 
@@ -68,6 +70,23 @@ readme_command start
 cp "$ROOT/work/lpvstudio/out/cornell-box.png" "$LOGS/" 2>/dev/null || true
 readme_command test
 
+# What one release's build makes, for comparing the two (issue #49): a render
+# of the Cornell template (EXR and PNG) and a path-traced reference of the
+# same view, and the .deb (cpack) for test-deb-in-chroot.sh.
+echo "== the Cornell template's render and reference, and the package (log: $LOGS/artefacts.log)"
+t0=$SECONDS
+status[artefacts]=0
+in_chroot bash -c 'cd /work/lpvstudio && lpv=build/app/cli/lpv p=projects/cornell-box/cornell-box.lpvproj &&
+  $lpv render $p -o /tmp/cornell.exr --width 256 --height 256 &&
+  $lpv render $p -o /tmp/cornell.png --width 256 --height 256 &&
+  $lpv reference $p -o /tmp/cornell-reference.exr --width 256 --height 256 --spp 1024 &&
+  cd build && rm -f lpvstudio_*.deb && cpack -G DEB' >"$LOGS/artefacts.log" 2>&1 || status[artefacts]=$?
+for f in cornell.exr cornell.png cornell-reference.exr; do cp "$ROOT/tmp/$f" "$LOGS/" 2>/dev/null || true; done
+cp "$ROOT"/work/lpvstudio/build/lpvstudio_*.deb "$LOGS/" 2>/dev/null || true
+tail -n 3 "$LOGS/artefacts.log"
+echo "== artefacts: exit ${status[artefacts]} after $((SECONDS - t0)) s: $(cd "$LOGS" && ls cornell* ./*.deb 2>/dev/null | tr '\n' ' ')"
+
 echo "== summary (fresh $SUITE chroot, $(nproc) cores)"
 for c in start test; do echo "./scripts/$c.sh: exit ${status[$c]}, ${seconds[$c]} s"; done
-[ "${status[start]}" -eq 0 ] && [ "${status[test]}" -eq 0 ]
+echo "artefacts (render, reference, .deb): exit ${status[artefacts]}"
+[ "${status[start]}" -eq 0 ] && [ "${status[test]}" -eq 0 ] && [ "${status[artefacts]}" -eq 0 ]
