@@ -1,6 +1,7 @@
 #include "CameraController.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +34,7 @@ void CameraController::setCamera(const scene::Camera& camera) { camera_ = camera
 
 void CameraController::setSceneBounds(const scene::Bounds& bounds) {
     const float size = bounds.empty() ? 1.0f : glm::length(bounds.size());
+    sceneSize_ = std::max(size, 1e-4f);
     flySpeed_ = std::max(size / 5.0f, 0.01f);
 }
 
@@ -45,8 +47,24 @@ void CameraController::orbit(float dxPixels, float dyPixels) {
                        turn(offset, -dxPixels * kDegreesPerPixel, dyPixels * kDegreesPerPixel, camera_.up);
 }
 
-void CameraController::pan(float dxPixels, float dyPixels, int viewportHeight) {
-    const float distance = glm::length(camera_.target - camera_.position);
+void CameraController::orbitAround(const glm::vec3& pivot, float dxPixels, float dyPixels) {
+    // One rotation for eye and target alike: yaw about world up, then pitch
+    // about the turned view's right axis, the view's elevation kept short of the poles.
+    const glm::vec3 up = camera_.up;
+    const glm::quat yaw = glm::angleAxis(glm::radians(-dxPixels * kDegreesPerPixel), up);
+    const glm::vec3 f = yaw * forward();
+    const float elevation = glm::degrees(std::asin(std::clamp(glm::dot(f, up), -1.0f, 1.0f)));
+    const float limit = 90.0f - kPitchMarginDegrees;
+    // The view tilts the other way from the eye: dragging down lifts the eye and lowers the view.
+    const float tilted = std::clamp(elevation - dyPixels * kDegreesPerPixel, -limit, limit);
+    const glm::vec3 right = glm::normalize(glm::cross(f, up));
+    const glm::quat turn = glm::angleAxis(glm::radians(tilted - elevation), right) * yaw;
+    camera_.position = pivot + turn * (camera_.position - pivot);
+    camera_.target = pivot + turn * (camera_.target - pivot);
+}
+
+void CameraController::pan(float dxPixels, float dyPixels, int viewportHeight, float depth) {
+    const float distance = depth > 0.0f ? depth : glm::length(camera_.target - camera_.position);
     const float worldPerPixel = 2.0f * distance * std::tan(0.5f * camera_.fovY) / float(std::max(viewportHeight, 1));
     const glm::vec3 f = forward();
     const glm::vec3 right = glm::normalize(glm::cross(f, camera_.up));
@@ -62,6 +80,21 @@ void CameraController::dolly(float steps) {
     const float factor = std::pow(0.85f, steps);
     const float distance = std::max(glm::length(offset) * factor, camera_.nearPlane * 2.0f);
     camera_.position = camera_.target + glm::normalize(offset) * distance;
+}
+
+void CameraController::dollyAlong(float steps, const glm::vec3& direction, float distance) {
+    if (!(distance > 0.0f))
+        return;
+    // 1 - 0.8^steps: a step in moves 20% of the way, a step out 25% back, so in-then-out returns.
+    const float keep = std::pow(1.0f - kDollyFraction, steps);
+    // Never closer to the surface than twice the near plane: it would be clipped.
+    const float move = std::min(distance * (1.0f - keep), distance - 2.0f * camera_.nearPlane);
+    if (move <= 0.0f && steps > 0.0f)
+        return;
+    const glm::vec3 f = forward();
+    camera_.position += direction * move;
+    const float depth = std::max(glm::dot(direction, f) * (distance - move), 2.0f * camera_.nearPlane);
+    camera_.target = camera_.position + f * depth;
 }
 
 void CameraController::look(float dxPixels, float dyPixels) {

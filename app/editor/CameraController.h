@@ -1,7 +1,9 @@
 #pragma once
-// The viewport's camera moves, in pixels and seconds: orbit around the
-// target, pan, dolly, fly (mouse look + WASD), and framing a box. Plain
-// maths, no widget, so it is unit tested.
+// The viewport's camera moves, in pixels and seconds: orbit around a point,
+// pan, dolly, fly (mouse look + WASD), and framing a box. Distances come
+// from the caller (what lies under the cursor) and the scene's size, never
+// from a constant in metres, so Sponza (40 m) and the Cornell box (0.5 m)
+// move alike. Plain maths, no widget, so it is unit tested.
 #include "lpv/scene/Camera.h"
 #include "lpv/scene/Mesh.h"
 
@@ -17,13 +19,28 @@ public:
     // Fly speed follows the scene's size: crossing it takes about 5 seconds.
     void setSceneBounds(const scene::Bounds& bounds);
     float flySpeed() const { return flySpeed_; }
+    // The scene's diagonal (1 for an empty scene): what a distance with nothing under the cursor is capped by.
+    float sceneSize() const { return sceneSize_; }
+
+    // Fraction of the distance to the surface under the cursor that one wheel step moves.
+    static constexpr float kDollyFraction = 0.2f;
 
     // Turns the eye around the target (yaw about world up, pitch about the view's right axis).
     void orbit(float dxPixels, float dyPixels);
-    // Moves eye and target together in the view plane; one pixel moves by one pixel's world size at the target.
-    void pan(float dxPixels, float dyPixels, int viewportHeight);
+    // The same turn about `pivot` (the point under the cursor): the view
+    // turns with the eye, so the pivot stays where it is on the screen.
+    void orbitAround(const glm::vec3& pivot, float dxPixels, float dyPixels);
+    // Moves eye and target together in the view plane; one pixel moves by one
+    // pixel's world size at `depth` along the view (the surface grabbed), or at the target without one.
+    void pan(float dxPixels, float dyPixels, int viewportHeight, float depth = 0.0f);
     // Moves the eye towards the target by a fraction per wheel step (never through it).
     void dolly(float steps);
+    // Moves the eye along `direction` (the ray through the cursor, normalised)
+    // by kDollyFraction of `distance` (to the surface it hits) per step, back
+    // by the inverse, never through the surface; the view does not turn, so
+    // the point under the cursor stays under it. The target moves onto the
+    // view axis at that surface's depth, the focus the next orbit turns about.
+    void dollyAlong(float steps, const glm::vec3& direction, float distance);
     // Turns the view direction around the eye (fly mode).
     void look(float dxPixels, float dyPixels);
     // Moves eye and target along the view axes: x right, y world up, z forward.
@@ -35,6 +52,7 @@ private:
     glm::vec3 forward() const;
     scene::Camera camera_;
     float flySpeed_ = 1.0f;
+    float sceneSize_ = 1.0f;
 };
 
 } // namespace lpv::editor

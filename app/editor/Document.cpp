@@ -25,13 +25,19 @@ QString Document::projectDir() const {
 
 bool Document::isModified() const { return recoveredUnsaved_ || !undoStack_->isClean(); }
 
-void Document::reset(scene::Project project, const QString& path, bool modified) {
+QString Document::displayName() const {
+    return path_.isEmpty() ? tr("Untitled") : QFileInfo(path_).completeBaseName();
+}
+
+void Document::reset(scene::Project project, const QString& path, bool modified, const QString& assetsOf) {
     undoStack_->clear();
     project_ = std::move(project);
     // In memory, texture paths are absolute: they stay valid whatever folder
     // the project is saved to next (Save As); saving makes them relative again.
-    if (!path.isEmpty()) {
-        const QDir dir = QFileInfo(path).absoluteDir();
+    // (Meshes are read into memory by loadProject, so they need no path.)
+    const QString from = assetsOf.isEmpty() ? path : assetsOf;
+    if (!from.isEmpty()) {
+        const QDir dir = QFileInfo(from).absoluteDir();
         for (scene::Material& m : project_.scene.materials)
             for (std::string* slot : scene::textureSlots(m))
                 if (!slot->empty() && QFileInfo(QString::fromStdString(*slot)).isRelative())

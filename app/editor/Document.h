@@ -61,9 +61,16 @@ public:
     QUndoStack* undoStack() const { return undoStack_; }
     bool isModified() const;
 
+    // What the user calls it (window title, questions): the file's name
+    // without its extension, or "Untitled" for a project not on disk yet.
+    QString displayName() const;
+
     // Replaces the whole project (New, Open, crash recovery): clears undo
     // history. `modified` marks it unsaved (a recovered autosave).
-    void reset(scene::Project project, const QString& path, bool modified = false);
+    // `assetsOf` is the file its relative texture paths are relative to when
+    // that is not `path`: a template opened as an untitled copy (empty path)
+    // still finds the textures in its own folder.
+    void reset(scene::Project project, const QString& path, bool modified = false, const QString& assetsOf = {});
     // Atomic save (scene::saveProject); on success the document is clean and takes `path`.
     scene::Expected<void> saveAs(const QString& path);
     // The view the next save records (Project::editorView), so that the

@@ -14,6 +14,7 @@
 #include "PresetBar.h"
 #include "ProfilerPanel.h"
 #include "RadiosityPanel.h"
+#include "StatusMessageLabel.h"
 #include "VisualizerPanel.h"
 #include "PropertyPanel.h"
 #include "Viewport.h"
@@ -58,6 +59,20 @@ scene::Project untitledProject() {
     return p;
 }
 
+// A panel in a scroll area: its controls scroll when its dock is short,
+// instead of their minimum height setting the dock area's (the Sweeps
+// dock's 371 px made the bottom strip a third of a 900 px window).
+QScrollArea* scrollable(QWidget* panel, QWidget* parent) {
+    auto* scroll = new QScrollArea(parent);
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    return scroll;
+}
+
+// The bottom strip's default height: the Profiler's table and chart side by side, the viewport above dominant.
+constexpr int kBottomDocksHeight = 200;
+
 constexpr int kMaxRecentFiles = 10;
 const char* kRecentKey = "recentFiles";
 
@@ -75,6 +90,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     setCentralWidget(viewport_);
     autosave_ = new Autosave(document_, this);
 
+    // First, so it holds the room left of the fields below and long messages cannot run into them.
+    statusMessage_ = new StatusMessageLabel(statusBar());
     frameLabel_ = new QLabel(this);
     memoryLabel_ = new QLabel(this);
     statusBar()->addPermanentWidget(frameLabel_);
@@ -238,10 +255,10 @@ void MainWindow::createDocks() {
 
     cameraPaths_ = new CameraPathPanel(document_, viewport_, this);
     connect(cameraPaths_, &CameraPathPanel::currentPathChanged, viewport_, &Viewport::setShownPath);
-    QDockWidget* pathsDock = addDock(cameraPaths_, "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
+    QDockWidget* pathsDock = addDock(scrollable(cameraPaths_, this), "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, pathsDock);
     radiosity_ = new RadiosityPanel(document_, this);
-    QDockWidget* radiosityDock = addDock(radiosity_, "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
+    QDockWidget* radiosityDock = addDock(scrollable(radiosity_, this), "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, radiosityDock);
     connect(radiosity_, &RadiosityPanel::stopped, this,
             [this](const QString& message) { log_->add(EventLog::Severity::Info, tr("Radiosity"), message); });
@@ -256,7 +273,7 @@ void MainWindow::createDocks() {
             log_->add(EventLog::Severity::Error, tr("Video export"), output + ": " + error);
     });
     sweeps_ = new SweepPanel(document_, [this] { return viewport_->viewCamera(); }, this);
-    QDockWidget* sweepsDock = addDock(sweeps_, "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
+    QDockWidget* sweepsDock = addDock(scrollable(sweeps_, this), "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, sweepsDock);
     // Timings on llvmpipe are only the settings' own when nothing else renders.
     connect(sweeps_, &SweepPanel::timingChanged, this, [this](bool timing) {
@@ -276,7 +293,7 @@ void MainWindow::createDocks() {
     });
     // The frame's error against a reference of the same view, next to its GPU time (issue #26 item 3).
     accuracy_ = new AccuracyPanel(document_, viewport_, this);
-    tabifyDockWidget(profilerDock, addDock(accuracy_, "accuracy", tr("Accuracy"), Qt::BottomDockWidgetArea));
+    tabifyDockWidget(profilerDock, addDock(scrollable(accuracy_, this), "accuracy", tr("Accuracy"), Qt::BottomDockWidgetArea));
     logPanel_ = new LogPanel(log_, this);
     QDockWidget* logDock = addDock(logPanel_, "log", tr("Log"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, logDock);
@@ -301,14 +318,19 @@ void MainWindow::createDocks() {
     // In a scroll area: its controls' minimum height, stacked under the
     // inspector's, grew the window past a 1024 px screen (to 1091 px), and
     // it stayed so after the dock was closed.
-    auto* vizScroll = new QScrollArea(this);
-    vizScroll->setWidget(visualizers_);
-    vizScroll->setWidgetResizable(true);
-    vizScroll->setFrameShape(QFrame::NoFrame);
-    QDockWidget* vizDock = addDock(vizScroll, "visualizers", tr("Visualizers"), Qt::RightDockWidgetArea);
+    QDockWidget* vizDock = addDock(scrollable(visualizers_, this), "visualizers", tr("Visualizers"),
+                                   Qt::RightDockWidgetArea);
+    // A tab beside the Inspector, raised when shown: stacked under it, the
+    // dock opened about 60 px tall with two of its controls visible.
+    tabifyDockWidget(inspectorDock, vizDock);
+    connect(vizDock->toggleViewAction(), &QAction::triggered, vizDock, [vizDock](bool shown) {
+        if (shown)
+            vizDock->raise();
+    });
     connect(vizDock, &QDockWidget::visibilityChanged, visualizers_, &VisualizerPanel::setActive);
     vizDock->hide();
-    resizeDocks({profilerDock}, {220}, Qt::Vertical);
+    inspectorDock->raise();
+    resizeDocks({profilerDock}, {kBottomDocksHeight}, Qt::Vertical);
     resizeDocks({inspectorDock}, {400}, Qt::Horizontal);
     // Given no width, the left area shrank to its minimum (about 65 px) and
     // cut every name in the outliner to its first letters.
@@ -375,6 +397,11 @@ void MainWindow::createActions() {
     QAction* frame = viewMenu_->addAction(tr("&Frame selection"), viewport_, &Viewport::frameSelection);
     frame->setShortcut(QKeySequence(Qt::Key_F));
     frame->setShortcutContext(Qt::WidgetWithChildrenShortcut); // F is also a letter in text fields
+    QAction* home = viewMenu_->addAction(tr("&Home view"), viewport_, &Viewport::homeView);
+    home->setObjectName("homeView");
+    home->setShortcut(QKeySequence(Qt::Key_Home));
+    home->setShortcutContext(Qt::WidgetWithChildrenShortcut); // Home moves the cursor in text fields
+    home->setToolTip(tr("Back to the scene's opening view: its first camera, else one framing the whole scene"));
     camerasMenu_ = viewMenu_->addMenu(tr("&Cameras"));
     auto* gizmoModes = new QActionGroup(this);
     const std::pair<QString, GizmoMode> modes[] = {
@@ -387,6 +414,19 @@ void MainWindow::createActions() {
         gizmoModes->addAction(a);
         toolbar->addAction(a);
     }
+    // Pivot point, as Blender's: where the gizmo sits and what rotate and scale turn about.
+    gizmo->addSeparator();
+    auto* pivots = new QActionGroup(this);
+    const std::pair<QString, GizmoPivot> pivotChoices[] = {{tr("Pivot: &bounds centre"), GizmoPivot::BoundsCentre},
+                                                           {tr("Pivot: &origin"), GizmoPivot::Origin}};
+    for (const auto& [label, pivot] : pivotChoices) {
+        QAction* a = gizmo->addAction(label, this, [this, pivot] { viewport_->setGizmoPivot(pivot); });
+        a->setObjectName(pivot == GizmoPivot::BoundsCentre ? "pivotBoundsCentre" : "pivotOrigin");
+        a->setCheckable(true);
+        a->setChecked(pivot == viewport_->gizmoPivotMode());
+        pivots->addAction(a);
+    }
+    gizmo->addSeparator();
     QAction* snap = gizmo->addAction(tr("S&nap (0.25 m, 15°, 0.1×; Ctrl inverts while dragging)"));
     snap->setCheckable(true);
     connect(snap, &QAction::toggled, this, [this](bool on) { viewport_->snap().enabled = on; });
@@ -444,8 +484,8 @@ void MainWindow::createActions() {
 }
 
 void MainWindow::updateTitle() {
-    const QString name = document_->path().isEmpty() ? QString::fromStdString(document_->project().name)
-                                                     : QFileInfo(document_->path()).fileName();
+    const QString name =
+        document_->path().isEmpty() ? document_->displayName() : QFileInfo(document_->path()).fileName();
     setWindowTitle(QString("%1[*] - LPV Studio").arg(name));
     setWindowModified(document_->isModified());
 }
@@ -573,8 +613,9 @@ bool MainWindow::confirmDiscardChanges() {
         return true;
     int answer = unsavedAnswerForTests_;
     if (answer == 0)
+        // The project's name, not the window's title ("untitled - LPV Studio has unsaved changes").
         answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                      tr("%1 has unsaved changes. Save them?").arg(windowTitle().remove("[*]")),
+                                      tr("%1 has unsaved changes. Save them?").arg(document_->displayName()),
                                       QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
                                       QMessageBox::Save);
     if (answer == QMessageBox::Save)

@@ -23,6 +23,7 @@ class EventLog;
 class SweepPanel;
 class LogPanel;
 class RadiosityPanel;
+class StatusMessageLabel;
 class OutlinerPanel;
 class ParameterInspector;
 class PresetBar;
@@ -48,6 +49,11 @@ public:
     bool openFromCommandLine(const QString& path);
     // Shows a project that is not on disk (the built-in Cornell box when its file is missing).
     void showProject(scene::Project project, const QString& path);
+    // Opens a template as a new, untitled project (Save asks for a path;
+    // nothing is written beside the template). False, with lastOpenError, if it cannot be read.
+    bool openTemplate(const QString& path, bool interactive = true);
+    // `lpvstudio` with no project: the built-in Cornell box template, untitled.
+    void openBuiltInTemplate();
     // Saves to the document's path, or asks for one; false if cancelled or failed.
     bool save();
     bool saveAs();
@@ -80,6 +86,8 @@ public:
     QToolButton* logButton() const { return logButton_; }
     // "Reference: 12 spp, noise 8.1%, 3.2 s" while gi.method = reference, else empty.
     QLabel* referenceLabel() const { return referenceLabel_; }
+    // The status bar's message, elided, with the whole text as its tooltip.
+    StatusMessageLabel* statusMessage() const { return statusMessage_; }
     Autosave* autosave() const { return autosave_; }
     // Import running (tests wait on it).
     bool importRunning() const { return importRunning_; }
@@ -142,6 +150,7 @@ private:
     LogPanel* logPanel_ = nullptr;
     QToolButton* logButton_ = nullptr;
     QUndoView* undoView_ = nullptr;
+    StatusMessageLabel* statusMessage_ = nullptr;
     QLabel* frameLabel_ = nullptr;
     QLabel* memoryLabel_ = nullptr;
     QLabel* texturesLabel_ = nullptr;

@@ -44,7 +44,9 @@ double niceCeiling(double v) {
 ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* split = new QSplitter(Qt::Vertical, this);
+    // Table and chart side by side: stacked, they made the dock a third of a
+    // 900 px window's height and the viewport small (issue #46).
+    auto* split = new QSplitter(Qt::Horizontal, this);
     layout->addWidget(split);
 
     table_ = new QTableWidget(0, kColumns, split);
@@ -62,7 +64,7 @@ ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
 
     chart_ = new QChart();
     chart_->setAnimationOptions(QChart::NoAnimation);
-    chart_->legend()->setAlignment(Qt::AlignBottom);
+    chart_->legend()->setAlignment(Qt::AlignRight); // beside the plot: the dock is a short strip
     chart_->setMargins(QMargins(4, 4, 4, 4));
     axisX_ = new QValueAxis(chart_);
     axisX_->setRange(-kWindowSeconds, 0.0);
@@ -77,12 +79,13 @@ ProfilerPanel::ProfilerPanel(QWidget* parent) : QWidget(parent) {
     chart_->addAxis(axisY_, Qt::AlignLeft);
     view_ = new QChartView(chart_, split); // takes ownership of the chart
     view_->setObjectName("profilerChart");
-    view_->setMinimumHeight(180);
+    view_->setMinimumHeight(140);
+    view_->setMinimumWidth(240);
     split->addWidget(table_);
     split->addWidget(view_);
     split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 2);
-    split->setSizes({150, 300}); // the chart gets two thirds
+    split->setStretchFactor(1, 1);
+    split->setSizes({450, 450}); // half each
 
     pending_ = new QTimer(this);
     pending_->setSingleShot(true);

@@ -64,8 +64,17 @@ std::optional<int> TransformGizmo::hitTest(const glm::vec2& mouse) const {
     return best;
 }
 
+scene::Transform keepPivotFixed(const scene::Transform& original, scene::Transform changed, const glm::vec3& pivot) {
+    // The pivot in the object's own space (its scale never reaches zero: drag keeps 1%).
+    const glm::vec3 local = glm::vec3(glm::inverse(original.matrix()) * glm::vec4(pivot, 1.0f));
+    const glm::vec3 moved = glm::vec3(changed.matrix() * glm::vec4(local, 1.0f));
+    changed.translation += pivot - moved;
+    return changed;
+}
+
 scene::Transform TransformGizmo::drag(GizmoMode mode, int axis, const scene::Transform& original,
-                                      const glm::vec2& start, const glm::vec2& now, const GizmoSnap& snap) const {
+                                      const glm::vec2& start, const glm::vec2& now, const GizmoSnap& snap,
+                                      const std::optional<glm::vec3>& pivot) const {
     scene::Transform t = original;
     const glm::vec2 dir = axisScreen_[std::size_t(axis)];
     const glm::vec2 delta = now - start;
@@ -100,6 +109,8 @@ scene::Transform TransformGizmo::drag(GizmoMode mode, int axis, const scene::Tra
         break;
     }
     }
+    if (mode != GizmoMode::Move && pivot)
+        t = keepPivotFixed(original, t, *pivot);
     return t;
 }
 

@@ -1,5 +1,6 @@
 #include "Viewport.h"
 
+#include "lpv/app/ImportDefaults.h"
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/GlContext.h"
 #include "lpv/renderer/SceneAnalysis.h"
@@ -171,6 +172,32 @@ void Viewport::frameSelection() {
 void Viewport::setGizmoMode(GizmoMode mode) {
     gizmoMode_ = mode;
     update();
+}
+
+void Viewport::setGizmoPivot(GizmoPivot pivot) {
+    gizmoPivot_ = pivot;
+    update();
+}
+
+scene::Camera Viewport::homeCamera() const { return app::firstView(document_->scene()); }
+
+void Viewport::homeView() { setViewCamera(homeCamera()); }
+
+Viewport::Depth Viewport::depthAt(const QPoint& position) const {
+    const scene::Camera& camera = controller_.camera();
+    const scene::Ray ray = scene::cameraRay(camera, float(position.x()) + 0.5f, float(position.y()) + 0.5f,
+                                            width(), height());
+    Depth depth;
+    depth.direction = ray.direction;
+    if (const auto hit = scene::pickObject(document_->scene(), ray.origin, ray.direction)) {
+        depth.distance = hit->distance;
+        depth.hit = hit->position;
+        return depth;
+    }
+    // Over the sky nothing says how far to go: the focus, but never more than
+    // half the scene, so a far target cannot throw the eye out of it.
+    depth.distance = std::min(glm::length(camera.target - camera.position), 0.5f * controller_.sceneSize());
+    return depth;
 }
 
 void Viewport::setSplit(std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> presets, QString labelA,
@@ -381,10 +408,16 @@ void Viewport::paintEvent(QPaintEvent*) {
     drawOverlay(painter);
 }
 
-std::optional<glm::vec3> Viewport::selectionPivot() const {
+std::optional<glm::vec3> Viewport::gizmoPivot() const {
     const Selection& sel = document_->selection();
     if (!sel.isObject())
         return std::nullopt;
+    if (gizmoPivot_ == GizmoPivot::BoundsCentre) {
+        // An object without a mesh (an empty parent) has no bounds: its origin then.
+        const scene::Bounds b = scene::objectWorldBounds(document_->scene(), sel.index);
+        if (!b.empty())
+            return b.center();
+    }
     const glm::mat4 world = document_->scene().worldMatrix(sel.index);
     return glm::vec3(world[3]);
 }
@@ -424,7 +457,7 @@ void Viewport::drawOverlay(QPainter& painter) {
                             painter.drawLine(*a, *c);
                     }
         }
-        if (const auto pivot = selectionPivot()) {
+        if (const auto pivot = gizmoPivot()) {
             gizmo_.place(*pivot, camera, width(), height());
             if (gizmo_.visible()) {
                 const glm::vec2 o = gizmo_.pivotScreen();
@@ -622,16 +655,40 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
                     draggedKey_ = k;
                     return;
                 }
+        // Placed now, not only when painted: a press right after the
+        // selection or the pivot changed would grab the handles of before.
+        if (const auto pivot = gizmoPivot())
+            gizmo_.place(*pivot, controller_.camera(), width(), height());
         const auto axis = document_->selection().isObject() ? gizmo_.hitTest(mouse) : std::nullopt;
         if (axis) {
             drag_ = Drag::Gizmo;
             gizmoAxis_ = *axis;
-            gizmoStart_ = document_->scene().objects[std::size_t(document_->selection().index)].transform;
+            const scene::Scene& s = document_->scene();
+            const int index = document_->selection().index;
+            gizmoStart_ = s.objects[std::size_t(index)].transform;
+            // Rotate and scale turn about the gizmo's pivot, given in the space the transform lives in.
+            gizmoDragPivot_.reset();
+            if (const auto pivot = gizmoPivot()) {
+                const int parent = s.objects[std::size_t(index)].parent;
+                const glm::mat4 parentWorld = parent >= 0 ? s.worldMatrix(parent) : glm::mat4(1.0f);
+                gizmoDragPivot_ = glm::vec3(glm::inverse(parentWorld) * glm::vec4(*pivot, 1.0f));
+            }
         } else {
             drag_ = heldKeys_.contains(Qt::Key_L) ? Drag::Sun : Drag::Orbit;
+            // About what the user grabbed: orbiting a far target from inside
+            // a building swung the eye through its walls.
+            if (drag_ == Drag::Orbit) {
+                const Depth depth = depthAt(pressPosition_);
+                orbitPivot_ = depth.hit ? *depth.hit : controller_.camera().target;
+            }
         }
     } else if (event->button() == Qt::MiddleButton) {
         drag_ = Drag::Pan;
+        // The grabbed surface follows the mouse, near or far.
+        const Depth depth = depthAt(pressPosition_);
+        const scene::Camera& camera = controller_.camera();
+        panDepth_ = depth.hit ? depth.distance * glm::dot(depth.direction, glm::normalize(camera.target - camera.position))
+                              : 0.0f;
     } else if (event->button() == Qt::RightButton) {
         drag_ = Drag::Look;
         flyClock_.start();
@@ -647,8 +704,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     if (!movedSincePress_)
         return;
     switch (drag_) {
-    case Drag::Orbit: controller_.orbit(float(delta.x()), float(delta.y())); break;
-    case Drag::Pan: controller_.pan(float(delta.x()), float(delta.y()), height()); break;
+    case Drag::Orbit: orbitStep(delta); break;
+    case Drag::Pan: controller_.pan(float(delta.x()), float(delta.y()), height(), panDepth_); break;
     case Drag::Look: controller_.look(float(delta.x()), float(delta.y())); break;
     case Drag::Sun: dragSun(delta); return;
     case Drag::PathKey: dragPathKey(p); return;
@@ -660,7 +717,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         snap.enabled = snapping;
         object.transform = gizmo_.drag(gizmoMode_, gizmoAxis_, gizmoStart_,
                                        glm::vec2(float(pressPosition_.x()), float(pressPosition_.y())),
-                                       glm::vec2(float(p.x()), float(p.y())), snap);
+                                       glm::vec2(float(p.x()), float(p.y())), snap, gizmoDragPivot_);
         static const char* names[] = {"Move object", "Rotate object", "Scale object"};
         document_->setObject(index, object, tr(names[int(gizmoMode_)]));
         return;
@@ -669,6 +726,23 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     }
     emit viewCameraChanged();
     update();
+}
+
+void Viewport::orbitStep(const QPoint& delta) {
+    const scene::Camera before = controller_.camera();
+    controller_.orbitAround(orbitPivot_, float(delta.x()), float(delta.y()));
+    const glm::vec3 move = controller_.camera().position - before.position;
+    const float length = glm::length(move);
+    if (!(length > 0.0f))
+        return;
+    // Never through a wall: orbiting about the far end of Sponza's atrium
+    // swings the eye metres sideways. Where it would pass a surface (with a
+    // margin of 1% of the scene) the view turns in place instead, the same turn.
+    const auto hit = scene::pickObject(document_->scene(), before.position, move / length);
+    if (hit && hit->distance < length + 0.01f * controller_.sceneSize()) {
+        controller_.setCamera(before);
+        controller_.look(float(delta.x()), float(delta.y()));
+    }
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
@@ -682,7 +756,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
-    controller_.dolly(float(event->angleDelta().y()) / 120.0f);
+    // A fraction of the way to what is under the cursor: a wheel step in
+    // Sponza's atrium moves metres, in the Cornell box centimetres.
+    const Depth depth = depthAt(event->position().toPoint());
+    controller_.dollyAlong(float(event->angleDelta().y()) / 120.0f, depth.direction, depth.distance);
     emit viewCameraChanged();
     update();
 }
@@ -718,6 +795,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     const bool flying = drag_ == Drag::Look;
     switch (event->key()) {
     case Qt::Key_F: frameSelection(); return;
+    case Qt::Key_Home: homeView(); return;
     case Qt::Key_W:
     case Qt::Key_A:
     case Qt::Key_S:

@@ -7,11 +7,13 @@
 // changed, never in a busy loop: while flying, a timer runs only as long as
 // a movement key is held.
 //
-// Mouse: left-click selects (ray picking); left-drag orbits, or drags a
-// gizmo handle, or with L held turns the sun; middle-drag pans; wheel
-// dollies; right-drag looks around, and with it held W/A/S/D/Q/E fly
-// (Shift: faster). Keys: F frames the selection; W/E/R pick the gizmo's
-// move/rotate/scale mode when not flying.
+// Mouse: left-click selects (ray picking); left-drag orbits (about the
+// surface under the cursor), or drags a gizmo handle, or with L held turns
+// the sun; middle-drag pans; wheel dollies towards the cursor by a fraction
+// of the distance to what is under it; right-drag looks around, and with it
+// held W/A/S/D/Q/E fly (Shift: faster). Keys: F frames the selection; Home
+// goes back to the opening view; W/E/R pick the gizmo's move/rotate/scale
+// mode when not flying.
 #include "CameraController.h"
 #include "Document.h"
 #include "FrameWorker.h"
@@ -70,9 +72,18 @@ public:
     const scene::Camera& viewCamera() const { return controller_.camera(); }
     void setViewCamera(const scene::Camera& camera);
     void frameSelection();
+    // The scene's opening view: its first camera, else one that frames its
+    // bounds (app::firstView, as `lpv import` and `lpv render` see it).
+    scene::Camera homeCamera() const;
+    // Back to homeCamera (Home key, View > Home view).
+    void homeView();
 
     GizmoMode gizmoMode() const { return gizmoMode_; }
     void setGizmoMode(GizmoMode mode);
+    GizmoPivot gizmoPivotMode() const { return gizmoPivot_; }
+    void setGizmoPivot(GizmoPivot pivot);
+    // Where the gizmo of the selected object sits (world), and what rotate and scale turn about.
+    std::optional<glm::vec3> gizmoPivot() const;
     GizmoSnap& snap() { return snap_; }
 
     // A/B split: the left half renders `a`, the right half `b` (named in the
@@ -183,9 +194,19 @@ private:
     void onFrameReady(const std::shared_ptr<const FrameResult>& result);
     void flyStep();
     void dragSun(const QPoint& delta);
+    // Orbits about orbitPivot_, or turns in place where the eye would pass a surface.
+    void orbitStep(const QPoint& delta);
     void dragPathKey(const QPoint& position);
     void drawPath(QPainter& painter);
-    std::optional<glm::vec3> selectionPivot() const;
+    // The visible surface under a widget position: its distance along the
+    // ray through it (the ray's direction beside it), or, over the sky, the
+    // distance to the target capped by the scene's size.
+    struct Depth {
+        glm::vec3 direction{0.0f, 0.0f, -1.0f};
+        float distance = 0.0f;
+        std::optional<glm::vec3> hit;
+    };
+    Depth depthAt(const QPoint& position) const;
     int renderWidth() const;
     int renderHeight() const;
     // gi.method = reference: (re)starts the live path tracer soon (changes
@@ -225,6 +246,7 @@ private:
     CameraController controller_;
     TransformGizmo gizmo_;
     GizmoMode gizmoMode_ = GizmoMode::Move;
+    GizmoPivot gizmoPivot_ = GizmoPivot::BoundsCentre;
     GizmoSnap snap_;
     std::optional<std::pair<scene::ParameterSet, scene::ParameterSet>> split_;
     QString splitLabels_[2];
@@ -244,6 +266,9 @@ private:
     int shownPath_ = -1;
     int draggedKey_ = -1;
     scene::Transform gizmoStart_;
+    std::optional<glm::vec3> gizmoDragPivot_; // in the parent's space, fixed for the whole drag
+    glm::vec3 orbitPivot_{0.0f};              // the surface under the cursor when the orbit began
+    float panDepth_ = 0.0f;                   // its depth along the view when the pan began
     QSet<int> heldKeys_;
     QTimer flyTimer_;
     QElapsedTimer flyClock_;

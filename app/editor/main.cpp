@@ -1,12 +1,10 @@
 // lpvstudio: the LPV Studio editor. Opens the project given on the command
-// line, or the built-in Cornell box.
+// line, or the built-in Cornell box template as an untitled copy.
 #include "MainWindow.h"
 #include "Viewport.h"
 #include "VisualizerPanel.h"
 
-#include "lpv/app/BuiltInProjects.h"
 #include "lpv/app/VersionInfo.h"
-#include "lpv/scene/CornellBox.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -20,7 +18,6 @@
 #include <QTimer>
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 int main(int argc, char** argv) {
@@ -77,24 +74,20 @@ int main(int argc, char** argv) {
 
     lpv::editor::MainWindow window;
     const QStringList args = parser.positionalArguments();
-    // Installed: <prefix>/share/lpvstudio/projects beside bin/; in the build folder: the source tree.
-    const std::filesystem::path builtIn = lpv::app::findBuiltInProject(
-        "cornell-box", std::filesystem::path(QCoreApplication::applicationDirPath().toStdU16String()));
-    const QString path = args.isEmpty() ? QString::fromStdU16String(builtIn.u16string()) : args.front();
+    const QString path = args.isEmpty() ? QString() : args.front();
     // Screenshots and smoke tests have nobody to read a dialog: there a project
     // that cannot be read ends the run with its reason and exit code 1.
     const bool unattended = parser.isSet(screenshot) || quitAfterMs >= 0;
-    if (!args.isEmpty() && !unattended) {
+    if (args.isEmpty()) {
+        // The built-in template, as an untitled copy: nothing is written into the source or install tree.
+        window.openBuiltInTemplate();
+    } else if (!unattended) {
         // The editor opens either way; the box over it names file and field.
         if (!window.openFromCommandLine(path))
             fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(window.lastOpenError()));
-    } else if (!args.isEmpty() || !builtIn.empty()) {
-        if (!window.openProject(path, false) && !args.isEmpty()) {
-            fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(window.lastOpenError()));
-            return 1;
-        }
-    } else {
-        window.showProject(lpv::scene::makeCornellBoxProject(), "built-in Cornell box");
+    } else if (!window.openProject(path, false)) {
+        fprintf(stderr, "lpvstudio: could not open %s\n", qPrintable(window.lastOpenError()));
+        return 1;
     }
     if (parser.isSet(visualizer)) {
         const QStringList views{"light", "gv", "leak", "backside", "rsm", "shadow"};

@@ -212,10 +212,10 @@ TEST(EditorGui, GizmoDragMovesTheSelectionInOneUndoStep) {
     w.doc().select({Selection::Kind::Object, 0});
     QTest::qWait(50);
     const auto before = w.doc().scene().objects[0].transform;
-    // The gizmo's x handle starts at the pivot; drag along it.
-    const glm::mat4 world = w.doc().scene().worldMatrix(0);
+    // The gizmo's x handle starts at the pivot (the selection's bounds centre); drag along it.
+    ASSERT_TRUE(vp->gizmoPivot().has_value());
     TransformGizmo gizmo;
-    gizmo.place(glm::vec3(world[3]), vp->viewCamera(), vp->width(), vp->height());
+    gizmo.place(*vp->gizmoPivot(), vp->viewCamera(), vp->width(), vp->height());
     ASSERT_TRUE(gizmo.visible());
     const glm::vec2 grab = glm::mix(gizmo.pivotScreen(), gizmo.handleEnd(0), 0.7f);
     const glm::vec2 dir = glm::normalize(gizmo.handleEnd(0) - gizmo.pivotScreen());
