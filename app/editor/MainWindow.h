@@ -53,7 +53,8 @@ public:
     // nothing is written beside the template). False, with lastOpenError, if it cannot be read.
     bool openTemplate(const QString& path, bool interactive = true);
     // `lpvstudio` with no project: the built-in Cornell box template, untitled.
-    void openBuiltInTemplate();
+    // Returns the template file it read (empty: none was found, the box was made in code).
+    QString openBuiltInTemplate();
     // Saves to the document's path, or asks for one; false if cancelled or failed.
     bool save();
     bool saveAs();

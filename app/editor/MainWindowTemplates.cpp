@@ -37,14 +37,16 @@ bool MainWindow::openTemplate(const QString& path, bool interactive) {
     return true;
 }
 
-void MainWindow::openBuiltInTemplate() {
+QString MainWindow::openBuiltInTemplate() {
     // Installed: <prefix>/share/lpvstudio/projects beside bin/; in the build folder: the source tree.
     const std::filesystem::path builtIn = app::findBuiltInProject(
         "cornell-box", std::filesystem::path(QCoreApplication::applicationDirPath().toStdU16String()));
-    if (!builtIn.empty() && openTemplate(QString::fromStdU16String(builtIn.u16string()), false))
-        return;
+    const QString file = QString::fromStdU16String(builtIn.u16string());
+    if (!builtIn.empty() && openTemplate(file, false))
+        return file;
     // No template file (or an unreadable one): the same box, made in code.
     showProject(scene::makeCornellBoxProject(), QString());
+    return {};
 }
 
 } // namespace lpv::editor
