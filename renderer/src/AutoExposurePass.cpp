@@ -22,6 +22,8 @@ scene::Expected<AutoExposurePass> AutoExposurePass::create() {
     p.adapt_ = std::move(*adapt);
     p.exposure_ = createBuffer();
     glNamedBufferStorage(p.exposure_.id(), 4 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    p.histogram_ = createBuffer();
+    glNamedBufferStorage(p.histogram_.id(), kMeterBins * sizeof(GLuint), nullptr, 0);
     p.reset();
     return p;
 }
@@ -31,7 +33,7 @@ void AutoExposurePass::reset() {
     glNamedBufferSubData(exposure_.id(), 0, sizeof(initial), initial.data());
 }
 
-void AutoExposurePass::meter(GLuint hdr, int width, int height, float key, float blend) {
+void AutoExposurePass::meter(GLuint hdr, int width, int height, const MeterTarget& target, float blend) {
     const int tilesX = (width + kTilePixels - 1) / kTilePixels;
     const int tilesY = (height + kTilePixels - 1) / kTilePixels;
     const int tiles = tilesX * tilesY;
@@ -42,6 +44,9 @@ void AutoExposurePass::meter(GLuint hdr, int width, int height, float key, float
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, tiles_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure_.id());
+    const GLuint zero = 0;
+    glClearNamedBufferData(histogram_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, histogram_.id());
     glUseProgram(reduce_.id());
     glBindTextureUnit(0, hdr);
     glProgramUniform1i(reduce_.id(), glGetUniformLocation(reduce_.id(), "uHdr"), 0);
@@ -50,7 +55,9 @@ void AutoExposurePass::meter(GLuint hdr, int width, int height, float key, float
     const GLuint a = adapt_.id();
     glUseProgram(a);
     glProgramUniform1i(a, glGetUniformLocation(a, "uTileCount"), tiles);
-    glProgramUniform1f(a, glGetUniformLocation(a, "uKey"), key);
+    glProgramUniform1f(a, glGetUniformLocation(a, "uKey"), float(target.key));
+    glProgramUniform1f(a, glGetUniformLocation(a, "uHighlightPercent"), float(target.highlightPercent));
+    glProgramUniform1f(a, glGetUniformLocation(a, "uHighlightInput"), float(target.highlightInput));
     glProgramUniform1f(a, glGetUniformLocation(a, "uBlend"), blend);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -65,6 +72,7 @@ double AutoExposurePass::readExposure() const {
 void AutoExposurePass::addGpuMemory(GpuMemoryLedger& ledger) const {
     ledger.addBuffer("exposure", exposure_.id());
     ledger.addBuffer("exposure.tiles", tiles_.id());
+    ledger.addBuffer("exposure.histogram", histogram_.id());
 }
 
 } // namespace lpv::renderer

@@ -5,6 +5,7 @@
 
 #include "GlossyReflections.h"
 #include "lpv/renderer/AutoExposure.h"
+#include "lpv/renderer/DisplayMapping.h"
 #include "lpv/scene/AreaLight.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -46,7 +47,7 @@ int outputViewIndex(const scene::ParameterSet& params) {
 }
 
 int tonemapperIndex(const scene::ParameterSet& params) {
-    return enumIndex(params, "output.tonemapper", {"aces", "reinhard", "uncharted2", "linear"});
+    return enumIndex(params, "output.tonemapper", {"aces", "reinhard", "uncharted2", "linear", "neutral"});
 }
 
 // Uniform names of light i, built once (not per frame).
@@ -396,8 +397,7 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
             const FrameContext& f = ctx.frame;
             const double blend =
                 exposureTimeStep ? adaptationBlend(*exposureTimeStep, f.params.getFloat("output.exposureAdaptation")) : 1.0;
-            exposure->meter(ctx.id("camera.hdr"), f.width, f.height, float(f.params.getFloat("output.exposureKey")),
-                            float(blend));
+            exposure->meter(ctx.id("camera.hdr"), f.width, f.height, meterTargetOf(f.params), float(blend));
             return scene::Expected<void>{};
         };
         graph.addPass(std::move(p));

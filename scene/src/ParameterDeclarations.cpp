@@ -254,11 +254,18 @@ std::vector<ParameterInfo> declareParameters() {
              "Auto exposure: the display luminance the log-average luminance maps to (Reinhard et al.'s key value; "
              "0.18 = middle grey)",
                P::Exposure | P::Tonemap),
+        real("output.exposureHighlights", 98.0, 50.0, 100.0, "%", "Output",
+             "Auto exposure: highlight protection. The exposure is lowered from the key's until the brightest "
+             "channel of this percentage of the lit pixels stays below the tonemapper's white, so at most the "
+             "rest clip (100: not even the brightest pixel)",
+             P::Exposure | P::Tonemap),
         real("output.exposureAdaptation", 0.5, 0.0, 60.0, "s", "Output",
              "Auto exposure: time constant of the adaptation in the editor and videos (0 = at once)",
                P::Exposure | P::Tonemap),
-        choice("output.tonemapper", "aces", {"aces", "reinhard", "uncharted2", "linear"}, "Output",
-               "Operator that maps HDR radiance to display values", P::Tonemap),
+        choice("output.tonemapper", "neutral", {"aces", "reinhard", "uncharted2", "linear", "neutral"}, "Output",
+               "Operator that maps HDR radiance to display values; neutral (Khronos PBR Neutral) keeps hues "
+               "and compresses highlights toward white without clipping them (auto exposure meters toward the operator's white)",
+               P::Exposure | P::Tonemap),
         choice("output.view", "final", {"final", "indirect", "direct"}, "Output",
                "What the camera image shows: the final image, only the LPV's indirect irradiance (W/m^2, no "
                "albedo: what `lpv compare` measures against the path-traced reference), or direct light only",

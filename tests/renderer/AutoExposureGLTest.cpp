@@ -3,6 +3,7 @@
 #include "GlFixture.h"
 
 #include "lpv/renderer/AutoExposure.h"
+#include "lpv/renderer/DisplayMapping.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/scene/CornellBox.h"
 
@@ -34,8 +35,8 @@ protected:
     // ln of the exposure the CPU twin meters on the renderer's last HDR frame.
     double cpuTargetLogExposure() const {
         const std::vector<float> hdr = renderer->readHdr();
-        return renderer::targetLogExposure(renderer::meterLogLuminance(hdr.data(), hdr.size() / 4, 4),
-                                           params.getFloat("output.exposureKey"));
+        return renderer::targetLogExposure(renderer::meterLuminance(hdr.data(), hdr.size() / 4, 4),
+                                           renderer::meterTargetOf(params));
     }
     double meanDisplay() const {
         double sum = 0.0;
@@ -58,6 +59,26 @@ TEST_F(AutoExposureGL, IsTheDefaultAndMatchesTheCpuMeter) {
     const double expected = std::exp(cpuTargetLogExposure());
     EXPECT_NEAR(renderer->displayExposure(params) / expected, 1.0, 1e-3) << "CPU twin " << expected;
     EXPECT_NE(expected, 1.0); // the Cornell box is not already at the key
+}
+
+TEST_F(AutoExposureGL, HighlightProtectionMatchesTheCpuMeter) {
+    // A high key under the linear operator (white at 1) would clip the lit
+    // walls: the histogram's percentile, not the log-average, sets the
+    // exposure, on the GPU as on the CPU.
+    ASSERT_TRUE(params.set("output.exposureKey", 2.0).has_value());
+    ASSERT_TRUE(params.set("output.tonemapper", std::string("linear")).has_value());
+    ASSERT_TRUE(params.set("output.exposureHighlights", 90.0).has_value());
+    render();
+    const std::vector<float> hdr = renderer->readHdr();
+    const renderer::LuminanceMeter meter = renderer::meterLuminance(hdr.data(), hdr.size() / 4, 4);
+    renderer::MeterTarget keyOnly = renderer::meterTargetOf(params);
+    keyOnly.highlightPercent = 100.0;
+    keyOnly.highlightInput = 1e30;
+    ASSERT_LT(cpuTargetLogExposure(), renderer::targetLogExposure(meter, keyOnly) - 0.1)
+        << "the highlights must lower the exposure for this test to see them";
+    // A pixel whose log2 rounds the other way on the GPU moves one quarter-stop
+    // bin, which the in-bin interpolation turns into a tiny shift.
+    EXPECT_NEAR(std::log(renderer->displayExposure(params)), cpuTargetLogExposure(), 2e-3);
 }
 
 TEST_F(AutoExposureGL, CompensationMultipliesTheMeteredExposure) {

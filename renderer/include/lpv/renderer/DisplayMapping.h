@@ -6,6 +6,7 @@
 // through the same curve and equal radiance shows as equal pixels. The
 // `--preview` mapping (x / (x + mean), reference/Preview.h) stays an option.
 // Qt-free, beside AutoExposure.h's CPU twin: the editor and the sweeps' images use it.
+#include "lpv/renderer/AutoExposure.h"
 #include "lpv/scene/Image.h"
 #include "lpv/scene/ParameterRegistry.h"
 
@@ -16,10 +17,19 @@
 
 namespace lpv::renderer {
 
-// output.tonemapper, in tonemap.frag's numbering.
-enum class Tonemapper { Aces, Reinhard, Uncharted2, Linear };
+// output.tonemapper, in tonemap.frag's numbering. Neutral is Khronos PBR
+// Neutral (2024): linear up to 0.76, then a shoulder that compresses the
+// brightest channel toward 1 without reaching it and keeps the hue, fading
+// to white only as the overexposure grows; the others clip per channel
+// (ACES near 5.5, Uncharted2 at its white 5.6, linear at 1).
+enum class Tonemapper { Aces, Reinhard, Uncharted2, Linear, Neutral };
 // The operator of a registry value ("aces", ...); Aces for one it does not know.
 Tonemapper tonemapperOf(const std::string& name);
+
+// The smallest grey value before the operator (exposure applied) that the
+// display shows as white (255 in all channels of an 8-bit image): where auto
+// exposure lets the highlight percentile go at most.
+double whiteInput(Tonemapper op);
 
 struct DisplayMapping {
     double exposure = 1.0; // the linear scale before the operator (2^EV, times the metered exposure on auto)
@@ -37,6 +47,10 @@ glm::vec3 mapToDisplay(const glm::vec3& hdr, const DisplayMapping& mapping);
 // A linear HDR image (rows top to bottom) as RGBA8, as tonemap.frag writes it.
 scene::Image8 tonemapImage(const std::vector<glm::vec3>& hdr, int width, int height,
                            const DisplayMapping& mapping);
+
+// What output.exposureKey, output.exposureHighlights and output.tonemapper
+// ask of the auto exposure (the renderer's and the CPU twin's).
+MeterTarget meterTargetOf(const scene::ParameterSet& parameters);
 
 // The mapping an image the renderer never metered would get from these
 // parameters (the live reference view): 2^output.exposure, times, on
