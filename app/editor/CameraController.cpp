@@ -103,10 +103,12 @@ void CameraController::look(float dxPixels, float dyPixels) {
                      turn(offset, -dxPixels * kDegreesPerPixel, -dyPixels * kDegreesPerPixel, camera_.up);
 }
 
-void CameraController::fly(const glm::vec3& axes, float seconds, bool fast) {
+void CameraController::fly(const glm::vec3& axes, float seconds, bool fast, float ahead) {
     const glm::vec3 f = forward();
     const glm::vec3 right = glm::normalize(glm::cross(f, camera_.up));
-    const glm::vec3 move = (axes.x * right + axes.y * camera_.up + axes.z * f) * flySpeed_ * seconds *
+    // Down Sponza's nave at full speed, slowing as a pillar comes close.
+    const float speed = ahead > 0.0f ? std::clamp(ahead, 0.01f * sceneSize_, flySpeed_) : flySpeed_;
+    const glm::vec3 move = (axes.x * right + axes.y * camera_.up + axes.z * f) * speed * seconds *
                            (fast ? 4.0f : 1.0f);
     camera_.position += move;
     camera_.target += move;

@@ -44,7 +44,10 @@ public:
     // Turns the view direction around the eye (fly mode).
     void look(float dxPixels, float dyPixels);
     // Moves eye and target along the view axes: x right, y world up, z forward.
-    void fly(const glm::vec3& axes, float seconds, bool fast);
+    // `ahead` (the distance to the surface in front, 0 = unknown) slows it
+    // near walls: at most that distance per second, never under 1% of the
+    // scene per second, never over flySpeed.
+    void fly(const glm::vec3& axes, float seconds, bool fast, float ahead = 0.0f);
     // Places the eye so `box` fills the view, keeping the view direction.
     void frame(const scene::Bounds& box);
 

@@ -167,7 +167,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Doc
     defaultState_ = saveState();
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoringLayout_ = true;
     restoreState(settings.value("window/state").toByteArray());
+    restoringLayout_ = false;
     showProject(untitledProject(), {});
     log_->add(EventLog::Severity::Info, "OpenGL",
               renderer::glDebugOutputRequested()
@@ -320,13 +322,11 @@ void MainWindow::createDocks() {
     // it stayed so after the dock was closed.
     QDockWidget* vizDock = addDock(scrollable(visualizers_, this), "visualizers", tr("Visualizers"),
                                    Qt::RightDockWidgetArea);
-    // A tab beside the Inspector, raised when shown: stacked under it, the
-    // dock opened about 60 px tall with two of its controls visible.
+    // A tab beside the Inspector, raised whenever it is shown (eventFilter):
+    // stacked under it, the dock opened about 60 px tall with two of its
+    // controls visible.
     tabifyDockWidget(inspectorDock, vizDock);
-    connect(vizDock->toggleViewAction(), &QAction::triggered, vizDock, [vizDock](bool shown) {
-        if (shown)
-            vizDock->raise();
-    });
+    vizDock_ = vizDock;
     connect(vizDock, &QDockWidget::visibilityChanged, visualizers_, &VisualizerPanel::setActive);
     vizDock->hide();
     inspectorDock->raise();
@@ -471,7 +471,11 @@ void MainWindow::createActions() {
         resolutions->addAction(a);
     }
     viewport_->setResolutionScale(savedScale);
-    viewMenu_->addAction(tr("Reset &layout"), this, [this] { restoreState(defaultState_); });
+    viewMenu_->addAction(tr("Reset &layout"), this, [this] {
+        restoringLayout_ = true;
+        restoreState(defaultState_);
+        restoringLayout_ = false;
+    });
     viewMenu_->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -737,6 +741,11 @@ void MainWindow::offerRecovery() {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // Shown (View menu, a test, --visualizer) is seen: as a tab it would
+    // otherwise open behind the Inspector. Not while a saved layout is
+    // restored, which keeps its own current tabs.
+    if (event->type() == QEvent::Show && watched == vizDock_ && !restoringLayout_)
+        QTimer::singleShot(0, vizDock_, [dock = vizDock_] { dock->raise(); });
     if (event->type() != QEvent::ShortcutOverride)
         return QMainWindow::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);

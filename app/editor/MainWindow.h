@@ -161,6 +161,8 @@ private:
     QMenu* camerasMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QByteArray defaultState_;
+    QDockWidget* vizDock_ = nullptr; // raised whenever shown (eventFilter)
+    bool restoringLayout_ = false;   // restoreState shows docks: no raising then
     bool importRunning_ = false;
     int importProgressDelayMs_ = 300;
     QString lastOpenError_;

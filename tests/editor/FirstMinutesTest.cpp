@@ -278,6 +278,28 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     sendWheel(vp, nearest, -3);
     EXPECT_LT(glm::length(vp->viewCamera().position - opening.position), 1e-3f * surface);
 
+    // A middle drag over that surface: it follows the mouse (the pan was sized at the far target).
+    vp->homeView();
+    const auto grabbedRay = lpv::scene::cameraRay(opening, float(nearest.x()) + 0.5f, float(nearest.y()) + 0.5f,
+                                                  vp->width(), vp->height());
+    const glm::vec3 grabbed = grabbedRay.origin + grabbedRay.direction * surface;
+    const QPoint to = nearest + QPoint(40, 0);
+    QTest::mousePress(vp, Qt::MiddleButton, {}, nearest);
+    for (int i = 1; i <= 4; ++i)
+        QTest::mouseMove(vp, nearest + QPoint(10 * i, 0));
+    QTest::mouseRelease(vp, Qt::MiddleButton, {}, to);
+    {
+        const lpv::scene::Camera& c = vp->viewCamera();
+        const glm::vec4 clip = c.projection(float(vp->width()) / float(vp->height())) * c.view() *
+                               glm::vec4(grabbed, 1.0f);
+        const glm::vec2 shown((clip.x / clip.w * 0.5f + 0.5f) * float(vp->width()),
+                              (0.5f - clip.y / clip.w * 0.5f) * float(vp->height()));
+        std::printf("FirstMinutes: the grabbed point is %.1f px from the cursor after a 40 px pan\n",
+                    double(glm::length(shown - glm::vec2(float(to.x()), float(to.y())))));
+        EXPECT_LT(glm::length(shown - glm::vec2(float(to.x()), float(to.y()))), 4.0f)
+            << "the grabbed surface did not follow the mouse";
+    }
+
     // A 70-pixel orbit stays in the building.
     vp->homeView();
     QTest::mousePress(vp, Qt::LeftButton, {}, centre);
@@ -387,6 +409,27 @@ TEST(FirstMinutes, LongStatusMessagesAreElidedWithTheWholeTextInATooltip) {
     }
     w.window->statusBar()->clearMessage();
     EXPECT_TRUE(label->text().isEmpty());
+}
+
+// Flying slows near a wall: at most the distance ahead per second, at least 1% of the scene.
+TEST(FirstMinutes, FlySlowsDownNearASurface) {
+    CameraController c;
+    lpv::scene::Bounds b;
+    b.extend(glm::vec3(-20.0f, 0.0f, -5.0f));
+    b.extend(glm::vec3(20.0f, 15.0f, 5.0f)); // Sponza's size
+    c.setSceneBounds(b);
+    lpv::scene::Camera camera;
+    camera.position = glm::vec3(0.0f, 2.0f, 0.0f);
+    camera.target = glm::vec3(1.0f, 2.0f, 0.0f);
+    c.setCamera(camera);
+    c.fly(glm::vec3(0.0f, 0.0f, 1.0f), 0.1f, false, 30.0f); // a long nave ahead: full speed
+    EXPECT_NEAR(c.camera().position.x, 0.1f * c.flySpeed(), 1e-4f);
+    c.setCamera(camera);
+    c.fly(glm::vec3(0.0f, 0.0f, 1.0f), 0.1f, false, 2.0f); // a pillar 2 m ahead
+    EXPECT_NEAR(c.camera().position.x, 0.2f, 1e-4f);
+    c.setCamera(camera);
+    c.fly(glm::vec3(0.0f, 0.0f, 1.0f), 0.1f, false, 0.0001f); // against it: still moves, slowly
+    EXPECT_NEAR(c.camera().position.x, 0.1f * 0.01f * c.sceneSize(), 1e-5f);
 }
 
 int main(int argc, char** argv) {
