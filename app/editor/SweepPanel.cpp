@@ -19,9 +19,12 @@
 #include <QLabel>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QStyle>
 #include <QScatterSeries>
 #include <QSpinBox>
 #include <QSplitter>
@@ -49,6 +52,10 @@ const QColor kBiasedColor(235, 140, 20);
 const QColor kPointColor(40, 110, 180);
 const QColor kFrontColor(200, 60, 40);
 constexpr double kMiB = 1024.0 * 1024.0;
+// The hovered run's preview beside the reference's: each at most this wide,
+// and the detail column exactly as wide as the two.
+constexpr int kPreviewWidth = 160;
+constexpr int kPreviewGap = 4;
 
 QString biasedName() {
     return QObject::tr("biased (mean outside 0.8-1.25x)");
@@ -238,21 +245,16 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     selectedPoint_->setColor(Qt::transparent);
     selectedPoint_->setBorderColor(Qt::black);
     addSeries(selectedPoint_, tr("selected"));
-    for (QScatterSeries* s : {allPoints_, frontPoints_, biasedPoints_, currentPoints_, selectedPoint_}) {
-        connect(s, &QScatterSeries::hovered, this, [this](const QPointF& p, bool on) {
-            if (on)
-                showRun(runAt(p));
-        });
-        // Applying rebuilds the series; not inside the series' own mouse event.
-        connect(s, &QScatterSeries::clicked, this, [this](const QPointF& p) {
-            const int index = runAt(p);
-            QMetaObject::invokeMethod(this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
-        });
-    }
     chartView_ = new QChartView(chart_, middle);
     chartView_->setRenderHint(QPainter::Antialiasing);
     chartView_->setMinimumWidth(320);
     chartView_->setMinimumHeight(240);
+    // Hover and click are read from the view, not from each series: the
+    // point nearest the cursor within a few pixels, whichever item (a
+    // quartile bar, the front's line, the current star) lies on top of it.
+    // A series' own click went to the topmost item, often a bar, and was lost.
+    chartView_->viewport()->setMouseTracking(true);
+    chartView_->viewport()->installEventFilter(this);
     middleLayout->addWidget(chartView_, 3);
     runsTable_ = new QTableWidget(0, kRunColumns, middle);
     runsTable_->setObjectName("sweepRuns");
@@ -282,8 +284,19 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     });
     middleLayout->addWidget(runsTable_, 2);
 
-    // Right: the hovered or selected point.
-    auto* detail = new QWidget(split);
+    // Right: the hovered or selected point, in a column of fixed width whose
+    // content scrolls. What a hover shows (text, previews) never resizes it:
+    // a column that grew on hover shrank the chart, the point moved from
+    // under the cursor, and a click without moving applied nothing (issue #46).
+    auto* detailScroll = new QScrollArea(split);
+    detailScroll->setObjectName("sweepDetail");
+    detailScroll->setFrameShape(QFrame::NoFrame);
+    detailScroll->setWidgetResizable(true);
+    detailScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    detailScroll->setFixedWidth(2 * kPreviewWidth + kPreviewGap +
+                                detailScroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2);
+    auto* detail = new QWidget(detailScroll);
+    detailScroll->setWidget(detail);
     auto* detailLayout = new QVBoxLayout(detail);
     detailLayout->setContentsMargins(0, 0, 0, 0);
     auto* cheapest = new QHBoxLayout();
@@ -791,25 +804,48 @@ void SweepPanel::rebuildRunsTable(const std::vector<const bench::SweepRun*>& run
         runsTable_->clearSelection();
 }
 
-int SweepPanel::runAt(const QPointF& point) const {
+int SweepPanel::runAtPixel(const QPoint& pos) const {
     if (!sweep_)
         return -1;
+    // About a marker's radius, so a click on its edge still counts.
+    constexpr double kPickRadius = 7.0;
     int best = -1;
-    double bestDistance = 0.0;
-    const double xSpan = std::max(axisX_->max() - axisX_->min(), 1e-9);
-    const double ySpan = std::max(axisY_->max() - axisY_->min(), 1e-9);
+    double bestDistance = kPickRadius * kPickRadius;
     for (std::size_t i = 0; i < plotted_.size(); ++i) {
         if (!plotted_[i])
             continue;
-        const double dx = (plotted_[i]->x() - point.x()) / xSpan;
-        const double dy = (plotted_[i]->y() - point.y()) / ySpan;
-        const double d = dx * dx + dy * dy;
-        if (best < 0 || d < bestDistance) {
+        const QPointF at = chartView_->mapFromScene(chart_->mapToPosition(*plotted_[i], allPoints_));
+        const QPointF d = at - QPointF(pos);
+        const double distance = d.x() * d.x() + d.y() * d.y();
+        if (distance <= bestDistance) {
             best = int(i);
-            bestDistance = d;
+            bestDistance = distance;
         }
     }
-    return bestDistance < 1e-4 ? best : -1;
+    return best;
+}
+
+bool SweepPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched != chartView_->viewport())
+        return QWidget::eventFilter(watched, event);
+    const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
+    if (!mouse)
+        return QWidget::eventFilter(watched, event);
+    const QPoint pos = mouse->position().toPoint();
+    if (event->type() == QEvent::MouseMove && mouse->buttons() == Qt::NoButton) {
+        if (const int index = runAtPixel(pos); index >= 0)
+            showRun(index);
+    } else if (event->type() == QEvent::MouseButtonPress && mouse->button() == Qt::LeftButton) {
+        pressedRun_ = runAtPixel(pos);
+    } else if (event->type() == QEvent::MouseButtonRelease && mouse->button() == Qt::LeftButton) {
+        // A click: pressed and released on the same point. Applying rebuilds
+        // the series: not inside the view's own mouse event.
+        const int index = runAtPixel(pos);
+        if (index >= 0 && index == pressedRun_)
+            QMetaObject::invokeMethod(this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
+        pressedRun_ = -1;
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void SweepPanel::showSweep(std::shared_ptr<const bench::SavedSweep> sweep) {
@@ -876,14 +912,15 @@ void SweepPanel::showRun(int index) {
         detailImage_->clear();
         return;
     }
-    // Reference | setting, side by side at most 200 px wide each.
-    const QImage a = referencePreview_.scaledToWidth(std::min(200, referencePreview_.width()), Qt::SmoothTransformation);
+    // Reference | setting, side by side, as wide as the detail column holds.
+    const QImage a = referencePreview_.scaledToWidth(std::min(kPreviewWidth, referencePreview_.width()),
+                                                     Qt::SmoothTransformation);
     const QImage b = run.scaled(a.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-    QImage both(a.width() * 2 + 4, a.height(), QImage::Format_RGB32);
+    QImage both(a.width() * 2 + kPreviewGap, a.height(), QImage::Format_RGB32);
     both.fill(Qt::white);
     QPainter painter(&both);
     painter.drawImage(0, 0, a);
-    painter.drawImage(a.width() + 4, 0, b);
+    painter.drawImage(a.width() + kPreviewGap, 0, b);
     painter.end();
     detailImage_->setPixmap(QPixmap::fromImage(both));
 }

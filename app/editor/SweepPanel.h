@@ -94,6 +94,10 @@ public:
     QString statusText() const;
     void setSweepSize(int width, int height, int frames, int warmup, int referenceSpp);
 
+protected:
+    // Hover and click on the chart's points (its viewport's mouse events).
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 signals:
     void sweepFinished();
     // A sweep started (true) or ended (false): while it times, other
@@ -111,7 +115,8 @@ private:
     void onDocumentChanged(bool newProject);
     void saveBesideProject(const QString& projectPath);
     void loadBesideProject();
-    int runAt(const QPointF& point) const;
+    // The run whose point is nearest `pos` (the chart view's viewport pixels), within a marker's radius; or -1.
+    int runAtPixel(const QPoint& pos) const;
     // The runs shown: the finished sweep's, or those of the one running (null: not measured yet).
     std::vector<const bench::SweepRun*> shownRuns() const;
     bench::CostPoint costPoint(const bench::SweepRun& run) const;
@@ -128,6 +133,7 @@ private:
     std::vector<QImage> previews_;
     QImage referencePreview_;
     int selected_ = -1;
+    int pressedRun_ = -1; // the point a left button went down on
 
     QTableWidget* questions_ = nullptr;
     QSpinBox* width_ = nullptr;
