@@ -113,7 +113,7 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
     questions_->horizontalHeader()->setSectionResizeMode(kValues, QHeaderView::Stretch);
     questions_->setToolTip(tr("Each checked row varies one parameter alone around the current settings"));
     setupLayout->addWidget(questions_, 1);
-    buildQuestions();
+    setQuestionRows(defaultQuestionRows());
     auto* addRow = new QPushButton(tr("Add a row"), setup);
     connect(addRow, &QPushButton::clicked, this, [this] {
         const int row = questions_->rowCount();
@@ -347,17 +347,38 @@ SweepPanel::SweepPanel(Document* document, std::function<scene::Camera()> curren
 
 SweepPanel::~SweepPanel() = default;
 
-void SweepPanel::buildQuestions() {
-    for (const bench::Question& q : bench::reportQuestions()) {
+std::vector<bench::SweepQuestionRow> SweepPanel::defaultQuestionRows() {
+    std::vector<bench::SweepQuestionRow> rows;
+    for (const bench::Question& q : bench::reportQuestions())
+        rows.push_back({q.name, q.sweep, std::ranges::find(kDefaultQuestions, q.name) != std::end(kDefaultQuestions)});
+    return rows;
+}
+
+std::vector<bench::SweepQuestionRow> SweepPanel::questionRows() const {
+    std::vector<bench::SweepQuestionRow> rows;
+    for (int row = 0; row < questions_->rowCount(); ++row) {
+        const QTableWidgetItem* name = questions_->item(row, kQuestion);
+        const QTableWidgetItem* values = questions_->item(row, kValues);
+        if (name)
+            rows.push_back({name->text().toStdString(), values ? values->text().toStdString() : std::string(),
+                            name->checkState() == Qt::Checked});
+    }
+    return rows;
+}
+
+void SweepPanel::setQuestionRows(const std::vector<bench::SweepQuestionRow>& rows) {
+    const auto questions = bench::reportQuestions();
+    questions_->setRowCount(0);
+    for (const bench::SweepQuestionRow& q : rows) {
         const int row = questions_->rowCount();
         questions_->insertRow(row);
         auto* name = new QTableWidgetItem(QString::fromStdString(q.name));
-        name->setFlags(name->flags() & ~Qt::ItemIsEditable);
-        name->setCheckState(std::ranges::find(kDefaultQuestions, q.name) != std::end(kDefaultQuestions)
-                                ? Qt::Checked
-                                : Qt::Unchecked);
+        // The report's questions keep their names; a row the user added can be renamed.
+        if (std::ranges::any_of(questions, [&](const bench::Question& r) { return r.name == q.name; }))
+            name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+        name->setCheckState(q.checked ? Qt::Checked : Qt::Unchecked);
         questions_->setItem(row, kQuestion, name);
-        questions_->setItem(row, kValues, new QTableWidgetItem(QString::fromStdString(q.sweep)));
+        questions_->setItem(row, kValues, new QTableWidgetItem(QString::fromStdString(q.values)));
     }
     questions_->resizeColumnToContents(kQuestion);
 }
@@ -510,13 +531,18 @@ void SweepPanel::saveBesideProject(const QString& projectPath) {
     if (!sweep_)
         return;
     const auto file = bench::savedSweepFileOf(projectPath.toStdString());
-    if (auto ok = bench::saveSweep(*sweep_, file); !ok)
+    // The rows as they are now, so that the project reopens asking the same questions.
+    bench::SavedSweep saved = *sweep_;
+    saved.questions = questionRows();
+    if (auto ok = bench::saveSweep(saved, file); !ok)
         emit logMessage(tr("The sweep was not saved: %1").arg(QString::fromStdString(ok.error().describe())), true);
 }
 
 void SweepPanel::loadBesideProject() {
     previews_.clear();
     referencePreview_ = QImage();
+    // A project asks the default questions unless its saved sweep kept its own.
+    setQuestionRows(defaultQuestionRows());
     const QString path = document_->path();
     if (path.isEmpty())
         return rebuildChart();
@@ -532,6 +558,8 @@ void SweepPanel::loadBesideProject() {
         return rebuildChart();
     }
     sweep_ = std::make_shared<const bench::SavedSweep>(std::move(*loaded));
+    if (!sweep_->questions.empty()) // none in a sweep saved before issue #46
+        setQuestionRows(sweep_->questions);
     for (const scene::Image8& p : sweep_->previews)
         previews_.push_back(toQImage(p));
     referencePreview_ = toQImage(sweep_->referencePreview);

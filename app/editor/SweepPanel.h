@@ -84,6 +84,11 @@ public:
     std::optional<QPointF> plottedPoint(int index) const;
     // Shows `sweep` as if it had just been loaded (tests: synthetic runs).
     void showSweep(std::shared_ptr<const bench::SavedSweep> sweep);
+    // The question table's rows (name, KEY=V1,..., checked), saved with the
+    // sweep and restored with it; the defaults are the report's questions.
+    std::vector<bench::SweepQuestionRow> questionRows() const;
+    void setQuestionRows(const std::vector<bench::SweepQuestionRow>& rows);
+    static std::vector<bench::SweepQuestionRow> defaultQuestionRows();
     // Test access.
     QTableWidget* questionTable() const { return questions_; }
     QChartView* chartView() const { return chartView_; }
@@ -107,7 +112,6 @@ signals:
     void logMessage(const QString& text, bool warning);
 
 private:
-    void buildQuestions();
     void rebuildChart();
     void onRunFinished(int index, const bench::SweepRun& run, const QImage& preview);
     void onFinished(std::shared_ptr<const bench::SavedSweep> sweep, const QString& timing);

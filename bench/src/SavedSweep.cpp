@@ -113,21 +113,28 @@ scene::Expected<void> saveSweep(const SavedSweep& s, const fs::path& file) {
             run["preview"] = imageToJson(s.previews[i]);
         runs.push_back(std::move(run));
     }
-    const Json j{{"format", kSavedSweepFormat},
-                 {"version", kSavedSweepVersion},
-                 {"createdAt", s.createdAt},
-                 {"machine", s.machine},
-                 {"width", s.width},
-                 {"height", s.height},
-                 {"frames", s.frames},
-                 {"warmup", s.warmup},
-                 {"reference",
-                  {{"spp", s.referenceSpp},
-                   {"seconds", s.referenceSeconds},
-                   {"noiseMare", s.referenceNoiseMare},
-                   {"preview", imageToJson(s.referencePreview)}}},
-                 {"base", settingsToJson(s.base)},
-                 {"runs", runs}};
+    Json j{{"format", kSavedSweepFormat},
+           {"version", kSavedSweepVersion},
+           {"createdAt", s.createdAt},
+           {"machine", s.machine},
+           {"width", s.width},
+           {"height", s.height},
+           {"frames", s.frames},
+           {"warmup", s.warmup},
+           {"reference",
+            {{"spp", s.referenceSpp},
+             {"seconds", s.referenceSeconds},
+             {"noiseMare", s.referenceNoiseMare},
+             {"preview", imageToJson(s.referencePreview)}}},
+           {"base", settingsToJson(s.base)},
+           {"runs", runs}};
+    // Optional (issue #46): a reader of version 1 before it ignores the field.
+    if (!s.questions.empty()) {
+        Json rows = Json::array();
+        for (const SweepQuestionRow& q : s.questions)
+            rows.push_back({{"name", q.name}, {"values", q.values}, {"checked", q.checked}});
+        j["questions"] = std::move(rows);
+    }
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
     if (ec)
@@ -168,6 +175,10 @@ scene::Expected<SavedSweep> loadSweep(const fs::path& file) {
             s.runs.push_back(sweepRunFromJson(r));
             s.previews.push_back(r.contains("preview") ? imageFromJson(r.at("preview")) : scene::Image8{});
         }
+        if (j.contains("questions"))
+            for (const Json& q : j.at("questions"))
+                s.questions.push_back(
+                    {q.at("name").get<std::string>(), q.at("values").get<std::string>(), q.at("checked").get<bool>()});
     } catch (const std::exception& e) {
         return scene::makeError(scene::ErrorCode::MissingField, file.string(), "", e.what());
     }

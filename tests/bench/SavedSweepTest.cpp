@@ -79,6 +79,30 @@ TEST(SavedSweep, SavesBesideTheProjectAndReloadsAsSaved) {
     fs::remove_all(dir);
 }
 
+TEST(SavedSweep, TheDocksQuestionRowsAreKeptAndOptional) {
+    const fs::path dir = tempDir("questions");
+    const fs::path file = dir / "sweep.json";
+    // A file without rows (as before issue #46) reads with none and writes none.
+    ASSERT_TRUE(bench::saveSweep(sample(), file).has_value());
+    {
+        std::ifstream in(file);
+        EXPECT_EQ((std::ostringstream() << in.rdbuf()).str().find("\"questions\""), std::string::npos);
+    }
+    auto old = bench::loadSweep(file);
+    ASSERT_TRUE(old.has_value()) << old.error().describe();
+    EXPECT_TRUE(old->questions.empty());
+
+    bench::SavedSweep saved = sample();
+    saved.questions = {{"steps", "lpv.propagationSteps=1,3", false},
+                       {"grid", "lpv.gridSize=16,32", true},
+                       {"custom", "lpv.intensity=0.5", true}};
+    ASSERT_TRUE(bench::saveSweep(saved, file).has_value());
+    auto loaded = bench::loadSweep(file);
+    ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+    EXPECT_EQ(loaded->questions, saved.questions);
+    fs::remove_all(dir);
+}
+
 TEST(SavedSweep, ADamagedFileIsAnErrorNamingItNotACrash) {
     const fs::path dir = tempDir("damaged");
     const fs::path file = dir / "sweep.json";

@@ -17,6 +17,15 @@ namespace lpv::bench {
 inline constexpr const char* kSavedSweepFormat = "lpvstudio-sweep";
 inline constexpr int kSavedSweepVersion = 1;
 
+// One row of the Sweeps dock's question table: its name, `KEY=V1,V2,...`
+// and whether it is checked.
+struct SweepQuestionRow {
+    std::string name;
+    std::string values;
+    bool checked = false;
+    bool operator==(const SweepQuestionRow&) const = default;
+};
+
 struct SavedSweep {
     std::string createdAt; // ISO 8601, UTC
     std::string machine;   // describeMachine() of the run
@@ -28,6 +37,10 @@ struct SavedSweep {
     std::vector<SweepRun> runs;      // indirectPixels are not kept
     std::vector<scene::Image8> previews; // per run: its indirect light, exposed like referencePreview
     scene::Image8 referencePreview;
+    // The dock's question rows as they were when the sweep was written, so
+    // that reopening the project asks the same questions (issue #46).
+    // Optional in the file: empty for a sweep saved before it was kept.
+    std::vector<SweepQuestionRow> questions;
 };
 
 // `<folder>/<stem>.assets/sweep.json` for `<folder>/<stem>.lpvproj`.
