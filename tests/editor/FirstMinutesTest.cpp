@@ -103,6 +103,13 @@ int objectNamed(const lpv::scene::Scene& s, const std::string& name) {
     return -1;
 }
 
+// One undoable edit, whatever the project holds: the propagation steps one more.
+void edit(Document& doc) {
+    doc.setParameter("lpv.propagationSteps",
+                     lpv::scene::ParameterValue(doc.parameters().getInt("lpv.propagationSteps") + 1));
+    EXPECT_TRUE(doc.isModified());
+}
+
 bool inside(const lpv::scene::Bounds& b, const glm::vec3& p) {
     return glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max));
 }
@@ -125,7 +132,8 @@ TEST(FirstMinutes, TemplateOpensAsAnUntitledCopy) {
         Window w;
         w.window->openBuiltInTemplate(); // what main() does without an argument
         w.show();
-        EXPECT_TRUE(w.doc().path().isEmpty()) << "the template is the document's file: "
+        // ASSERT: were the template the document's file, the Save below would write into it.
+        ASSERT_TRUE(w.doc().path().isEmpty()) << "the template is the document's file: "
                                               << w.doc().path().toStdString();
         EXPECT_EQ(w.doc().displayName(), "Untitled");
         EXPECT_TRUE(w.window->windowTitle().startsWith("Untitled")) << w.window->windowTitle().toStdString();
@@ -135,7 +143,7 @@ TEST(FirstMinutes, TemplateOpensAsAnUntitledCopy) {
         EXPECT_EQ(w.doc().scene().meshes.size(), fromFile->scene.meshes.size());
         EXPECT_TRUE(w.doc().scene().meshes == fromFile->scene.meshes);
 
-        w.doc().setParameter("lpv.propagationSteps", lpv::scene::ParameterValue(3));
+        edit(w.doc());
         ASSERT_TRUE(w.doc().isModified());
         // Save asks for a path: cancel the file dialog, nothing is saved.
         bool dialogAsked = false;
@@ -367,7 +375,7 @@ TEST(FirstMinutes, QuitPromptNamesTheProject) {
     Window w;
     w.window->openBuiltInTemplate();
     w.show();
-    w.doc().setParameter("lpv.propagationSteps", lpv::scene::ParameterValue(3));
+    edit(w.doc());
     w.window->setUnsavedChangesAnswerForTests(0); // the real question
     {
         MessageBoxAnswer answer(QMessageBox::Cancel);
@@ -376,7 +384,7 @@ TEST(FirstMinutes, QuitPromptNamesTheProject) {
     }
     w.window->setUnsavedChangesAnswerForTests(QMessageBox::Discard);
     ASSERT_TRUE(w.window->openProject(cornellPath(), false));
-    w.doc().setParameter("lpv.propagationSteps", lpv::scene::ParameterValue(3));
+    edit(w.doc());
     w.window->setUnsavedChangesAnswerForTests(0);
     {
         MessageBoxAnswer answer(QMessageBox::Cancel);
