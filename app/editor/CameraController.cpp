@@ -40,13 +40,6 @@ void CameraController::setSceneBounds(const scene::Bounds& bounds) {
 
 glm::vec3 CameraController::forward() const { return glm::normalize(camera_.target - camera_.position); }
 
-void CameraController::orbit(float dxPixels, float dyPixels) {
-    // Dragging right turns the scene right: the eye moves left around the target.
-    const glm::vec3 offset = camera_.position - camera_.target;
-    camera_.position = camera_.target +
-                       turn(offset, -dxPixels * kDegreesPerPixel, dyPixels * kDegreesPerPixel, camera_.up);
-}
-
 void CameraController::orbitAround(const glm::vec3& pivot, float dxPixels, float dyPixels) {
     // One rotation for eye and target alike: yaw about world up, then pitch
     // about the turned view's right axis, the view's elevation kept short of the poles.
@@ -73,13 +66,6 @@ void CameraController::pan(float dxPixels, float dyPixels, int viewportHeight, f
     const glm::vec3 move = worldPerPixel * (-dxPixels * right + dyPixels * up);
     camera_.position += move;
     camera_.target += move;
-}
-
-void CameraController::dolly(float steps) {
-    const glm::vec3 offset = camera_.position - camera_.target;
-    const float factor = std::pow(0.85f, steps);
-    const float distance = std::max(glm::length(offset) * factor, camera_.nearPlane * 2.0f);
-    camera_.position = camera_.target + glm::normalize(offset) * distance;
 }
 
 void CameraController::dollyAlong(float steps, const glm::vec3& direction, float distance) {

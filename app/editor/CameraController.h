@@ -25,16 +25,13 @@ public:
     // Fraction of the distance to the surface under the cursor that one wheel step moves.
     static constexpr float kDollyFraction = 0.2f;
 
-    // Turns the eye around the target (yaw about world up, pitch about the view's right axis).
-    void orbit(float dxPixels, float dyPixels);
-    // The same turn about `pivot` (the point under the cursor): the view
-    // turns with the eye, so the pivot stays where it is on the screen.
+    // Turns the eye around `pivot` (the point under the cursor; the target
+    // when nothing is there): yaw about world up, pitch about the view's
+    // right axis. The view turns with the eye, so the pivot stays where it is on the screen.
     void orbitAround(const glm::vec3& pivot, float dxPixels, float dyPixels);
     // Moves eye and target together in the view plane; one pixel moves by one
     // pixel's world size at `depth` along the view (the surface grabbed), or at the target without one.
     void pan(float dxPixels, float dyPixels, int viewportHeight, float depth = 0.0f);
-    // Moves the eye towards the target by a fraction per wheel step (never through it).
-    void dolly(float steps);
     // Moves the eye along `direction` (the ray through the cursor, normalised)
     // by kDollyFraction of `distance` (to the surface it hits) per step, back
     // by the inverse, never through the surface; the view does not turn, so

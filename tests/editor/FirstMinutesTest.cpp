@@ -265,12 +265,10 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
         }
     ASSERT_GT(surface, 0.0f) << "nothing in view";
     {
-        CameraController old; // what a notch did before: 15% of the way to the target, wherever the cursor was
-        old.setCamera(opening);
-        old.dolly(1.0f);
-        std::printf("FirstMinutes: nearest surface %.2f m away; the old dolly moved %.2f m per notch (target %.2f m)\n",
-                    double(surface), double(glm::length(old.camera().position - opening.position)),
-                    double(glm::length(opening.target - opening.position)));
+        // What a notch did before: 15% of the way to the target, wherever the cursor was.
+        const float target = glm::length(opening.target - opening.position);
+        std::printf("FirstMinutes: nearest surface %.2f m away; a notch used to move %.2f m (target %.2f m)\n",
+                    double(surface), double(0.15f * target), double(target));
     }
     sendWheel(vp, nearest, 1);
     const float moved = glm::length(vp->viewCamera().position - opening.position);
@@ -318,7 +316,7 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     {
         CameraController old; // about the target, as before
         old.setCamera(opening);
-        old.orbit(70.0f, 0.0f);
+        old.orbitAround(opening.target, 70.0f, 0.0f);
         std::printf("FirstMinutes: a 70 px orbit moved the eye %.2f m (before: %.2f m, %s the building)\n",
                     double(glm::length(eye - opening.position)),
                     double(glm::length(old.camera().position - opening.position)),
