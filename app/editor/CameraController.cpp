@@ -94,8 +94,8 @@ void CameraController::fly(const glm::vec3& axes, float seconds, bool fast, floa
     const glm::vec3 right = glm::normalize(glm::cross(f, camera_.up));
     // Down Sponza's nave at full speed, slowing as a pillar comes close.
     const float speed = ahead > 0.0f ? std::clamp(ahead, 0.01f * sceneSize_, flySpeed_) : flySpeed_;
-    const glm::vec3 move = (axes.x * right + axes.y * camera_.up + axes.z * f) * speed * seconds *
-                           (fast ? 4.0f : 1.0f);
+    const glm::vec3 move =
+        (axes.x * right + axes.y * camera_.up + axes.z * f) * speed * seconds * (fast ? 4.0f : 1.0f);
     camera_.position += move;
     camera_.target += move;
 }

@@ -19,7 +19,7 @@ public:
     // Fly speed follows the scene's size: crossing it takes about 5 seconds.
     void setSceneBounds(const scene::Bounds& bounds);
     float flySpeed() const { return flySpeed_; }
-    // The scene's diagonal (1 for an empty scene): what a distance with nothing under the cursor is capped by.
+    // The scene's diagonal (1 for an empty scene): caps a distance with nothing under the cursor.
     float sceneSize() const { return sceneSize_; }
 
     // Fraction of the distance to the surface under the cursor that one wheel step moves.

@@ -70,7 +70,8 @@ public:
     // `assetsOf` is the file its relative texture paths are relative to when
     // that is not `path`: a template opened as an untitled copy (empty path)
     // still finds the textures in its own folder.
-    void reset(scene::Project project, const QString& path, bool modified = false, const QString& assetsOf = {});
+    void reset(scene::Project project, const QString& path, bool modified = false,
+               const QString& assetsOf = {});
     // Atomic save (scene::saveProject); on success the document is clean and takes `path`.
     scene::Expected<void> saveAs(const QString& path);
     // The view the next save records (Project::editorView), so that the

@@ -70,7 +70,8 @@ QScrollArea* scrollable(QWidget* panel, QWidget* parent) {
     return scroll;
 }
 
-// The bottom strip's default height: the Profiler's table and chart side by side, the viewport above dominant.
+// The bottom strip's default height (the Profiler's table and chart side by
+// side), so that the viewport above dominates the window.
 constexpr int kBottomDocksHeight = 200;
 
 constexpr int kMaxRecentFiles = 10;
@@ -257,10 +258,12 @@ void MainWindow::createDocks() {
 
     cameraPaths_ = new CameraPathPanel(document_, viewport_, this);
     connect(cameraPaths_, &CameraPathPanel::currentPathChanged, viewport_, &Viewport::setShownPath);
-    QDockWidget* pathsDock = addDock(scrollable(cameraPaths_, this), "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
+    QDockWidget* pathsDock =
+        addDock(scrollable(cameraPaths_, this), "cameraPaths", tr("Camera paths"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, pathsDock);
     radiosity_ = new RadiosityPanel(document_, this);
-    QDockWidget* radiosityDock = addDock(scrollable(radiosity_, this), "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
+    QDockWidget* radiosityDock =
+        addDock(scrollable(radiosity_, this), "radiosity", tr("Radiosity"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, radiosityDock);
     connect(radiosity_, &RadiosityPanel::stopped, this,
             [this](const QString& message) { log_->add(EventLog::Severity::Info, tr("Radiosity"), message); });
@@ -275,7 +278,8 @@ void MainWindow::createDocks() {
             log_->add(EventLog::Severity::Error, tr("Video export"), output + ": " + error);
     });
     sweeps_ = new SweepPanel(document_, [this] { return viewport_->viewCamera(); }, this);
-    QDockWidget* sweepsDock = addDock(scrollable(sweeps_, this), "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
+    QDockWidget* sweepsDock =
+        addDock(scrollable(sweeps_, this), "sweeps", tr("Sweeps"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, sweepsDock);
     // Timings on llvmpipe are only the settings' own when nothing else renders.
     connect(sweeps_, &SweepPanel::timingChanged, this, [this](bool timing) {
@@ -295,7 +299,8 @@ void MainWindow::createDocks() {
     });
     // The frame's error against a reference of the same view, next to its GPU time (issue #26 item 3).
     accuracy_ = new AccuracyPanel(document_, viewport_, this);
-    tabifyDockWidget(profilerDock, addDock(scrollable(accuracy_, this), "accuracy", tr("Accuracy"), Qt::BottomDockWidgetArea));
+    tabifyDockWidget(profilerDock, addDock(scrollable(accuracy_, this), "accuracy", tr("Accuracy"),
+                                           Qt::BottomDockWidgetArea));
     logPanel_ = new LogPanel(log_, this);
     QDockWidget* logDock = addDock(logPanel_, "log", tr("Log"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(profilerDock, logDock);
@@ -320,8 +325,8 @@ void MainWindow::createDocks() {
     // In a scroll area: its controls' minimum height, stacked under the
     // inspector's, grew the window past a 1024 px screen (to 1091 px), and
     // it stayed so after the dock was closed.
-    QDockWidget* vizDock = addDock(scrollable(visualizers_, this), "visualizers", tr("Visualizers"),
-                                   Qt::RightDockWidgetArea);
+    QDockWidget* vizDock =
+        addDock(scrollable(visualizers_, this), "visualizers", tr("Visualizers"), Qt::RightDockWidgetArea);
     // A tab beside the Inspector, raised whenever it is shown (eventFilter):
     // stacked under it, the dock opened about 60 px tall with two of its
     // controls visible.
@@ -401,7 +406,8 @@ void MainWindow::createActions() {
     home->setObjectName("homeView");
     home->setShortcut(QKeySequence(Qt::Key_Home));
     home->setShortcutContext(Qt::WidgetWithChildrenShortcut); // Home moves the cursor in text fields
-    home->setToolTip(tr("Back to the scene's opening view: its first camera, else one framing the whole scene"));
+    home->setToolTip(
+        tr("Back to the scene's opening view: its first camera, else one framing the whole scene"));
     camerasMenu_ = viewMenu_->addMenu(tr("&Cameras"));
     auto* gizmoModes = new QActionGroup(this);
     const std::pair<QString, GizmoMode> modes[] = {
@@ -417,8 +423,8 @@ void MainWindow::createActions() {
     // Pivot point, as Blender's: where the gizmo sits and what rotate and scale turn about.
     gizmo->addSeparator();
     auto* pivots = new QActionGroup(this);
-    const std::pair<QString, GizmoPivot> pivotChoices[] = {{tr("Pivot: &bounds centre"), GizmoPivot::BoundsCentre},
-                                                           {tr("Pivot: &origin"), GizmoPivot::Origin}};
+    const std::pair<QString, GizmoPivot> pivotChoices[] = {
+        {tr("Pivot: &bounds centre"), GizmoPivot::BoundsCentre}, {tr("Pivot: &origin"), GizmoPivot::Origin}};
     for (const auto& [label, pivot] : pivotChoices) {
         QAction* a = gizmo->addAction(label, this, [this, pivot] { viewport_->setGizmoPivot(pivot); });
         a->setObjectName(pivot == GizmoPivot::BoundsCentre ? "pivotBoundsCentre" : "pivotOrigin");

@@ -64,7 +64,8 @@ std::optional<int> TransformGizmo::hitTest(const glm::vec2& mouse) const {
     return best;
 }
 
-scene::Transform keepPivotFixed(const scene::Transform& original, scene::Transform changed, const glm::vec3& pivot) {
+scene::Transform keepPivotFixed(const scene::Transform& original, scene::Transform changed,
+                                const glm::vec3& pivot) {
     // The pivot in the object's own space (its scale never reaches zero: drag keeps 1%).
     const glm::vec3 local = glm::vec3(glm::inverse(original.matrix()) * glm::vec4(pivot, 1.0f));
     const glm::vec3 moved = glm::vec3(changed.matrix() * glm::vec4(local, 1.0f));

@@ -1,8 +1,8 @@
 #pragma once
 // The move/rotate/scale gizmo: three axis handles drawn from the selected
-// object's pivot (its bounds centre or its origin, GizmoPivot), in screen space. This file holds the geometry and the
-// drag maths (no widget, unit tested); the viewport paints and feeds mouse
-// positions.
+// object's pivot (its bounds centre or its origin, GizmoPivot), in screen
+// space. This file holds the geometry and the drag maths (no widget, unit
+// tested); the viewport paints and feeds mouse positions.
 #include "lpv/scene/Camera.h"
 #include "lpv/scene/Scene.h"
 
@@ -62,6 +62,7 @@ private:
 // `changed` (a rotation or scale of `original`) moved so that the point of
 // the object that lay at `pivot` (parent space) under `original` lies there
 // still: turning about the bounds centre instead of the origin.
-scene::Transform keepPivotFixed(const scene::Transform& original, scene::Transform changed, const glm::vec3& pivot);
+scene::Transform keepPivotFixed(const scene::Transform& original, scene::Transform changed,
+                                const glm::vec3& pivot);
 
 } // namespace lpv::editor

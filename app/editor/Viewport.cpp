@@ -687,7 +687,8 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         // The grabbed surface follows the mouse, near or far.
         const Depth depth = depthAt(pressPosition_);
         const scene::Camera& camera = controller_.camera();
-        panDepth_ = depth.hit ? depth.distance * glm::dot(depth.direction, glm::normalize(camera.target - camera.position))
+        panDepth_ = depth.hit ? depth.distance *
+                                    glm::dot(depth.direction, glm::normalize(camera.target - camera.position))
                               : 0.0f;
     } else if (event->button() == Qt::RightButton) {
         drag_ = Drag::Look;
@@ -704,8 +705,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     if (!movedSincePress_)
         return;
     switch (drag_) {
-    case Drag::Orbit: orbitStep(delta); break;
-    case Drag::Pan: controller_.pan(float(delta.x()), float(delta.y()), height(), panDepth_); break;
+    case Drag::Orbit:
+        orbitStep(delta);
+        break;
+    case Drag::Pan:
+        controller_.pan(float(delta.x()), float(delta.y()), height(), panDepth_);
+        break;
     case Drag::Look: controller_.look(float(delta.x()), float(delta.y())); break;
     case Drag::Sun: dragSun(delta); return;
     case Drag::PathKey: dragPathKey(p); return;
@@ -795,7 +800,9 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     const bool flying = drag_ == Drag::Look;
     switch (event->key()) {
     case Qt::Key_F: frameSelection(); return;
-    case Qt::Key_Home: homeView(); return;
+    case Qt::Key_Home:
+        homeView();
+        return;
     case Qt::Key_W:
     case Qt::Key_A:
     case Qt::Key_S:
@@ -851,7 +858,8 @@ void Viewport::flyStep() {
     }
     // What lies straight ahead sets the pace (a pick: milliseconds on Sponza).
     const Depth ahead = depthAt(QPoint(width() / 2, height() / 2));
-    controller_.fly(axes, std::min(seconds, 0.1f), heldKeys_.contains(Qt::Key_Shift), ahead.hit ? ahead.distance : 0.0f);
+    controller_.fly(axes, std::min(seconds, 0.1f), heldKeys_.contains(Qt::Key_Shift),
+                    ahead.hit ? ahead.distance : 0.0f);
     emit viewCameraChanged();
     update();
 }

@@ -115,8 +115,8 @@ bool inside(const lpv::scene::Bounds& b, const glm::vec3& p) {
 }
 
 void sendWheel(Viewport* vp, const QPoint& at, int notches) {
-    QWheelEvent wheel(QPointF(at), vp->mapToGlobal(QPointF(at)), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
-                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent wheel(QPointF(at), vp->mapToGlobal(QPointF(at)), QPoint(), QPoint(0, 120 * notches),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(vp, &wheel);
 }
 
@@ -133,8 +133,8 @@ TEST(FirstMinutes, TemplateOpensAsAnUntitledCopy) {
         w.window->openBuiltInTemplate(); // what main() does without an argument
         w.show();
         // ASSERT: were the template the document's file, the Save below would write into it.
-        ASSERT_TRUE(w.doc().path().isEmpty()) << "the template is the document's file: "
-                                              << w.doc().path().toStdString();
+        ASSERT_TRUE(w.doc().path().isEmpty())
+            << "the template is the document's file: " << w.doc().path().toStdString();
         EXPECT_EQ(w.doc().displayName(), "Untitled");
         EXPECT_TRUE(w.window->windowTitle().startsWith("Untitled")) << w.window->windowTitle().toStdString();
         // The copy has the template's scene, meshes read from its assets folder.
@@ -206,7 +206,8 @@ TEST(FirstMinutes, GizmoSitsAtTheBoundsCentreAndRotatesAboutIt) {
     const auto before = w.doc().scene().objects[std::size_t(tall)].transform;
     QTest::mousePress(vp, Qt::LeftButton, {}, start);
     for (int i = 1; i <= 6; ++i)
-        QTest::mouseMove(vp, start + QPoint(int(across.x * 10.0f * float(i)), int(across.y * 10.0f * float(i))));
+        QTest::mouseMove(vp,
+                         start + QPoint(int(across.x * 10.0f * float(i)), int(across.y * 10.0f * float(i))));
     QTest::mouseRelease(vp, Qt::LeftButton, {}, start + QPoint(int(across.x * 60.0f), int(across.y * 60.0f)));
     const auto after = w.doc().scene().objects[std::size_t(tall)].transform;
     EXPECT_LT(std::abs(glm::dot(after.rotation, before.rotation)), 0.999f) << "the drag did not rotate";
@@ -247,8 +248,8 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     // at the bottom): a fraction of the way to it, not a fixed stride through it.
     const QPoint centre(vp->width() / 2, vp->height() / 2);
     auto depthAt = [&](const lpv::scene::Camera& camera, const QPoint& at) {
-        const auto ray = lpv::scene::cameraRay(camera, float(at.x()) + 0.5f, float(at.y()) + 0.5f, vp->width(),
-                                               vp->height());
+        const auto ray = lpv::scene::cameraRay(camera, float(at.x()) + 0.5f, float(at.y()) + 0.5f,
+                                               vp->width(), vp->height());
         const auto hit = lpv::scene::pickObject(w.doc().scene(), ray.origin, ray.direction);
         return hit ? hit->distance : -1.0f;
     };
@@ -267,8 +268,9 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     {
         // What a notch did before: 15% of the way to the target, wherever the cursor was.
         const float target = glm::length(opening.target - opening.position);
-        std::printf("FirstMinutes: nearest surface %.2f m away; a notch used to move %.2f m (target %.2f m)\n",
-                    double(surface), double(0.15f * target), double(target));
+        std::printf(
+            "FirstMinutes: nearest surface %.2f m away; a notch used to move %.2f m (target %.2f m)\n",
+            double(surface), double(0.15f * target), double(target));
     }
     sendWheel(vp, nearest, 1);
     const float moved = glm::length(vp->viewCamera().position - opening.position);
@@ -279,15 +281,16 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     const float afterThree = glm::length(vp->viewCamera().position - opening.position);
     EXPECT_LT(afterThree, 0.6f * surface) << "three notches went " << afterThree << " m of " << surface;
     EXPECT_TRUE(inside(bounds, vp->viewCamera().position));
-    EXPECT_GT(depthAt(vp->viewCamera(), nearest), 0.3f * surface) << "the surface under the cursor is still ahead";
+    EXPECT_GT(depthAt(vp->viewCamera(), nearest), 0.3f * surface)
+        << "the surface under the cursor is still ahead";
     // Back out: the same notches return to the opening view.
     sendWheel(vp, nearest, -3);
     EXPECT_LT(glm::length(vp->viewCamera().position - opening.position), 1e-3f * surface);
 
     // A middle drag over that surface: it follows the mouse (the pan was sized at the far target).
     vp->homeView();
-    const auto grabbedRay = lpv::scene::cameraRay(opening, float(nearest.x()) + 0.5f, float(nearest.y()) + 0.5f,
-                                                  vp->width(), vp->height());
+    const auto grabbedRay = lpv::scene::cameraRay(opening, float(nearest.x()) + 0.5f,
+                                                  float(nearest.y()) + 0.5f, vp->width(), vp->height());
     const glm::vec3 grabbed = grabbedRay.origin + grabbedRay.direction * surface;
     const QPoint to = nearest + QPoint(40, 0);
     QTest::mousePress(vp, Qt::MiddleButton, {}, nearest);
@@ -296,8 +299,8 @@ TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     QTest::mouseRelease(vp, Qt::MiddleButton, {}, to);
     {
         const lpv::scene::Camera& c = vp->viewCamera();
-        const glm::vec4 clip = c.projection(float(vp->width()) / float(vp->height())) * c.view() *
-                               glm::vec4(grabbed, 1.0f);
+        const glm::vec4 clip =
+            c.projection(float(vp->width()) / float(vp->height())) * c.view() * glm::vec4(grabbed, 1.0f);
         const glm::vec2 shown((clip.x / clip.w * 0.5f + 0.5f) * float(vp->width()),
                               (0.5f - clip.y / clip.w * 0.5f) * float(vp->height()));
         std::printf("FirstMinutes: the grabbed point is %.1f px from the cursor after a 40 px pan\n",
@@ -397,7 +400,8 @@ TEST(FirstMinutes, LongStatusMessagesAreElidedWithTheWholeTextInATooltip) {
     Window w;
     ASSERT_TRUE(w.window->openProject(cornellPath(), false));
     w.show();
-    const QString message = "Render error: " + QString("a long reason, ").repeated(30) + "and the cause at the end";
+    const QString message =
+        "Render error: " + QString("a long reason, ").repeated(30) + "and the cause at the end";
     w.window->statusBar()->showMessage(message);
     QTest::qWait(100);
     auto* label = w.window->statusBar()->findChild<QLabel*>("statusMessage");
