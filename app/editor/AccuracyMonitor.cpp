@@ -267,9 +267,10 @@ void AccuracyMonitor::finishMeasurement(std::shared_ptr<AccuracySample> sample, 
     if (!sample || generation != generation_ || !tracing_)
         return; // the view changed meanwhile
     latest_ = std::move(sample);
-    setStatus(tr("Reference: %1 spp, %2 s")
-                  .arg(latest_->samplesPerPixel)
-                  .arg(latest_->referenceSeconds, 0, 'f', 1));
+    // The reference's samples and time are in the dock's Reference row; the
+    // status line said them again (issue #46) and now says what the figures are.
+    setStatus(tr("Measured: the latest frame against the reference so far; the figures update as it "
+                 "converges."));
     showImages();
     emit measured(latest_);
 }

@@ -16,6 +16,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QTest>
@@ -121,6 +122,12 @@ TEST(AccuracyDock, FiguresChangeAsTheReferenceConvergesAndItsNoiseFalls) {
     EXPECT_NE(panel->figureText("FLIP", false), "-");
     EXPECT_NE(panel->figureText("MARE", true), "-");
     EXPECT_TRUE(panel->gpuTimeText().endsWith("ms")) << panel->gpuTimeText().toStdString();
+    // The reference's samples are given once, in its row (issue #46: the
+    // status line under the figures said "Reference: N spp, T s" again).
+    int referenceRows = 0;
+    for (const QLabel* label : panel->findChildren<QLabel*>())
+        referenceRows += label->isVisible() && label->text().contains("spp") ? 1 : 0;
+    EXPECT_EQ(referenceRows, 1) << "status: " << panel->statusText().toStdString();
 
     // A renderer setting changes the frame, not the reference: it keeps its samples.
     const int sppBefore = f.samples.back()->samplesPerPixel;
