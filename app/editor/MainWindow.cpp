@@ -477,11 +477,12 @@ void MainWindow::createActions() {
         resolutions->addAction(a);
     }
     viewport_->setResolutionScale(savedScale);
-    viewMenu_->addAction(tr("Reset &layout"), this, [this] {
+    QAction* resetLayout = viewMenu_->addAction(tr("Reset &layout"), this, [this] {
         restoringLayout_ = true;
         restoreState(defaultState_);
         restoringLayout_ = false;
     });
+    resetLayout->setObjectName("resetLayout");
     viewMenu_->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));

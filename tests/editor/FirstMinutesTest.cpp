@@ -352,6 +352,14 @@ TEST(FirstMinutes, ViewportDominatesTheDefaultLayout) {
                 w.window->height(), w.window->viewport()->width(), viewport, profiler);
     EXPECT_GE(double(viewport) / double(w.window->height()), 0.6);
     EXPECT_LE(double(profiler) / double(w.window->height()), 0.2);
+
+    // View > Reset layout brings the same back after the strip was dragged taller.
+    w.window->resizeDocks({w.window->dock("profiler")}, {450}, Qt::Vertical);
+    QTest::qWait(100);
+    ASSERT_LT(double(w.window->viewport()->height()) / double(w.window->height()), 0.6) << "not dragged";
+    w.window->findChild<QAction*>("resetLayout")->trigger();
+    QTest::qWait(200);
+    EXPECT_GE(double(w.window->viewport()->height()) / double(w.window->height()), 0.6) << "after Reset layout";
 }
 
 // View > Visualizers opened the dock about 60 px tall under the Inspector, two controls visible.
