@@ -1,5 +1,7 @@
 #include "Viewport.h"
 
+#include "OverlayLabel.h"
+
 #include "lpv/app/ImportDefaults.h"
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/renderer/GlContext.h"
@@ -481,18 +483,16 @@ void Viewport::drawOverlay(QPainter& painter) {
     if (comparisonSplitShown()) {
         painter.setPen(QPen(Qt::white, 2));
         painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
-        painter.setPen(Qt::white);
+        // On a box: white text alone could not be read on a bright sky (issue #46).
         const std::string method = document_->parameters().getEnum("gi.method");
-        painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft,
-                         method == "lpv" ? tr("LPV") : QString::fromStdString(method));
-        painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft,
-                         tr("Reference"));
+        drawOverlayLabel(painter, QPointF(8, 8), method == "lpv" ? tr("LPV") : QString::fromStdString(method),
+                         width() / 2.0 - 16);
+        drawOverlayLabel(painter, QPointF(width() / 2.0 + 8, 8), tr("Reference"), width() / 2.0 - 16);
     } else if (split_) {
         painter.setPen(QPen(Qt::white, 2));
         painter.drawLine(QPointF(width() / 2.0, 0), QPointF(width() / 2.0, height()));
-        painter.setPen(Qt::white);
-        painter.drawText(QRectF(8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "A: " + splitLabels_[0]);
-        painter.drawText(QRectF(width() / 2.0 + 8, 8, width() / 2.0 - 16, 24), Qt::AlignLeft, "B: " + splitLabels_[1]);
+        drawOverlayLabel(painter, QPointF(8, 8), "A: " + splitLabels_[0], width() / 2.0 - 16);
+        drawOverlayLabel(painter, QPointF(width() / 2.0 + 8, 8), "B: " + splitLabels_[1], width() / 2.0 - 16);
     }
 }
 
