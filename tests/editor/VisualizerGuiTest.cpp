@@ -75,6 +75,18 @@ TEST(VisualizerGui, ClosedAsksNothingOpenFollowsSliceAndStep) {
     ASSERT_TRUE(waitUntil([&] { return panel->active() && !panel->image().isNull(); }))
         << panel->status().toStdString();
     ASSERT_TRUE(w.window.viewport()->visualizerRequest().lpv.has_value());
+    // The slice carries its world coordinates and scale bar (issue #46), as `lpv dump` draws them.
+    {
+        const QImage shown = panel->image().convertToFormat(QImage::Format_RGB32);
+        const glm::ivec3 label(glm::round(lpv::renderer::viz::kAxisLabelColour * 255.0f));
+        int labelPixels = 0;
+        for (int y = 0; y < shown.height(); ++y)
+            for (int x = 0; x < shown.width(); ++x) {
+                const QRgb p = shown.pixel(x, y);
+                labelPixels += glm::ivec3(qRed(p), qGreen(p), qBlue(p)) == label ? 1 : 0;
+            }
+        EXPECT_GT(labelPixels, 100) << "axis coordinates, the scale bar's length and the plane";
+    }
 
     // The overlays draw over the view: cascade boxes and the slice plane on, then off.
     QTest::qWait(100);

@@ -145,6 +145,119 @@ TEST(SliceImage, RenderScalesColoursAndDrawsALegend) {
     EXPECT_EQ(range.high, 2.0f);
 }
 
+namespace {
+
+glm::ivec3 rgbAt(const lpv::scene::Image8& im, int x, int y) {
+    const std::uint8_t* p = &im.pixels[(std::size_t(y) * std::size_t(im.width) + std::size_t(x)) * 4];
+    return {p[0], p[1], p[2]};
+}
+
+glm::ivec3 bytes(const glm::vec3& c) {
+    return glm::ivec3(glm::round(c * 255.0f));
+}
+
+} // namespace
+
+// Issue #46: the title under the legend ran off the image (" LOG" was not
+// counted in its width). Every lit pixel of the caption is in the image,
+// wrapped onto lines with a margin to every edge, however narrow the slice.
+TEST(SliceImage, TheCaptionIsWhollyInsideTheImage) {
+    const std::string title =
+        "CASCADE 0  Z = 12  STEP 8/8 ACCUMULATED  IRRADIANCE W/M^2 FACING (0,1,0)  LUMINANCE";
+    SliceField f{4, 4, 1, false, std::vector<float>(16, 1.0f)};
+    for (const Scale scale : {Scale::Linear, Scale::Log}) {
+        ColourSpec c;
+        c.pixelsPerCell = 4; // a 16 px slice: the caption is far wider
+        c.scale = scale;
+        c.title = title;
+        const lpv::scene::Image8 im = renderSlice(f, c);
+        const std::string caption = title + (scale == Scale::Log ? "  LOG" : "");
+        // The caption on a canvas wide enough for it on one line: its lit pixels.
+        lpv::scene::Image8 whole{textWidth(caption, 2) + 8, 14, 4, {}};
+        whole.pixels.assign(std::size_t(whole.width) * 14 * 4, 0);
+        drawText(whole, 0, 0, caption, 2);
+        int expected = 0;
+        for (std::size_t i = 0; i < whole.pixels.size(); i += 4)
+            expected += whole.pixels[i] > 0 ? 1 : 0;
+
+        const glm::ivec3 grey = bytes(kCaptionColour);
+        int shown = 0, lowest = -1, leftmost = im.width, rightmost = -1;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                if (rgbAt(im, x, y) == grey) {
+                    ++shown;
+                    lowest = std::max(lowest, y);
+                    leftmost = std::min(leftmost, x);
+                    rightmost = std::max(rightmost, x);
+                }
+        EXPECT_EQ(shown, expected) << "every letter of \"" << caption << "\" is drawn";
+        EXPECT_LE(lowest, im.height - 4) << "a margin under the last line";
+        EXPECT_GE(leftmost, 4);
+        EXPECT_LE(rightmost, im.width - 5) << "a margin to the right";
+    }
+}
+
+// Issue #46: a slice says where it lies: the world coordinates of its edges,
+// a scale bar in scene units (the same bar for a scene in metres or
+// millimetres, labelled in its own units) and the outline of the geometry
+// crossing the plane.
+TEST(SliceImage, GuidesGiveWorldAxesAScaleBarAndTheGeometrysOutline) {
+    EXPECT_FLOAT_EQ(scaleBarLength(4.0f), 1.0f);
+    EXPECT_FLOAT_EQ(scaleBarLength(4000.0f), 1000.0f);
+    EXPECT_FLOAT_EQ(scaleBarLength(10.0f), 2.0f);
+    EXPECT_FLOAT_EQ(scaleBarLength(20.0f), 5.0f);
+    EXPECT_NEAR(scaleBarLength(0.03f), 0.01f, 1e-7f);
+
+    constexpr int n = 16, ppc = 8;
+    SliceField f{n, n, 1, false, std::vector<float>(n * n, 0.5f)};
+    ColourSpec c;
+    c.pixelsPerCell = ppc;
+    c.title = "CASCADE 0  Z = 4";
+    const lpv::scene::Image8 bare = renderSlice(f, c);
+    for (const float unit : {1.0f, 1000.0f}) { // metres, then millimetres
+        SliceGuides g;
+        g.axis = Axis::Z;
+        g.origin = glm::vec2(-1.0f, 0.5f) * unit;
+        g.cellSize = 0.25f * unit;
+        g.plane = 1.125f * unit;
+        g.geometry.assign(n * n, 0);
+        for (int v = 6; v <= 9; ++v)
+            for (int u = 6; u <= 9; ++u)
+                g.geometry[std::size_t(v * n + u)] = 1;
+        const lpv::scene::Image8 im = renderSlice(f, c, nullptr, &g);
+        ASSERT_GT(im.height, bare.height) << "the u axis's coordinates and the scale bar under it";
+        EXPECT_EQ(rgbAt(im, 4, 4), rgbAt(bare, 4, 4)) << "the slice stays at the top left";
+
+        const glm::ivec3 label = bytes(kAxisLabelColour);
+        int beside = 0, under = 0;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                if (rgbAt(im, x, y) == label)
+                    (x >= n * ppc && y < n * ppc ? beside : y >= n * ppc ? under : beside) += 1;
+        EXPECT_GT(beside, 20) << "v's coordinates right of the slice";
+        EXPECT_GT(under, 20) << "u's coordinates, the bar's length and the plane under it";
+
+        // The scale bar: 1 unit of 4 is 4 cells, 32 pixels, in either unit.
+        const glm::ivec3 white = bytes(kScaleBarColour);
+        int longest = 0;
+        for (int y = n * ppc; y < n * ppc + 32; ++y)
+            for (int x = 0, run = 0; x < im.width; ++x) {
+                run = rgbAt(im, x, y) == white ? run + 1 : 0;
+                longest = std::max(longest, run);
+            }
+        EXPECT_EQ(longest, 32) << "unit " << unit;
+
+        // The outline: the block's edge cells are cyan at their border, not inside.
+        const glm::ivec3 cyan = bytes(kOutlineColour);
+        const int rowOf7 = (n - 1 - 7) * ppc + ppc / 2;
+        EXPECT_EQ(rgbAt(im, 6 * ppc, rowOf7), cyan) << "the block's left edge";
+        EXPECT_EQ(rgbAt(im, 10 * ppc - 1, rowOf7), cyan) << "its right edge";
+        EXPECT_EQ(rgbAt(im, 8 * ppc, (n - 1 - 9) * ppc), cyan) << "its top edge (v up)";
+        EXPECT_NE(rgbAt(im, 7 * ppc + ppc / 2, rowOf7), cyan) << "inside the block";
+        EXPECT_NE(rgbAt(im, 4 * ppc + ppc / 2, rowOf7), cyan) << "outside it";
+    }
+}
+
 TEST(SliceImage, SignedValuesUseTheDivergingRamp) {
     SliceField f{2, 1, 1, true, {-1.0f, 1.0f}};
     const lpv::scene::Image8 im = renderSlice(f, ColourSpec{});

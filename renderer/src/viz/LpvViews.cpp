@@ -1,6 +1,7 @@
 #include "lpv/renderer/viz/LpvViews.h"
 
 #include "lpv/renderer/viz/LeakMaps.h"
+#include "lpv/renderer/lpv/Sh.h"
 
 #include <algorithm>
 #include <cctype>
@@ -27,6 +28,59 @@ std::string formatDirection(const glm::vec3& d) {
     char text[64];
     std::snprintf(text, sizeof text, "(%.2g,%.2g,%.2g)", double(d.x), double(d.y), double(d.z));
     return text;
+}
+
+// How much a geometry-volume cell blocks light along its most blocked axis
+// direction: a surface in the cell blocks one of the six strongly.
+float strongestBlocking(const glm::vec4& potential) {
+    float most = 0.0f;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const float sign : {-1.0f, 1.0f}) {
+            glm::vec3 d(0.0f);
+            d[axis] = sign;
+            most = std::max(most, std::clamp(sh::evaluate(potential, d), 0.0f, 1.0f));
+        }
+    return most;
+}
+
+// Where the slice lies in the world and which of its cells the geometry
+// crosses (the geometry volume's blocking at or above the wall threshold):
+// for an LPV slice, any of the cell's eight corners (GV cells sit on the LPV
+// cell corners); for a GV slice, the cell itself.
+SliceGuides guidesFor(const LpvSnapshot& snapshot, const LpvViewSpec& spec, const SliceField& field) {
+    const LpvGridFrame& frame = snapshot.frame;
+    const bool gvSlice = spec.source == LpvSource::Geometry;
+    const glm::ivec2 uv = inPlaneAxes(spec.slice.axis);
+    const int axis = int(spec.slice.axis);
+    // A GV cell is centred on an LPV corner: its pixel starts half a cell before it.
+    const float shift = gvSlice ? -0.5f : 0.0f;
+    SliceGuides guides;
+    guides.axis = spec.slice.axis;
+    guides.cellSize = frame.cellSize;
+    guides.origin = {frame.origin[uv.x] + shift * frame.cellSize, frame.origin[uv.y] + shift * frame.cellSize};
+    guides.plane = frame.origin[axis] + (float(spec.slice.index) + (gvSlice ? 0.0f : 0.5f)) * frame.cellSize;
+    const int g = frame.gridSize + 1;
+    if (snapshot.geometry.size() != std::size_t(g) * std::size_t(g) * std::size_t(g))
+        return guides; // occlusion off: no geometry volume, no outline
+    auto blocked = [&](glm::ivec3 c) {
+        if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(g))))
+            return false;
+        const std::size_t at = std::size_t(c.x) + std::size_t(g) * (std::size_t(c.y) + std::size_t(g) * std::size_t(c.z));
+        return strongestBlocking(snapshot.geometry[at]) >= spec.wallThreshold;
+    };
+    guides.geometry.assign(std::size_t(field.width) * std::size_t(field.height), 0);
+    for (int v = 0; v < field.height; ++v)
+        for (int u = 0; u < field.width; ++u) {
+            glm::ivec3 cell(0);
+            cell[uv.x] = u;
+            cell[uv.y] = v;
+            cell[axis] = spec.slice.index;
+            bool any = gvSlice && blocked(cell);
+            for (int corner = 0; !gvSlice && !any && corner < 8; ++corner)
+                any = blocked(cell + glm::ivec3(corner & 1, corner >> 1 & 1, corner >> 2 & 1));
+            guides.geometry[std::size_t(v) * std::size_t(field.width) + std::size_t(u)] = any ? 1 : 0;
+        }
+    return guides;
 }
 
 } // namespace
@@ -175,7 +229,8 @@ scene::Expected<scene::Image8> renderLpvView(const LpvSnapshot& snapshot, const 
     ColourSpec colour = spec.colour;
     if (colour.title.empty())
         colour.title = viewTitle(snapshot, spec);
-    return renderSlice(*field, colour, usedRange);
+    const SliceGuides guides = guidesFor(snapshot, spec, *field);
+    return renderSlice(*field, colour, usedRange, &guides);
 }
 
 } // namespace lpv::renderer::viz

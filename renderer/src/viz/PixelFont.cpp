@@ -2,7 +2,9 @@
 // numbers and labels without a font library (the editor shows the same images).
 #include "lpv/renderer/viz/SliceImage.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace lpv::renderer::viz {
 
@@ -48,8 +50,9 @@ int textWidth(const std::string& text, int scale) {
 
 void drawText(scene::Image8& image, int x, int y, const std::string& text, int scale,
               const glm::vec3& colour) {
-    const std::uint8_t rgb[3] = {std::uint8_t(colour.r * 255.0f), std::uint8_t(colour.g * 255.0f),
-                                 std::uint8_t(colour.b * 255.0f)};
+    // Rounded, as the slice's own pixels are: a colour reads back as the bytes it names.
+    auto byte = [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    const std::uint8_t rgb[3] = {byte(colour.r), byte(colour.g), byte(colour.b)};
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char* rows = glyphRows(text[i]);
         if (!rows)

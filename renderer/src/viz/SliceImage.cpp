@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace lpv::renderer::viz {
 
@@ -90,6 +92,8 @@ struct Mapping {
     // The value at ramp position t (0..1, signed -1..1): the legend's labels. A log
     // ramp starts at `low` (signed: 0 in the middle, where everything below low lands).
     float valueAt(float t) const {
+        if (!(high > 0.0f))
+            return 0.0f; // an empty slice: low = high = 0 would label its log ramp NaN
         const float m = std::abs(t);
         const float v = scale == Scale::Linear
                             ? m * high
@@ -98,7 +102,93 @@ struct Mapping {
     }
 };
 
+const char* const kUpperAxisNames[] = {"X", "Y", "Z"};
+
+void fillRect(scene::Image8& image, int x, int y, int width, int height, const glm::vec3& c) {
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            setPixel(image, x + i, y + j, c);
+}
+
+// The caption's groups (separated by two spaces, as viewTitle writes them).
+std::vector<std::string> captionGroups(const std::string& text) {
+    std::vector<std::string> groups;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find("  ", start), text.size());
+        std::string group = text.substr(start, end - start);
+        const auto first = group.find_first_not_of(' ');
+        if (first != std::string::npos)
+            groups.push_back(group.substr(first));
+        start = end + 2;
+    }
+    return groups;
+}
+
+// The groups packed greedily into lines at most `width` pixels wide (a group
+// wider than that has a line of its own; the caller makes the image that wide).
+std::vector<std::string> wrapCaption(const std::vector<std::string>& groups, int width, int scale) {
+    std::vector<std::string> lines;
+    for (const std::string& g : groups) {
+        if (!lines.empty() && textWidth(lines.back() + "  " + g, scale) <= width)
+            lines.back() += "  " + g;
+        else
+            lines.push_back(g);
+    }
+    return lines;
+}
+
+// The geometry's boundary over the slice: an edge of a geometry cell whose
+// neighbour across it has none (or is outside), drawn inside the cell.
+void drawOutline(scene::Image8& image, const SliceField& field, const std::vector<std::uint8_t>& geometry,
+                 int ppc) {
+    if (geometry.size() != std::size_t(field.width) * std::size_t(field.height))
+        return;
+    const int line = ppc >= 6 ? 2 : 1;
+    auto solid = [&](int u, int v) {
+        return u >= 0 && v >= 0 && u < field.width && v < field.height &&
+               geometry[std::size_t(v) * std::size_t(field.width) + std::size_t(u)] != 0;
+    };
+    for (int v = 0; v < field.height; ++v)
+        for (int u = 0; u < field.width; ++u) {
+            if (!solid(u, v))
+                continue;
+            const int left = u * ppc, top = (field.height - 1 - v) * ppc;
+            if (!solid(u - 1, v))
+                fillRect(image, left, top, line, ppc, kOutlineColour);
+            if (!solid(u + 1, v))
+                fillRect(image, left + ppc - line, top, line, ppc, kOutlineColour);
+            if (!solid(u, v + 1)) // v up: the cell above is the image's row above
+                fillRect(image, left, top, ppc, line, kOutlineColour);
+            if (!solid(u, v - 1))
+                fillRect(image, left, top + ppc - line, ppc, line, kOutlineColour);
+        }
+}
+
 } // namespace
+
+glm::ivec2 inPlaneAxes(Axis axis) {
+    switch (axis) {
+    case Axis::X:
+        return {2, 1};
+    case Axis::Y:
+        return {0, 2};
+    case Axis::Z:
+        break;
+    }
+    return {0, 1};
+}
+
+float scaleBarLength(float worldWidth) {
+    const float target = worldWidth / 3.0f;
+    if (!(target > 0.0f) || !std::isfinite(target))
+        return 0.0f;
+    const float decade = std::pow(10.0f, std::floor(std::log10(target)));
+    for (const float m : {5.0f, 2.0f, 1.0f})
+        if (m * decade <= target * 1.0001f)
+            return m * decade;
+    return decade;
+}
 
 scene::Expected<SliceField> extractSlice(const VolumeView& volume, const SliceSpec& spec) {
     const int n = volume.size;
@@ -172,16 +262,52 @@ glm::vec3 divergingColour(float t) {
     return x < 0.0f ? glm::mix(white, blue, -x) : glm::mix(white, red, x);
 }
 
-scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, SliceRange* usedRange) {
+scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, SliceRange* usedRange,
+                          const SliceGuides* guides) {
     const int ppc = std::max(colour.pixelsPerCell, 1);
     constexpr int kFont = 2, kMargin = 4, kRamp = 12;
     const int lineHeight = 5 * kFont + 4;
     const int sliceWidth = field.width * ppc, sliceHeight = field.height * ppc;
-    // The legend needs room for three numbers and the title.
-    const int width = std::max({sliceWidth, 3 * textWidth("-0.000E-00", kFont) + 4 * kMargin,
-                                textWidth(colour.title, kFont) + 2 * kMargin});
-    const int legendHeight = kMargin + kRamp + kMargin + lineHeight + (colour.title.empty() ? 0 : lineHeight);
-    scene::Image8 image{width, sliceHeight + legendHeight, 4, {}};
+
+    // Beside the slice: the world coordinates of its top and bottom edges;
+    // under it, those of its left and right edges, then a scale bar in scene
+    // units and the plane's coordinate (issue #46: the slices had no axes or scale).
+    std::string vTop, vBottom, uLeft, uRight, barText, planeText;
+    int besideWidth = 0, guidesHeight = 0, barPixels = 0;
+    if (guides) {
+        const glm::ivec2 uv = inPlaneAxes(guides->axis);
+        const float worldWidth = guides->cellSize * float(field.width);
+        const float worldHeight = guides->cellSize * float(field.height);
+        auto coordinate = [](int axis, float value) {
+            return std::string(kUpperAxisNames[axis]) + " " + formatValue(value);
+        };
+        uLeft = coordinate(uv.x, guides->origin.x);
+        uRight = coordinate(uv.x, guides->origin.x + worldWidth);
+        vBottom = coordinate(uv.y, guides->origin.y);
+        vTop = coordinate(uv.y, guides->origin.y + worldHeight);
+        const float bar = scaleBarLength(worldWidth);
+        barPixels = int(std::lround(bar / guides->cellSize * float(ppc)));
+        barText = formatValue(bar) + (bar == 1.0f ? " UNIT" : " UNITS"); // scene units: the scene's own scale
+        planeText = std::string("PLANE ") + kUpperAxisNames[int(guides->axis)] + " = " + formatValue(guides->plane);
+        besideWidth = kMargin + std::max(textWidth(vTop, kFont), textWidth(vBottom, kFont)) + kMargin;
+        guidesHeight = kMargin + 2 * lineHeight;
+    }
+    // The legend needs room for three numbers; the guides for the bar and the plane.
+    int width = std::max({sliceWidth + besideWidth, 3 * textWidth("-0.000E-00", kFont) + 4 * kMargin});
+    if (guides)
+        width = std::max(width, 2 * kMargin + barPixels + textWidth(barText, kFont) + 4 * kMargin +
+                                    textWidth(planeText, kFont));
+    // The caption wraps between its groups; one group wider than the image widens it.
+    const std::string caption =
+        colour.title.empty() ? std::string() : colour.title + (colour.scale == Scale::Log ? "  LOG" : "");
+    const std::vector<std::string> groups = captionGroups(caption);
+    for (const std::string& g : groups)
+        width = std::max(width, textWidth(g, kFont) + 2 * kMargin);
+    const std::vector<std::string> captionLines = wrapCaption(groups, width - 2 * kMargin, kFont);
+
+    const int legendTop = sliceHeight + guidesHeight;
+    const int legendHeight = kMargin + kRamp + kMargin + lineHeight * (1 + int(captionLines.size()));
+    scene::Image8 image{width, legendTop + legendHeight, 4, {}};
     image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 4, 0);
     for (std::size_t i = 3; i < image.pixels.size(); i += 4)
         image.pixels[i] = 255;
@@ -217,8 +343,28 @@ scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, Sli
                     setPixel(image, u * ppc + x, top + y, c);
         }
 
-    // Legend: the ramp, its low / middle / high values, the title.
-    const int rampTop = sliceHeight + kMargin, rampWidth = width - 2 * kMargin;
+    if (guides) {
+        drawOutline(image, field, guides->geometry, ppc);
+        const int besideX = sliceWidth + kMargin;
+        drawText(image, besideX, 0, vTop, kFont, kAxisLabelColour);
+        drawText(image, besideX, std::max(sliceHeight - 5 * kFont, lineHeight), vBottom, kFont, kAxisLabelColour);
+        const int uTop = sliceHeight + kMargin;
+        drawText(image, 0, uTop, uLeft, kFont, kAxisLabelColour);
+        drawText(image, std::max(sliceWidth - textWidth(uRight, kFont), textWidth(uLeft, kFont) + 2 * kMargin),
+                 uTop, uRight, kFont, kAxisLabelColour);
+        // The bar with end ticks, its length, and where the plane lies.
+        const int barTop = uTop + lineHeight;
+        fillRect(image, kMargin, barTop + 4, barPixels, 2, kScaleBarColour);
+        fillRect(image, kMargin, barTop, 1, 5 * kFont, kScaleBarColour);
+        fillRect(image, kMargin + barPixels - 1, barTop, 1, 5 * kFont, kScaleBarColour);
+        const int barTextX = 2 * kMargin + barPixels;
+        drawText(image, barTextX, barTop, barText, kFont, kAxisLabelColour);
+        drawText(image, barTextX + textWidth(barText, kFont) + 4 * kMargin, barTop, planeText, kFont,
+                 kAxisLabelColour);
+    }
+
+    // Legend: the ramp, its low / middle / high values, the caption.
+    const int rampTop = legendTop + kMargin, rampWidth = width - 2 * kMargin;
     const float tLow = field.isSigned ? -1.0f : 0.0f;
     for (int x = 0; x < rampWidth; ++x) {
         const float t = tLow + (1.0f - tLow) * float(x) / float(std::max(rampWidth - 1, 1));
@@ -232,9 +378,8 @@ scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, Sli
     drawText(image, kMargin, labelTop, low, kFont);
     drawText(image, (width - textWidth(mid, kFont)) / 2, labelTop, mid, kFont);
     drawText(image, width - kMargin - textWidth(high, kFont), labelTop, high, kFont);
-    if (!colour.title.empty())
-        drawText(image, kMargin, labelTop + lineHeight,
-                 colour.title + (colour.scale == Scale::Log ? "  LOG" : ""), kFont, glm::vec3(0.85f));
+    for (std::size_t i = 0; i < captionLines.size(); ++i)
+        drawText(image, kMargin, labelTop + lineHeight * int(i + 1), captionLines[i], kFont, kCaptionColour);
     return image;
 }
 

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,9 +86,39 @@ struct SliceRange {
     float high = 0.0f;
 };
 
-// The slice magnified by pixelsPerCell (v up), then a legend strip: the
-// colour ramp with its low, middle and high values, and the title.
-scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, SliceRange* usedRange = nullptr);
+// Where a slice lies in the world, so that its picture says so (issue #46):
+// the world coordinates of its edges on both in-plane axes, a scale bar in
+// scene units, the plane's own coordinate, and the outline of the geometry
+// that crosses the plane.
+struct SliceGuides {
+    Axis axis = Axis::Z;
+    glm::vec2 origin{0.0f}; // world (u, v) of the slice's lower-left corner (cell (0, 0)'s corner)
+    float plane = 0.0f;     // world coordinate of the slice plane along `axis`
+    float cellSize = 1.0f;  // world units per cell of the field
+    // Per cell of the field (rows bottom to top), 1 where geometry crosses
+    // the plane; its boundary is drawn over the slice. Empty: no outline.
+    std::vector<std::uint8_t> geometry;
+};
+
+// The in-plane axes (u, v) of a slice across `axis`: 0 = x, 1 = y, 2 = z.
+glm::ivec2 inPlaneAxes(Axis axis);
+// The scale bar's length for a slice `worldWidth` wide: the largest of 1, 2,
+// 5 x 10^k at most a third of it, so it reads the same in any unit.
+float scaleBarLength(float worldWidth);
+
+// Colours of what renderSlice draws besides the slice and ramp (tests find them by colour).
+inline constexpr glm::vec3 kCaptionColour{0.85f};       // the title under the legend
+inline constexpr glm::vec3 kAxisLabelColour{0.7f};      // world coordinates beside the slice
+inline constexpr glm::vec3 kScaleBarColour{1.0f};       // the scale bar
+inline constexpr glm::vec3 kOutlineColour{0.0f, 1.0f, 1.0f}; // the geometry's outline (cyan)
+
+// The slice magnified by pixelsPerCell (v up) at the image's top-left, then
+// (with `guides`) the world coordinates of its edges beside and under it, a
+// scale bar and the plane's coordinate, and the geometry's outline over it;
+// then a legend strip: the colour ramp with its low, middle and high values,
+// and the title, wrapped onto as many lines as it needs, all inside the image.
+scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, SliceRange* usedRange = nullptr,
+                          const SliceGuides* guides = nullptr);
 
 // The false-colour ramp at t in 0..1 (dark purple to yellow), and the
 // diverging one for signed values at t in -1..1 (blue, white, red).
