@@ -60,6 +60,13 @@ class HardValues : public testing::Test {
         });
     }
 
+    // A refusal comes from the loader, before any work: about 0.1 s on an
+    // idle machine. The bound only has to tell that from the work itself (a
+    // 5 s radiosity solve, a render, millions of frames, a hang), so it
+    // leaves room for a loaded 2-core machine, where starting lpv alone took
+    // just over 1 s in a fresh Debian 13 chroot beside four builds.
+    static constexpr double kRefusedWithin = 4.0;
+
     // Runs lpv and measures the wall time.
     RunResult timed(const std::string& args, double& seconds) {
         const auto start = std::chrono::steady_clock::now();
@@ -85,7 +92,7 @@ TEST_F(HardValues, RadiosityRefusesAnOverflowingLight) {
                                        "float headroom"))
         << r.output;
     EXPECT_FALSE(fs::exists(dir_ / "cornell" / "cornell-box.assets" / "radiosity.lpvrad"));
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kRefusedWithin);
 }
 
 TEST_F(HardValues, RadiosityStatesItsDefaultTimeLimit) {
@@ -143,7 +150,7 @@ TEST_F(HardValues, DegenerateCamerasAreRefusedNamingTheField) {
         EXPECT_EQ(r.exitCode, 1) << field << "\n" << r.output;
         EXPECT_TRUE(contains(r.output, project_ + ": " + field + ": ")) << field << "\n" << r.output;
         EXPECT_FALSE(fs::exists(dir_ / "out.png")) << field;
-        EXPECT_LT(seconds, 1.0) << field;
+        EXPECT_LT(seconds, kRefusedWithin) << field;
     }
 }
 
@@ -156,7 +163,7 @@ TEST_F(HardValues, PathKeyAt1e30IsRefusedByTheReader) {
                                        ": cameraPaths[0].keyframes[1].time: key time 1.00000002e+30 s is "
                                        "outside 0..86400 (a day)"))
         << r.output;
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kRefusedWithin);
     const RunResult csv = runLpv("path export " + project_ + " --path long -o " + (dir_ / "p.csv").string());
     EXPECT_EQ(csv.exitCode, 1) << csv.output;
     EXPECT_FALSE(contains(csv.output, "rows")) << csv.output;
@@ -172,7 +179,7 @@ TEST_F(HardValues, VideoAndCsvExportRefuseTooManyFrames) {
                                            ": the camera path \"long\": the path lasts 86400 s: at 30 fps "
                                            "that is 2592000 frames, over the limit of 1000000"))
         << video.output;
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kRefusedWithin);
     EXPECT_FALSE(fs::exists(dir_ / "v.mp4"));
 
     const RunResult csv =
@@ -183,7 +190,7 @@ TEST_F(HardValues, VideoAndCsvExportRefuseTooManyFrames) {
                          "the limit of 1000000 (9 hours at 30 fps); nothing was written"))
         << csv.output;
     EXPECT_FALSE(fs::exists(dir_ / "p.csv"));
-    EXPECT_LT(seconds, 1.0);
+    EXPECT_LT(seconds, kRefusedWithin);
 
     // At 10 fps the day is 864,000 rows: allowed (not written here, only planned).
     const RunResult json =
