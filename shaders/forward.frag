@@ -86,8 +86,9 @@ void main() {
                                            uLightAreaShape[i], twoSided, vWorldPos, n, l, polygon, count);
             if (factor <= 0.0)
                 continue;
-            dist = distance(uLightPosition[i], vWorldPos);
-            float visibility = shadowVisibility(i, vWorldPos, n, normalize(uLightPosition[i] - vWorldPos), dist);
+            float visibility =
+                areaShadowVisibility(i, vWorldPos, n, uLightPosition[i], lightNormal, uLightHalfU[i], uLightHalfV[i],
+                                     uLightAreaShape[i], twoSided);
             radiance += areaLightReflectance(s, l, v, factor, polygon, count, uLightPosition[i], lightNormal,
                                              uLightHalfU[i], uLightHalfV[i], uLightAreaShape[i], vWorldPos) *
                         uLightRadiantColor[i] * visibility;

@@ -9,6 +9,9 @@
 // (16 + 16, modest for llvmpipe); hardware 2x2 compare filtering smooths each.
 const int MAX_CASCADES = 8;
 const int MAX_LOCAL_SHADOWS = 4;
+// Cubes of the point-light map (ShadowLights.h kMaxPointShadowCubes): an
+// area light has one per quarter of its rectangle.
+const int MAX_POINT_SHADOW_CUBES = 16;
 const float MAX_FILTER_TEXELS = 24.0;
 // A spot or point map's near plane over its far plane (ShadowLights.h
 // kLocalShadowNearFraction): no blocker is nearer the light than that, so
@@ -29,16 +32,17 @@ uniform float uSunTanHalfAngle;                 // 0 = hard shadows
 uniform sampler2DArrayShadow uCascadeCompare;
 uniform sampler2DArray uCascadeDepth;
 
-// Spot and point lights: which layer each light index uses (-1 = none).
+// Spot and point lights: which layer (a point light's: cube) each light
+// index uses, -1 = none; an area light's quarters take that cube and the next three.
 uniform int uSpotShadowLayer[MAX_LIGHTS];
 uniform int uPointShadowLayer[MAX_LIGHTS];
 uniform mat4 uSpotViewProj[MAX_LOCAL_SHADOWS];
 uniform float uSpotTanHalfFov[MAX_LOCAL_SHADOWS];
 uniform vec3 uSpotPosition[MAX_LOCAL_SHADOWS];
 uniform float uSpotFar[MAX_LOCAL_SHADOWS];
-uniform vec3 uPointPosition[MAX_LOCAL_SHADOWS];
-uniform float uPointFar[MAX_LOCAL_SHADOWS];
-uniform float uPointRadius[MAX_LOCAL_SHADOWS]; // PCSS light radius: uLocalLightRadius, or an area light's size
+uniform vec3 uPointPosition[MAX_POINT_SHADOW_CUBES]; // per cube: a point light's, a quarter of an area light's centre
+uniform float uPointFar[MAX_POINT_SHADOW_CUBES];
+uniform float uPointRadius[MAX_POINT_SHADOW_CUBES]; // PCSS light radius: uLocalLightRadius (area lights: unused)
 uniform float uLocalLightRadius;                // 0 = hard shadows
 uniform sampler2DArrayShadow uSpotCompare;      // stores distance / far
 uniform sampler2DArray uSpotDepth;
@@ -218,6 +222,168 @@ float pointVisibility(int layer, vec3 worldPos, vec3 n, vec3 toLight) {
     return lit / 16.0;
 }
 
+// Area lights (issue #46): the share of the light's rectangle a receiver
+// sees, estimated at points spread over the rectangle, each weighted by the
+// light it sends the receiver (cos cos / d^2), each looked up in the cube
+// map of its quarter of the rectangle (ShadowPass: one cube at each
+// quarter's centre). So the penumbra takes the light's shape and the
+// receiver's foreshortened view of it, a face that sees only part of the
+// light counts only that part, and nothing caps the penumbra's width in
+// texels. Before, one cube at the centre was filtered by PCSS with a disc
+// of the half diagonal, 16 fixed Poisson taps and a 24-texel cap: the
+// penumbrae of the Cornell lamp were cut to half their width (a hard edge
+// inside a soft one), banded (16 copies of the edge) and lumpy where the one
+// mean blocker depth jumped.
+// The points: correlated multi-jittered (Kensler 2013, 6 x 4 strata, pattern
+// 5) on [-1, 1]^2, 6 in each quarter. Each has its own row and column and
+// their projections on any direction are spread, so the taps' hard edges do
+// not stack into bands; fixed, so shadows do not crawl when the camera moves.
+const int AREA_SHADOW_TAPS = 24;
+const vec2 AREA_SHADOW_TAP_POINTS[AREA_SHADOW_TAPS] = vec2[](
+    vec2(-0.723102, -0.856415),
+    vec2(-0.363777, -0.621122),
+    vec2(-0.000336, -0.827524),
+    vec2(0.291422, -0.917303),
+    vec2(0.600516, -0.715499),
+    vec2(0.921141, -0.559952),
+    vec2(-0.885077, -0.355005),
+    vec2(-0.553063, -0.113444),
+    vec2(-0.197288, -0.287719),
+    vec2(0.150274, -0.425800),
+    vec2(0.472002, -0.226763),
+    vec2(0.807420, -0.051551),
+    vec2(-0.801870, 0.129805),
+    vec2(-0.467036, 0.405410),
+    vec2(-0.099945, 0.237794),
+    vec2(0.199664, 0.055832),
+    vec2(0.504075, 0.258680),
+    vec2(0.835132, 0.482790),
+    vec2(-0.951277, 0.616181),
+    vec2(-0.652267, 0.868992),
+    vec2(-0.271317, 0.720533),
+    vec2(0.055206, 0.508532),
+    vec2(0.402739, 0.785796),
+    vec2(0.748104, 0.918814));
+
+// A tap point on the light: the rectangle's, or for a disc (shape 1) the
+// square mapped onto the disc by Shirley and Chiu's concentric map, which
+// keeps each quarter in its quarter and the strata even.
+vec2 areaShadowPoint(vec2 s, int shape) {
+    if (shape != 1 || s == vec2(0.0))
+        return s;
+    float r = abs(s.x) > abs(s.y) ? s.x : s.y;
+    float phi = abs(s.x) > abs(s.y) ? 0.25 * PI * s.y / s.x : 0.5 * PI - 0.25 * PI * s.x / s.y;
+    return r * vec2(cos(phi), sin(phi));
+}
+
+// Where the segment from the receiver p to the light point q lies at depth
+// z along `dir`, the unit direction from the map's centre c to p (d = their
+// distance): relative to c, for the map lookup.
+vec3 areaShadowTap(vec3 p, vec3 q, vec3 c, vec3 dir, float d, float z) {
+    float f = (d - z) / max(d - dot(q - c, dir), 1e-6 * d);
+    return p + clamp(f, 0.0, 1.0) * (q - p) - c;
+}
+
+// Distance from c along the unit direction u to the receiver's plane
+// (through p, normal n): each tap is compared against the receiver's own
+// depth there, so a flat receiver never shadows itself however far the taps
+// spread (receiver-plane depth bias; a slope term that grew with the
+// filter's width stood in for it). A plane the ray cannot meet, or meets
+// only far behind the receiver, gives twice the receiver's distance.
+float areaShadowPlaneDistance(vec3 p, vec3 n, vec3 c, vec3 u, float d) {
+    float denominator = dot(u, n);
+    float t = denominator < 0.0 ? dot(p - c, n) / denominator : 2.0 * d;
+    return t > 0.0 ? min(t, 2.0 * d) : 2.0 * d;
+}
+
+// The light point q's share of the light at p (normal n): cos cos / d^2,
+// 0 where q is below p's horizon or p behind a one-sided light.
+float areaShadowWeight(vec3 p, vec3 n, vec3 q, vec3 lightNormal, bool twoSided) {
+    vec3 pq = q - p;
+    float d2 = dot(pq, pq);
+    float cosLight = -dot(lightNormal, pq);
+    cosLight = twoSided ? abs(cosLight) : max(cosLight, 0.0);
+    return max(dot(n, pq), 0.0) * cosLight / max(d2 * d2, 1e-30);
+}
+
+// 1 = the whole light seen, 0 = none of it; `firstCube` is its first quarter's cube.
+float areaLightVisibility(int firstCube, vec3 worldPos, vec3 n, vec3 center, vec3 lightNormal, vec3 halfU,
+                          vec3 halfV, int shape, bool twoSided) {
+    float size = float(textureSize(uPointCompare, 0).x);
+    float dist = distance(worldPos, center);
+    if (dist <= 0.0)
+        return 1.0; // a float guard only: a receiver on the light
+    float texel = 2.0 * dist / size; // world size of a cube texel at the receiver (face centre)
+    float slope = shadowSlope(n, (center - worldPos) / dist);
+    vec3 p = worldPos + n * (uShadowBias * texel * (1.0 + min(slope, 2.0)));
+    float bias = uShadowBias * texel;
+
+    // Blocker search: each point's segment sampled half way to the light,
+    // where what blocks it shows. A tap counts by how much of its bilinear
+    // footprint is in front of the receiver, so blocker depths change
+    // smoothly as blockers come into the taps; counted all or nothing, they
+    // jumped and made lumps.
+    float blockedShare[AREA_SHADOW_TAPS];
+    float blockerDepth[AREA_SHADOW_TAPS];
+    vec4 quarterSum = vec4(0.0);    // per quarter: blocked share x depth
+    vec4 quarterWeight = vec4(0.0); // per quarter: blocked share
+    for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
+        vec2 s = AREA_SHADOW_TAP_POINTS[i];
+        int quarter = (s.x > 0.0 ? 1 : 0) + (s.y > 0.0 ? 2 : 0);
+        int cube = firstCube + quarter;
+        vec3 c = uPointPosition[cube];
+        vec2 a = areaShadowPoint(s, shape);
+        vec3 q = center + halfU * a.x + halfV * a.y;
+        blockedShare[i] = 0.0;
+        blockerDepth[i] = 0.0;
+        if (areaShadowWeight(p, n, q, lightNormal, twoSided) <= 0.0)
+            continue;
+        float d = distance(p, c);
+        vec3 u = normalize(areaShadowTap(p, q, c, (p - c) / d, d, 0.5 * d));
+        float receiver = areaShadowPlaneDistance(p, n, c, u, d) - bias;
+        float far = uPointFar[cube];
+        float blocked = 1.0 - texture(uPointCompare, vec4(u, float(cube)), receiver / far);
+        if (blocked <= 0.0)
+            continue;
+        blockedShare[i] = blocked;
+        blockerDepth[i] = min(texture(uPointDepth, vec4(u, float(cube))).r * far, receiver);
+        quarterSum[quarter] += blocked * blockerDepth[i];
+        quarterWeight[quarter] += blocked;
+    }
+    if (all(equal(quarterWeight, vec4(0.0))))
+        return 1.0;
+
+    // Each point tested where its segment crosses the depth of what blocked
+    // its own search tap, or, as far as that found nothing, its quarter's
+    // mean blocker depth (PCSS for the quarter); a quarter with no blocker is seen.
+    float lit = 0.0;
+    float weight = 0.0;
+    for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
+        vec2 s = AREA_SHADOW_TAP_POINTS[i];
+        int quarter = (s.x > 0.0 ? 1 : 0) + (s.y > 0.0 ? 2 : 0);
+        int cube = firstCube + quarter;
+        vec3 c = uPointPosition[cube];
+        vec2 a = areaShadowPoint(s, shape);
+        vec3 q = center + halfU * a.x + halfV * a.y;
+        float w = areaShadowWeight(p, n, q, lightNormal, twoSided);
+        if (w <= 0.0)
+            continue;
+        weight += w;
+        if (quarterWeight[quarter] <= 0.0) {
+            lit += w;
+            continue;
+        }
+        float far = uPointFar[cube];
+        float meanBlocker = quarterSum[quarter] / quarterWeight[quarter];
+        float blocker = max(mix(meanBlocker, blockerDepth[i], blockedShare[i]), LOCAL_SHADOW_NEAR_FRACTION * far);
+        float d = distance(p, c);
+        vec3 u = normalize(areaShadowTap(p, q, c, (p - c) / d, d, blocker));
+        float reference = (areaShadowPlaneDistance(p, n, c, u, d) - bias) / far;
+        lit += w * texture(uPointCompare, vec4(u, float(cube)), reference);
+    }
+    return weight > 0.0 ? lit / weight : 1.0;
+}
+
 // 1 = lit, 0 = in shadow, for light `lightIndex` seen along `toLight` from
 // `worldPos` (`dist` = distance to a local light; unused for the sun).
 float shadowVisibility(int lightIndex, vec3 worldPos, vec3 n, vec3 toLight, float dist) {
@@ -230,6 +396,18 @@ float shadowVisibility(int lightIndex, vec3 worldPos, vec3 n, vec3 toLight, floa
         return spotVisibility(uSpotShadowLayer[lightIndex], worldPos, n, toLight);
     if (uPointShadowLayer[lightIndex] >= 0)
         return pointVisibility(uPointShadowLayer[lightIndex], worldPos, n, toLight);
+#endif
+    return 1.0;
+}
+
+// An area light's visibility (its own function: it needs the light's frame);
+// 1 where the light casts no shadows or the variant has no local shadows.
+float areaShadowVisibility(int lightIndex, vec3 worldPos, vec3 n, vec3 center, vec3 lightNormal, vec3 halfU,
+                           vec3 halfV, int shape, bool twoSided) {
+#ifndef LPV_NO_LOCAL_SHADOWS
+    if (lightIndex >= 0 && lightIndex < MAX_LIGHTS && uPointShadowLayer[lightIndex] >= 0)
+        return areaLightVisibility(uPointShadowLayer[lightIndex], worldPos, n, center, lightNormal, halfU, halfV,
+                                   shape, twoSided);
 #endif
     return 1.0;
 }

@@ -54,9 +54,14 @@ glm::vec3 stableUp(const glm::vec3& dir) {
 
 } // namespace
 
-float areaShadowRadius(const scene::Light& light) {
+std::array<glm::vec3, kAreaShadowCubes> areaShadowCentres(const scene::Light& light) {
     const scene::AreaLightFrame f = scene::areaLightFrame(light);
-    return glm::length(f.halfU + f.halfV);
+    // Quarters in the order shadow_sampling.glsl numbers them: bit 0 = +U half, bit 1 = +V half.
+    std::array<glm::vec3, kAreaShadowCubes> centres{};
+    for (int k = 0; k < kAreaShadowCubes; ++k)
+        centres[std::size_t(k)] =
+            f.center + 0.5f * ((k & 1) ? f.halfU : -f.halfU) + 0.5f * ((k & 2) ? f.halfV : -f.halfV);
+    return centres;
 }
 
 LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& bounds) {

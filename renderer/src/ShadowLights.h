@@ -40,8 +40,17 @@ struct LocalShadowView {
     float tanHalfFov = 1.0f; // of one face
 };
 
-// The light radius an area light's soft shadows use: half its diagonal (a disc: its radius times sqrt 2).
-float areaShadowRadius(const scene::Light& light);
+// An area light casts its shadows from this many cube maps, one at the
+// centre of each quarter of its rectangle (a disc: of its bounding square).
+// One cube at the centre of a lamp a quarter as wide as the Cornell box
+// cannot say which part of the lamp a receiver sees past a blocker (issue
+// #46): its estimate erred most beside vertical faces and on faces that see
+// only part of the lamp. A quarter's penumbrae are half as wide, and the
+// four together tile the lamp's, so their sum stays smooth.
+inline constexpr int kAreaShadowCubes = 4;
+std::array<glm::vec3, kAreaShadowCubes> areaShadowCentres(const scene::Light& light);
+// Cubes of the point-light map at most: every shadowed local light an area light.
+inline constexpr int kMaxPointShadowCubes = kMaxShadowedLocalLights * kAreaShadowCubes;
 
 LocalShadowView spotShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);
 LocalShadowView pointShadowView(const scene::Light& light, const scene::Bounds& sceneBounds);

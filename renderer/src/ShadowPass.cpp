@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cassert>
 #include <map>
 #include <cmath>
 #include <string>
@@ -252,9 +253,11 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         return ok;
     if (auto ok = ensureTarget(spotMap_, GL_TEXTURE_2D_ARRAY, mapSize, int(lights_.spots.size())); !ok)
         return ok;
-    if (auto ok = ensureTarget(pointMap_, GL_TEXTURE_CUBE_MAP_ARRAY, pointFaceSize(mapSize),
-                               6 * int(lights_.points.size()));
-        !ok)
+    // A point light's map is one cube, an area light's one per quarter (areaShadowCentres).
+    int pointCubes = 0;
+    for (int i : lights_.points)
+        pointCubes += s.lights[std::size_t(i)].type == scene::LightType::Area ? kAreaShadowCubes : 1;
+    if (auto ok = ensureTarget(pointMap_, GL_TEXTURE_CUBE_MAP_ARRAY, pointFaceSize(mapSize), 6 * pointCubes); !ok)
         return ok;
 
     cascades_.clear();
@@ -274,14 +277,28 @@ scene::Expected<void> ShadowPass::render(const FrameContext& frame, const SceneG
         spotPositions_.push_back(s.lights[std::size_t(i)].position);
     }
     pointRadii_.clear();
+    pointFirstCube_.clear();
     for (int i : lights_.points) {
         const scene::Light& light = s.lights[std::size_t(i)];
-        pointViews_.push_back(pointShadowView(light, bounds));
-        pointPositions_.push_back(light.position);
-        // An area light's penumbra follows its own size (PCSS with its half diagonal as the
-        // radius), not shadow.softness, which stands in for the size of lights that have none.
-        pointRadii_.push_back(light.type == scene::LightType::Area ? areaShadowRadius(light) : localLightRadius_);
+        pointFirstCube_.push_back(int(pointViews_.size()));
+        if (light.type != scene::LightType::Area) {
+            pointViews_.push_back(pointShadowView(light, bounds));
+            pointPositions_.push_back(light.position);
+            pointRadii_.push_back(localLightRadius_);
+            continue;
+        }
+        // An area light's penumbrae follow its own size, not shadow.softness,
+        // which stands in for the size of lights that have none.
+        for (const glm::vec3& centre : areaShadowCentres(light)) {
+            scene::Light quarter = light;
+            quarter.position = centre;
+            pointViews_.push_back(pointShadowView(quarter, bounds));
+            pointPositions_.push_back(centre);
+            pointRadii_.push_back(0.0f); // unused: shadow_sampling.glsl samples the quarter itself
+        }
     }
+    // shadow_sampling.glsl's arrays hold this many (selectShadowLights caps the lights).
+    assert(pointViews_.size() <= std::size_t(kMaxPointShadowCubes));
     if (cascades_.empty() && spotViews_.empty() && pointViews_.empty())
         return {};
 
@@ -395,7 +412,9 @@ void ShadowPass::bindForShading(const CachedProgram& shader, const FrameContext&
         glProgramUniform1i(p, shader.uniform(indexed("uSpotShadowLayer", idx)),
                            spot == lights_.spots.end() ? -1 : int(spot - lights_.spots.begin()));
         glProgramUniform1i(p, shader.uniform(indexed("uPointShadowLayer", idx)),
-                           point == lights_.points.end() ? -1 : int(point - lights_.points.begin()));
+                           point == lights_.points.end()
+                               ? -1
+                               : pointFirstCube_[std::size_t(point - lights_.points.begin())]);
     }
     for (std::size_t i = 0; i < spotViews_.size(); ++i) {
         const int idx = int(i);

@@ -5,7 +5,8 @@
 //  - the sun: shadow.cascades cascades (ShadowCascades.h) rendered in ONE pass
 //    into the layers of a 2D-array depth texture (shadow.geom, invocation per layer);
 //  - spot lights: one perspective layer each of a 2D-array texture;
-//  - point lights: one cube of a cube-map array each, its six faces in one pass.
+//  - point lights: one cube of a cube-map array each, its six faces in one
+//    pass; area lights one cube per quarter of their rectangle (ShadowLights.h).
 // Spot and point maps store distance / far. At most kMaxShadowedLocalLights
 // local lights are shadowed; nothing is allocated for lights the scene lacks.
 #include "FrameContext.h"
@@ -118,7 +119,8 @@ private:
     std::vector<LocalShadowView> spotViews_, pointViews_;
     std::vector<glm::vec3> spotPositions_, pointPositions_;
     float localLightRadius_ = 0.0f;
-    std::vector<float> pointRadii_; // PCSS light radius per point layer (area lights: their size)
+    std::vector<float> pointRadii_; // PCSS light radius per cube (area lights: unused)
+    std::vector<int> pointFirstCube_; // per entry of lights_.points: its first cube (an area light has kAreaShadowCubes)
     LayeredTarget cascadeMap_, spotMap_, pointMap_;
 };
 

@@ -43,8 +43,8 @@ TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
             ++pngs;
             auto image = lpv::importers::readImage8(entry.path());
             ASSERT_TRUE(image.has_value()) << image.error().describe();
-            // The Cornell lamp is an area light: a cube shadow map at its centre, faces of
-            // max(mapSize / 2, 128) texels (ShadowPass.cpp), one texel per pixel.
+            // The Cornell lamp is an area light: a cube shadow map at the centre of each
+            // quarter, faces of max(mapSize / 2, 128) texels (ShadowPass.cpp), one texel per pixel.
             EXPECT_EQ(image->width, 128) << name << ": one shadow map texel per pixel";
             // The face looking down sees the box: a depth view that is not one flat colour.
             // (The face looking up sees only the ceiling, 1 mm behind the light.)
@@ -58,7 +58,7 @@ TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
             }
         }
     }
-    EXPECT_EQ(pngs, 6u) << r.output; // the six cube faces
+    EXPECT_EQ(pngs, 24u) << r.output; // the six faces of the four quarters' cubes (issue #46)
     EXPECT_EQ(pngs, exrs);
     fs::remove_all(dir);
 }
