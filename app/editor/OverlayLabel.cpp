@@ -10,7 +10,8 @@ QRectF drawOverlayLabel(QPainter& painter, const QPointF& topLeft, const QString
     // Padding in the font's own units, so the box grows with a larger font.
     const double padX = metrics.averageCharWidth() * 0.6, padY = metrics.descent() + 1.0;
     const QString shown = metrics.elidedText(text, Qt::ElideRight, std::max(0.0, maxWidth - 2.0 * padX));
-    const QRectF box(topLeft, QSizeF(metrics.horizontalAdvance(shown) + 2.0 * padX, metrics.height() + 2.0 * padY));
+    const QRectF box(topLeft,
+                     QSizeF(metrics.horizontalAdvance(shown) + 2.0 * padX, metrics.height() + 2.0 * padY));
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(Qt::NoPen);

@@ -23,11 +23,11 @@
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScrollArea>
-#include <QStyle>
 #include <QScatterSeries>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
@@ -350,7 +350,8 @@ SweepPanel::~SweepPanel() = default;
 std::vector<bench::SweepQuestionRow> SweepPanel::defaultQuestionRows() {
     std::vector<bench::SweepQuestionRow> rows;
     for (const bench::Question& q : bench::reportQuestions())
-        rows.push_back({q.name, q.sweep, std::ranges::find(kDefaultQuestions, q.name) != std::end(kDefaultQuestions)});
+        rows.push_back(
+            {q.name, q.sweep, std::ranges::find(kDefaultQuestions, q.name) != std::end(kDefaultQuestions)});
     return rows;
 }
 
@@ -870,7 +871,8 @@ bool SweepPanel::eventFilter(QObject* watched, QEvent* event) {
         // the series: not inside the view's own mouse event.
         const int index = runAtPixel(pos);
         if (index >= 0 && index == pressedRun_)
-            QMetaObject::invokeMethod(this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this, index] { applyRun(index); }, Qt::QueuedConnection);
         pressedRun_ = -1;
     }
     return QWidget::eventFilter(watched, event);

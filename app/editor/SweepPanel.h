@@ -119,7 +119,7 @@ private:
     void onDocumentChanged(bool newProject);
     void saveBesideProject(const QString& projectPath);
     void loadBesideProject();
-    // The run whose point is nearest `pos` (the chart view's viewport pixels), within a marker's radius; or -1.
+    // The run whose point is nearest `pos` (chart view viewport pixels) within a marker's radius, or -1.
     int runAtPixel(const QPoint& pos) const;
     // The runs shown: the finished sweep's, or those of the one running (null: not measured yet).
     std::vector<const bench::SweepRun*> shownRuns() const;

@@ -177,8 +177,8 @@ scene::Expected<SavedSweep> loadSweep(const fs::path& file) {
         }
         if (j.contains("questions"))
             for (const Json& q : j.at("questions"))
-                s.questions.push_back(
-                    {q.at("name").get<std::string>(), q.at("values").get<std::string>(), q.at("checked").get<bool>()});
+                s.questions.push_back({q.at("name").get<std::string>(), q.at("values").get<std::string>(),
+                                       q.at("checked").get<bool>()});
     } catch (const std::exception& e) {
         return scene::makeError(scene::ErrorCode::MissingField, file.string(), "", e.what());
     }

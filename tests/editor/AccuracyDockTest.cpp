@@ -99,9 +99,11 @@ TEST(AccuracyDock, FiguresChangeAsTheReferenceConvergesAndItsNoiseFalls) {
     AccuracyPanel* panel = f.window->accuracy();
     panel->traceBox()->setChecked(true);
     // From 2 samples on: one sample has no variance, so no noise figure yet.
-    QTRY_VERIFY_WITH_TIMEOUT(!f.samples.empty() && f.samples.back()->samplesPerPixel >= 2, 60000);
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return !f.samples.empty() && f.samples.back()->samplesPerPixel >= 2; }, 60000));
     const auto first = f.samples.back();
-    QTRY_VERIFY_WITH_TIMEOUT(f.samples.back()->samplesPerPixel >= first->samplesPerPixel + 3, 60000);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return f.samples.back()->samplesPerPixel >= first->samplesPerPixel + 3; }, 60000));
     const auto last = f.samples.back();
     for (const auto& s : {first, last}) {
         const lpv::reference::Accuracy& a = s->accuracy;
@@ -133,20 +135,21 @@ TEST(AccuracyDock, FiguresChangeAsTheReferenceConvergesAndItsNoiseFalls) {
     const int sppBefore = f.samples.back()->samplesPerPixel;
     f.samples.clear();
     f.window->document()->setParameter("lpv.propagationSteps", lpv::scene::ParameterValue(2));
-    QTRY_VERIFY_WITH_TIMEOUT(!f.samples.empty(), 60000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !f.samples.empty(); }, 60000));
     EXPECT_GE(f.samples.back()->samplesPerPixel, sppBefore);
 
     // A camera move starts it again; unticking stops it.
     // Passes are quick here (about 30 a second): enough of them that the first
     // measurement after a restart (a few hundred ms in) has clearly fewer.
-    QTRY_VERIFY_WITH_TIMEOUT(f.samples.back()->samplesPerPixel >= std::max(40, sppBefore + 4), 60000);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return f.samples.back()->samplesPerPixel >= std::max(40, sppBefore + 4); }, 60000));
     const int sppBeforeMove = f.samples.back()->samplesPerPixel;
     lpv::scene::Camera moved = f.window->viewport()->viewCamera();
     moved.position += glm::vec3(0.2f, 0.1f, 0.0f);
     f.samples.clear();
     f.window->viewport()->setViewCamera(moved);
     EXPECT_EQ(panel->figureText("FLIP", false), "-") << "the old view's figures go at once";
-    QTRY_VERIFY_WITH_TIMEOUT(!f.samples.empty(), 60000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !f.samples.empty(); }, 60000));
     EXPECT_LT(f.samples.front()->samplesPerPixel, sppBeforeMove);
     EXPECT_TRUE(f.samples.front()->accuracy.flip > 0.0);
     panel->traceBox()->setChecked(false);
@@ -160,7 +163,7 @@ TEST(AccuracyDock, HeatMapAndSplitShowOverTheView) {
     AccuracyPanel* panel = f.window->accuracy();
     Viewport* vp = f.window->viewport();
     panel->traceBox()->setChecked(true);
-    QTRY_VERIFY_WITH_TIMEOUT(!f.samples.empty() && vp->frameUpToDate(), 60000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !f.samples.empty() && vp->frameUpToDate(); }, 60000));
     // No event is handled between a toggle, the grab and latest() below, so
     // they see one measurement while the reference goes on.
     const QImage plain = vp->grabFramebuffer();
@@ -223,7 +226,8 @@ TEST(AccuracyDock, CpuTonemapIsTheFramesOwn) {
                               lpv::scene::ParameterValue(std::string(mode) == "manual" ? 1.5 : 0.5));
             doc->setParameter("output.tonemapper", lpv::scene::ParameterValue(std::string(tonemapper)));
             last.reset();
-            QTRY_VERIFY_WITH_TIMEOUT(vp->frameUpToDate() && last && last->tonemapper == tonemapper, 60000);
+            ASSERT_TRUE(QTest::qWaitFor(
+                [&] { return vp->frameUpToDate() && last && last->tonemapper == tonemapper; }, 60000));
             ASSERT_FALSE(last->display.isNull());
             if (std::string(mode) == "manual") {
                 EXPECT_NEAR(last->exposure, std::exp2(1.5), 1e-6);

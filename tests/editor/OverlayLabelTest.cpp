@@ -53,8 +53,10 @@ TEST(OverlayLabel, TextReadsOnABrightSky) {
             backdrop = std::max(backdrop, wcagLuminance(image.pixel(inside.left(), y)));
         }
         const double sky = wcagLuminance(image.pixel(image.width() - 1, image.height() - 1));
-        EXPECT_LT(wcagContrast(glyphs, sky), 1.5) << "white on the bare sky cannot be read: the case the box is for";
-        EXPECT_GE(wcagContrast(glyphs, backdrop), 4.5) << text.toStdString() << ": text " << glyphs << ", box " << backdrop;
+        EXPECT_LT(wcagContrast(glyphs, sky), 1.5)
+            << "white on the bare sky cannot be read: the case the box is for";
+        EXPECT_GE(wcagContrast(glyphs, backdrop), 4.5)
+            << text.toStdString() << ": text " << glyphs << ", box " << backdrop;
     }
 }
 

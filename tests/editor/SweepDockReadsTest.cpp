@@ -34,7 +34,9 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+QString cornell() {
+    return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj";
+}
 
 lpv::scene::Image8 flatImage(int width, int height, std::uint8_t value) {
     lpv::scene::Image8 image;
@@ -83,7 +85,8 @@ QScatterSeries* settingsSeries(SweepPanel& panel) {
 // Where run `index`'s point is on the chart view's viewport, in pixels.
 QPoint pointOnScreen(SweepPanel& panel, int index) {
     const QPointF value = *panel.plottedPoint(index);
-    return panel.chartView()->mapFromScene(panel.chartView()->chart()->mapToPosition(value, settingsSeries(panel)));
+    return panel.chartView()->mapFromScene(
+        panel.chartView()->chart()->mapToPosition(value, settingsSeries(panel)));
 }
 
 // Mouse events as the window system delivers them to the widget. (QTest's
@@ -93,7 +96,9 @@ void send(QWidget* widget, QEvent::Type type, QPoint at, Qt::MouseButton button,
     QMouseEvent event(type, at, widget->mapToGlobal(at), button, held, Qt::NoModifier);
     QApplication::sendEvent(widget, &event);
 }
-void hover(QWidget* widget, QPoint at) { send(widget, QEvent::MouseMove, at, Qt::NoButton, Qt::NoButton); }
+void hover(QWidget* widget, QPoint at) {
+    send(widget, QEvent::MouseMove, at, Qt::NoButton, Qt::NoButton);
+}
 void click(QWidget* widget, QPoint at) {
     send(widget, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
     send(widget, QEvent::MouseButtonRelease, at, Qt::LeftButton, Qt::NoButton);
@@ -104,14 +109,16 @@ struct Row {
     Qt::CheckState checked;
     bool operator==(const Row&) const = default;
     friend void PrintTo(const Row& r, std::ostream* out) {
-        *out << r.name.toStdString() << (r.checked == Qt::Checked ? " [x] " : " [ ] ") << r.values.toStdString();
+        *out << r.name.toStdString() << (r.checked == Qt::Checked ? " [x] " : " [ ] ")
+             << r.values.toStdString();
     }
 };
 
 std::vector<Row> rowsOf(QTableWidget* table) {
     std::vector<Row> rows;
     for (int r = 0; r < table->rowCount(); ++r)
-        rows.push_back({table->item(r, 0)->text(), table->item(r, 1)->text(), table->item(r, 0)->checkState()});
+        rows.push_back(
+            {table->item(r, 0)->text(), table->item(r, 1)->text(), table->item(r, 0)->checkState()});
     return rows;
 }
 
@@ -144,7 +151,8 @@ TEST(SweepDock, AClickOnTheHoveredPointAppliesIt) {
         QApplication::processEvents();
     }
     // QTest::qWaitFor, not QTRY_*: those return silently under GoogleTest.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.detailText()->text().contains("propagationSteps=16"); }, 5000))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.detailText()->text().contains("propagationSteps=16"); }, 5000))
         << "hovering the point shows it: " << panel.detailText()->text().toStdString();
     ASSERT_FALSE(panel.detailImage()->pixmap().isNull()) << "the previews show on hover";
     QTest::qWait(300); // any layout the hover caused has run
@@ -152,11 +160,13 @@ TEST(SweepDock, AClickOnTheHoveredPointAppliesIt) {
     // The chart keeps its geometry, so the point stays under the cursor...
     EXPECT_EQ(panel.chartView()->chart()->plotArea(), plotBefore)
         << "the plot moved: " << plotBefore.width() << "x" << plotBefore.height() << " -> "
-        << panel.chartView()->chart()->plotArea().width() << "x" << panel.chartView()->chart()->plotArea().height();
+        << panel.chartView()->chart()->plotArea().width() << "x"
+        << panel.chartView()->chart()->plotArea().height();
     EXPECT_EQ(pointOnScreen(panel, 1), at);
     // ...and a click without moving applies it.
     click(panel.chartView()->viewport(), at);
-    EXPECT_TRUE(QTest::qWaitFor([&] { return document.parameters().getInt("lpv.propagationSteps") == 16; }, 5000))
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return document.parameters().getInt("lpv.propagationSteps") == 16; }, 5000))
         << "the click applied nothing";
     EXPECT_EQ(panel.selectedRun(), 1);
 }
@@ -175,7 +185,7 @@ TEST(SweepDock, RowChecksComeBackWithTheSavedSweep) {
     // Every check box flipped, one row's values edited, one row added.
     for (int r = 0; r < table->rowCount(); ++r)
         table->item(r, 0)->setCheckState(table->item(r, 0)->checkState() == Qt::Checked ? Qt::Unchecked
-                                                                                         : Qt::Checked);
+                                                                                        : Qt::Checked);
     table->item(0, 1)->setText("lpv.propagationSteps=1,3");
     const int added = table->rowCount();
     table->insertRow(added);

@@ -95,10 +95,11 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     panel->startSweep();
     EXPECT_TRUE(panel->sweepRunning());
     EXPECT_TRUE(window.viewport()->framesPaused()) << "the view waits while the sweep times";
-    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 180000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 180000));
     EXPECT_FALSE(window.viewport()->framesPaused());
     ASSERT_NE(panel->sweep(), nullptr) << panel->statusText().toStdString();
-    const lpv::bench::SavedSweep& sweep = *panel->sweep();
+    // A copy: reopening the project below replaces the panel's sweep.
+    const lpv::bench::SavedSweep sweep = *panel->sweep();
     ASSERT_EQ(sweep.runs.size(), 3u);
     EXPECT_TRUE(panel->statusText().contains("interleaved timing rounds"))
         << panel->statusText().toStdString();
@@ -147,13 +148,15 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     const QPointF value = *panel->plottedPoint(1);
     const QPoint at = panel->chartView()->mapFromScene(chart->mapToPosition(value, anySeries));
     QTest::mouseMove(panel->chartView()->viewport(), at);
-    QTRY_VERIFY_WITH_TIMEOUT(panel->detailText()->text().contains("propagationSteps=0"), 5000);
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel->detailText()->text().contains("propagationSteps=0"); }, 5000))
+        << "hovering the point shows it: " << panel->detailText()->text().toStdString();
     EXPECT_FALSE(panel->detailImage()->pixmap().isNull());
 
     // A click applies it as one undo step.
     const int undoBefore = doc->undoStack()->count();
     QTest::mouseClick(panel->chartView()->viewport(), Qt::LeftButton, {}, at);
-    QTRY_COMPARE_WITH_TIMEOUT(steps(doc), 0, 5000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return steps(doc) == 0; }, 5000)) << steps(doc);
     EXPECT_EQ(doc->undoStack()->count(), undoBefore + 1);
     EXPECT_EQ(panel->currentRuns(), std::vector<int>{1}) << "the current mark follows the parameters";
     doc->undoStack()->undo();
@@ -197,9 +200,9 @@ TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
     EXPECT_FALSE(trace->isChecked());
     EXPECT_FALSE(trace->isEnabled());
     // Stop once the reference is traced and settings are running.
-    QTRY_VERIFY_WITH_TIMEOUT(panel->statusText().startsWith("Setting"), 120000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->statusText().startsWith("Setting"); }, 120000));
     panel->stopSweep();
-    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 120000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 120000));
     EXPECT_FALSE(panel->sweepRunning());
     EXPECT_EQ(panel->sweep(), nullptr);
     EXPECT_TRUE(panel->statusText().startsWith("Stopped")) << panel->statusText().toStdString();

@@ -1,7 +1,7 @@
 #include "lpv/renderer/viz/LpvViews.h"
 
-#include "lpv/renderer/viz/LeakMaps.h"
 #include "lpv/renderer/lpv/Sh.h"
+#include "lpv/renderer/viz/LeakMaps.h"
 
 #include <algorithm>
 #include <cctype>
@@ -57,7 +57,8 @@ SliceGuides guidesFor(const LpvSnapshot& snapshot, const LpvViewSpec& spec, cons
     SliceGuides guides;
     guides.axis = spec.slice.axis;
     guides.cellSize = frame.cellSize;
-    guides.origin = {frame.origin[uv.x] + shift * frame.cellSize, frame.origin[uv.y] + shift * frame.cellSize};
+    guides.origin = {frame.origin[uv.x] + shift * frame.cellSize,
+                     frame.origin[uv.y] + shift * frame.cellSize};
     guides.plane = frame.origin[axis] + (float(spec.slice.index) + (gvSlice ? 0.0f : 0.5f)) * frame.cellSize;
     const int g = frame.gridSize + 1;
     if (snapshot.geometry.size() != std::size_t(g) * std::size_t(g) * std::size_t(g))
@@ -65,7 +66,8 @@ SliceGuides guidesFor(const LpvSnapshot& snapshot, const LpvViewSpec& spec, cons
     auto blocked = [&](glm::ivec3 c) {
         if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(g))))
             return false;
-        const std::size_t at = std::size_t(c.x) + std::size_t(g) * (std::size_t(c.y) + std::size_t(g) * std::size_t(c.z));
+        const std::size_t at =
+            std::size_t(c.x) + std::size_t(g) * (std::size_t(c.y) + std::size_t(g) * std::size_t(c.z));
         return strongestBlocking(snapshot.geometry[at]) >= spec.wallThreshold;
     };
     guides.geometry.assign(std::size_t(field.width) * std::size_t(field.height), 0);

@@ -288,7 +288,8 @@ scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, Sli
         const float bar = scaleBarLength(worldWidth);
         barPixels = int(std::lround(bar / guides->cellSize * float(ppc)));
         barText = formatValue(bar) + (bar == 1.0f ? " UNIT" : " UNITS"); // scene units: the scene's own scale
-        planeText = std::string("PLANE ") + kUpperAxisNames[int(guides->axis)] + " = " + formatValue(guides->plane);
+        planeText =
+            std::string("PLANE ") + kUpperAxisNames[int(guides->axis)] + " = " + formatValue(guides->plane);
         besideWidth = kMargin + std::max(textWidth(vTop, kFont), textWidth(vBottom, kFont)) + kMargin;
         guidesHeight = kMargin + 2 * lineHeight;
     }
@@ -347,11 +348,13 @@ scene::Image8 renderSlice(const SliceField& field, const ColourSpec& colour, Sli
         drawOutline(image, field, guides->geometry, ppc);
         const int besideX = sliceWidth + kMargin;
         drawText(image, besideX, 0, vTop, kFont, kAxisLabelColour);
-        drawText(image, besideX, std::max(sliceHeight - 5 * kFont, lineHeight), vBottom, kFont, kAxisLabelColour);
+        drawText(image, besideX, std::max(sliceHeight - 5 * kFont, lineHeight), vBottom, kFont,
+                 kAxisLabelColour);
         const int uTop = sliceHeight + kMargin;
         drawText(image, 0, uTop, uLeft, kFont, kAxisLabelColour);
-        drawText(image, std::max(sliceWidth - textWidth(uRight, kFont), textWidth(uLeft, kFont) + 2 * kMargin),
-                 uTop, uRight, kFont, kAxisLabelColour);
+        drawText(image,
+                 std::max(sliceWidth - textWidth(uRight, kFont), textWidth(uLeft, kFont) + 2 * kMargin), uTop,
+                 uRight, kFont, kAxisLabelColour);
         // The bar with end ticks, its length, and where the plane lies.
         const int barTop = uTop + lineHeight;
         fillRect(image, kMargin, barTop + 4, barPixels, 2, kScaleBarColour);

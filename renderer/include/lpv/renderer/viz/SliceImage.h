@@ -107,9 +107,9 @@ glm::ivec2 inPlaneAxes(Axis axis);
 float scaleBarLength(float worldWidth);
 
 // Colours of what renderSlice draws besides the slice and ramp (tests find them by colour).
-inline constexpr glm::vec3 kCaptionColour{0.85f};       // the title under the legend
-inline constexpr glm::vec3 kAxisLabelColour{0.7f};      // world coordinates beside the slice
-inline constexpr glm::vec3 kScaleBarColour{1.0f};       // the scale bar
+inline constexpr glm::vec3 kCaptionColour{0.85f};            // the title under the legend
+inline constexpr glm::vec3 kAxisLabelColour{0.7f};           // world coordinates beside the slice
+inline constexpr glm::vec3 kScaleBarColour{1.0f};            // the scale bar
 inline constexpr glm::vec3 kOutlineColour{0.0f, 1.0f, 1.0f}; // the geometry's outline (cyan)
 
 // The slice magnified by pixelsPerCell (v up) at the image's top-left, then
