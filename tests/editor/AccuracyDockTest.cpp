@@ -13,6 +13,7 @@
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "Viewport.h"
+#include "WcagContrast.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -183,6 +184,19 @@ TEST(AccuracyDock, HeatMapAndSplitShowOverTheView) {
     ASSERT_TRUE(sample);
     const QImage split = vp->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
     ASSERT_EQ(sample->referenceTonemapped.size(), split.size()) << "rendered at the widget's size";
+    // "LPV" and "Reference" read on whatever is under them (issue #46: white
+    // on the bright sky could not be read): the text against the brightest
+    // pixel of the label's left edge, just before its first letter.
+    for (const int x0 : {8, split.width() / 2 + 8}) {
+        double text = 0.0, under = 0.0;
+        for (int y = 12; y <= 24; ++y) {
+            for (int x = x0 + 2; x < x0 + 60; ++x)
+                text = std::max(text, lpv::test::wcagLuminance(split.pixel(x, y)));
+            under = std::max(under, lpv::test::wcagLuminance(split.pixel(x0 + 2, y)));
+        }
+        EXPECT_GE(lpv::test::wcagContrast(text, under), 4.5)
+            << "the label at x " << x0 << ": text " << text << ", under it " << under;
+    }
     // By default both halves go through the frame's exposure and tonemapper.
     const QImage reference = sample->referenceTonemapped.convertToFormat(QImage::Format_RGB32);
     const QImage frame = sample->frameTonemapped.convertToFormat(QImage::Format_RGB32);
