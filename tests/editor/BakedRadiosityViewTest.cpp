@@ -11,6 +11,7 @@
 
 #include "lpv/scene/CornellBox.h"
 #include "lpv/scene/Project.h"
+#include "WaitUntil.h"
 
 #include <QMessageBox>
 #include <QPushButton>
@@ -62,7 +63,7 @@ TEST(BakedRadiosityView, ShowsTheSolutionOrSaysWhyNot) {
 
     // No solution yet: said in the log, the frame has direct light only.
     window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("radiosity")));
-    QTRY_VERIFY_WITH_TIMEOUT(!notes.empty() && vp->frameUpToDate(), 60000);
+    LPV_WAIT_UNTIL(!notes.empty() && vp->frameUpToDate(), 60000);
     EXPECT_TRUE(notes.back().second);
     EXPECT_NE(lastNote().find("no radiosity solution is saved"), std::string::npos) << lastNote();
     EXPECT_NE(lastNote().find("direct light only"), std::string::npos) << lastNote();
@@ -72,7 +73,7 @@ TEST(BakedRadiosityView, ShowsTheSolutionOrSaysWhyNot) {
     QSignalSpy stopped(window.radiosity(), &RadiosityPanel::stopped);
     window.radiosity()->start();
     ASSERT_TRUE(stopped.wait(120000));
-    QTRY_VERIFY_WITH_TIMEOUT(!notes.back().second && vp->frameUpToDate(), 60000);
+    LPV_WAIT_UNTIL(!notes.back().second && vp->frameUpToDate(), 60000);
     EXPECT_NE(lastNote().find("patches"), std::string::npos) << lastNote();
     EXPECT_GT(ceilingGrey(vp), 10.0) << "the solution lights the ceiling";
 
@@ -80,9 +81,9 @@ TEST(BakedRadiosityView, ShowsTheSolutionOrSaysWhyNot) {
     lpv::scene::Light light = window.document()->scene().lights.front();
     light.position.x -= 0.5f;
     window.document()->setLight(0, light, "move");
-    QTRY_VERIFY_WITH_TIMEOUT(notes.back().second && vp->frameUpToDate(), 60000);
+    LPV_WAIT_UNTIL(notes.back().second && vp->frameUpToDate(), 60000);
     EXPECT_NE(lastNote().find("another scene"), std::string::npos) << lastNote();
     window.document()->undoStack()->undo();
-    QTRY_VERIFY_WITH_TIMEOUT(!notes.back().second && vp->frameUpToDate(), 60000);
+    LPV_WAIT_UNTIL(!notes.back().second && vp->frameUpToDate(), 60000);
     EXPECT_GT(ceilingGrey(vp), 10.0);
 }

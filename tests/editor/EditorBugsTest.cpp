@@ -9,6 +9,7 @@
 #include "ProfilerPanel.h"
 #include "TestPaths.h"
 #include "Viewport.h"
+#include "WaitUntil.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -126,7 +127,7 @@ TEST(EditorBugs, FailedImportLeavesNoProgressDialogOverItsErrorBox) {
     });
     watch.start();
     w.window.importFile(bad, true);
-    QTRY_VERIFY_WITH_TIMEOUT(!watch.isActive(), 30000);
+    LPV_WAIT_UNTIL(!watch.isActive(), 30000);
     EXPECT_TRUE(clickedOk) << "no error box";
     EXPECT_TRUE(progressBeforeBox) << "the import failed before its progress dialog came up: the case is not tested";
     EXPECT_FALSE(progressOverBox) << "the progress dialog came up over the error box";
@@ -167,7 +168,7 @@ TEST(EditorBugs, ProfilerStartsAgainWithANewProjectAndNeverReadsZero) {
         w.nextFrame();
     ASSERT_TRUE(w.window.openProject(cornell(), false));
     QSignalSpy frames(w.window.viewport(), &Viewport::frameRendered);
-    QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 120000);
+    LPV_WAIT_UNTIL(!frames.isEmpty(), 120000);
     const auto first = frames.first().at(0).value<std::vector<lpv::renderer::PassTiming>>();
     ASSERT_FALSE(first.empty()) << "the first frame of a project has its times";
     for (const auto& t : first) {
@@ -192,7 +193,7 @@ TEST(EditorBugs, CtrlZUndoesWhileAnInspectorSpinBoxHasTheFocus) {
     ASSERT_NE(steps, nullptr);
     const int before = w.doc().parameters().getInt("lpv.propagationSteps");
     steps->setFocus();
-    QTRY_VERIFY(steps->hasFocus());
+    LPV_WAIT_UNTIL(steps->hasFocus(), 5000);
     // Typed, as a user does: select all, the new value, Enter.
     QTest::keyClick(steps, Qt::Key_A, Qt::ControlModifier);
     QTest::keyClicks(steps, "17");
@@ -230,13 +231,13 @@ TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheE
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     QMessageBox* box = nullptr;
-    QTRY_VERIFY((box = window.findChild<QMessageBox*>("openError")) && box->isVisible());
+    LPV_WAIT_UNTIL((box = window.findChild<QMessageBox*>("openError")) && box->isVisible(), 5000);
     EXPECT_TRUE(box->text().contains("bad.lpvproj")) << box->text().toStdString();
     EXPECT_TRUE(box->text().contains("fovY")) << box->text().toStdString();
     EXPECT_EQ(box->text(), window.lastOpenError());
     EXPECT_TRUE(window.isVisible());
     box->button(QMessageBox::Ok)->click();
-    QTRY_VERIFY(!window.findChild<QMessageBox*>("openError"));
+    LPV_WAIT_UNTIL(!window.findChild<QMessageBox*>("openError"), 5000);
 }
 
 // Bug 7: showing the Visualizers dock grew the window past the screen (its
@@ -245,7 +246,7 @@ TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheE
 TEST(EditorBugs, VisualizersDockKeepsTheWindowOnTheScreen) {
     Window w;
     w.window.resize(1280, 900);
-    QTRY_COMPARE(w.window.height(), 900);
+    LPV_WAIT_UNTIL((w.window.height()) == (900), 5000);
     const int screen = w.window.screen()->availableGeometry().height();
     QDockWidget* viz = w.window.dock("visualizers");
     viz->show();
@@ -263,7 +264,7 @@ TEST(EditorBugs, VisualizersDockKeepsTheWindowOnTheScreen) {
 // the column had its width, and the column as wide as its one-line text).
 TEST(EditorBugs, OutlinerNamesAndEffectsReasonsAreShownWhole) {
     Window w;
-    QTRY_VERIFY(w.window.isVisible());
+    LPV_WAIT_UNTIL(w.window.isVisible(), 5000);
     QTest::qWait(100);
     QTreeWidget* tree = w.window.outliner()->tree();
     int cut = 0, names = 0;
@@ -317,7 +318,7 @@ TEST(EditorBugs, AnImportedInteriorIsSeenFromInsideAsTheCliSeesIt) {
             "f 9 10 14 13\nf 10 11 15 14\nf 11 12 16 15\nf 12 9 13 16\n");
     f.close();
     w.window.importFile(room, false);
-    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 30000);
+    LPV_WAIT_UNTIL(!w.window.importRunning(), 30000);
     const glm::vec3 eye = w.window.viewport()->viewCamera().position;
     EXPECT_TRUE(eye.x > 0.0f && eye.x < 10.0f && eye.y > 0.0f && eye.y < 4.0f && eye.z > 0.0f && eye.z < 6.0f)
         << "the view stands at (" << eye.x << ", " << eye.y << ", " << eye.z << "), outside the hall";

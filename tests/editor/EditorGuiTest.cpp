@@ -13,6 +13,7 @@
 #include "Viewport.h"
 
 #include "lpv/scene/Picking.h"
+#include "WaitUntil.h"
 
 #include <QAction>
 #include <QApplication>
@@ -265,11 +266,11 @@ TEST(EditorGui, Import4dsThroughTheImportActionIsOneUndoStep) {
     const std::size_t objects = doc.scene().objects.size();
     w.window.importFile(QString(lpv::test::kSharedScenesDir) + "/4ds/white_box.4ds", false);
     EXPECT_TRUE(w.window.importRunning());
-    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 60000);
+    LPV_WAIT_UNTIL(!w.window.importRunning(), 60000);
     EXPECT_GT(doc.scene().objects.size(), objects) << w.window.statusBar()->currentMessage().toStdString();
     EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("Imported")) <<
         w.window.statusBar()->currentMessage().toStdString();
-    QTRY_VERIFY_WITH_TIMEOUT(!w.window.viewport()->texturesPending(), 60000);
+    LPV_WAIT_UNTIL(!w.window.viewport()->texturesPending(), 60000);
     QTest::qWait(100);
     EXPECT_GT(litFraction(upToDateFrame(w.window.viewport())), 0.05);
     EXPECT_EQ(doc.undoStack()->text(doc.undoStack()->index() - 1), "Import white_box.4ds");
@@ -289,7 +290,7 @@ TEST(EditorGui, FailedImportShowsTheImportersErrorAndChangesNothing) {
     f.write("4DS\0garbage", 11);
     f.close();
     w.window.importFile(bad, false);
-    QTRY_VERIFY_WITH_TIMEOUT(!w.window.importRunning(), 30000);
+    LPV_WAIT_UNTIL(!w.window.importRunning(), 30000);
     EXPECT_TRUE(w.window.statusBar()->currentMessage().contains("broken.4ds"))
         << w.window.statusBar()->currentMessage().toStdString();
     EXPECT_EQ(w.doc().project(), before);

@@ -9,6 +9,7 @@
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "Viewport.h"
+#include "WaitUntil.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -39,7 +40,7 @@ TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
     QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { spp.push_back(s); });
 
     window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("reference")));
-    QTRY_VERIFY_WITH_TIMEOUT(!spp.empty() && spp.back() >= 3, 60000);
+    LPV_WAIT_UNTIL(!spp.empty() && spp.back() >= 3, 60000);
     for (std::size_t i = 1; i < spp.size(); ++i)
         EXPECT_EQ(spp[i], spp[i - 1] + 1) << "one pass at a time, none lost";
     EXPECT_TRUE(window.referenceLabel()->text().contains("spp")) << window.referenceLabel()->text().toStdString();
@@ -74,12 +75,12 @@ TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
     moved.position += glm::vec3(0.3f, 0.1f, 0.2f);
     spp.clear();
     vp->setViewCamera(moved);
-    QTRY_VERIFY_WITH_TIMEOUT(!spp.empty(), 60000);
+    LPV_WAIT_UNTIL(!spp.empty(), 60000);
     EXPECT_EQ(spp.front(), 1);
 
     // Another method stops it and clears the status bar.
     window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("lpv")));
-    QTRY_VERIFY_WITH_TIMEOUT(window.referenceLabel()->text().isEmpty(), 10000);
+    LPV_WAIT_UNTIL(window.referenceLabel()->text().isEmpty(), 10000);
     spp.clear();
     QTest::qWait(1500);
     EXPECT_TRUE(spp.empty()) << "no pass after it stopped";
@@ -103,12 +104,12 @@ TEST(LiveReference, AnEmptyProjectAndMovesDoNotBreakIt) {
     QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { passes += s > 0; });
     QObject::connect(vp, &Viewport::renderFailed, [&](const QString&) { ++failures; });
     window.document()->setParameter("gi.method", lpv::scene::ParameterValue(std::string("reference")));
-    QTRY_VERIFY_WITH_TIMEOUT(passes > 0 || failures > 0, 30000);
+    LPV_WAIT_UNTIL(passes > 0 || failures > 0, 30000);
     for (int i = 0; i < 3; ++i) {
         lpv::scene::Camera moved = vp->viewCamera();
         moved.position += glm::vec3(0.5f, 0.0f, 0.0f);
         const int before = passes + failures;
         vp->setViewCamera(moved);
-        QTRY_VERIFY_WITH_TIMEOUT(passes + failures > before, 30000);
+        LPV_WAIT_UNTIL(passes + failures > before, 30000);
     }
 }

@@ -6,6 +6,7 @@
 #include "LogPanel.h"
 #include "MainWindow.h"
 #include "TestPaths.h"
+#include "WaitUntil.h"
 
 #include <QDockWidget>
 #include <QFile>
@@ -52,15 +53,15 @@ TEST(LogDock, ImportsOpensAndSavesAreLoggedAndTheStatusBarLeadsToThem) {
     EventLog& log = *window.eventLog();
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Info, "Open", "cornell-box.lpvproj"));
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Info, "OpenGL", "GL debug messages"));
-    QTRY_VERIFY_WITH_TIMEOUT(window.logButton()->isHidden(), 5000); // nothing to see yet
+    LPV_WAIT_UNTIL(window.logButton()->isHidden(), 5000); // nothing to see yet
 
     // A scene file that cannot be read: an error, counted in the status bar.
     const QString broken = dir.filePath("broken.gltf");
     writeFile(broken, "{ not json");
     window.importFile(broken, false);
-    QTRY_VERIFY_WITH_TIMEOUT(!window.importRunning(), 30000);
+    LPV_WAIT_UNTIL(!window.importRunning(), 30000);
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Error, "Import", "broken.gltf"));
-    QTRY_VERIFY_WITH_TIMEOUT(window.logButton()->isVisible(), 5000);
+    LPV_WAIT_UNTIL(window.logButton()->isVisible(), 5000);
     EXPECT_TRUE(window.logButton()->text().contains("1 error")) << window.logButton()->text().toStdString();
 
     // A scene whose texture is missing: its summary and the warning.
@@ -68,18 +69,17 @@ TEST(LogDock, ImportsOpensAndSavesAreLoggedAndTheStatusBarLeadsToThem) {
     writeFile(dir.filePath("box.obj"), "mtllib box.mtl\nusemtl painted\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
                                        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
     window.importFile(dir.filePath("box.obj"), false);
-    QTRY_VERIFY_WITH_TIMEOUT(!window.importRunning(), 30000);
+    LPV_WAIT_UNTIL(!window.importRunning(), 30000);
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Info, "Import", "box.obj"));
-    QTRY_VERIFY_WITH_TIMEOUT(hasEntry(log, EventLog::Severity::Warning, "Import", "missing-texture.png") ||
-                                 hasEntry(log, EventLog::Severity::Warning, "Textures", "missing-texture.png"),
-                             30000);
+    LPV_WAIT_UNTIL(hasEntry(log, EventLog::Severity::Warning, "Import", "missing-texture.png") ||
+                                 hasEntry(log, EventLog::Severity::Warning, "Textures", "missing-texture.png"), 30000);
     EXPECT_TRUE(window.logButton()->text().contains("warning")) << window.logButton()->text().toStdString();
 
     // The status bar's count opens the dock and starts again from zero.
     QDockWidget* dock = window.dock("log");
     ASSERT_NE(dock, nullptr);
     QTest::mouseClick(window.logButton(), Qt::LeftButton);
-    QTRY_VERIFY_WITH_TIMEOUT(dock->isVisible(), 5000);
+    LPV_WAIT_UNTIL(dock->isVisible(), 5000);
     EXPECT_TRUE(window.logButton()->isHidden());
     QTableWidget* table = window.logPanel()->table();
     ASSERT_GE(table->rowCount(), 4);
@@ -115,6 +115,6 @@ TEST(LogDock, KeepsAtMostItsLimitAndPostsFromOtherThreads) {
     std::thread other([&] { log.post(EventLog::Severity::Warning, "OpenGL", "from the render thread"); });
     other.join();
     EXPECT_TRUE(log.entries().empty()) << "queued to the log's thread";
-    QTRY_COMPARE_WITH_TIMEOUT(int(log.entries().size()), 1, 5000);
+    LPV_WAIT_UNTIL((int(log.entries().size())) == (1), 5000);
     EXPECT_EQ(log.unseenWarnings(), 1);
 }
