@@ -120,10 +120,10 @@ TEST_F(AreaLightGL, NothingLandsBehindAOneSidedLight) {
 
 TEST_F(AreaLightGL, ABlockerCastsAShadowWhosePenumbraGrowsWithTheLight) {
     light.castShadows = true;
-    // Both lights small enough that PCSS's 24-texel limit on its filter does not cap their
-    // penumbrae (at 1 m from the light a texel of the 1024^2 cube face is 2 mm); a larger
-    // light's penumbra stops growing there (docs/renderer.md).
-    light.size = {0.02f, 0.02f};
+    // The small light's penumbra on the floor, about 7 cm, must span more than one pixel
+    // (5 cm here) to be seen; a 2 cm light's (3.7 cm) fell between pixel centres once the
+    // normal offset shrank to one texel (issue #46).
+    light.size = {0.04f, 0.04f};
     scene.meshes.push_back(scene::makeBox());
     scene::Object blocker;
     blocker.mesh = 1;
@@ -149,10 +149,10 @@ TEST_F(AreaLightGL, ABlockerCastsAShadowWhosePenumbraGrowsWithTheLight) {
     };
     float underSmall = 1.0f, underLarge = 1.0f;
     const int small = penumbraSamples(render(), &underSmall);
-    light.size = {0.08f, 0.08f};
+    light.size = {0.16f, 0.16f};
     const int large = penumbraSamples(render(), &underLarge);
     EXPECT_LT(underSmall, 0.05f) << "the small light leaves an umbra under the blocker";
-    EXPECT_GT(large, small) << "the penumbra widens with the light (PCSS radius = half its diagonal)";
+    EXPECT_GT(large, small) << "the penumbra widens with the light (its points are sampled, issue #46)";
     EXPECT_GT(small, 0) << "even the small light has a penumbra";
 }
 
