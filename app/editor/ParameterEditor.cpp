@@ -250,7 +250,13 @@ class FloatEditor final : public ParameterEditor {
         spin_->setEnabled(!on);
         if (slider_)
             slider_->setEnabled(!on);
-        if (!on) {
+        // While the word is on, the greyed box shows it: Qt shows the special
+        // text at the minimum, which would otherwise read "0.000001 m" (issue #46).
+        spin_->setSpecialValueText(on ? word_->text() : QString());
+        if (on) {
+            const QSignalBlocker block(spin_);
+            spin_->setValue(spin_->minimum());
+        } else {
             const QSignalBlocker block(spin_);
             spin_->setValue(number_);
             if (slider_) {

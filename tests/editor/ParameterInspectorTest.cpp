@@ -536,6 +536,8 @@ TEST(ParameterInspector, AFloatThatAdmitsAutoHasACheckBoxForIt) {
     EXPECT_EQ(word->text(), "auto");
     EXPECT_TRUE(word->isChecked());
     EXPECT_FALSE(spin->isEnabled());
+    // The greyed box says what is used, not the range's minimum ("0.000001 m", issue #46).
+    EXPECT_EQ(qobject_cast<QDoubleSpinBox*>(spin)->text().toStdString(), "auto");
     EXPECT_EQ(inspector.parameterEditor("lpv.cellSize")->value(), ParameterValue(std::string("auto")));
 
     word->click();
@@ -559,6 +561,8 @@ TEST(ParameterInspector, AFloatThatAdmitsAutoHasACheckBoxForIt) {
     EXPECT_EQ(edits.count(), 3) << "setParameters must not report edits";
     EXPECT_FALSE(word->isChecked());
     EXPECT_DOUBLE_EQ(qobject_cast<QDoubleSpinBox*>(spin)->value(), 0.125);
+    EXPECT_NE(qobject_cast<QDoubleSpinBox*>(spin)->text().toStdString(), "auto");
     inspector.setParameters(ParameterSet{});
     EXPECT_TRUE(word->isChecked());
+    EXPECT_EQ(qobject_cast<QDoubleSpinBox*>(spin)->text().toStdString(), "auto");
 }
