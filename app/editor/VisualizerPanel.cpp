@@ -1,6 +1,7 @@
 #include "VisualizerPanel.h"
 
 #include "Document.h"
+#include "FittedImageView.h"
 #include "Viewport.h"
 
 #include "lpv/renderer/viz/TileImages.h"
@@ -10,7 +11,6 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QScrollArea>
 #include <QSlider>
 #include <QSpinBox>
 #include <QToolButton>
@@ -155,19 +155,15 @@ void VisualizerPanel::buildControls() {
     overlayRow->addWidget(probes_);
     form->addRow(tr("In the view"), overlayRow);
 
-    picture_ = new QLabel(this);
+    picture_ = new FittedImageView(this);
     picture_->setObjectName("vizImage");
-    picture_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(picture_);
-    scroll->setWidgetResizable(true);
     statusLabel_ = new QLabel(this);
     statusLabel_->setWordWrap(true);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(statusLabel_);
-    layout->addWidget(scroll, 1);
+    layout->addWidget(picture_, 1);
 }
 
 VisualizerPanel::View VisualizerPanel::view() const {
@@ -331,7 +327,7 @@ void VisualizerPanel::rebuildImage() {
         }
     }
     statusLabel_->setText(status_);
-    picture_->setPixmap(image_.isNull() ? QPixmap() : QPixmap::fromImage(image_));
+    picture_->setImage(image_);
     emit imageUpdated();
 }
 

@@ -27,6 +27,7 @@ class QToolButton;
 namespace lpv::editor {
 
 class Document;
+class FittedImageView;
 class Viewport;
 
 class VisualizerPanel : public QWidget {
@@ -93,7 +94,7 @@ class VisualizerPanel : public QWidget {
     QCheckBox* bounds_ = nullptr;
     QCheckBox* plane_ = nullptr;
     QCheckBox* probes_ = nullptr;
-    QLabel* picture_ = nullptr;
+    FittedImageView* picture_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     std::optional<float> lockedMax_;
 };
