@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 #include <unistd.h>
@@ -220,7 +221,7 @@ TEST(BenchRender, SweepsWriteCsvAndMarkdownTables) {
     EXPECT_GE(rows256, 4u) << "shadowMaps, shading, tonemap, total";
     EXPECT_EQ(rows256, rows512);
     std::ifstream md(dir / "t.md");
-    const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    const std::string report = (std::ostringstream() << md.rdbuf()).str();
     EXPECT_NE(report.find("Machine: "), std::string::npos) << report;
     EXPECT_NE(report.find("| 512 |"), std::string::npos) << report;
     // Two settings compared: each says which others cost the same within the noise.
@@ -292,7 +293,7 @@ TEST(BenchRender, CornellTemplateInRoundsWritesTheSpread) {
     EXPECT_EQ(totals, 1u);
 
     std::ifstream md(dir / "t.md");
-    const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    const std::string report = (std::ostringstream() << md.rdbuf()).str();
     for (const char* expected : {"Machine: ", "Load: load ", " -> load ",
                                  "Timing: 2 rounds; stopped: round limit after 2 rounds",
                                  "| total | q1-q3 | rounds |", " --rounds 2 "})
