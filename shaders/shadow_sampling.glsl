@@ -306,6 +306,17 @@ float areaShadowWeight(vec3 p, vec3 n, vec3 q, vec3 lightNormal, bool twoSided) 
     return max(dot(n, pq), 0.0) * cosLight / max(d2 * d2, 1e-30);
 }
 
+// Tap i of the area light: its quarter (which of the four cubes sees it) and
+// its point on the light's surface. Both loops below take their taps here.
+int areaShadowQuarter(int i) {
+    vec2 s = AREA_SHADOW_TAP_POINTS[i];
+    return (s.x > 0.0 ? 1 : 0) + (s.y > 0.0 ? 2 : 0);
+}
+vec3 areaShadowLightPoint(int i, vec3 center, vec3 halfU, vec3 halfV, int shape) {
+    vec2 a = areaShadowPoint(AREA_SHADOW_TAP_POINTS[i], shape);
+    return center + halfU * a.x + halfV * a.y;
+}
+
 // 1 = the whole light seen, 0 = none of it; `firstCube` is its first quarter's cube.
 float areaLightVisibility(int firstCube, vec3 worldPos, vec3 n, vec3 center, vec3 lightNormal, vec3 halfU,
                           vec3 halfV, int shape, bool twoSided) {
@@ -332,12 +343,10 @@ float areaLightVisibility(int firstCube, vec3 worldPos, vec3 n, vec3 center, vec
     vec4 quarterSum = vec4(0.0);    // per quarter: blocked share x depth
     vec4 quarterWeight = vec4(0.0); // per quarter: blocked share
     for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
-        vec2 s = AREA_SHADOW_TAP_POINTS[i];
-        int quarter = (s.x > 0.0 ? 1 : 0) + (s.y > 0.0 ? 2 : 0);
+        int quarter = areaShadowQuarter(i);
         int cube = firstCube + quarter;
         vec3 c = uPointPosition[cube];
-        vec2 a = areaShadowPoint(s, shape);
-        vec3 q = center + halfU * a.x + halfV * a.y;
+        vec3 q = areaShadowLightPoint(i, center, halfU, halfV, shape);
         blockedShare[i] = 0.0;
         blockerDepth[i] = 0.0;
         if (areaShadowWeight(p, n, q, lightNormal, twoSided) <= 0.0 || dot(c - p, n) <= 0.0)
@@ -363,12 +372,10 @@ float areaLightVisibility(int firstCube, vec3 worldPos, vec3 n, vec3 center, vec
     float lit = 0.0;
     float weight = 0.0;
     for (int i = 0; i < AREA_SHADOW_TAPS; ++i) {
-        vec2 s = AREA_SHADOW_TAP_POINTS[i];
-        int quarter = (s.x > 0.0 ? 1 : 0) + (s.y > 0.0 ? 2 : 0);
+        int quarter = areaShadowQuarter(i);
         int cube = firstCube + quarter;
         vec3 c = uPointPosition[cube];
-        vec2 a = areaShadowPoint(s, shape);
-        vec3 q = center + halfU * a.x + halfV * a.y;
+        vec3 q = areaShadowLightPoint(i, center, halfU, halfV, shape);
         float w = areaShadowWeight(p, n, q, lightNormal, twoSided);
         if (w <= 0.0)
             continue;
