@@ -11,7 +11,8 @@
 #include "BenchReport.h"
 #include "BenchReportPlan.h"
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "BenchSweepCommand.h"
 #include "ReferenceTrace.h"
@@ -124,16 +125,11 @@ std::string fixed(double v, int digits) {
 }
 
 std::string describeReference(const fs::path& file) {
-    auto ref = readReferenceExr(file);
+    auto ref = bench::readReferenceExr(file);
     if (!ref)
         return "unreadable";
-    auto attr = [&](const char* k) {
-        auto it = ref->attributes.find(k);
-        return it == ref->attributes.end() ? std::string("?") : it->second;
-    };
     return std::to_string(ref->image.width) + "x" + std::to_string(ref->image.height) + ", " +
-           std::to_string(ref->image.samplesPerPixel) + " spp in " +
-           fixed(std::atof(attr("lpv:seconds").c_str()), 1) + " s";
+           std::to_string(ref->image.samplesPerPixel) + " spp in " + fixed(ref->image.seconds, 1) + " s";
 }
 
 // A patch size that meshes the scene into at most 150,000 patches: the

@@ -3,7 +3,8 @@
 // project; bench::runFlicker (bench/FlickerSweep.h) renders and measures.
 #include "BenchReport.h"
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 #include "RenderSetup.h"
 #include "lpv/bench/Settings.h"
 
@@ -105,7 +106,7 @@ int benchFlicker(Args args) {
     }
     std::optional<reference::ReferenceImage> ref;
     if (referenceFile) {
-        auto loaded = readReferenceExr(*referenceFile);
+        auto loaded = bench::readReferenceExr(*referenceFile);
         if (!loaded) {
             std::cerr << "lpv: " << loaded.error().describe() << "\n";
             return kFailure;

@@ -6,7 +6,7 @@
 #include "BenchReport.h"
 #include "BenchTurn.h"
 #include "RenderSetup.h"
-#include "ThesisSettings.h"
+#include "lpv/bench/ThesisSettings.h"
 
 #include "lpv/scene/Project.h"
 
@@ -43,9 +43,9 @@ int benchRender(Args args) {
     const auto markdownFile = args.option("--markdown");
     const bool thesis = args.flag("--thesis-settings");
     const auto width =
-        parseCount(args.option("--width").value_or(thesis ? std::to_string(kThesisWidth) : "1280"), 1);
+        parseCount(args.option("--width").value_or(thesis ? std::to_string(bench::kThesisWidth) : "1280"), 1);
     const auto height =
-        parseCount(args.option("--height").value_or(thesis ? std::to_string(kThesisHeight) : "720"), 1);
+        parseCount(args.option("--height").value_or(thesis ? std::to_string(bench::kThesisHeight) : "720"), 1);
     const auto frames = parseCount(args.option("--frames").value_or("20"), 1);
     const auto warmup = parseCount(args.option("--warmup").value_or("5"), 0);
     const bool perFrame = args.flag("--per-frame");
@@ -89,7 +89,7 @@ int benchRender(Args args) {
     if (thesis && !plan.combinations.empty())
         return usageError("--thesis-settings takes no --set lists (one value per key)", "bench");
     if (thesis)
-        request.sets = thesisSettingsSets(); // before the --set values, which win
+        request.sets = bench::thesisSettingsSets(); // before the --set values, which win
     for (const auto& [key, value] : plan.fixed)
         request.sets.push_back(key + "=" + value);
 
@@ -107,7 +107,7 @@ int benchRender(Args args) {
     if (auto error = checkCombinations(plan, setup->project.parameters, "--set"))
         return usageError(*error, "bench");
     if (thesis)
-        setup->camera = thesisStartCamera();
+        setup->camera = bench::thesisStartCamera();
 
     const scene::ParameterSet base = setup->project.parameters;
     // The settings timed against each other: the combinations of the --set
@@ -224,7 +224,7 @@ int benchRender(Args args) {
         std::printf("\n%s", benchComparison(runs).c_str());
     if (thesis)
         std::printf("\nthe thesis application's phases (--thesis-settings: %dx%d, its start camera):\n%s", *width,
-                    *height, formatThesisPhases(thesisPhases(roundTables[0], runs[1].total)).c_str());
+                    *height, bench::formatThesisPhases(bench::thesisPhases(roundTables[0], runs[1].total)).c_str());
 
     const renderer::GlInfo& gl = setup->context->info();
     std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(*width) +

@@ -1,6 +1,7 @@
 #include "BenchReportPlan.h"
 
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/scene/Project.h"
 
@@ -188,7 +189,7 @@ bool makeProject(const SceneSpec& spec, const fs::path& scenesDir, const fs::pat
     return call("import", runImport, {source.string(), "-o", project.string()}) == kOk;
 }
 
-bool referenceMatches(const LoadedReference& ref, int width, int height, int bounces, int spp) {
+bool referenceMatches(const bench::LoadedReference& ref, int width, int height, int bounces, int spp) {
     if (ref.image.width != width || ref.image.height != height || ref.image.samplesPerPixel < spp)
         return false;
     const auto it = ref.attributes.find("lpv:bounces");
@@ -198,7 +199,7 @@ bool referenceMatches(const LoadedReference& ref, int width, int height, int bou
 bool referenceMatches(const fs::path& file, int width, int height, int bounces, int spp) {
     if (!fs::exists(file))
         return false;
-    const auto ref = readReferenceExr(file);
+    const auto ref = bench::readReferenceExr(file);
     return ref && referenceMatches(*ref, width, height, bounces, spp);
 }
 

@@ -7,7 +7,8 @@
 // pieces (BenchReportShards.cpp, docs/cluster.md).
 #include "Cli.h"
 #include "BenchSweepCommand.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 #include "ReferenceTrace.h"
 
 #include "lpv/bench/Questions.h"
@@ -96,7 +97,7 @@ bool makeProject(const SceneSpec& spec, const std::filesystem::path& scenesDir,
                  const std::filesystem::path& project);
 // A reference traced earlier with the same size and bounce count and at least `spp` is reused.
 bool referenceMatches(const std::filesystem::path& file, int width, int height, int bounces = 0, int spp = 0);
-bool referenceMatches(const LoadedReference& ref, int width, int height, int bounces, int spp);
+bool referenceMatches(const bench::LoadedReference& ref, int width, int height, int bounces, int spp);
 // --resume: whether `file` was written by the very sweep the report would run
 // now (its recorded command holds the project, the swept values, the
 // reference, the size, frames and warm-up) after the reference was traced.

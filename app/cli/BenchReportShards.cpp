@@ -13,7 +13,8 @@
 #include "BenchReport.h"
 #include "BenchReportPlan.h"
 #include "BenchSweepShard.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/scene/Project.h"
 
@@ -42,7 +43,7 @@ bool referenceShardDone(const fs::path& file, const reference::ShardSpec& shard,
                         const ScenePlan& plan, const ReportOptions& o) {
     if (!fs::exists(file))
         return false;
-    const auto loaded = readReferenceExr(file); // read once: the size, bounces and spp, then the shard
+    const auto loaded = bench::readReferenceExr(file); // read once: the size, bounces and spp, then the shard
     if (!loaded || !referenceMatches(*loaded, o.width, o.height, ref.bounces, plan.spp))
         return false;
     auto it = loaded->attributes.find("lpv:shard");

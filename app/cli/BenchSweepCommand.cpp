@@ -8,7 +8,8 @@
 #include "lpv/bench/SweepOutput.h"
 #include "BenchSweepShard.h"
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
 #include "lpv/bench/Settings.h"
@@ -209,16 +210,14 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
         maxBounces = std::max(maxBounces, bench::bouncesOf(project.parameters, combination));
     reference::ReferenceImage ref;
     if (referenceFile) {
-        auto loaded = readReferenceExr(*referenceFile);
+        auto loaded = bench::readReferenceExr(*referenceFile);
         if (!loaded) {
             std::cerr << "lpv: " << loaded.error().describe() << "\n";
             return kFailure;
         }
         ref = std::move(loaded->image);
-        if (auto it = loaded->attributes.find("lpv:seconds"); it != loaded->attributes.end())
-            ref.seconds = std::atof(it->second.c_str());
-        if (auto it = loaded->attributes.find("lpv:bounces"); it != loaded->attributes.end())
-            spec.referenceBounces = std::atoi(it->second.c_str());
+        if (const auto bounces = loaded->bounces())
+            spec.referenceBounces = *bounces;
         if (ref.width != *width || ref.height != *height) {
             std::cerr << "lpv: " << *referenceFile << " is " << ref.width << "x" << ref.height
                       << "; give the same --width and --height\n";
@@ -322,7 +321,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
         command += " --reference " + *referenceFile;
     const std::string machine = describeMachine(gl.renderer, gl.version);
     if (!shard.whole()) {
-        const auto referenceHash = fileContentHash(*referenceFile);
+        const auto referenceHash = bench::fileContentHash(*referenceFile);
         if (!referenceHash) {
             std::cerr << "lpv: " << referenceHash.error().describe() << "\n";
             return kFailure;

@@ -1,7 +1,8 @@
 #include "BenchSweepShard.h"
 
 #include "BenchReport.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/bench/SweepRunJson.h"
 #include "lpv/importers/ImageIO.h"
@@ -247,10 +248,10 @@ int benchMerge(Args args) {
     fs::path refFile = referenceOverride ? fs::path(*referenceOverride) : fs::path(first.referenceAbsolute);
     if (!referenceOverride && !fs::exists(refFile))
         refFile = first.referenceFile;
-    if (const auto hash = fileContentHash(refFile); !hash || *hash != first.referenceHash)
+    if (const auto hash = bench::fileContentHash(refFile); !hash || *hash != first.referenceHash)
         return refuse(refFile.string(), "not the reference the shards were measured against (content hash " +
                                             first.referenceHash + "); give that file with --reference");
-    auto loaded = readReferenceExr(refFile);
+    auto loaded = bench::readReferenceExr(refFile);
     if (!loaded) {
         std::cerr << "lpv: " << loaded.error().describe() << "\n";
         return kFailure;

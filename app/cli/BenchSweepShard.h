@@ -24,7 +24,7 @@ struct SweepShard {
     int width = 0, height = 0;
     std::string referenceFile;    // as given to --reference
     std::string referenceAbsolute;
-    std::string referenceHash;    // fileContentHash (ReferenceFile.h) of it
+    std::string referenceHash;    // bench::fileContentHash (ReferenceFile.h) of it
     std::vector<int> indices;     // each run's combination index, in run order
     std::vector<SweepRun> runs;
     // The project's output.* overrides: the pictures' exposure and tonemapper, as one process shows them.

@@ -4,7 +4,8 @@
 // (PNG, JPEG) get FLIP alone, as the FLIP authors' tool reports it, so
 // published image pairs can be checked with the same code.
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/importers/ImageIO.h"
 #include "lpv/reference/Accuracy.h"
@@ -134,12 +135,12 @@ int runCompare(Args args) {
             return usageError("--layer needs a reference EXR", "compare");
         return compareDisplayImages(pos[0], pos[1], ppd, json, flipMap);
     }
-    auto test = readRgbExr(pos[0]);
+    auto test = bench::readRgbExr(pos[0]);
     if (!test) {
         std::cerr << "lpv: " << test.error().describe() << "\n";
         return kFailure;
     }
-    auto ref = readReferenceExr(pos[1]);
+    auto ref = bench::readReferenceExr(pos[1]);
     if (!ref) {
         std::cerr << "lpv: " << ref.error().describe() << "\n";
         return kFailure;

@@ -3,7 +3,8 @@
 // bit for bit (reference/Shards.h). Refuses a set that is incomplete, has a
 // shard twice, or mixes projects, settings or sizes; writes atomically.
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/reference/Shards.h"
 
@@ -44,15 +45,12 @@ int runMerge(Args args) {
         std::error_code ec;
         if (std::filesystem::equivalent(output, pos[i], ec))
             return usageError(pos[i] + " is both the output and a shard", "merge");
-        auto loaded = readReferenceExr(pos[i]);
+        auto loaded = bench::readReferenceExr(pos[i]);
         if (!loaded) {
             std::cerr << "lpv: " << loaded.error().describe() << "\n";
             return kFailure;
         }
-        reference::ShardPiece piece{pos[i], std::move(loaded->image), std::move(loaded->attributes)};
-        if (auto it = piece.attributes.find("lpv:seconds"); it != piece.attributes.end())
-            piece.image.seconds = std::atof(it->second.c_str());
-        pieces.push_back(std::move(piece));
+        pieces.push_back({pos[i], std::move(loaded->image), std::move(loaded->attributes)});
     }
     auto merged = reference::mergeShards(pieces);
     if (!merged) {
@@ -61,7 +59,7 @@ int runMerge(Args args) {
     }
     if (auto it = pieces.front().attributes.find("lpv:project"); it != pieces.front().attributes.end())
         merged->attributes["lpv:project"] = it->second;
-    if (auto ok = writeReferenceExr(output, merged->image, merged->attributes); !ok) {
+    if (auto ok = bench::writeReferenceExr(output, merged->image, merged->attributes); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;
     }

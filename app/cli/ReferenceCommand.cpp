@@ -2,7 +2,8 @@
 // view (reference/PathTracer.h) written as a multi-layer EXR.
 #include "BenchReport.h"
 #include "Cli.h"
-#include "ReferenceFile.h"
+#include "lpv/bench/ContentHash.h"
+#include "lpv/bench/ReferenceFile.h"
 #include "ReferenceTrace.h"
 #include "RenderSetup.h"
 
@@ -169,7 +170,7 @@ int runReferenceCommand(const ReferenceCommand& c) {
     const auto camera = pickCamera(project->scene, cameraName, pos.front());
     if (!camera)
         return kFailure;
-    const auto projectHash = fileContentHash(pos.front());
+    const auto projectHash = bench::fileContentHash(pos.front());
     if (!projectHash) {
         std::cerr << "lpv: " << projectHash.error().describe() << "\n";
         return kFailure;
@@ -182,7 +183,7 @@ int runReferenceCommand(const ReferenceCommand& c) {
     std::map<std::string, std::string> attributes{
         {"lpv:project", pos.front()},
         {"lpv:projectHash", *projectHash},
-        {"lpv:parametersHash", parametersHash(project->parameters)},
+        {"lpv:parametersHash", bench::parametersHash(project->parameters)},
         {"lpv:camera", camera->name},
         {"lpv:spp", std::to_string(image->samplesPerPixel)},
         {"lpv:seconds", std::to_string(image->seconds)},
@@ -194,7 +195,7 @@ int runReferenceCommand(const ReferenceCommand& c) {
         attributes["lpv:shard"] = reference::formatShard(shard);
         attributes["lpv:shardTile"] = std::to_string(reference::kShardTileSize);
     }
-    if (auto ok = writeReferenceExr(*output, *image, attributes); !ok) {
+    if (auto ok = bench::writeReferenceExr(*output, *image, attributes); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
         return kFailure;
     }

@@ -1,16 +1,13 @@
-// The tables of `lpv bench render` and `--thesis-settings` on synthetic
-// timings (issue #43): no GL, no process; the command's own functions. Two
-// settings whose totals lie within each other's noise are named the same
-// cost, a 2x one is not; the thesis phases are medians over rounds of the
-// per-round sums of their passes.
+// The tables of `lpv bench render` on synthetic timings (issue #43): no GL,
+// no process; the command's own functions. Two settings whose totals lie
+// within each other's noise are named the same cost, a 2x one is not. (The
+// thesis phases are lpv_bench's: tests/bench/ThesisSettingsTest.cpp.)
 #include "BenchReport.h"
-#include "ThesisSettings.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 using namespace lpv;
@@ -88,35 +85,6 @@ TEST(BenchTables, PrintedTableGivesTheSpreadInPercent) {
     EXPECT_NE(table.find("90.000-110.000"), std::string::npos) << table;
     EXPECT_NE(table.find("\ntotal "), std::string::npos) << table;
     EXPECT_EQ(benchComparison({run}), "") << "one setting compares with nothing";
-}
-
-TEST(BenchTables, ThesisPhasesAreMediansOverRoundsOfTheirPassSums) {
-    auto pass = [](const char* name, double ms) { return renderer::PassTiming{name, ms, ms, ms, ms, 2}; };
-    // Three rounds: shadow maps 10/12/14, RSM 5/5/5, propagation 20/30/25, shading 1/1/1.
-    std::vector<std::vector<renderer::PassTiming>> rounds;
-    const std::vector<std::pair<double, double>> shadowAndPropagation = {{10.0, 20.0}, {12.0, 30.0}, {14.0, 25.0}};
-    for (const auto& [shadow, propagation] : shadowAndPropagation)
-        rounds.push_back({pass("shadowMaps", shadow), pass("rsm", 5.0), pass("lpvPropagation", propagation),
-                          pass("shading", 1.0)});
-    const auto phases = thesisPhases(rounds, bench::timingStatsOf({30.0, 31.0, 32.0}));
-    auto find = [&](const std::string& name) {
-        for (const ThesisPhase& p : phases)
-            if (p.name == name)
-                return p;
-        ADD_FAILURE() << "no phase " << name;
-        return ThesisPhase{};
-    };
-    EXPECT_DOUBLE_EQ(find("shadow maps").ours.median, 12.0);
-    EXPECT_DOUBLE_EQ(find("shadow maps").ours.q1, 11.0);
-    EXPECT_DOUBLE_EQ(find("shadow maps").ours.q3, 13.0);
-    EXPECT_EQ(find("shadow maps").ours.rounds, 3);
-    EXPECT_DOUBLE_EQ(find("propagation").ours.median, 25.0);
-    // The whole frame is summed per round (36, 48, 45), not the sum of the phases' medians (43).
-    EXPECT_DOUBLE_EQ(find("whole frame").ours.median, 45.0);
-    EXPECT_DOUBLE_EQ(find("LPV off (whole frame)").ours.median, 31.0);
-    const std::string text = formatThesisPhases(phases);
-    EXPECT_NE(text.find("over 3 rounds"), std::string::npos) << text;
-    EXPECT_NE(text.find("±IQR/2"), std::string::npos) << text;
 }
 
 } // namespace

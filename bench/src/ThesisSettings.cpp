@@ -1,11 +1,11 @@
-#include "ThesisSettings.h"
+#include "lpv/bench/ThesisSettings.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 namespace {
 
@@ -50,7 +50,7 @@ scene::Camera thesisStartCamera() {
 }
 
 std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::PassTiming>>& rounds,
-                                      std::optional<bench::TimingStats> lpvOff) {
+                                      std::optional<TimingStats> lpvOff) {
     // Our passes in the order they first ran, and which phase counts each.
     std::vector<std::string> ran;
     for (const auto& table : rounds)
@@ -68,7 +68,7 @@ std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::Pa
                     sum += t.medianMs;
             sums.push_back(sum);
         }
-        phase.ours = bench::timingStatsOf(std::move(sums));
+        phase.ours = timingStatsOf(std::move(sums));
         return phase;
     };
     std::vector<ThesisPhase> out;
@@ -117,4 +117,4 @@ std::string formatThesisPhases(const std::vector<ThesisPhase>& phases) {
     return out;
 }
 
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 inline constexpr int kThesisWidth = 1024;
 inline constexpr int kThesisHeight = 600;
@@ -32,7 +32,7 @@ scene::Camera thesisStartCamera();
 struct ThesisPhase {
     std::string name;
     std::string ourPasses; // which of our passes it sums
-    bench::TimingStats ours;
+    TimingStats ours;
     std::optional<double> thesisMs;
 };
 
@@ -40,8 +40,8 @@ struct ThesisPhase {
 // then the whole frame with the LPV off when `lpvOff` is given. `rounds`
 // holds the per-pass table of each timing round (medians over its frames).
 std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::PassTiming>>& rounds,
-                                      std::optional<bench::TimingStats> lpvOff);
+                                      std::optional<TimingStats> lpvOff);
 
 std::string formatThesisPhases(const std::vector<ThesisPhase>& phases);
 
-} // namespace lpv::cli
+} // namespace lpv::bench

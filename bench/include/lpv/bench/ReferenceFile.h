@@ -2,23 +2,35 @@
 // The path-traced reference on disk: one multi-layer EXR (reference/
 // ReferenceImage.h names the channels) with the settings it was traced with
 // in its header, and the renderer's float images `lpv compare` reads.
+//
+// It lives in lpv_bench rather than lpv_reference because it is a file
+// format over OpenImageIO (through lpv_importers): lpv_reference stays free
+// of files and image libraries, and radiosity, which links it, with it.
 #include "lpv/reference/ReferenceImage.h"
 #include "lpv/scene/Error.h"
-#include "lpv/scene/ParameterRegistry.h"
+
+#include <glm/vec3.hpp>
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 scene::Expected<void> writeReferenceExr(const std::filesystem::path& file,
                                         const reference::ReferenceImage& image,
                                         const std::map<std::string, std::string>& attributes);
 
+// A reference read back. The image's samplesPerPixel and seconds come from
+// the header's "lpv:spp" and "lpv:seconds" (0 where absent or unreadable).
 struct LoadedReference {
     reference::ReferenceImage image;
     std::map<std::string, std::string> attributes; // "lpv:spp", "lpv:project", ...
+
+    // The header's "lpv:bounces", or nullopt where absent or not a whole number.
+    std::optional<int> bounces() const;
 };
 scene::Expected<LoadedReference> readReferenceExr(const std::filesystem::path& file);
 
@@ -32,11 +44,4 @@ struct RgbImage {
 };
 scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file);
 
-// What ties pieces made apart together, as 16 hex digits of XXH3: of a
-// file's bytes (a reference shard's project file, which names every mesh
-// asset by its checksum; the reference a sweep shard measured against), and
-// of the effective parameter overrides (the project's and --set's, sorted).
-scene::Expected<std::string> fileContentHash(const std::filesystem::path& file);
-std::string parametersHash(const scene::ParameterSet& parameters);
-
-} // namespace lpv::cli
+} // namespace lpv::bench

@@ -1,15 +1,29 @@
-#include "ReferenceFile.h"
+#include "lpv/bench/ReferenceFile.h"
 
 #include "lpv/importers/ImageIO.h"
-#include "lpv/reference/Metrics.h"
-#include "lpv/scene/FileRead.h"
-#include "lpv/scene/MeshAsset.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
+#include <charconv>
 
-namespace lpv::cli {
+namespace lpv::bench {
+
+namespace {
+
+// A header value as a number; nullopt unless the whole text is one.
+template <typename T> std::optional<T> headerNumber(const std::map<std::string, std::string>& attributes,
+                                                  const char* key) {
+    const auto it = attributes.find(key);
+    if (it == attributes.end())
+        return std::nullopt;
+    const std::string& text = it->second;
+    T value{};
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        return std::nullopt;
+    return value;
+}
+
+} // namespace
 
 scene::Expected<void> writeReferenceExr(const std::filesystem::path& file,
                                         const reference::ReferenceImage& image,
@@ -48,9 +62,13 @@ scene::Expected<LoadedReference> readReferenceExr(const std::filesystem::path& f
     reference::fromChannels(channels, in->width, in->height, out.image);
     for (const auto& [k, v] : in->attributes)
         out.attributes[k] = v;
-    if (auto it = out.attributes.find("lpv:spp"); it != out.attributes.end())
-        out.image.samplesPerPixel = std::atoi(it->second.c_str());
+    out.image.samplesPerPixel = headerNumber<int>(out.attributes, "lpv:spp").value_or(0);
+    out.image.seconds = headerNumber<double>(out.attributes, "lpv:seconds").value_or(0.0);
     return out;
+}
+
+std::optional<int> LoadedReference::bounces() const {
+    return headerNumber<int>(attributes, "lpv:bounces");
 }
 
 scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file) {
@@ -78,30 +96,4 @@ scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file) {
     return out;
 }
 
-namespace {
-std::string hex64(std::uint64_t v) {
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-    return buf;
-}
-} // namespace
-
-scene::Expected<std::string> fileContentHash(const std::filesystem::path& file) {
-    auto bytes = scene::readFileBytes(file);
-    if (!bytes)
-        return std::unexpected(bytes.error());
-    return hex64(scene::contentHash64(*bytes));
-}
-
-std::string parametersHash(const scene::ParameterSet& parameters) {
-    std::vector<std::string> lines;
-    for (const auto& [key, value] : parameters.overrides())
-        lines.push_back(key + "=" + scene::formatValue(value));
-    std::ranges::sort(lines);
-    std::string text;
-    for (const std::string& l : lines)
-        text += l + "\n";
-    return hex64(scene::contentHash64(text));
-}
-
-} // namespace lpv::cli
+} // namespace lpv::bench
