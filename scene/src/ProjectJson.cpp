@@ -6,6 +6,7 @@
 // editing the file by hand can find it.
 #include "ProjectJson.h"
 
+#include "lpv/scene/SceneFields.h"
 #include "lpv/scene/ValueChecks.h"
 
 #include <algorithm>
@@ -49,38 +50,10 @@ std::string indexPath(const std::string& path, std::size_t i) { return concat(pa
 
 // --- value ranges -----------------------------------------------------------
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The fields' ranges live in their tables (SceneFields.h); the camera path
+// file's degrees below are the one range of this file's own.
+using Range = FieldRange;
 constexpr double kPi = std::numbers::pi;
-
-struct Range {
-    double min = -kInfinity;
-    double max = kInfinity;
-    bool openMin = false;
-    bool openMax = false;
-
-    // Bounds are rounded to float first: the float nearest pi/2 is slightly
-    // above pi/2, and a value the program itself produces must pass.
-    bool contains(float v) const {
-        const float lo = static_cast<float>(min);
-        const float hi = static_cast<float>(max);
-        return (openMin ? v > lo : v >= lo) && (openMax ? v < hi : v <= hi);
-    }
-    std::string describe() const {
-        if (std::isinf(max))
-            return concat(openMin ? "> " : ">= ", formatNumber(min));
-        return concat(openMin ? "(" : "[", formatNumber(min), ", ", formatNumber(max), openMax ? ")" : "]");
-    }
-};
-
-const Range kAnyValue{};
-const Range kNonNegative{0.0, kInfinity};
-const Range kPositive{0.0, kInfinity, true, false};
-const Range kUnit{0.0, 1.0};
-// 0 and pi both give a degenerate projection.
-const Range kFieldOfView{0.0, kPi, true, true};
-// Spot cone half-angles as in glTF: 0 <= inner <= outer <= pi/2, outer > 0.
-const Range kInnerCone{0.0, kPi / 2};
-const Range kOuterCone{0.0, kPi / 2, true, false};
 
 // --- reading ----------------------------------------------------------------
 
@@ -343,42 +316,59 @@ std::vector<T> readArray(Fields& parent, const char* key, ReadElement readElemen
     return out;
 }
 
-Material readMaterial(Fields& f) {
-    Material m;
-    f.text("name", m.name);
-    f.enumeration("shading", m.shading, parseShadingModel, "blinnPhong, metallicRoughness");
-    f.vector("diffuseColor", m.diffuseColor, kNonNegative);
-    f.text("diffuseTexture", m.diffuseTexture);
-    f.text("normalTexture", m.normalTexture);
-    f.text("heightTexture", m.heightTexture);
-    f.vector("specularColor", m.specularColor, kNonNegative);
-    f.text("specularTexture", m.specularTexture);
-    f.number("shininess", m.shininess, kNonNegative);
-    f.number("metallic", m.metallic, kUnit);
-    f.number("roughness", m.roughness, kUnit);
-    f.text("metallicRoughnessTexture", m.metallicRoughnessTexture);
-    f.text("occlusionTexture", m.occlusionTexture);
-    f.vector("emissive", m.emissive, kNonNegative);
-    f.text("emissiveTexture", m.emissiveTexture);
-    f.number("opacity", m.opacity, kUnit);
-    f.enumeration("alphaMode", m.alphaMode, parseAlphaMode, "opaque, mask, blend");
-    f.number("alphaCutoff", m.alphaCutoff, kUnit);
-    f.number("translucency", m.translucency, kUnit);
-    f.number("glossiness", m.glossiness, kUnit);
-    f.flag("twoSided", m.twoSided);
-    // Optional (added in 1.1, see docs/project-format.md).
-    if (f.has("alphaTexture"))
-        f.text("alphaTexture", m.alphaTexture);
-    if (f.has("colorKey"))
-        f.flag("colorKey", m.colorKey);
-    if (f.has("additive"))
-        f.flag("additive", m.additive);
-    if (f.has("environmentTexture"))
-        f.text("environmentTexture", m.environmentTexture);
-    if (f.has("environmentRatio"))
-        f.number("environmentRatio", m.environmentRatio, kUnit);
-    report(f, checkMaterial(m));
-    return m;
+// How many meshes and objects the project has: the range of index fields.
+struct IndexCounts {
+    std::size_t meshes = 0;
+    std::size_t objects = 0;
+};
+
+template <class S>
+S readStruct(Fields& f, const IndexCounts& counts);
+
+template <class S>
+std::vector<S> readStructs(Fields& parent, const char* key, const IndexCounts& counts) {
+    return readArray<S>(parent, key, [&](Fields& element) { return readStruct<S>(element, counts); });
+}
+
+// One field, read as its table entry says: the JSON form follows the C++ type.
+template <class S, class T>
+void readField(Fields& f, const Field<S, T>& field, T& out, const IndexCounts& counts) {
+    const char* key = field.name;
+    if constexpr (std::is_same_v<T, std::string>)
+        f.text(key, out);
+    else if constexpr (std::is_same_v<T, bool>)
+        f.flag(key, out);
+    else if constexpr (std::is_same_v<T, float>)
+        f.number(key, out, field.range);
+    else if constexpr (std::is_same_v<T, glm::quat>)
+        f.rotation(key, out);
+    else if constexpr (std::is_enum_v<T>)
+        f.enumeration(key, out, &EnumNames<T>::parse, EnumNames<T>::allowed);
+    else if constexpr (std::is_same_v<T, int>) {
+        if (field.index == IndexOf::Meshes)
+            f.index(key, out, counts.meshes, "mesh", "meshes");
+        else
+            f.index(key, out, counts.objects, "object", "objects");
+    } else if constexpr (requires { out.push_back(typename T::value_type{}); })
+        out = readStructs<typename T::value_type>(f, key, counts);
+    else
+        f.vector(key, out, field.range);
+}
+
+// Every field of S in table order: one that does not apply (an area light's
+// shape on a spot) is skipped, an optional one read only when present. Then
+// the rules between fields and the product checks.
+template <class S>
+S readStruct(Fields& f, const IndexCounts& counts) {
+    S s;
+    forEachField<S>([&](const auto& field) {
+        if (!f.ok() || !field.appliesTo(s) || (!field.requiredIn(s) && !f.has(field.name)))
+            return;
+        readField(f, field, field.of(s), counts);
+    });
+    if (f.ok())
+        report(f, checkFieldRules(s));
+    return s;
 }
 
 MeshReference readMeshReference(Fields& f) {
@@ -393,146 +383,7 @@ MeshReference readMeshReference(Fields& f) {
     return m;
 }
 
-Object readObject(Fields& f, std::size_t meshCount, std::size_t objectCount) {
-    Object o;
-    f.text("name", o.name);
-    f.index("mesh", o.mesh, meshCount, "mesh", "meshes");
-    f.index("parent", o.parent, objectCount, "object", "objects");
-    f.vector("translation", o.transform.translation, kAnyValue);
-    f.rotation("rotation", o.transform.rotation);
-    f.vector("scale", o.transform.scale, kAnyValue);
-    f.flag("visible", o.visible);
-    if (f.has("lods")) // optional, added in 1.1
-        o.lods = readArray<LodLevel>(f, "lods", [&](Fields& lod) {
-            LodLevel level;
-            lod.index("mesh", level.mesh, meshCount, "mesh", "meshes");
-            lod.number("distance", level.distance, kNonNegative);
-            return level;
-        });
-    report(f, checkObject(o));
-    return o;
-}
-
-// The fields only area lights have (format version 2): every one required.
-void readAreaFields(Fields& f, Light& l) {
-    f.enumeration("shape", l.shape, parseAreaShape, "rectangle, disc");
-    f.enumeration("unit", l.unit, parseAreaUnit, "radiance, power");
-    f.flag("twoSided", l.twoSided);
-    if (!f.ok())
-        return;
-    // The other shape's extent is optional (written, so a shape switch in the editor keeps it).
-    const bool rectangle = l.shape == AreaShape::Rectangle;
-    if (!rectangle && f.has("size"))
-        f.vector("size", l.size, kPositive);
-    if (!rectangle && f.has("tangent"))
-        f.vector("tangent", l.tangent, kAnyValue);
-    if (rectangle && f.has("radius"))
-        f.number("radius", l.radius, kPositive);
-    if (rectangle) {
-        f.vector("size", l.size, kPositive);
-        f.vector("tangent", l.tangent, kAnyValue);
-        if (!f.ok())
-            return;
-        const glm::vec3 d = l.direction == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.direction);
-        const glm::vec3 t = l.tangent == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.tangent);
-        if (l.tangent == glm::vec3(0.0f) || std::abs(glm::dot(d, t)) > 0.9999f)
-            f.reader().fail(ErrorCode::InvalidValue, f.pathOf("tangent"),
-                            "a rectangular area light needs a tangent that is not zero and not along its direction");
-    } else {
-        f.number("radius", l.radius, kPositive);
-    }
-}
-
-Light readLight(Fields& f) {
-    Light l;
-    f.text("name", l.name);
-    f.enumeration("type", l.type, parseLightType, "directional, point, spot, area");
-    f.vector("color", l.color, kNonNegative);
-    f.number("intensity", l.intensity, kNonNegative);
-    f.vector("position", l.position, kAnyValue);
-    f.vector("direction", l.direction, kAnyValue);
-    f.number("range", l.range, kNonNegative);
-    f.number("innerConeAngle", l.innerConeAngle, kInnerCone);
-    f.number("outerConeAngle", l.outerConeAngle, kOuterCone);
-    f.flag("castShadows", l.castShadows);
-    if (l.type == LightType::Area && f.ok())
-        readAreaFields(f, l);
-    if (!f.ok())
-        return l;
-    if (l.innerConeAngle > l.outerConeAngle)
-        f.reader().fail(ErrorCode::OutOfRange, f.pathOf("innerConeAngle"),
-                        concat("inner cone angle ", formatNumber(l.innerConeAngle), " exceeds the outer cone angle ",
-                               formatNumber(l.outerConeAngle)));
-    // A point light has no direction; the others need one.
-    if (l.type != LightType::Point && l.direction == glm::vec3(0.0f))
-        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("direction"),
-                        concat("a ", toString(l.type), " light needs a non-zero direction"));
-    report(f, checkLight(l));
-    return l;
-}
-
-Camera readCamera(Fields& f) {
-    Camera c;
-    f.text("name", c.name);
-    f.vector("position", c.position, kAnyValue);
-    f.vector("target", c.target, kAnyValue);
-    f.vector("up", c.up, kAnyValue);
-    f.number("fovY", c.fovY, kFieldOfView);
-    f.number("nearPlane", c.nearPlane, kPositive);
-    f.number("farPlane", c.farPlane, kPositive);
-    if (!f.ok())
-        return c;
-    if (c.farPlane <= c.nearPlane)
-        f.reader().fail(ErrorCode::OutOfRange, f.pathOf("farPlane"),
-                        concat("far plane ", formatNumber(c.farPlane), " is not beyond the near plane ",
-                               formatNumber(c.nearPlane)));
-    // Both would make the view matrix NaN.
-    if (c.position == c.target)
-        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("target"), "the camera looks at its own position");
-    if (c.up == glm::vec3(0.0f))
-        f.reader().fail(ErrorCode::InvalidValue, f.pathOf("up"), "the up vector is zero");
-    report(f, checkCamera(c));
-    return c;
-}
-
-CameraKeyframe readKeyframe(Fields& f) {
-    CameraKeyframe k;
-    f.number("time", k.time, kNonNegative);
-    f.vector("position", k.position, kAnyValue);
-    f.rotation("orientation", k.orientation);
-    f.number("fovY", k.fovY, kFieldOfView);
-    report(f, checkKeyframe(k));
-    return k;
-}
-
-// Playback interpolates between neighbours, which needs them in time order.
-void checkKeyframeOrder(Fields& f, const std::vector<CameraKeyframe>& keyframes) {
-    for (std::size_t i = 1; i < keyframes.size() && f.ok(); ++i)
-        if (keyframes[i].time < keyframes[i - 1].time)
-            f.reader().fail(ErrorCode::InvalidValue, indexPath(f.pathOf("keyframes"), i) + ".time",
-                            concat("keyframe time ", formatNumber(keyframes[i].time),
-                                   " is earlier than the previous keyframe's ", formatNumber(keyframes[i - 1].time),
-                                   "; keyframes must be sorted by time"));
-}
-
-// Optional (added in 1.1): absent means an open path played at the keys' times.
-void readPathFlags(Fields& f, CameraPath& p) {
-    if (f.has("closed"))
-        f.flag("closed", p.closed);
-    if (f.has("constantSpeed"))
-        f.flag("constantSpeed", p.constantSpeed);
-}
-
-CameraPath readCameraPath(Fields& f) {
-    CameraPath p;
-    f.text("name", p.name);
-    p.keyframes = readArray<CameraKeyframe>(f, "keyframes", readKeyframe);
-    readPathFlags(f, p);
-    checkKeyframeOrder(f, p.keyframes);
-    return p;
-}
-
-// --- camera path files (docs/camera-paths.md): the field of view in degrees ---
+// --- camera path files// --- camera path files (docs/camera-paths.md): the field of view in degrees ---
 
 const Range kFieldOfViewDegrees{0.0, 180.0, true, true};
 
@@ -562,9 +413,7 @@ CameraKeyframe readPathFileKeyframe(Fields& f) {
 void readSky(Fields& top, Sky& sky) {
     if (const Json* v = top.get("sky")) {
         Fields f(top.reader(), *v, "sky");
-        f.vector("color", sky.color, kNonNegative);
-        f.number("intensity", sky.intensity, kNonNegative);
-        report(f, checkSky(sky));
+        sky = readStruct<Sky>(f, {});
     }
 }
 
@@ -783,34 +632,33 @@ Json numbers(const glm::vec<L, float, Q>& v) {
 
 Json numbers(const glm::quat& q) { return Json::array({number(q.x), number(q.y), number(q.z), number(q.w)}); }
 
-Json toJson(const Material& m) {
+template <class T>
+Json arrayOf(const std::vector<T>& items);
+
+// One field's JSON form, following its C++ type (the reader's readField).
+template <class T>
+Json fieldJson(const T& v) {
+    if constexpr (std::is_same_v<T, float>)
+        return number(v);
+    else if constexpr (std::is_enum_v<T>)
+        return toString(v);
+    else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, bool> || std::is_same_v<T, int>)
+        return v;
+    else if constexpr (requires { v.size(); typename T::value_type; })
+        return arrayOf(v);
+    else
+        return numbers(v);
+}
+
+// Every field of S that applies and is written, in table order (the order
+// files have always listed them).
+template <class S>
+Json toJson(const S& s) {
     Json j = Json::object();
-    j["name"] = m.name;
-    j["shading"] = toString(m.shading);
-    j["diffuseColor"] = numbers(m.diffuseColor);
-    j["diffuseTexture"] = m.diffuseTexture;
-    j["normalTexture"] = m.normalTexture;
-    j["heightTexture"] = m.heightTexture;
-    j["specularColor"] = numbers(m.specularColor);
-    j["specularTexture"] = m.specularTexture;
-    j["shininess"] = number(m.shininess);
-    j["metallic"] = number(m.metallic);
-    j["roughness"] = number(m.roughness);
-    j["metallicRoughnessTexture"] = m.metallicRoughnessTexture;
-    j["occlusionTexture"] = m.occlusionTexture;
-    j["emissive"] = numbers(m.emissive);
-    j["emissiveTexture"] = m.emissiveTexture;
-    j["opacity"] = number(m.opacity);
-    j["alphaMode"] = toString(m.alphaMode);
-    j["alphaCutoff"] = number(m.alphaCutoff);
-    j["translucency"] = number(m.translucency);
-    j["glossiness"] = number(m.glossiness);
-    j["twoSided"] = m.twoSided;
-    j["alphaTexture"] = m.alphaTexture;
-    j["colorKey"] = m.colorKey;
-    j["additive"] = m.additive;
-    j["environmentTexture"] = m.environmentTexture;
-    j["environmentRatio"] = number(m.environmentRatio);
+    forEachField<S>([&](const auto& field) {
+        if (field.appliesTo(s) && (!field.written || field.written(s)))
+            j[field.name] = fieldJson(field.of(s));
+    });
     return j;
 }
 
@@ -820,77 +668,6 @@ Json toJson(const Mesh& m, const std::string& asset) {
     j["asset"] = asset;
     j["vertices"] = m.positions.size();
     j["triangles"] = m.triangleCount();
-    return j;
-}
-
-Json toJson(const Object& o) {
-    Json j = Json::object();
-    j["name"] = o.name;
-    j["mesh"] = o.mesh;
-    j["parent"] = o.parent;
-    j["translation"] = numbers(o.transform.translation);
-    j["rotation"] = numbers(o.transform.rotation);
-    j["scale"] = numbers(o.transform.scale);
-    j["visible"] = o.visible;
-    if (!o.lods.empty()) {
-        Json lods = Json::array();
-        for (const LodLevel& level : o.lods)
-            lods.push_back({{"mesh", level.mesh}, {"distance", number(level.distance)}});
-        j["lods"] = lods;
-    }
-    return j;
-}
-
-Json toJson(const Light& l) {
-    Json j = Json::object();
-    j["name"] = l.name;
-    j["type"] = toString(l.type);
-    j["color"] = numbers(l.color);
-    j["intensity"] = number(l.intensity);
-    j["position"] = numbers(l.position);
-    j["direction"] = numbers(l.direction);
-    j["range"] = number(l.range);
-    j["innerConeAngle"] = number(l.innerConeAngle);
-    j["outerConeAngle"] = number(l.outerConeAngle);
-    j["castShadows"] = l.castShadows;
-    if (l.type == LightType::Area) {
-        j["shape"] = toString(l.shape);
-        j["size"] = numbers(l.size);
-        j["tangent"] = numbers(l.tangent);
-        j["radius"] = number(l.radius);
-        j["twoSided"] = l.twoSided;
-        j["unit"] = toString(l.unit);
-    }
-    return j;
-}
-
-Json toJson(const Camera& c) {
-    Json j = Json::object();
-    j["name"] = c.name;
-    j["position"] = numbers(c.position);
-    j["target"] = numbers(c.target);
-    j["up"] = numbers(c.up);
-    j["fovY"] = number(c.fovY);
-    j["nearPlane"] = number(c.nearPlane);
-    j["farPlane"] = number(c.farPlane);
-    return j;
-}
-
-Json toJson(const CameraPath& p) {
-    Json keyframes = Json::array();
-    for (const CameraKeyframe& k : p.keyframes) {
-        Json j = Json::object();
-        j["time"] = number(k.time);
-        j["position"] = numbers(k.position);
-        j["orientation"] = numbers(k.orientation);
-        j["fovY"] = number(k.fovY);
-        keyframes.push_back(std::move(j));
-    }
-    Json j = Json::object();
-    j["name"] = p.name;
-    j["keyframes"] = std::move(keyframes);
-    j["closed"] = p.closed;
-    j["constantSpeed"] = p.constantSpeed;
     return j;
 }
 
@@ -962,21 +739,20 @@ Expected<ProjectDocument> projectFromJson(const Json& document, const std::strin
     Fields top(r, *current, "");
     top.text("name", out.project.name);
     readSky(top, scene.sky);
-    scene.materials = readArray<Material>(top, "materials", readMaterial);
+    scene.materials = readStructs<Material>(top, "materials", {});
     out.meshes = readArray<MeshReference>(top, "meshes", readMeshReference);
     const Json* objects = top.array("objects");
-    const std::size_t objectCount = objects ? objects->size() : 0;
-    scene.objects = readArray<Object>(
-        top, "objects", [&](Fields& f) { return readObject(f, out.meshes.size(), objectCount); });
-    scene.lights = readArray<Light>(top, "lights", readLight);
-    scene.cameras = readArray<Camera>(top, "cameras", readCamera);
-    scene.cameraPaths = readArray<CameraPath>(top, "cameraPaths", readCameraPath);
+    const IndexCounts counts{out.meshes.size(), objects ? objects->size() : 0};
+    scene.objects = readStructs<Object>(top, "objects", counts);
+    scene.lights = readStructs<Light>(top, "lights", counts);
+    scene.cameras = readStructs<Camera>(top, "cameras", counts);
+    scene.cameraPaths = readStructs<CameraPath>(top, "cameraPaths", counts);
     readParameters(top, out.project.parameters);
     readPresets(top, out.project.presets);
     // Optional (added with issue #26): the editor's view when last saved.
     if (const Json* view = top.has("editorView") ? top.get("editorView") : nullptr) {
         Fields f(r, *view, "editorView");
-        const Camera c = readCamera(f);
+        const Camera c = readStruct<Camera>(f, counts);
         if (r.ok())
             out.project.editorView = c;
     }
@@ -996,10 +772,7 @@ Json projectToJson(const Project& project, const std::vector<std::string>& asset
     doc["format"] = kProjectFormatName;
     doc["version"] = kProjectFormatVersion;
     doc["name"] = project.name;
-    Json sky = Json::object();
-    sky["color"] = numbers(scene.sky.color);
-    sky["intensity"] = number(scene.sky.intensity);
-    doc["sky"] = std::move(sky);
+    doc["sky"] = toJson(scene.sky);
     doc["materials"] = arrayOf(scene.materials);
     Json meshes = Json::array();
     for (std::size_t i = 0; i < scene.meshes.size(); ++i)
@@ -1034,10 +807,15 @@ Expected<CameraPath> cameraPathFromDocument(const Json& document, const std::str
     Reader r(file);
     Fields top(r, document, "");
     CameraPath p;
-    top.text("name", p.name);
-    p.keyframes = readArray<CameraKeyframe>(top, "keyframes", readPathFileKeyframe);
-    readPathFlags(top, p);
-    checkKeyframeOrder(top, p.keyframes);
+    // The table's fields, but the keyframes name their field of view in degrees.
+    forEachField<CameraPath>([&](const auto& field) {
+        if (std::string_view(field.name) == "keyframes")
+            p.keyframes = readArray<CameraKeyframe>(top, "keyframes", readPathFileKeyframe);
+        else if (field.requiredIn(p) || top.has(field.name))
+            readField(top, field, field.of(p), {});
+    });
+    if (top.ok())
+        report(top, checkFieldRules(p));
     if (!r.ok())
         return std::unexpected(r.error());
     return p;
