@@ -2,6 +2,8 @@
 // about its canvas, each refused with its exact words before anything
 // allocates the canvas, within a second and without the memory it claims;
 // and large textures shrunk on load to the scene's budget, with a warning.
+#include "ImageBombs.h"
+
 #include "lpv/importers/ImageBudget.h"
 #include "lpv/importers/ImageIO.h"
 #include "lpv/importers/SceneTextures.h"
@@ -22,41 +24,14 @@
 
 using namespace lpv;
 namespace fs = std::filesystem;
+using namespace lpv::test::bombs;
 
 namespace {
 
-fs::path tempDir() {
-    const fs::path d = fs::temp_directory_path() / ("lpv-image-budget-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-}
+fs::path tempDir() { return tempFolder("lpv-image-budget"); }
 
 fs::path writeFile(const std::string& name, const std::string& bytes) {
-    const fs::path p = tempDir() / name;
-    std::ofstream(p, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-    return p;
-}
-
-std::string le16(unsigned v) {
-    return {char(v & 0xFF), char(v >> 8 & 0xFF)};
-}
-std::string le32(std::uint32_t v) {
-    return le16(v & 0xFFFF) + le16(v >> 16);
-}
-std::string be32(std::uint32_t v) {
-    return {char(v >> 24 & 0xFF), char(v >> 16 & 0xFF), char(v >> 8 & 0xFF), char(v & 0xFF)};
-}
-std::string be16(unsigned v) {
-    return {char(v >> 8 & 0xFF), char(v & 0xFF)};
-}
-
-// The 35-byte GIF of the issue: a 1x1 frame on a w x h logical screen.
-std::string gifBomb(unsigned w, unsigned h) {
-    std::string b =
-        "GIF89a" + le16(w) + le16(h) + std::string("\x80\x00\x00", 3) + std::string("\0\0\0\xff\xff\xff", 6);
-    b += "," + le16(0) + le16(0) + le16(1) + le16(1) + std::string(1, '\0');
-    b += std::string("\x02\x02\x44\x01\x00", 5) + ";";
-    return b;
+    return writeTempFile("lpv-image-budget", name, bytes);
 }
 
 std::string pngChunk(const std::string& type, const std::string& data) {
@@ -93,29 +68,6 @@ std::string pngOfRows(std::uint32_t w, std::uint32_t h, unsigned char value) {
     return pngHeader(w, h, 8, 2) + pngChunk("IDAT", idat) + pngChunk("IEND", "");
 }
 
-// An OpenEXR scanline header (no pixel data): `channels` of `type` (1 half, 2 float).
-std::string exrHeader(int w, int h, int channels, int type, int compression) {
-    std::string b("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
-    auto attr = [&](const std::string& name, const std::string& kind, const std::string& value) {
-        b += name + '\0' + kind + '\0' + le32(std::uint32_t(value.size())) + value;
-    };
-    std::string list;
-    for (int c = 0; c < channels; ++c)
-        list += "c" + std::to_string(c) + '\0' + le32(std::uint32_t(type)) + std::string(4, '\0') + le32(1) +
-                le32(1);
-    list += '\0';
-    attr("channels", "chlist", list);
-    attr("compression", "compression", std::string(1, char(compression)));
-    const std::string box = le32(0) + le32(0) + le32(std::uint32_t(w - 1)) + le32(std::uint32_t(h - 1));
-    attr("dataWindow", "box2i", box);
-    attr("displayWindow", "box2i", box);
-    attr("lineOrder", "lineOrder", std::string(1, '\0'));
-    attr("pixelAspectRatio", "float", le32(0x3f800000));
-    attr("screenWindowCenter", "v2f", std::string(8, '\0'));
-    attr("screenWindowWidth", "float", le32(0x3f800000));
-    b += '\0';
-    return b;
-}
 
 // A baseline (0xC0) or progressive (0xC2) JPEG frame header, nothing after it.
 std::string jpegHeader(unsigned w, unsigned h, int components, unsigned char sof) {

@@ -21,15 +21,6 @@ std::unique_ptr<renderer::GpuHemicube> hemicube(const radiosity::PatchMesh& mesh
     return h ? std::move(*h) : nullptr;
 }
 
-auto gpuCompute(renderer::GpuHemicube& h) {
-    return [&h](const std::vector<std::uint32_t>& shooters) {
-        std::vector<float> out;
-        const auto ok = h.compute(shooters, out);
-        EXPECT_TRUE(ok.has_value()) << ok.error().describe();
-        return out;
-    };
-}
-
 } // namespace
 
 class GpuHemicubeGLTest : public GlTest {};
@@ -38,14 +29,14 @@ TEST_F(GpuHemicubeGLTest, ParallelUnitSquaresMatchTheAnalyticValue) {
     const auto mesh = radiosity::buildPatchMesh(test::parallelSquares(), {0.01f});
     auto h = hemicube(mesh);
     ASSERT_TRUE(h);
-    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, gpuCompute(*h)), 0.1998, 0.02 * 0.1998);
+    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, test::computeWith(*h)), 0.1998, 0.02 * 0.1998);
 }
 
 TEST_F(GpuHemicubeGLTest, PerpendicularUnitSquaresMatchTheAnalyticValue) {
     const auto mesh = radiosity::buildPatchMesh(test::perpendicularSquares(), {0.01f});
     auto h = hemicube(mesh);
     ASSERT_TRUE(h);
-    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, gpuCompute(*h)), 0.2000, 0.02 * 0.2000);
+    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, test::computeWith(*h)), 0.2000, 0.02 * 0.2000);
 }
 
 TEST_F(GpuHemicubeGLTest, EveryShooterInAClosedBoxSeesExactlyOneHemisphere) {
@@ -75,7 +66,7 @@ TEST_F(GpuHemicubeGLTest, AgreesWithTheCpuReferenceOnAnOccludedScene) {
     double worst = 0.0;
     for (std::uint32_t from : {0u, 1u, 2u, 6u}) // floor, ceiling, a wall, the block's top
         for (std::uint32_t to = 0; to < 12; ++to) {
-            const double gpu = test::objectFormFactor(mesh, from, to, gpuCompute(*h));
+            const double gpu = test::objectFormFactor(mesh, from, to, test::computeWith(*h));
             const double ref =
                 test::objectFormFactor(mesh, from, to, [&](const std::vector<std::uint32_t>& s) {
                     std::vector<float> out;

@@ -1,8 +1,11 @@
 #pragma once
 // Small analytic scenes for the radiosity tests: unit squares and boxes made
 // of quads (two triangles each, as importers deliver them).
+#include "lpv/radiosity/FormFactors.h"
 #include "lpv/radiosity/PatchMesh.h"
 #include "lpv/scene/Scene.h"
+
+#include <gtest/gtest.h>
 
 #include <array>
 
@@ -83,6 +86,17 @@ inline scene::Scene boxWithBlock() {
     addQuad(s, {{{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}},
                   {0, 0, 1}, 0);
     return s;
+}
+
+// `source`'s form factors as a function of the shooters (objectFormFactor's
+// `compute`); a failed compute is a test failure and an empty row.
+inline auto computeWith(radiosity::FormFactorSource& source) {
+    return [&source](const std::vector<std::uint32_t>& shooters) {
+        std::vector<float> out;
+        const auto ok = source.compute(shooters, out);
+        EXPECT_TRUE(ok.has_value()) << ok.error().describe();
+        return out;
+    };
 }
 
 // Area-weighted form factor from object `from` to object `to`, out of

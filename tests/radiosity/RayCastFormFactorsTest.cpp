@@ -23,15 +23,6 @@ std::unique_ptr<radiosity::RayCastFormFactors> rays(const radiosity::PatchMesh& 
     return made ? std::move(*made) : nullptr;
 }
 
-auto computeWith(radiosity::FormFactorSource& source) {
-    return [&source](const std::vector<std::uint32_t>& shooters) {
-        std::vector<float> out;
-        const auto ok = source.compute(shooters, out);
-        EXPECT_TRUE(ok.has_value()) << ok.error().describe();
-        return out;
-    };
-}
-
 } // namespace
 
 TEST(RayCastFormFactors, ParallelUnitSquaresMatchTheAnalyticValue) {
@@ -39,7 +30,7 @@ TEST(RayCastFormFactors, ParallelUnitSquaresMatchTheAnalyticValue) {
     const auto mesh = radiosity::buildPatchMesh(scene, {0.01f});
     auto source = rays(mesh, scene);
     ASSERT_TRUE(source);
-    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, computeWith(*source)), 0.1998, 0.02 * 0.1998);
+    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, test::computeWith(*source)), 0.1998, 0.02 * 0.1998);
 }
 
 TEST(RayCastFormFactors, PerpendicularUnitSquaresMatchTheAnalyticValue) {
@@ -49,7 +40,7 @@ TEST(RayCastFormFactors, PerpendicularUnitSquaresMatchTheAnalyticValue) {
     ASSERT_TRUE(source);
     // Patches along the shared edge are the hard part: the disc approximation
     // of a shooter right beside its receiver.
-    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, computeWith(*source)), 0.2000, 0.03 * 0.2000);
+    EXPECT_NEAR(test::objectFormFactor(mesh, 0, 1, test::computeWith(*source)), 0.2000, 0.03 * 0.2000);
 }
 
 TEST(RayCastFormFactors, AgreeWithTheCpuReferenceOnAnOccludedScene) {
@@ -61,8 +52,8 @@ TEST(RayCastFormFactors, AgreeWithTheCpuReferenceOnAnOccludedScene) {
     double worst = 0.0;
     for (std::uint32_t from : {0u, 1u, 2u, 6u}) // floor, ceiling, a wall, the block's top
         for (std::uint32_t to = 0; to < 12; ++to) {
-            const double cast = test::objectFormFactor(mesh, from, to, computeWith(*source));
-            const double ref = test::objectFormFactor(mesh, from, to, computeWith(cpu));
+            const double cast = test::objectFormFactor(mesh, from, to, test::computeWith(*source));
+            const double ref = test::objectFormFactor(mesh, from, to, test::computeWith(cpu));
             worst = std::max(worst, std::abs(cast - ref));
             // 0.03, where the hemicube stays within 0.02: each receiver is its
             // centre, so the block's top (0.5 m under the 4 x 4 ceiling
