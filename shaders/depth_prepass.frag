@@ -1,5 +1,5 @@
 #version 450 core
-// The camera's depth pre-pass (renderer/src/FramePasses.cpp): depth only,
+// The camera's depth pre-pass (renderer/src/frame/FramePasses.cpp): depth only,
 // alpha-mask cut-outs included, so that shading (forward.frag with
 // LPV_AFTER_DEPTH_PREPASS) runs its lighting once per visible pixel.
 #include "coverage.glsl"

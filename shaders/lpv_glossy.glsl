@@ -1,7 +1,7 @@
 // Glossy reflections from the LPV (docs/lpv.md, Glossy reflections): a ray
 // marched from the surface along the reflection vector, reading at each step
 // the finest cascade that holds the point and whose cells are as wide as the
-// reflection cone there. The GLSL twin of renderer/src/lpv/LpvGlossy.cpp
+// reflection cone there. The GLSL twin of renderer/src/lpvref/LpvGlossy.cpp
 // (LpvGlossyGLTest checks they agree). It reuses the diffuse lookup's
 // accumulator samplers: it adds no sampler to the forward pass.
 // Needs sh.glsl and lpv_lookup.glsl included before it.

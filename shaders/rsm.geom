@@ -10,7 +10,7 @@
 layout(triangles, invocations = RSM_TILES) in;
 layout(triangle_strip, max_vertices = 3) out;
 
-const int kMaxTiles = 6; // kMaxRsmCascades in renderer/src/RsmCascades.h
+const int kMaxTiles = 6; // kMaxRsmCascades in renderer/src/passes/lpv/RsmCascades.h
 uniform mat4 uTileViewProj[kMaxTiles];
 uniform float uTexelArea[kMaxTiles]; // world area of one texel across the sun's rays
 

@@ -6,13 +6,9 @@
 // `lpv render`'s default size; docs/renderer.md has the full-size figures,
 // which agree within a fraction of a percent.
 #include "GlFixture.h"
-#include "TestPaths.h"
+#include "OpeningViews.h"
 
-#include "lpv/app/ImportDefaults.h"
-#include "lpv/importers/Importer.h"
 #include "lpv/renderer/ForwardRenderer.h"
-#include "lpv/scene/Project.h"
-#include "lpv/scene/SceneMerge.h"
 
 #include <algorithm>
 #include <array>
@@ -30,38 +26,8 @@ constexpr double kMaxClipped = 0.02;
 // 2 EV below the metered exposure leaves Sibenik's at 83 (`--set output.exposure=-2`).
 constexpr int kMinBrightCode = 200;
 
-struct OpeningView {
-    scene::Project project;
-    scene::Camera camera;
-};
-
-// What `lpv import FILE -o NEW.lpvproj` saves (ImportCommand.cpp): the file's
-// scene appended to an empty project with the registry's defaults, and the
-// sun it adds to a scene without lights; the view the editor and `lpv render`
-// open it with.
-OpeningView imported(const std::string& relative) {
-    OpeningView v;
-    auto result = importers::importScene(std::filesystem::path(test::kSharedScenesDir) / relative);
-    EXPECT_TRUE(result.has_value()) << (result ? "" : result.error().describe());
-    if (!result)
-        return v;
-    scene::appendScene(v.project.scene, std::move(result->scene));
-    if (v.project.scene.lights.empty())
-        v.project.scene.lights.push_back(app::chooseDefaultSun(v.project.scene).light);
-    v.camera = app::firstView(v.project.scene);
-    return v;
-}
-
-OpeningView builtInCornellBox() {
-    OpeningView v;
-    auto loaded = scene::loadProject(std::filesystem::path(test::kSourceDir) / "projects/cornell-box/cornell-box.lpvproj");
-    EXPECT_TRUE(loaded.has_value()) << (loaded ? "" : loaded.error().describe());
-    if (!loaded)
-        return v;
-    v.project = std::move(*loaded);
-    v.camera = app::firstView(v.project.scene);
-    return v;
-}
+using test::builtInCornellBox;
+using test::OpeningView;
 
 struct FrameFigures {
     double clipped = 1.0;  // fraction of the pixels with all three channels at 255
@@ -113,11 +79,11 @@ protected:
 } // namespace
 
 TEST_F(ExposureClippingGL, ImportedSponzaOpensWithAtMostTwoPercentClipped) {
-    expectWellExposed(imported("sponza/sponza.obj"));
+    expectWellExposed(test::importedScene("sponza/sponza.obj"));
 }
 
 TEST_F(ExposureClippingGL, ImportedSibenikOpensWithAtMostTwoPercentClipped) {
-    expectWellExposed(imported("sibenik/sibenik.obj"));
+    expectWellExposed(test::importedScene("sibenik/sibenik.obj"));
 }
 
 TEST_F(ExposureClippingGL, BuiltInCornellBoxOpensWithAtMostTwoPercentClipped) {

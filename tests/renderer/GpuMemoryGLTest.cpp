@@ -5,7 +5,7 @@
 // sized and counted once.
 #include "GlFixture.h"
 
-#include "GpuMemoryLedger.h"
+#include "gl/GpuMemoryLedger.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuMemory.h"
 #include "lpv/scene/CornellBox.h"

@@ -1,6 +1,6 @@
 // GpuMemory's arithmetic without a GL context: bytes per texel of every
 // format the renderer allocates, mip chains, and how bytes are printed.
-#include "GpuMemoryLedger.h"
+#include "gl/GpuMemoryLedger.h"
 
 #include <gtest/gtest.h>
 

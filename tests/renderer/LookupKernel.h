@@ -2,7 +2,7 @@
 // Runs shaders/lpv_lookup_test.comp: lpv_lookup.glsl's lookup of one cascade
 // of an LpvPass's accumulator (and its visibility moments) at a list of
 // points, for comparison with lpvref::irradianceAt / irradianceVisibleAt.
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/ShaderLibrary.h"
 

@@ -6,7 +6,7 @@
 #include "GlFixture.h"
 #include "LpvRoomScene.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvBounce.h"
 

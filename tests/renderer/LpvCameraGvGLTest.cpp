@@ -7,7 +7,7 @@
 #include "FakeRsm.h"
 #include "GlFixture.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"
 

@@ -5,7 +5,7 @@
 #include "GlFixture.h"
 #include "LpvDirectedScene.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"
 

@@ -8,7 +8,7 @@
 #include "LookupKernel.h"
 #include "ThinWallRooms.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"
 #include "lpv/renderer/lpv/LpvVisibility.h"

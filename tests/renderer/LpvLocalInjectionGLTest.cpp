@@ -5,8 +5,8 @@
 #include "FakeRsm.h"
 #include "GlFixture.h"
 
-#include "EmissiveVplBuffer.h"
-#include "LpvPass.h"
+#include "passes/lpv/EmissiveVplBuffer.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"
 

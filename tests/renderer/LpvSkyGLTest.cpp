@@ -3,7 +3,7 @@
 // scatter variant (whose fixed-point scale must cover the sky's cells).
 #include "GlFixture.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"
 

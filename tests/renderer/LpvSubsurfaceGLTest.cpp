@@ -5,8 +5,8 @@
 // a translucent material the pass neither runs nor holds memory.
 #include "GlFixture.h"
 
-#include "LpvPass.h"
-#include "LpvSubsurfacePass.h"
+#include "passes/lpv/LpvPass.h"
+#include "passes/lpv/LpvSubsurfacePass.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/ShaderLibrary.h"

@@ -4,7 +4,7 @@
 #include "FakeRsm.h"
 #include "GlFixture.h"
 
-#include "LpvPass.h"
+#include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GpuTimer.h"
 #include "lpv/renderer/lpv/LpvReference.h"

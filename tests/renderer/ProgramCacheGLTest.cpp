@@ -3,8 +3,8 @@
 // the kernels its settings select.
 #include "GlFixture.h"
 
-#include "LpvPass.h"
-#include "ProgramCache.h"
+#include "passes/lpv/LpvPass.h"
+#include "gl/ProgramCache.h"
 
 #include <gtest/gtest.h>
 

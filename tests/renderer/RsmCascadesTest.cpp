@@ -1,4 +1,4 @@
-#include "RsmCascades.h"
+#include "passes/lpv/RsmCascades.h"
 
 #include <gtest/gtest.h>
 

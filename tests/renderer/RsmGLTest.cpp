@@ -3,8 +3,8 @@
 // and the pass's resource handling (no sun: nothing allocated; GL limits).
 #include "GlFixture.h"
 
-#include "MaterialGpu.h"
-#include "RsmPass.h"
+#include "scenegpu/MaterialGpu.h"
+#include "passes/lpv/RsmPass.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/scene/CornellBox.h"

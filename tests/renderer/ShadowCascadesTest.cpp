@@ -1,5 +1,5 @@
 // Cascade math of the sun's shadow maps: splits, sphere fit, texel snapping.
-#include "ShadowCascades.h"
+#include "passes/direct/ShadowCascades.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // lit so that a white ground's HDR radiance equals its visibility.
 #include "GlFixture.h"
 
-#include "ShadowCascades.h"
+#include "passes/direct/ShadowCascades.h"
 #include "lpv/renderer/ForwardRenderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>

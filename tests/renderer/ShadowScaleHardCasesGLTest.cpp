@@ -5,9 +5,9 @@
 // a local light's far plane, a 1 mm floor under its near plane, 0.1 mm under
 // the cascades' near distance, 1 mm under their depth margin, a 1 m floor
 // under the sky map's height). Plain math: no context needed.
-#include "ShadowCascades.h"
-#include "ShadowLights.h"
-#include "SkyHeightPass.h"
+#include "passes/direct/ShadowCascades.h"
+#include "passes/direct/ShadowLights.h"
+#include "passes/lpv/SkyHeightPass.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // and one GL texture per image however many materials share it.
 #include "GlFixture.h"
 
-#include "MaterialGpu.h"
-#include "TextureGpu.h"
+#include "scenegpu/MaterialGpu.h"
+#include "scenegpu/TextureGpu.h"
 
 #include <algorithm>
 #include <vector>

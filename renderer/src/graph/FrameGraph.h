@@ -13,7 +13,7 @@
 // resources it reads (a written resource's version is its writer's key).
 // A pass is reused when its key equals the key of its last run. Passes that
 // update a resource in place form a chain: when one of them reruns, all do.
-#include "FrameContext.h"
+#include "frame/FrameContext.h"
 #include "graph/ResourceDesc.h"
 #include "lpv/renderer/FrameGraphReport.h"
 #include "lpv/renderer/SceneAnalysis.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The CPU reference of the LPV: injection, geometry volume, propagation and
 // lookup in plain C++ on small grids, exactly as docs/lpv.md writes them down.
-// Slow and simple on purpose: the GPU passes (renderer/src/LpvPass.*) are
+// Slow and simple on purpose: the GPU passes (renderer/src/passes/lpv/LpvPass.*) are
 // tested against it, variant by variant.
 #include "lpv/renderer/lpv/Sh.h"
 

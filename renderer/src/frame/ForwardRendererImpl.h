@@ -1,0 +1,183 @@
+#pragma once
+// ForwardRenderer's state between frames, and the frame as a graph of
+// passes (graph/FrameGraph.h). Each frame render() plans the indirect light
+// (which effects the scene calls for), declares the resources and passes
+// (FramePasses.cpp: shadows, shading, sun rays, exposure, tonemap;
+// IndirectPasses.cpp: RSMs, VPLs, sky, the LPV's stages, subsurface), then
+// compiles and executes the graph.
+#include "passes/direct/AutoExposurePass.h"
+#include "passes/lpv/EmissiveVplBuffer.h"
+#include "frame/FrameContext.h"
+#include "passes/lpv/LocalRsmPass.h"
+#include "passes/lpv/LpvPass.h"
+#include "passes/lpv/LpvSubsurfacePass.h"
+#include "scenegpu/MaterialGpu.h"
+#include "gl/ProgramCache.h"
+#include "passes/radiosity/RadiosityIndirectPass.h"
+#include "scenegpu/RenderSpace.h"
+#include "passes/lpv/RsmPass.h"
+#include "passes/direct/ShadowPass.h"
+#include "passes/lpv/SkyHeightPass.h"
+#include "passes/direct/SunRaysPass.h"
+#include "graph/ContentHash.h"
+#include "graph/FrameGraph.h"
+#include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/lpv/SceneGeometryVolume.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lpv::renderer {
+
+// What lighting a pass reads: every light's parameters but its name.
+inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& lights) {
+    h.add(lights.size());
+    for (const scene::Light& l : lights)
+        h.add(l.type).add(l.color).add(l.intensity).add(l.position).add(l.direction).add(l.range)
+            .add(l.innerConeAngle).add(l.outerConeAngle).add(l.castShadows).add(l.shape).add(l.size).add(l.radius)
+            .add(l.tangent).add(l.twoSided).add(l.unit);
+}
+
+// A graph pass's decision when no scene analysis stands behind it: it runs
+// (or does not) for the reason given.
+inline EffectDecision runsBecause(std::string why) {
+    EffectDecision d;
+    d.wanted = true;
+    d.reason = std::move(why);
+    return d;
+}
+inline EffectDecision skippedBecause(std::string why) {
+    EffectDecision d;
+    d.reason = std::move(why);
+    return d;
+}
+
+struct ForwardRenderer::Impl {
+    // The forward and tonemap programs, built at create(); their uniform locations looked up once.
+    ProgramCache programs;
+    // forward.frag with every feature, with and without the depth pre-pass:
+    // built at create() so a renderer that exists can shade. Frames use the
+    // variant with only the features they need (forwardVariant): on llvmpipe
+    // code that is compiled in but not taken still slows every pixel
+    // (docs/renderer.md).
+    const CachedProgram* forwardFull[2] = {};
+    std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
+    const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup,
+                                        bool radiosity);
+    const CachedProgram* depthPrepassProgram = nullptr;       // cuts alpha-masked holes
+    const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
+    const CachedProgram* tonemapProgram = nullptr;
+    std::optional<ShadowPass> shadows;
+    std::optional<RsmPass> rsm;
+    std::optional<LpvPass> lpv;
+    // Passes that run only when the scene calls for them are created on
+    // their first frame and dropped when culled: they hold no GPU memory then.
+    std::optional<SunRaysPass> sunRays;
+    std::optional<AutoExposurePass> exposure; // its result stays on the GPU
+    std::optional<SkyHeightPass> skyHeight;
+    std::optional<LpvSkyInput> skyInput; // the height map skyHeight last rendered
+    std::optional<LpvSubsurfacePass> subsurface;
+    std::optional<LocalRsmPass> localRsm;
+    std::optional<EmissiveVplBuffer> emissiveVpls;
+    std::optional<RadiosityIndirectPass> radiosityIndirect;
+    // gi.method = radiosity: the solution given (setBakedRadiosity), and a
+    // number that changes with it (part of the pass's reuse key).
+    std::shared_ptr<const radiosity::BakedSolution> baked;
+    std::uint64_t bakedGeneration = 0;
+    bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
+    // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
+    Buffer ltcTable;
+    // Seconds between this frame and the last, for the exposure's adaptation
+    // (nullopt: each frame is metered on its own, as `lpv render` does).
+    std::optional<double> exposureTimeStep;
+    // What the scene's geometry says (open sky...): rays are cast once per scene change.
+    std::optional<SceneTraits> traits;
+    // Bumped on every scene change: part of every reuse key.
+    std::uint64_t sceneGeneration = 0;
+    // The scene as the passes see it (RenderSpace.h), and its bounds there;
+    // worldBounds is scene.worldBounds() of sceneGeneration (it walks every vertex).
+    RenderSpace space;
+    scene::Bounds worldBounds;
+    scene::Bounds sceneBounds;
+    std::uint64_t sceneBoundsGeneration = ~std::uint64_t(0);
+    // Moves `world`'s objects, lights and sky into render space (per frame:
+    // lights change without a new generation) and updates the bounds.
+    const scene::Scene& enterRenderSpace(const scene::Scene& world);
+    mutable std::optional<LpvSnapshot> worldSnapshot; // lpvSnapshot() in world space
+    // The LPV fitted to the scene (LpvFit.h): this frame's fit, what it
+    // means for the light delivered, and the parameters every pass of the
+    // frame reads (the fit written in).
+    LpvFit lpvFit;
+    LpvDelivery lpvDelivery;
+    scene::ParameterSet frameParams;
+    std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
+    std::vector<EffectDecision> frameEffects;
+    bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass
+    std::unique_ptr<SceneGpu> sceneGpu;
+    std::unique_ptr<MaterialGpu> materialGpu;
+    GpuTimer timer;
+    graph::FrameGraph graph;
+    bool shadowCascadeTint = false; // the visualizers' view of the sun's shadow cascades
+    VertexArray emptyVao;
+    DrawListStats cameraStats;
+    // The camera G-buffer as the last frame left it: the geometry volume
+    // reads it before this frame's shading overwrites it.
+    bool gBufferValid = false;
+    LpvCameraInput previousCamera;
+    // The scene's geometry volume (lpv.geometrySource = scene), sampled on the
+    // CPU per object: an edit samples again only the objects it moved, hid or
+    // added; setScene empties it (other meshes). Each frame that recomputes
+    // the GV cuts the cascades' windows of it (sceneGeometry).
+    lpvref::SceneGvCache sceneGvCache;
+    LpvSceneGeometry sceneGeometry;
+    int width = 0, height = 0;
+    // Framebuffers around the graph's camera targets, rebuilt when it hands out others.
+    Framebuffer hdrFbo, displayFbo;
+    GLuint hdrFboDepth = 0, displayFboColor = 0;
+
+    // The indirect light this frame calls for, decided before the graph is built.
+    struct IndirectPlan {
+        bool lpvRuns = false;
+        std::string lpvOffReason;
+        bool sun = false;
+        EffectDecision local, emissive, sky, sss;
+        LpvSettings settings;
+        std::vector<LpvCascade> cascades;    // the LPV's: min(lpv.cascades, rsm.cascades)
+        std::vector<LpvCascade> rsmCascades; // the sun's RSM tiles': rsm.cascades, the LPV's first
+        bool cameraGv = false; // the geometry volume reads last frame's camera G-buffer
+        EffectDecision radiosity; // gi.method = radiosity with a solution: the baked indirect light
+    } plan;
+
+    // FramePasses.cpp
+    scene::Expected<void> checkSize(int w, int h) const;
+    void declareCameraTargets(const FrameContext& frame);
+    void declareShadows(const FrameContext& frame);
+    void declareShading(const FrameContext& frame);
+    void declarePost(const FrameContext& frame);
+    void renderDepthPrepass(graph::PassContext& ctx);
+    void renderForward(graph::PassContext& ctx, bool afterPrepass);
+    void renderTonemap(graph::PassContext& ctx, bool autoExposure);
+    void attachCameraTargets();
+    std::uint64_t cameraKey(const FrameContext& frame) const;
+
+    // IndirectPasses.cpp
+    scene::Expected<void> planIndirect(const FrameContext& frame);
+    void declareIndirect(const FrameContext& frame);
+    // Passes the graph culled free what they hold.
+    void releaseCulled();
+    LpvRsmInput rsmInput(const FrameContext& frame) const;
+    // This frame's cascades' windows of the scene's geometry volume, building it first if the scene changed.
+    const LpvSceneGeometry& sceneGeometryFor(const FrameContext& frame);
+    std::vector<LpvLocalInput> localInputs() const;
+    // After the depth pre-pass, whose depth it reads (`prepass`), before shading.
+    void declareBakedRadiosity(const FrameContext& frame, bool prepass);
+
+    // FrameDumps.cpp
+    std::vector<DebugImage> dump(const std::string& name) const;
+    std::vector<DebugImage> dumpResource(const std::string& name) const;
+    std::vector<std::string> dumpNames() const;
+};
+
+} // namespace lpv::renderer

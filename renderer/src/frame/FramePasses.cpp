@@ -1,0 +1,438 @@
+// The frame's direct-light passes as graph nodes: shadow maps, shading (the
+// forward pass that also writes the camera G-buffer), sun rays, exposure and
+// tonemapping, and the camera targets they share.
+#include "frame/ForwardRendererImpl.h"
+
+#include "passes/lpv/GlossyReflections.h"
+#include "lpv/renderer/AutoExposure.h"
+#include "lpv/renderer/DisplayMapping.h"
+#include "lpv/scene/AreaLight.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lpv::renderer {
+
+using scene::ErrorCode;
+using scene::makeError;
+using scene::Pass;
+
+namespace {
+
+constexpr int kMaxLights = 8;
+// The area lights' LTC table (area_light.glsl's LtcGgxTable): a storage
+// buffer, as the fragment stage has no sampler left for it.
+constexpr GLuint kLtcTableBinding = 3;
+
+// An enum parameter's position among its registry values: the shaders'
+// numbering follows the registry's order. A value the registry does not
+// list is a programming error, not a default.
+int enumIndex(const scene::ParameterSet& params, const char* key, std::initializer_list<const char*> shaderOrder) {
+    const std::string value = params.getEnum(key);
+    int i = 0;
+    for (const char* name : shaderOrder) {
+        if (value == name)
+            return i;
+        ++i;
+    }
+    throw std::logic_error(std::string(key) + " = '" + value + "' has no shader index");
+}
+
+// output.view as forward.frag's uOutputView.
+int outputViewIndex(const scene::ParameterSet& params) {
+    return enumIndex(params, "output.view", {"final", "indirect", "direct"});
+}
+
+int tonemapperIndex(const scene::ParameterSet& params) {
+    return enumIndex(params, "output.tonemapper", {"aces", "reinhard", "uncharted2", "linear", "neutral"});
+}
+
+// Uniform names of light i, built once (not per frame).
+struct LightUniformNames {
+    std::string type, radiant, position, direction, range, cosCone, halfU, halfV, areaShape, twoSided;
+};
+const LightUniformNames& lightNames(int i) {
+    static const std::vector<LightUniformNames> names = [] {
+        std::vector<LightUniformNames> all;
+        for (int k = 0; k < kMaxLights; ++k) {
+            const std::string idx = "[" + std::to_string(k) + "]";
+            all.push_back({"uLightType" + idx, "uLightRadiantColor" + idx, "uLightPosition" + idx,
+                           "uLightDirection" + idx, "uLightRange" + idx, "uLightCosCone" + idx, "uLightHalfU" + idx,
+                           "uLightHalfV" + idx, "uLightAreaShape" + idx, "uLightTwoSided" + idx});
+        }
+        return all;
+    }();
+    return names[std::size_t(i)];
+}
+
+void setLightUniforms(const CachedProgram& shader, const scene::Scene& scene) {
+    const GLuint fp = shader.id();
+    const int lightCount = std::min<int>(int(scene.lights.size()), kMaxLights);
+    glProgramUniform1i(fp, shader.uniform("uLightCount"), lightCount);
+    for (int i = 0; i < lightCount; ++i) {
+        const scene::Light& l = scene.lights[std::size_t(i)];
+        const LightUniformNames& n = lightNames(i);
+        glProgramUniform1i(fp, shader.uniform(n.type), int(l.type));
+        if (l.type == scene::LightType::Area) {
+            const scene::AreaLightFrame f = scene::areaLightFrame(l);
+            const glm::vec3 radiance = scene::areaLightRadiance(l);
+            glProgramUniform3fv(fp, shader.uniform(n.radiant), 1, glm::value_ptr(radiance));
+            glProgramUniform3fv(fp, shader.uniform(n.position), 1, glm::value_ptr(f.center));
+            glProgramUniform3fv(fp, shader.uniform(n.direction), 1, glm::value_ptr(f.normal));
+            glProgramUniform3fv(fp, shader.uniform(n.halfU), 1, glm::value_ptr(f.halfU));
+            glProgramUniform3fv(fp, shader.uniform(n.halfV), 1, glm::value_ptr(f.halfV));
+            glProgramUniform1i(fp, shader.uniform(n.areaShape), l.shape == scene::AreaShape::Disc ? 1 : 0);
+            glProgramUniform1i(fp, shader.uniform(n.twoSided), l.twoSided ? 1 : 0);
+            continue;
+        }
+        const glm::vec3 radiant = l.color * l.intensity;
+        glProgramUniform3fv(fp, shader.uniform(n.radiant), 1, glm::value_ptr(radiant));
+        glProgramUniform3fv(fp, shader.uniform(n.position), 1, glm::value_ptr(l.position));
+        glProgramUniform3fv(fp, shader.uniform(n.direction), 1, glm::value_ptr(l.direction));
+        glProgramUniform1f(fp, shader.uniform(n.range), l.range);
+        glProgramUniform2f(fp, shader.uniform(n.cosCone), std::cos(l.outerConeAngle),
+                           std::cos(std::min(l.innerConeAngle, l.outerConeAngle - 1e-3f)));
+    }
+}
+
+graph::ResourceDesc target2D(GLenum format, int w, int h) {
+    return {graph::ResourceKind::Texture2D, format, w, h};
+}
+
+} // namespace
+
+scene::Expected<void> ForwardRenderer::Impl::checkSize(int w, int h) const {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (w <= 0 || h <= 0 || w > maxSize || h > maxSize)
+        return makeError(ErrorCode::OutOfRange, "render", "size",
+                         std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(maxSize) +
+                             " (GL_MAX_TEXTURE_SIZE)");
+    return {};
+}
+
+std::uint64_t ForwardRenderer::Impl::cameraKey(const FrameContext& frame) const {
+    graph::ContentHash h;
+    h.add(sceneGeneration).add(frame.viewProj).add(frame.camera.position).add(frame.width).add(frame.height);
+    addLights(h, frame.scene.lights);
+    return h.value();
+}
+
+void ForwardRenderer::Impl::declareCameraTargets(const FrameContext& frame) {
+    const int w = frame.width, h = frame.height;
+    if (w != width || h != height)
+        gBufferValid = false; // the new targets hold nothing yet
+    width = w;
+    height = h;
+    // Last frame's G-buffer, as the geometry volume reads it: named by the camera and scene it shows.
+    const std::uint64_t gBufferVersion =
+        gBufferValid ? graph::ContentHash().add(previousCamera.inverseViewProj).add(gBufferSceneGeneration).value() : 0;
+    using graph::Lifetime;
+    graph.createResource("camera.hdr", target2D(GL_RGBA16F, w, h), Lifetime::History);
+    graph.createResource("camera.normal", target2D(GL_RGBA16F, w, h), Lifetime::History, gBufferVersion);
+    graph.createResource("camera.albedo", target2D(GL_RGBA8, w, h), Lifetime::History);
+    graph.createResource("camera.depth", target2D(GL_DEPTH_COMPONENT32F, w, h), Lifetime::History, gBufferVersion);
+    graph.createResource("display", target2D(GL_RGBA8, w, h), Lifetime::History);
+}
+
+void ForwardRenderer::Impl::attachCameraTargets() {
+    const GLuint depth = graph.resourceId("camera.depth");
+    if (depth != hdrFboDepth) {
+        hdrFbo = createFramebuffer();
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT0, graph.resourceId("camera.hdr"), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT1, graph.resourceId("camera.normal"), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT2, graph.resourceId("camera.albedo"), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_DEPTH_ATTACHMENT, depth, 0);
+        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glNamedFramebufferDrawBuffers(hdrFbo.id(), 3, buffers);
+        hdrFboDepth = depth;
+    }
+    const GLuint display = graph.resourceId("display");
+    if (display != displayFboColor) {
+        displayFbo = createFramebuffer();
+        glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display, 0);
+        displayFboColor = display;
+    }
+}
+
+void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
+    graph.importResource("shadowMaps", [this] {
+        const GLuint id = shadows->primaryMap();
+        return graph::ImportedView{id, graph::queryTexture(id)};
+    });
+    graph::PassSpec p;
+    p.id = Pass::ShadowMaps;
+    p.decision = runsBecause("direct light is shadowed");
+    p.writes = {"shadowMaps"};
+    // What the maps are drawn from besides the cascades' matrices: a cascade
+    // whose snapped matrix did not move keeps its layer (ShadowPass).
+    graph::ContentHash content;
+    content.add(sceneGeneration);
+    addLights(content, frame.scene.lights);
+    for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws",
+                            "shadow.farCascadeInterval"})
+        content.add(frame.params.get(key));
+    // The sun's cascades follow the camera; stale far cascades
+    // (shadow.farCascadeInterval) still have to be redrawn when it stops.
+    // Spot and point maps do not depend on the camera: without a shadowed
+    // sun, turning the camera keeps them.
+    p.inputsKey = selectShadowLights(frame.scene).sun >= 0
+                      ? graph::ContentHash().add(cameraKey(frame)).add(shadows->refreshKey()).value()
+                      : content.value();
+    // lpv.reuse = false (the benchmarks) draws every cascade every frame.
+    const std::uint64_t layersKey = frame.params.getBool("lpv.reuse") ? content.value() : 0;
+    p.execute = [this, key = layersKey](graph::PassContext& ctx) {
+        return shadows->render(ctx.frame, *sceneGpu, *materialGpu, key);
+    };
+    graph.addPass(std::move(p));
+}
+
+void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
+    const bool prepass = frame.params.getBool("output.depthPrepass");
+    {
+        graph::PassSpec p;
+        p.id = Pass::DepthPrepass;
+        p.decision = prepass ? runsBecause("output.depthPrepass is on: shading lights each visible pixel once")
+                             : skippedBecause("output.depthPrepass is off");
+        p.writes = {"camera.depth"};
+        p.execute = [this](graph::PassContext& ctx) {
+            attachCameraTargets();
+            renderDepthPrepass(ctx);
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    declareBakedRadiosity(frame, prepass);
+    graph::PassSpec p;
+    p.id = Pass::Shading;
+    p.decision = runsBecause("the image");
+    p.final = true;
+    p.reads = {"shadowMaps"};
+    if (prepass)
+        p.reads.push_back("camera.depth");
+    if (plan.lpvRuns)
+        p.reads.push_back("lpv.accumulator");
+    if (plan.lpvRuns && plan.sss.runs())
+        p.reads.push_back("subsurface.accumulator");
+    if (plan.radiosity.runs())
+        p.reads.push_back("radiosity.incident");
+    p.writes = {"camera.hdr", "camera.normal", "camera.albedo"};
+    if (!prepass)
+        p.writes.push_back("camera.depth");
+    // Glossy reflections march through the LPV inside this pass.
+    if (!traits)
+        traits = analyseSceneTraits(frame.scene);
+    frameEffects.push_back(decideGlossyReflections(*traits, frame.params, plan.lpvRuns,
+                                                   plan.lpvRuns ? "" : "LPV: off (" + plan.lpvOffReason + ")"));
+    glossyRuns = frameEffects.back().runs();
+    p.execute = [this, prepass](graph::PassContext& ctx) {
+        attachCameraTargets();
+        renderForward(ctx, prepass);
+        return scene::Expected<void>{};
+    };
+    graph.addPass(std::move(p));
+}
+
+void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
+    const FrameContext& frame = ctx.frame;
+    glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
+    glViewport(0, 0, frame.width, frame.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    // Opaque and masked surfaces only: blended ones neither hide nor write
+    // depth. Opaque ones through the program that never discards, so their
+    // depth is tested early (on llvmpipe a discard defers it).
+    const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    std::vector<const DrawItem*> opaque, masked;
+    for (const DrawItem* d : items)
+        if (d->bucket != DrawBucket::Blended)
+            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    for (const auto& [shader, list] : {std::pair{depthPrepassOpaqueProgram, &opaque}, std::pair{depthPrepassProgram, &masked}}) {
+        if (list->empty())
+            continue;
+        const GLuint program = shader->id();
+        glUseProgram(program);
+        glProgramUniformMatrix4fv(program, shader->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        sceneGpu->draw(program, *list, [&](std::uint32_t m) { materialGpu->bind(program, m, MaterialBindMode::Coverage); });
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy,
+                                                           bool subsurfaceLookup, bool radiosity) {
+    ProgramVariant variant{{"forward.vert", "forward.frag"}, forwardDefines};
+    if (std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) { return l.type == scene::LightType::Area; }))
+        variant.defines.push_back("LPV_AREA_LIGHTS 1");
+    if (!shadows->hasLocalShadows())
+        variant.defines.push_back("LPV_NO_LOCAL_SHADOWS 1");
+    if (!lpv->visibilityBound())
+        variant.defines.push_back("LPV_NO_VISIBILITY 1");
+    if (!glossy)
+        variant.defines.push_back("LPV_NO_GLOSSY 1");
+    if (!subsurfaceLookup)
+        variant.defines.push_back("LPV_NO_SUBSURFACE_LOOKUP 1");
+    if (afterPrepass)
+        variant.defines.push_back("LPV_AFTER_DEPTH_PREPASS 1");
+    // The baked solution's light in place of the LPV's (which it compiles out).
+    if (radiosity)
+        variant.defines.push_back("LPV_RADIOSITY 1");
+    // Built on first use (a few hundred ms on llvmpipe); the full shader,
+    // built at create(), shades the same image should a variant not build.
+    auto program = programs.get(variant);
+    return program ? **program : *forwardFull[afterPrepass ? 1 : 0];
+}
+
+void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPrepass) {
+    const FrameContext& frame = ctx.frame;
+    // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
+    const bool radiosity = plan.radiosity.runs();
+    const CachedProgram& shader =
+        forwardVariant(frame, afterPrepass, glossyRuns, subsurface && lpv->active(), radiosity);
+    const GLuint fp = shader.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
+    glViewport(0, 0, frame.width, frame.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(afterPrepass ? GL_LEQUAL : GL_LESS);
+    glDepthMask(afterPrepass ? GL_FALSE : GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    const int view = outputViewIndex(frame.params);
+    // The indirect view's background is no light, not the sky colour.
+    const glm::vec3 sky = view == 1 ? glm::vec3(0.0f) : frame.scene.sky.color * frame.scene.sky.intensity;
+    const float background[] = {sky.r, sky.g, sky.b, 1.0f};
+    const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 0, background);
+    glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(hdrFbo.id(), GL_COLOR, 2, zero);
+    if (!afterPrepass)
+        glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(fp);
+    glProgramUniformMatrix4fv(fp, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+    glProgramUniform3fv(fp, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+    glProgramUniform1i(fp, shader.uniform("uOutputView"), view);
+    setLightUniforms(shader, frame.scene);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLtcTableBinding, ltcTable.id());
+    // Texture units come from the graph, around the units MaterialGpu binds per draw.
+    const UnitAllocator nextUnit = [&ctx] { return ctx.allocateUnit(); };
+    shadows->bindForShading(shader, frame, nextUnit);
+    lpv->bindForShading(shader, frame.params, nextUnit);
+    if (subsurface && lpv->active())
+        subsurface->bindForShading(shader, ctx.allocateUnit());
+    else if (subsurfaceSampler)
+        LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
+    bindGlossyReflections(shader, frame.params, glossyRuns);
+    if (radiosity)
+        ctx.bindTexture(fp, shader.uniform("uRadiosityIncident"), "radiosity.incident");
+    glProgramUniform1i(fp, shader.uniform("uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
+    const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
+    // Opaque and masked items first; blended ones (sorted last, back to
+    // front) over them with depth test but no depth write, and without
+    // touching the G-buffer (it describes the opaque surface behind).
+    const auto firstBlended = std::ranges::find_if(items, [](const DrawItem* d) { return d->bucket == DrawBucket::Blended; });
+    const std::vector<const DrawItem*> solid(items.begin(), firstBlended), blended(firstBlended, items.end());
+    sceneGpu->draw(fp, solid, [&](std::uint32_t m) { materialGpu->bind(fp, m, MaterialBindMode::Full); });
+    if (!blended.empty()) {
+        glDepthMask(GL_FALSE);
+        glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glEnablei(GL_BLEND, 0);
+        sceneGpu->draw(fp, blended, [&](std::uint32_t m) {
+            materialGpu->bind(fp, m, MaterialBindMode::Full);
+            // forward.frag writes premultiplied colour: "over" or additive.
+            glBlendFunci(0, GL_ONE, materialGpu->additive(m) ? GL_ONE : GL_ONE_MINUS_SRC_ALPHA);
+        });
+        glDisablei(GL_BLEND, 0);
+        glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+}
+
+void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
+    // Sun rays: added to the HDR image through a half-resolution transient target.
+    frameEffects.push_back(decideSunRays(frame.scene, frame.params, &frame.camera, float(frame.width) / float(frame.height)));
+    {
+        graph.createResource("sunRays.occlusion", SunRaysPass::occlusionTarget(frame.width, frame.height),
+                             graph::Lifetime::Transient);
+        graph::PassSpec p;
+        p.id = Pass::SunRays;
+        p.decision = frameEffects.back();
+        p.reads = {"camera.depth", "camera.hdr"};
+        p.writes = {"camera.hdr", "sunRays.occlusion"};
+        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
+            if (!sunRays) {
+                auto created = SunRaysPass::create();
+                if (!created)
+                    return std::unexpected(created.error());
+                sunRays.emplace(std::move(*created));
+            }
+            sunRays->render(ctx.frame, ctx.id("camera.depth"), ctx.id("camera.hdr"), ctx.id("sunRays.occlusion"),
+                            *sunOf(ctx.frame.scene));
+            return {};
+        };
+        graph.addPass(std::move(p));
+    }
+    const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
+    if (!autoExposure)
+        exposure->reset(); // back on auto, the exposure starts from its target
+    graph.importResource("exposure", [this] {
+        const GLuint id = exposure->exposureBuffer();
+        return graph::ImportedView{id, graph::queryBuffer(id)};
+    });
+    {
+        graph::PassSpec p;
+        p.id = Pass::Exposure;
+        p.decision = autoExposure ? runsBecause("output.exposureMode is auto")
+                                  : skippedBecause("output.exposureMode is manual");
+        p.reads = {"camera.hdr"};
+        p.writes = {"exposure"};
+        p.execute = [this](graph::PassContext& ctx) {
+            const FrameContext& f = ctx.frame;
+            const double blend =
+                exposureTimeStep ? adaptationBlend(*exposureTimeStep, f.params.getFloat("output.exposureAdaptation")) : 1.0;
+            exposure->meter(ctx.id("camera.hdr"), f.width, f.height, meterTargetOf(f.params), float(blend));
+            return scene::Expected<void>{};
+        };
+        graph.addPass(std::move(p));
+    }
+    graph::PassSpec p;
+    p.id = Pass::Tonemap;
+    p.decision = runsBecause("the display image");
+    p.final = true;
+    p.reads = {"camera.hdr"};
+    if (autoExposure)
+        p.reads.push_back("exposure");
+    p.writes = {"display"};
+    p.execute = [this, autoExposure](graph::PassContext& ctx) {
+        attachCameraTargets();
+        renderTonemap(ctx, autoExposure);
+        return scene::Expected<void>{};
+    };
+    graph.addPass(std::move(p));
+}
+
+void ForwardRenderer::Impl::renderTonemap(graph::PassContext& ctx, bool autoExposure) {
+    const FrameContext& frame = ctx.frame;
+    const CachedProgram& shader = *tonemapProgram;
+    const GLuint tp = shader.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, displayFbo.id());
+    glViewport(0, 0, frame.width, frame.height);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(tp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure->exposureBuffer());
+    glProgramUniform1i(tp, shader.uniform("uAutoExposure"), autoExposure ? 1 : 0);
+    glProgramUniform1f(tp, shader.uniform("uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
+    glProgramUniform1i(tp, shader.uniform("uOperator"), tonemapperIndex(frame.params));
+    ctx.bindTexture(tp, shader.uniform("uHdr"), "camera.hdr");
+    glBindVertexArray(emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+} // namespace lpv::renderer

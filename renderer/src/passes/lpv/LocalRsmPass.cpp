@@ -1,0 +1,207 @@
+#include "passes/lpv/LocalRsmPass.h"
+
+#include "gl/GpuMemoryLedger.h"
+#include "lpv/scene/AreaLight.h"
+
+#include "passes/direct/ShadowLights.h"
+#include "lpv/renderer/DrawList.h"
+#include "lpv/renderer/ShaderLibrary.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace lpv::renderer {
+
+using scene::ErrorCode;
+using scene::makeError;
+
+namespace {
+
+constexpr std::size_t kBytesPerTexel = 16 + 8 + 16 + 4; // position, normal, flux, depth (as RsmPass)
+
+Texture makeArray(GLenum format, int size, int layers) {
+    Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(t.id(), 1, format, size, size, layers);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+// The axis of each face of a point light's cube, in pointShadowView's order; a spot's is its direction.
+constexpr glm::vec3 kCubeAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+} // namespace
+
+std::vector<int> selectInjectedLocalLights(const scene::Scene& scene) {
+    std::vector<int> out;
+    for (int i = 0; i < int(scene.lights.size()) && i < kMaxShadedLights; ++i) {
+        const scene::Light& l = scene.lights[std::size_t(i)];
+        if (l.type == scene::LightType::Directional || l.intensity <= 0.0f)
+            continue;
+        if (int(out.size()) < kMaxInjectedLocalLights)
+            out.push_back(i);
+    }
+    return out;
+}
+
+scene::Expected<LocalRsmPass> LocalRsmPass::create() {
+    LocalRsmPass pass;
+    // One face per draw (a single layer attached), so rsm.geom runs one invocation.
+    auto program = buildEmbeddedProgram({"rsm.vert", "rsm.geom", "rsm_local.frag"}, {"RSM_TILES 1"});
+    if (!program)
+        return std::unexpected(program.error());
+    pass.program_ = std::move(*program);
+    return pass;
+}
+
+std::size_t LocalRsmPass::allocatedBytes() const {
+    return std::size_t(size_) * std::size_t(size_) * std::size_t(layers_) * kBytesPerTexel;
+}
+
+void LocalRsmPass::release() {
+    fbo_.reset();
+    position_.reset();
+    normal_.reset();
+    flux_.reset();
+    depth_.reset();
+    size_ = layers_ = lights_ = 0;
+}
+
+scene::Expected<void> LocalRsmPass::ensureTargets(int size, int layers) {
+    if (size == size_ && layers == layers_)
+        return {};
+    release();
+    GLint maxLayers = 0, maxSize = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (size > maxSize || layers > maxLayers)
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.localRsmSize",
+                         std::to_string(layers) + " local RSM faces of " + std::to_string(size) +
+                             "^2 exceed GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) +
+                             " or GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(maxLayers));
+    while (glGetError() == GL_OUT_OF_MEMORY) {
+    } // an earlier failure must not be blamed on these targets
+    position_ = makeArray(GL_RGBA32F, size, layers);
+    normal_ = makeArray(GL_RGBA16F, size, layers);
+    // 32-bit: a texel's flux (W) goes with its area, so it spans the
+    // square of the scene's unit; half floats lost a 2 cm box's light
+    // (below 6e-8 W) and would overflow a kilometre scene's (issue #41).
+    flux_ = makeArray(GL_RGBA32F, size, layers);
+    depth_ = makeArray(GL_DEPTH_COMPONENT32F, size, layers);
+    fbo_ = createFramebuffer();
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
+    if (glGetError() == GL_OUT_OF_MEMORY) {
+        release();
+        return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.localRsmSize",
+                         "the GPU ran out of memory allocating " + std::to_string(layers) +
+                             " local RSM faces of " + std::to_string(size) + "^2");
+    }
+    size_ = size;
+    layers_ = layers;
+    return {};
+}
+
+scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const SceneGpu& geometry,
+                                           const MaterialGpu& materials, int size) {
+    const std::vector<int> lights = selectInjectedLocalLights(frame.scene);
+    int layers = 0;
+    for (int i : lights)
+        layers += frame.scene.lights[std::size_t(i)].type == scene::LightType::Spot ? 1 : 6;
+    if (layers == 0) {
+        release();
+        return {};
+    }
+    if (auto ok = ensureTargets(size, layers); !ok)
+        return ok;
+    lights_ = int(lights.size());
+
+    const GLuint p = program_.id();
+    auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
+    const scene::Bounds bounds = frame.sceneBounds;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size, size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE); // lights see single-sided walls from either side
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glUseProgram(p);
+    int layer = 0;
+    for (int index : lights) {
+        const scene::Light& light = frame.scene.lights[std::size_t(index)];
+        const bool spot = light.type == scene::LightType::Spot;
+        const LocalShadowView view = spot ? spotShadowView(light, bounds) : pointShadowView(light, bounds);
+        // The texel's area on the image plane at distance 1 (rsm_local.frag's derivation).
+        const float texel = 2.0f * view.tanHalfFov / float(size);
+        const float texelArea = texel * texel;
+        const glm::vec3 spotDirection = glm::normalize(light.direction);
+        // An area light is seen from its centre as a point of intensity L A cos(theta) (rsm_local.frag).
+        const bool area = light.type == scene::LightType::Area;
+        const glm::vec3 radiant =
+            area ? scene::areaLightRadiance(light) * scene::areaLightArea(light) : light.color * light.intensity;
+        glProgramUniform1i(p, loc("uArea"), area ? 1 : 0);
+        glProgramUniform1i(p, loc("uTwoSided"), light.twoSided ? 1 : 0);
+        glProgramUniform1fv(p, loc("uTexelArea"), 1, &texelArea);
+        glProgramUniform3fv(p, loc("uLightPosition"), 1, glm::value_ptr(light.position));
+        glProgramUniform3fv(p, loc("uSpotDirection"), 1, glm::value_ptr(spotDirection));
+        glProgramUniform1i(p, loc("uSpot"), spot ? 1 : 0);
+        glProgramUniform2f(p, loc("uCosCone"), std::cos(light.outerConeAngle),
+                           std::cos(std::min(light.innerConeAngle, light.outerConeAngle - 1e-3f)));
+        glProgramUniform1f(p, loc("uRange"), light.range);
+        glProgramUniform3fv(p, loc("uRadiantIntensity"), 1, glm::value_ptr(radiant));
+        for (int face = 0; face < view.faces; ++face, ++layer) {
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, position_.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT2, flux_.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
+            const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+            const float farDepth = 1.0f;
+            for (GLint b = 0; b < 3; ++b)
+                glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
+            glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
+            const glm::mat4& viewProj = view.viewProj[std::size_t(face)];
+            const glm::vec3 axis = spot ? spotDirection : kCubeAxes[face];
+            glProgramUniformMatrix4fv(p, loc("uTileViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
+            glProgramUniform3fv(p, loc("uFaceAxis"), 1, glm::value_ptr(axis));
+            const auto items = buildDrawList(geometry.draws(), viewProj, light.position);
+            geometry.draw(p, items,
+                          [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return {};
+}
+
+std::vector<DebugImage> LocalRsmPass::debugImages() const {
+    std::vector<DebugImage> images;
+    const std::size_t row = std::size_t(size_) * 4;
+    const std::pair<const char*, GLuint> targets[] = {
+        {"position", position_.id()}, {"normal", normal_.id()}, {"flux", flux_.id()}};
+    for (int layer = 0; layer < layers_; ++layer)
+        for (const auto& [what, texture] : targets) {
+            DebugImage image{"localrsm-" + std::to_string(layer) + "-" + what, size_, size_, 4, {}};
+            std::vector<float> raw(row * std::size_t(size_));
+            glGetTextureSubImage(texture, 0, 0, 0, layer, size_, size_, 1, GL_RGBA, GL_FLOAT,
+                                 GLsizei(raw.size() * sizeof(float)), raw.data());
+            image.pixels.resize(raw.size());
+            for (int y = 0; y < size_; ++y) // GL rows bottom to top, DebugImage top to bottom
+                std::copy_n(raw.begin() + std::ptrdiff_t(std::size_t(size_ - 1 - y) * row), row,
+                            image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row));
+            images.push_back(std::move(image));
+        }
+    return images;
+}
+
+void LocalRsmPass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    ledger.addTexture("localRsm.position", position_.id());
+    ledger.addTexture("localRsm.normal", normal_.id());
+    ledger.addTexture("localRsm.flux", flux_.id());
+    ledger.addTexture("localRsm.depth", depth_.id());
+}
+
+} // namespace lpv::renderer
