@@ -28,14 +28,7 @@ class QThread;
 
 namespace lpv::editor {
 
-// The display mapping lives in the renderer (Qt-free); the editor names it unqualified.
-using renderer::DisplayMapping;
-using renderer::mapToDisplay;
-using renderer::meteredMapping;
-using renderer::ReferenceMapping;
-using renderer::Tonemapper;
-using renderer::tonemapImage;
-using renderer::tonemapperOf;
+// The display mapping's names (DisplayMapping, tonemapImage...) come unqualified from LiveReference.h.
 
 class Document;
 class Viewport;

@@ -110,37 +110,34 @@ void Document::setAllParameters(const scene::ParameterSet& values, const QString
     undoStack_->push(new AllParametersCommand(this, project_.parameters, values, text));
 }
 
-void Document::setObject(int index, const scene::Object& object, const QString& text) {
-    const scene::Object& before = project_.scene.objects.at(std::size_t(index));
-    if (before == object || refuses(scene::checkObject(object), tr("Object")))
+template <class T>
+void Document::setElement(std::vector<T> scene::Scene::*member, int index, const T& after,
+                          const std::optional<scene::ValueProblem>& problem, const QString& what, Changes changes,
+                          const QString& text) {
+    const T& before = (project_.scene.*member).at(std::size_t(index));
+    if (before == after || refuses(problem, what))
         return;
+    undoStack_->push(new ElementCommand<T>(this, member, index, before, after, changes, text));
+}
+
+void Document::setObject(int index, const scene::Object& object, const QString& text) {
     // A parent change alters world matrices of children: still only transforms.
-    undoStack_->push(new ElementCommand<scene::Object>(this, &scene::Scene::objects, index, before, object,
-                                                       Change::Transforms, text));
+    setElement(&scene::Scene::objects, index, object, scene::checkObject(object), tr("Object"), Change::Transforms,
+               text);
 }
 
 void Document::setMaterial(int index, const scene::Material& material, const QString& text) {
-    const scene::Material& before = project_.scene.materials.at(std::size_t(index));
-    if (before == material || refuses(scene::checkMaterial(material), tr("Material")))
-        return;
-    undoStack_->push(new ElementCommand<scene::Material>(this, &scene::Scene::materials, index, before, material,
-                                                         Change::Materials, text));
+    setElement(&scene::Scene::materials, index, material, scene::checkMaterial(material), tr("Material"),
+               Change::Materials, text);
 }
 
 void Document::setLight(int index, const scene::Light& light, const QString& text) {
-    const scene::Light& before = project_.scene.lights.at(std::size_t(index));
-    if (before == light || refuses(scene::checkLight(light), tr("Light")))
-        return;
-    undoStack_->push(
-        new ElementCommand<scene::Light>(this, &scene::Scene::lights, index, before, light, Change::Lights, text));
+    setElement(&scene::Scene::lights, index, light, scene::checkLight(light), tr("Light"), Change::Lights, text);
 }
 
 void Document::setCamera(int index, const scene::Camera& camera, const QString& text) {
-    const scene::Camera& before = project_.scene.cameras.at(std::size_t(index));
-    if (before == camera || refuses(scene::checkCamera(camera), tr("Camera")))
-        return;
-    undoStack_->push(
-        new ElementCommand<scene::Camera>(this, &scene::Scene::cameras, index, before, camera, Change::Cameras, text));
+    setElement(&scene::Scene::cameras, index, camera, scene::checkCamera(camera), tr("Camera"), Change::Cameras,
+               text);
 }
 
 void Document::setCameraPath(int index, const scene::CameraPath& path, const QString& text) {

@@ -119,6 +119,11 @@ signals:
 
   private:
     bool refuses(const std::optional<scene::ValueProblem>& problem, const QString& what);
+    // One undoable edit of scene.*member[index], unless it changes nothing or `problem` refuses it.
+    template <class T>
+    void setElement(std::vector<T> scene::Scene::*member, int index, const T& after,
+                    const std::optional<scene::ValueProblem>& problem, const QString& what, Changes changes,
+                    const QString& text);
 
     scene::Project project_;
     QString path_;

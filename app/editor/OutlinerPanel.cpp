@@ -256,6 +256,19 @@ void OutlinerPanel::deleteSelected() {
     document_->select({});
 }
 
+namespace {
+
+// Appends a copy of items[i] named "<name> copy"; returns its index.
+template <class Item>
+int appendCopy(std::vector<Item>& items, int i) {
+    Item copy = items[std::size_t(i)];
+    copy.name += " copy";
+    items.push_back(copy);
+    return int(items.size()) - 1;
+}
+
+} // namespace
+
 void OutlinerPanel::duplicateSelected() {
     const Selection sel = document_->selection();
     const int i = sel.index;
@@ -263,28 +276,16 @@ void OutlinerPanel::duplicateSelected() {
     switch (sel.kind) {
     case Selection::Kind::Object:
         // The copy shares the mesh (no new geometry) and gets the same parent; children are not copied.
-        document_->editScene(tr("Duplicate object"), Change::Structure, [i, &created](scene::Scene& s) {
-            scene::Object copy = s.objects[std::size_t(i)];
-            copy.name += " copy";
-            s.objects.push_back(copy);
-            created = int(s.objects.size()) - 1;
-        });
+        document_->editScene(tr("Duplicate object"), Change::Structure,
+                             [i, &created](scene::Scene& s) { created = appendCopy(s.objects, i); });
         break;
     case Selection::Kind::Light:
-        document_->editScene(tr("Duplicate light"), Change::Lights, [i, &created](scene::Scene& s) {
-            scene::Light copy = s.lights[std::size_t(i)];
-            copy.name += " copy";
-            s.lights.push_back(copy);
-            created = int(s.lights.size()) - 1;
-        });
+        document_->editScene(tr("Duplicate light"), Change::Lights,
+                             [i, &created](scene::Scene& s) { created = appendCopy(s.lights, i); });
         break;
     case Selection::Kind::Camera:
-        document_->editScene(tr("Duplicate camera"), Change::Cameras, [i, &created](scene::Scene& s) {
-            scene::Camera copy = s.cameras[std::size_t(i)];
-            copy.name += " copy";
-            s.cameras.push_back(copy);
-            created = int(s.cameras.size()) - 1;
-        });
+        document_->editScene(tr("Duplicate camera"), Change::Cameras,
+                             [i, &created](scene::Scene& s) { created = appendCopy(s.cameras, i); });
         break;
     default: return;
     }

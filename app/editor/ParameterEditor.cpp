@@ -16,6 +16,21 @@
 #include <cmath>
 
 namespace lpv::editor {
+
+template <class SpinBox>
+void ParameterEditor::placeNumberBox(SpinBox* spin, const QString& unit, bool afterSlider) {
+    if (!unit.isEmpty())
+        spin->setSuffix(" " + unit);
+    // Typed numbers take effect on Enter: "2048" must not rebuild the shadow
+    // maps at 2, 20 and 204 on the way. Arrows, wheel and slider act at once.
+    spin->setKeyboardTracking(false);
+    spin->setAlignment(Qt::AlignRight);
+    guardWheel(spin);
+    if (!afterSlider)
+        row()->addStretch(1);
+    row()->addWidget(spin);
+}
+
 namespace {
 
 using scene::ParameterInfo;
@@ -97,16 +112,7 @@ class IntEditor final : public ParameterEditor {
         }
         spin_ = new QSpinBox(this);
         spin_->setRange(lo, hi);
-        if (const QString unit = parameterUnit(info); !unit.isEmpty())
-            spin_->setSuffix(" " + unit);
-        // Typed numbers take effect on Enter: "2048" must not rebuild the shadow
-        // maps at 2, 20 and 204 on the way. Arrows, wheel and slider act at once.
-        spin_->setKeyboardTracking(false);
-        spin_->setAlignment(Qt::AlignRight);
-        guardWheel(spin_);
-        if (!slider_)
-            row()->addStretch(1);
-        row()->addWidget(spin_);
+        placeNumberBox(spin_, parameterUnit(info), slider_ != nullptr);
         finishLayout();
 
         connect(spin_, &QSpinBox::valueChanged, this, [this](int v) {
@@ -158,14 +164,7 @@ class FloatEditor final : public ParameterEditor {
             spin_->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
         else
             spin_->setSingleStep(linearStep(info));
-        if (const QString unit = parameterUnit(info); !unit.isEmpty())
-            spin_->setSuffix(" " + unit);
-        spin_->setKeyboardTracking(false);
-        spin_->setAlignment(Qt::AlignRight);
-        guardWheel(spin_);
-        if (!slider_)
-            row()->addStretch(1);
-        row()->addWidget(spin_);
+        placeNumberBox(spin_, parameterUnit(info), slider_ != nullptr);
         // A word besides numbers (lpv.cellSize's "auto": the renderer fits
         // it): a check box; while it is on the number is not used.
         if (!info.enumValues.empty()) {

@@ -66,6 +66,10 @@ class ParameterEditor : public QWidget {
     // Wheel events reach `w` only once it has focus, so scrolling the
     // inspector does not change values under the mouse.
     void guardWheel(QWidget* w);
+    // A number box (QSpinBox or QDoubleSpinBox) as every numeric editor shows
+    // it: its unit, right-aligned, after its slider or pushed to the right.
+    template <class SpinBox>
+    void placeNumberBox(SpinBox* spin, const QString& unit, bool afterSlider);
 
   private:
     void resetClicked();

@@ -424,6 +424,16 @@ std::optional<glm::vec3> Viewport::gizmoPivot() const {
     return glm::vec3(world[3]);
 }
 
+std::function<std::optional<QPointF>(const glm::vec3&)> Viewport::screenProjection(const scene::Camera& camera) const {
+    const glm::mat4 viewProj = camera.projection(float(width()) / float(std::max(height(), 1))) * camera.view();
+    return [viewProj, w = double(width()), h = double(height())](const glm::vec3& p) -> std::optional<QPointF> {
+        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
+        if (c.w <= 1e-4f)
+            return std::nullopt;
+        return QPointF((c.x / c.w * 0.5 + 0.5) * w, (0.5 - c.y / c.w * 0.5) * h);
+    };
+}
+
 void Viewport::drawOverlay(QPainter& painter) {
     if (paused_) {
         const QString text = tr("Paused: %1").arg(pausedWhy_);
@@ -436,13 +446,7 @@ void Viewport::drawOverlay(QPainter& painter) {
     const scene::Scene& s = document_->scene();
     const Selection& sel = document_->selection();
     const scene::Camera& camera = controller_.camera();
-    const glm::mat4 viewProj = camera.projection(float(width()) / float(std::max(height(), 1))) * camera.view();
-    auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
-        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
-        if (c.w <= 1e-4f)
-            return std::nullopt;
-        return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
-    };
+    const auto project = screenProjection(camera);
     if (sel.isObject()) {
         // The selected object's world box.
         const scene::Bounds b = scene::objectWorldBounds(s, sel.index);
@@ -581,13 +585,7 @@ void Viewport::drawPath(QPainter& painter) {
     if (path.keyframes.empty())
         return;
     const scene::Camera& camera = controller_.camera();
-    const glm::mat4 viewProj = camera.projection(float(width()) / float(std::max(height(), 1))) * camera.view();
-    auto project = [&](const glm::vec3& p) -> std::optional<QPointF> {
-        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
-        if (c.w <= 1e-4f)
-            return std::nullopt;
-        return QPointF((c.x / c.w * 0.5 + 0.5) * width(), (0.5 - c.y / c.w * 0.5) * height());
-    };
+    const auto project = screenProjection(camera);
     // The curve, sampled finely enough to look smooth at any zoom that matters.
     const scene::CameraSpline spline(path);
     const int samples = 40 * int(path.keyframes.size());

@@ -25,12 +25,14 @@
 #include "lpv/scene/Image.h"
 
 #include <QElapsedTimer>
+#include <QPointF>
 #include <QWidget>
 #include <QSet>
 #include <QTimer>
 
 class QPainter;
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -188,6 +190,8 @@ private:
     // cache; until they arrive those materials draw untextured.
     void requestMissingTextures();
     void drawOverlay(QPainter& painter);
+    // Where a world point lands in this widget's pixels through `camera` (nullopt: behind it).
+    std::function<std::optional<QPointF>(const glm::vec3&)> screenProjection(const scene::Camera& camera) const;
     // Sends the worker a request when the state it renders changed since
     // the last one (camera, parameters, split, size, visualizers, scene).
     void requestFrameIfChanged();

@@ -66,9 +66,3 @@ TEST(AboutDialog, WithoutAViewportContextSaysSo) {
     const QString text = lpv::editor::aboutReport(std::nullopt);
     EXPECT_TRUE(text.contains("OpenGL:    unavailable: ")) << text.toStdString();
 }
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
-}

@@ -14,6 +14,7 @@
 #include "TestPaths.h"
 #include "Viewport.h"
 #include "WcagContrast.h"
+#include "TestWindow.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -33,10 +34,6 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornell() {
-    return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj";
-}
-
 // A window on the Cornell box, its viewport small (the reference traces at its size).
 struct Fixture {
     QTemporaryDir autosaveDir;
@@ -47,7 +44,7 @@ struct Fixture {
         Autosave::setRootForTests(autosaveDir.path());
         window = std::make_unique<MainWindow>();
         window->setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-        if (!window->openProject(cornell(), false))
+        if (!window->openProject(test::cornellTemplate(), false))
             return false;
         window->resize(700, 560);
         window->viewport()->setResolutionScale(1.0); // frames at the widget's size, whatever QSettings held

@@ -12,6 +12,7 @@
 #include "lpv/scene/CornellBox.h"
 #include "lpv/scene/Project.h"
 #include "WaitUntil.h"
+#include "TestWindow.h"
 
 #include <QMessageBox>
 #include <QPushButton>
@@ -40,8 +41,7 @@ double ceilingGrey(Viewport* vp) {
 } // namespace
 
 TEST(BakedRadiosityView, ShowsTheSolutionOrSaysWhyNot) {
-    QTemporaryDir autosaveDir, projectDir;
-    Autosave::setRootForTests(autosaveDir.path());
+    QTemporaryDir projectDir;
     lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
     for (const auto& [key, value] :
          {std::pair{"radiosity.maxPatchArea", "0.5"}, std::pair{"radiosity.convergenceThreshold", "0.1"}})
@@ -49,12 +49,9 @@ TEST(BakedRadiosityView, ShowsTheSolutionOrSaysWhyNot) {
     const QString file = projectDir.filePath("cornell.lpvproj");
     ASSERT_TRUE(lpv::scene::saveProject(project, file.toStdString()).has_value());
 
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(file, false));
-    window.resize(800, 600);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    test::TestWindow w;
+    ASSERT_TRUE(w.openAndShow(file, {800, 600}));
+    MainWindow& window = w.window;
     Viewport* vp = window.viewport();
     std::vector<std::pair<QString, bool>> notes;
     QObject::connect(vp, &Viewport::radiosityNoteChanged,

@@ -10,6 +10,7 @@
 #include "TestPaths.h"
 #include "Viewport.h"
 #include "WaitUntil.h"
+#include "TestWindow.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -40,20 +41,9 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
-
 // A shown window with the Cornell box open; autosaves go to a temporary folder.
-struct Window {
-    QTemporaryDir autosaveDir;
-    MainWindow window;
-    Window() {
-        Autosave::setRootForTests(autosaveDir.path());
-        window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-        EXPECT_TRUE(window.openProject(cornell(), false));
-        window.resize(1280, 900);
-        window.show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
-    }
+struct Window : test::TestWindow {
+    Window() { EXPECT_TRUE(openAndShow(test::cornellTemplate(), {1280, 900})); }
     Document& doc() { return *window.document(); }
     // The timing table of the next frame of the current state.
     std::vector<lpv::renderer::PassTiming> nextFrame() {
@@ -166,7 +156,7 @@ TEST(EditorBugs, ProfilerStartsAgainWithANewProjectAndNeverReadsZero) {
     Window w;
     for (int i = 0; i < 3; ++i)
         w.nextFrame();
-    ASSERT_TRUE(w.window.openProject(cornell(), false));
+    ASSERT_TRUE(w.window.openProject(test::cornellTemplate(), false));
     QSignalSpy frames(w.window.viewport(), &Viewport::frameRendered);
     LPV_WAIT_UNTIL(!frames.isEmpty(), 120000);
     const auto first = frames.first().at(0).value<std::vector<lpv::renderer::PassTiming>>();
@@ -212,7 +202,7 @@ TEST(EditorBugs, CtrlZUndoesWhileAnInspectorSpinBoxHasTheFocus) {
 // now the editor opens and says what is wrong where.
 TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheError) {
     QTemporaryDir dir;
-    QFile good(cornell());
+    QFile good(test::cornellTemplate());
     ASSERT_TRUE(good.open(QIODevice::ReadOnly));
     QByteArray text = good.readAll();
     const qsizetype at = text.indexOf("\"fovY\": ");
@@ -224,8 +214,7 @@ TEST(EditorBugs, ProjectFromTheCommandLineThatCannotBeReadOpensTheEditorWithTheE
     out.write(text);
     out.close();
 
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
+    test::TemporaryAutosaveRoot autosaveRoot;
     MainWindow window;
     EXPECT_FALSE(window.openFromCommandLine(bad));
     window.show();
@@ -338,7 +327,7 @@ TEST(EditorBugs, TheViewIsSavedWithTheProjectAndReopensThere) {
     ASSERT_TRUE(w.window.saveTo(file, false));
     EXPECT_FALSE(w.doc().isModified()) << "the view is not an edit";
     // Another project in between, then the saved one again.
-    ASSERT_TRUE(w.window.openProject(cornell(), false));
+    ASSERT_TRUE(w.window.openProject(test::cornellTemplate(), false));
     EXPECT_EQ(w.window.viewport()->viewCamera().position, first.position);
     ASSERT_TRUE(w.window.openProject(file, false));
     const lpv::scene::Camera reopened = w.window.viewport()->viewCamera();

@@ -14,6 +14,7 @@
 
 #include "lpv/scene/Picking.h"
 #include "WaitUntil.h"
+#include "TestWindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -41,19 +42,12 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornellPath() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
+QString cornellPath() { return test::cornellTemplate(); }
 
 // A shown window with the Cornell box open; autosaves go to a temporary folder.
-struct OpenWindow {
-    QTemporaryDir autosaveDir;
-    MainWindow window;
+struct OpenWindow : test::TestWindow {
     explicit OpenWindow(const QString& project = cornellPath()) {
-        Autosave::setRootForTests(autosaveDir.path());
-        window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-        EXPECT_TRUE(window.openProject(project, false));
-        window.resize(1280, 900);
-        window.show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
+        EXPECT_TRUE(openAndShow(project, {1280, 900}));
         QTest::qWait(100);
     }
     Document& doc() { return *window.document(); }
@@ -298,8 +292,7 @@ TEST(EditorGui, FailedImportShowsTheImportersErrorAndChangesNothing) {
 }
 
 TEST(EditorGui, AutosaveIsOfferedBackAfterACrash) {
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
+    test::TemporaryAutosaveRoot autosaveRoot;
     {
         MainWindow window;
         ASSERT_TRUE(window.openProject(cornellPath(), false));
@@ -475,16 +468,6 @@ TEST(EditorGui, UndoAfterSaveStillFindsTheRemovedTexture) {
     doc.undoStack()->clear();
     ASSERT_TRUE(doc.saveAs(file).has_value());
     EXPECT_FALSE(QFileInfo::exists(QString::fromStdString(copy))) << "an orphan with no undo to need it";
-}
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    // Keep the user's settings (layout, recent files, viewport resolution) out of the tests and vice versa.
-    QTemporaryDir settingsDir;
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
-    QApplication::setOrganizationName("LPV Studio tests");
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
 }
 
 // "GI on/off" is one control (issue #22): the toolbar toggle sets gi.method, one undo step.

@@ -12,6 +12,7 @@
 
 #include "lpv/app/BuiltInProjects.h"
 #include "lpv/scene/Picking.h"
+#include "TestWindow.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -23,7 +24,6 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QMessageBox>
-#include <QProcess>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -229,11 +229,7 @@ TEST(FirstMinutes, GizmoSitsAtTheBoundsCentreAndRotatesAboutIt) {
 TEST(FirstMinutes, NavigationOnSponzaFitsTheScene) {
     QTemporaryDir dir;
     const QString file = dir.filePath("sponza.lpvproj");
-    QProcess import;
-    import.start(lpv::test::kLpvExecutable,
-                 {"import", QString(lpv::test::kSharedScenesDir) + "/sponza/sponza.obj", "-o", file});
-    ASSERT_TRUE(import.waitForFinished(300000));
-    ASSERT_EQ(import.exitCode(), 0) << import.readAllStandardError().toStdString();
+    ASSERT_TRUE(test::importWithCli("sponza/sponza.obj", file));
 
     Window w;
     ASSERT_TRUE(w.window->openProject(file, false));
@@ -448,14 +444,4 @@ TEST(FirstMinutes, FlySlowsDownNearASurface) {
     c.setCamera(camera);
     c.fly(glm::vec3(0.0f, 0.0f, 1.0f), 0.1f, false, 0.0001f); // against it: still moves, slowly
     EXPECT_NEAR(c.camera().position.x, 0.1f * 0.01f * c.sceneSize(), 1e-5f);
-}
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    // Keep the user's settings (layout, recent files, viewport resolution) out of the tests and vice versa.
-    QTemporaryDir settingsDir;
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
-    QApplication::setOrganizationName("LPV Studio tests");
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
 }

@@ -10,6 +10,7 @@
 #include "TestPaths.h"
 #include "Viewport.h"
 #include "WaitUntil.h"
+#include "TestWindow.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -23,18 +24,12 @@
 using namespace lpv::editor;
 
 namespace {
-QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
 } // namespace
 
 TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
-    window.resize(800, 600);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    test::TestWindow w;
+    ASSERT_TRUE(w.openAndShow(test::cornellTemplate(), {800, 600}));
+    MainWindow& window = w.window;
     Viewport* vp = window.viewport();
     std::vector<int> spp;
     QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { spp.push_back(s); });
@@ -89,16 +84,12 @@ TEST(LiveReference, SamplesAddUpRestartOnAMoveAndStopWithAnotherMethod) {
 // An empty project (nothing to see) neither crashes the live reference nor
 // leaves it stuck: it traces, and moves restart it.
 TEST(LiveReference, AnEmptyProjectAndMovesDoNotBreakIt) {
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
+    test::TestWindow w;
+    MainWindow& window = w.window;
     lpv::scene::Project empty;
     empty.name = "untitled";
     window.showProject(empty, {});
-    window.resize(640, 480);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(w.show({640, 480}));
     Viewport* vp = window.viewport();
     int passes = 0, failures = 0;
     QObject::connect(vp, &Viewport::referenceProgress, [&](int s, double, double) { passes += s > 0; });

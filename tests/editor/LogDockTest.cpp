@@ -7,6 +7,7 @@
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "WaitUntil.h"
+#include "TestWindow.h"
 
 #include <QDockWidget>
 #include <QFile>
@@ -24,7 +25,6 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
 
 bool hasEntry(const EventLog& log, EventLog::Severity severity, const QString& source, const QString& part) {
     for (const EventLog::Entry& e : log.entries())
@@ -42,14 +42,10 @@ void writeFile(const QString& path, const QByteArray& bytes) {
 } // namespace
 
 TEST(LogDock, ImportsOpensAndSavesAreLoggedAndTheStatusBarLeadsToThem) {
-    QTemporaryDir autosaveDir, dir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
-    window.resize(1280, 900);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QTemporaryDir dir;
+    test::TestWindow w;
+    ASSERT_TRUE(w.openAndShow(test::cornellTemplate(), {1280, 900}));
+    MainWindow& window = w.window;
     EventLog& log = *window.eventLog();
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Info, "Open", "cornell-box.lpvproj"));
     EXPECT_TRUE(hasEntry(log, EventLog::Severity::Info, "OpenGL", "GL debug messages"));

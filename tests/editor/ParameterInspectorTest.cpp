@@ -516,12 +516,6 @@ TEST(ParameterInspector, LabelsAreReadable) {
     EXPECT_EQ(inspector.editorFor("no.suchKey"), nullptr);
 }
 
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
-}
-
 // lpv.cellSize = auto (issue #41): a check box beside the number. On, the
 // number is greyed out and the value is the word; off, the number is used;
 // a project's number unticks it.

@@ -75,9 +75,3 @@ TEST(RadiosityPanel, RunsSavesAndResumes) {
     ASSERT_TRUE(again.has_value());
     EXPECT_EQ(again->state.shots, shots);
 }
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
-}

@@ -10,6 +10,7 @@
 #include "TestPaths.h"
 
 #include "lpv/bench/SavedSweep.h"
+#include "TestWindow.h"
 
 #include <QApplication>
 #include <QChart>
@@ -33,10 +34,6 @@
 using namespace lpv::editor;
 
 namespace {
-
-QString cornell() {
-    return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj";
-}
 
 lpv::scene::Image8 flatImage(int width, int height, std::uint8_t value) {
     lpv::scene::Image8 image;
@@ -126,14 +123,9 @@ std::vector<Row> rowsOf(QTableWidget* table) {
 
 TEST(SweepDock, AClickOnTheHoveredPointAppliesIt) {
     // In the window as a user has it: the dock at the bottom, under the view.
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
-    window.resize(1400, 900);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    test::TestWindow w;
+    ASSERT_TRUE(w.openAndShow(test::cornellTemplate(), {1400, 900}));
+    MainWindow& window = w.window;
     window.dock("sweeps")->show();
     window.dock("sweeps")->raise();
     SweepPanel& panel = *window.sweeps();
@@ -172,11 +164,10 @@ TEST(SweepDock, AClickOnTheHoveredPointAppliesIt) {
 }
 
 TEST(SweepDock, RowChecksComeBackWithTheSavedSweep) {
-    QTemporaryDir autosaveDir, projectDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
+    QTemporaryDir projectDir;
+    test::TestWindow w;
+    MainWindow& window = w.window;
+    ASSERT_TRUE(window.openProject(test::cornellTemplate(), false));
     SweepPanel* panel = window.sweeps();
     QTableWidget* table = panel->questionTable();
     const std::vector<Row> defaults = rowsOf(table);
@@ -202,7 +193,7 @@ TEST(SweepDock, RowChecksComeBackWithTheSavedSweep) {
     ASSERT_TRUE(std::filesystem::exists(lpv::bench::savedSweepFileOf(saved.toStdString())));
 
     // Another project (no sweep) asks the default questions; this one its own again.
-    ASSERT_TRUE(window.openProject(cornell(), false));
+    ASSERT_TRUE(window.openProject(test::cornellTemplate(), false));
     EXPECT_EQ(rowsOf(table), defaults);
     ASSERT_TRUE(window.openProject(saved, false));
     ASSERT_NE(panel->sweep(), nullptr);

@@ -14,6 +14,7 @@
 
 #include "lpv/bench/Pareto.h"
 #include "lpv/bench/SavedSweep.h"
+#include "TestWindow.h"
 
 #include <QChart>
 #include <QApplication>
@@ -40,8 +41,6 @@ using namespace lpv::editor;
 
 namespace {
 
-QString cornell() { return QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj"; }
-
 // Only the row named `name` checked, with `values`.
 void askOnly(QTableWidget* table, const QString& name, const QString& values) {
     for (int row = 0; row < table->rowCount(); ++row) {
@@ -57,11 +56,10 @@ int steps(const Document* doc) { return doc->parameters().getInt("lpv.propagatio
 } // namespace
 
 TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
-    QTemporaryDir autosaveDir, projectDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
+    QTemporaryDir projectDir;
+    test::TestWindow w;
+    MainWindow& window = w.window;
+    ASSERT_TRUE(window.openProject(test::cornellTemplate(), false));
     const QString saved = projectDir.filePath("room.lpvproj");
     ASSERT_TRUE(window.saveTo(saved, false));
     window.resize(1200, 900);
@@ -172,7 +170,7 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
     ASSERT_TRUE(window.saveTo(saved, false));
     const auto file = lpv::bench::savedSweepFileOf(saved.toStdString());
     ASSERT_TRUE(std::filesystem::exists(file));
-    ASSERT_TRUE(window.openProject(cornell(), false));
+    ASSERT_TRUE(window.openProject(test::cornellTemplate(), false));
     EXPECT_EQ(panel->sweep(), nullptr) << "another project has no sweep";
     ASSERT_TRUE(window.openProject(saved, false));
     ASSERT_NE(panel->sweep(), nullptr);
@@ -183,11 +181,9 @@ TEST(SweepPanel, ASweepPlotsAppliesSavesAndReopens) {
 }
 
 TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(cornell(), false));
+    test::TestWindow w;
+    MainWindow& window = w.window;
+    ASSERT_TRUE(window.openProject(test::cornellTemplate(), false));
     SweepPanel* panel = window.sweeps();
     askOnly(panel->questionTable(), "grid", "lpv.gridSize=8,16,24,48,64");
     panel->setSweepSize(64, 36, 2, 1, 8);
@@ -213,14 +209,4 @@ TEST(SweepPanel, StopEndsTheSweepAndTheDockCanRunAgain) {
     EXPECT_TRUE(trace->isEnabled());
     EXPECT_FALSE(window.viewport()->framesPaused());
     trace->setChecked(false);
-}
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    // Keep the user's settings (layout, recent files) out of the test and vice versa.
-    QTemporaryDir settingsDir;
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
-    QApplication::setOrganizationName("LPV Studio tests");
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
 }

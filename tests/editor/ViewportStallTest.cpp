@@ -8,12 +8,11 @@
 #include "MainWindow.h"
 #include "TestPaths.h"
 #include "Viewport.h"
-
+#include "TestWindow.h"
 
 #include <QElapsedTimer>
 #include <QApplication>
 #include <QMessageBox>
-#include <QProcess>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -55,20 +54,11 @@ TEST(ViewportStall, AnEditOnSponzaNeverFreezesTheWindow) {
     // Sponza as a user makes it: `lpv import` (which adds a sun to a scene without lights).
     QTemporaryDir dir;
     const QString file = dir.filePath("sponza.lpvproj");
-    QProcess import;
-    import.start(lpv::test::kLpvExecutable,
-                 {"import", QString(lpv::test::kSharedScenesDir) + "/sponza/sponza.obj", "-o", file});
-    ASSERT_TRUE(import.waitForFinished(300000));
-    ASSERT_EQ(import.exitCode(), 0) << import.readAllStandardError().toStdString();
+    ASSERT_TRUE(test::importWithCli("sponza/sponza.obj", file));
 
-    QTemporaryDir autosaveDir;
-    Autosave::setRootForTests(autosaveDir.path());
-    MainWindow window;
-    window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-    ASSERT_TRUE(window.openProject(file, false));
-    window.resize(1280, 1000);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    test::TestWindow w;
+    ASSERT_TRUE(w.openAndShow(file, {1280, 1000}));
+    MainWindow& window = w.window;
     Viewport* vp = window.viewport();
     ASSERT_TRUE(QTest::qWaitFor([&] { return !vp->texturesPending() && vp->frameUpToDate(); }, 300000))
         << "Sponza's first frame";
@@ -107,14 +97,4 @@ TEST(ViewportStall, AnEditOnSponzaNeverFreezesTheWindow) {
     std::printf("ViewportStall: view %dx%d at %.0f%% resolution, %.0f%% lit\n", vp->width(), vp->height(),
                 100.0 * vp->resolutionScale(), 100.0 * double(lit) / double(all));
     EXPECT_LE(stall, 100) << "the event loop waited " << stall << " ms";
-}
-
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    // Keep the user's settings (layout, viewport resolution) out of the test and vice versa.
-    QTemporaryDir settingsDir;
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
-    QApplication::setOrganizationName("LPV Studio tests");
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
 }

@@ -9,6 +9,7 @@
 #include "VisualizerPanel.h"
 
 #include "lpv/renderer/viz/LpvViews.h"
+#include "TestWindow.h"
 
 #include <QCheckBox>
 #include <QDockWidget>
@@ -35,14 +36,9 @@ bool waitUntil(const std::function<bool()>& done, int ms = 20000) {
 }
 
 // The Cornell box with a sun shining in through its open front, small LPV grids for llvmpipe.
-struct LitCornell {
-    QTemporaryDir autosaveDir;
-    MainWindow window;
+struct LitCornell : test::TestWindow {
     LitCornell() {
-        Autosave::setRootForTests(autosaveDir.path());
-        window.setUnsavedChangesAnswerForTests(QMessageBox::Discard);
-        EXPECT_TRUE(window.openProject(
-            QString(lpv::test::kSourceDir) + "/projects/cornell-box/cornell-box.lpvproj", false));
+        EXPECT_TRUE(window.openProject(test::cornellTemplate(), false));
         Document& doc = *window.document();
         doc.setParameter("lpv.gridSize", lpv::scene::ParameterValue(16));
         doc.setParameter("lpv.cascades", lpv::scene::ParameterValue(2));
@@ -55,9 +51,7 @@ struct LitCornell {
             sun.intensity = 3.0f;
             s.lights.push_back(sun);
         });
-        window.resize(1280, 900);
-        window.show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(&window));
+        EXPECT_TRUE(show({1280, 900}));
     }
 };
 
