@@ -2,8 +2,7 @@
 // reference (lpvref::propagateWithBounces), every propagation variant, in the
 // closed room of LpvRoomScene.h; the running total's volume exists only while
 // lpv.bounces > 1.
-#include "FakeRsm.h"
-#include "GlFixture.h"
+#include "LpvPassFixture.h"
 #include "LpvRoomScene.h"
 
 #include "passes/lpv/LpvPass.h"
@@ -64,15 +63,8 @@ double relativeDifference(const ref::ShGrid& expected, const std::array<std::vec
     return maxValue > 0.0f ? double(maxAbs / maxValue) : double(maxAbs);
 }
 
-class LpvBounceTest : public GlTest, public ::testing::WithParamInterface<LpvVariant> {
+class LpvBounceTest : public LpvPassGLTest, public ::testing::WithParamInterface<LpvVariant> {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto pass = LpvPass::create();
-        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-        pass_.emplace(std::move(*pass));
-    }
-
     std::array<std::vector<glm::vec4>, 3> runGpu(const RoomScene& room, const FakeRsm& rsm, int steps,
                                                  int bounces, float albedo) {
         LpvSettings settings;
@@ -83,23 +75,11 @@ class LpvBounceTest : public GlTest, public ::testing::WithParamInterface<LpvVar
         settings.variant = GetParam();
         settings.bounces = bounces;
         settings.bounceAlbedo = albedo;
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{room.grid.origin, room.grid.cellSize, room.grid.n}};
-        input.texelArea = {kTexelArea};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
-        input.towardSun = kTowardSun;
-        timer_.beginFrame();
-        auto ok = pass_->run(settings, input, nullptr, timer_);
-        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        runPass(settings,
+                rsmInputOf(rsm, {LpvCascade{room.grid.origin, room.grid.cellSize, room.grid.n}}, {kTexelArea}, kTowardSun));
         return pass_->readAccumulator(0);
     }
 
-    std::optional<LpvPass> pass_;
-    GpuTimer timer_;
 };
 
 } // namespace

@@ -1,8 +1,7 @@
 // Every GPU propagation variant against the CPU reference (docs/lpv.md), on
 // llvmpipe: injection, geometry volume and propagation on an 8^3 and a 32^3
 // grid, and a bright 1024^2-VPL scene for the fixed-point atomics.
-#include "FakeRsm.h"
-#include "GlFixture.h"
+#include "LpvPassFixture.h"
 #include "LpvDirectedScene.h"
 
 #include "passes/lpv/LpvPass.h"
@@ -104,15 +103,8 @@ Difference compare(const ref::ShGrid& expected, const std::array<std::vector<glm
     return d;
 }
 
-class LpvGLTest : public GlTest {
+class LpvGLTest : public LpvPassGLTest {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto pass = LpvPass::create();
-        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-        pass_.emplace(std::move(*pass));
-    }
-
     // Runs one variant on a single cascade and returns its accumulator.
     std::array<std::vector<glm::vec4>, 3> runGpu(const LpvCase& s, const FakeRsm& rsm, LpvVariant variant, int steps,
                                                  bool occlusion, int dilation = -1) {
@@ -128,23 +120,11 @@ class LpvGLTest : public GlTest {
         settings.variant = variant;
         settings.directed = dilation >= 0;
         settings.directedDilation = std::max(dilation, 0);
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{s.grid.origin, s.grid.cellSize, s.grid.n}};
-        input.texelArea = {s.texelArea};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
-        input.towardSun = s.towardSun;
-        timer_.beginFrame();
-        auto ok = pass_->run(settings, input, nullptr, timer_);
-        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        runPass(settings, rsmInputOf(rsm, {LpvCascade{s.grid.origin, s.grid.cellSize, s.grid.n}}, {s.texelArea},
+                                     s.towardSun));
         return pass_->readAccumulator(0);
     }
 
-    std::optional<LpvPass> pass_;
-    GpuTimer timer_;
 };
 
 constexpr LpvVariant kVariants[] = {LpvVariant::ComputeGather, LpvVariant::ComputeScatter, LpvVariant::RasterGather,

@@ -3,8 +3,7 @@
 // light, and 64 propagation steps. Hand-written RSM tiles (FakeRsm.h) so each
 // case is exact and small; every test asserts finiteness and a bound measured
 // here, with the reason for its margin in a comment.
-#include "FakeRsm.h"
-#include "GlFixture.h"
+#include "LpvPassFixture.h"
 #include "LookupKernel.h"
 #include "ThinWallRooms.h"
 
@@ -45,15 +44,8 @@ double dcSum(const Volume& volume, int n, int x0, int x1) {
     return sum;
 }
 
-class HardCaseLpvGLTest : public GlTest {
+class HardCaseLpvGLTest : public LpvPassGLTest {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto pass = LpvPass::create();
-        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-        pass_.emplace(std::move(*pass));
-    }
-
     // One cascade, the camera G-buffer off: only the hand-written tile feeds injection and the GV.
     Volume run(const ref::GridFrame& grid, float texelArea, const FakeRsm& rsm, LpvVariant variant, int steps,
                bool occlusion, float injectionOffset = 1.0f) {
@@ -64,23 +56,10 @@ class HardCaseLpvGLTest : public GlTest {
         settings.occlusion = occlusion;
         settings.gvFromCamera = false;
         settings.variant = variant;
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-        input.texelArea = {texelArea};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
-        input.towardSun = glm::vec3(0.0f, 1.0f, 0.0f);
-        timer_.beginFrame();
-        auto ok = pass_->run(settings, input, nullptr, timer_);
-        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        runPass(settings, rsmInputOf(rsm, {LpvCascade{grid.origin, grid.cellSize, grid.n}}, {texelArea}));
         return pass_->readAccumulator(0);
     }
 
-    std::optional<LpvPass> pass_;
-    GpuTimer timer_;
 };
 
 int tileFor(std::size_t texels) {

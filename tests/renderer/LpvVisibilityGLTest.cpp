@@ -3,8 +3,7 @@
 // lpv_visibility.comp builds from the pass's own geometry volume, and
 // lpv_lookup.glsl's weighted taps (through lpv_lookup_test.comp) at random
 // points of the pass's own accumulator.
-#include "FakeRsm.h"
-#include "GlFixture.h"
+#include "LpvPassFixture.h"
 #include "LookupKernel.h"
 #include "ThinWallRooms.h"
 
@@ -21,15 +20,8 @@ namespace ref = lpv::renderer::lpvref;
 
 namespace {
 
-class LpvVisibilityGLTest : public GlTest {
+class LpvVisibilityGLTest : public LpvPassGLTest {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto pass = LpvPass::create();
-        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-        pass_.emplace(std::move(*pass));
-    }
-
     // One cascade from one hand-written tile, GV from the RSM only, the visibility moments on.
     void run(const ref::GridFrame& grid, float texelArea, const std::vector<Texel>& texels, int steps) {
         const FakeRsm rsm(int(std::ceil(std::sqrt(double(texels.size())))), {texels});
@@ -38,18 +30,7 @@ class LpvVisibilityGLTest : public GlTest {
         settings.propagationSteps = steps;
         settings.gvFromCamera = false;
         settings.visibility = true;
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-        input.texelArea = {texelArea};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
-        input.towardSun = glm::vec3(0.0f, 1.0f, 0.0f);
-        timer_.beginFrame();
-        auto ok = pass_->run(settings, input, nullptr, timer_);
-        ASSERT_TRUE(ok.has_value()) << ok.error().describe();
-        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        runPass(settings, rsmInputOf(rsm, {LpvCascade{grid.origin, grid.cellSize, grid.n}}, {texelArea}));
     }
 
     ref::GvGrid gpuGv(int n) const {
@@ -76,8 +57,6 @@ class LpvVisibilityGLTest : public GlTest {
         return acc;
     }
 
-    std::optional<LpvPass> pass_;
-    GpuTimer timer_;
 };
 
 // 600 random texels (VPLs and surfels of every orientation) and the thin wall between two rooms.

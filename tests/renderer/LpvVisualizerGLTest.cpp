@@ -1,8 +1,7 @@
 // The slice viewer against known light (issue #9): one VPL of known flux in
 // an empty volume, one propagation step of an isotropic point, the read-back
 // that only happens on request, and the RSM flux view of the Cornell box.
-#include "FakeRsm.h"
-#include "GlFixture.h"
+#include "LpvPassFixture.h"
 
 #include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/ForwardRenderer.h"
@@ -21,15 +20,8 @@ namespace {
 
 constexpr int kGrid = 8;
 
-class LpvVisualizerGLTest : public GlTest {
+class LpvVisualizerGLTest : public LpvPassGLTest {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto pass = LpvPass::create();
-        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-        pass_.emplace(std::move(*pass));
-    }
-
     // One cascade of 8^3 unit cells at the origin, no injection offset, compute gather.
     void run(const std::vector<Texel>& texels, int steps, std::optional<LpvCaptureRequest> capture) {
         FakeRsm rsm(4, {texels});
@@ -39,21 +31,10 @@ class LpvVisualizerGLTest : public GlTest {
         settings.injectionOffset = 0.0f;
         settings.occlusion = false;
         settings.gvFromCamera = false;
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{glm::vec3(0.0f), 1.0f, kGrid}};
-        input.texelArea = {0.01f};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
         pass_->setCapture(capture);
-        timer_.beginFrame();
-        ASSERT_TRUE(pass_->run(settings, input, nullptr, timer_).has_value());
-        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        runPass(settings, rsmInputOf(rsm, {LpvCascade{glm::vec3(0.0f), 1.0f, kGrid}}, {0.01f}));
     }
 
-    std::optional<LpvPass> pass_;
-    GpuTimer timer_;
 };
 
 viz::LpvViewSpec zSlice(viz::LpvSource source, int z, viz::Channel channel) {

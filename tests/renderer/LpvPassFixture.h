@@ -1,0 +1,49 @@
+#pragma once
+// The LPV's GL tests share this: an LpvPass made for each test, and one run
+// of it over hand-written RSM tiles (FakeRsm.h).
+#include "FakeRsm.h"
+#include "GlFixture.h"
+#include "passes/lpv/LpvPass.h"
+#include "lpv/renderer/GpuTimer.h"
+
+#include <optional>
+#include <vector>
+
+namespace lpv::renderer {
+
+// The LPV's RSM input: `rsm`'s tiles feeding `cascades` (tile k feeds cascade k).
+inline LpvRsmInput rsmInputOf(const FakeRsm& rsm, std::vector<LpvCascade> cascades, std::vector<float> texelArea,
+                              glm::vec3 towardSun = glm::vec3(0.0f, 1.0f, 0.0f)) {
+    LpvRsmInput input;
+    input.cascades = std::move(cascades);
+    input.texelArea = std::move(texelArea);
+    input.tileSize = rsm.tileSize;
+    input.position = rsm.position.id();
+    input.normal = rsm.normal.id();
+    input.flux = rsm.flux.id();
+    input.towardSun = towardSun;
+    return input;
+}
+
+class LpvPassGLTest : public GlTest {
+  protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        auto pass = LpvPass::create();
+        ASSERT_TRUE(pass.has_value()) << pass.error().describe();
+        pass_.emplace(std::move(*pass));
+    }
+
+    // One frame of the pass; a failure or a GL error fails the test.
+    void runPass(const LpvSettings& settings, const LpvRsmInput& input, const LpvCameraInput* camera = nullptr) {
+        timer_.beginFrame();
+        auto ok = pass_->run(settings, input, camera, timer_);
+        EXPECT_TRUE(ok.has_value()) << (ok ? "" : ok.error().describe());
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    }
+
+    std::optional<LpvPass> pass_;
+    GpuTimer timer_;
+};
+
+} // namespace lpv::renderer
