@@ -4,6 +4,7 @@
 // image equals a frame rendered without reuse. The scene is the Cornell box
 // with its ceiling open and a sun shining in, so every LPV pass runs.
 #include "GlFixture.h"
+#include "OpenCornellBox.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/scene/CornellBox.h"
@@ -22,21 +23,7 @@ namespace {
 constexpr int kWidth = 96, kHeight = 72;
 
 scene::Project openCornellBoxWithSun() {
-    scene::Project project = scene::makeCornellBoxProject();
-    scene::Mesh& room = project.scene.meshes[0];
-    for (std::size_t t = 0; t + 2 < room.indices.size(); t += 3) {
-        bool ceiling = true;
-        for (std::size_t j = 0; j < 3; ++j)
-            ceiling = ceiling && room.positions[room.indices[t + j]].y > 5.4f;
-        if (ceiling)
-            room.indices[t + 1] = room.indices[t + 2] = room.indices[t];
-    }
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.55f, -1.0f, 0.25f));
-    sun.intensity = 3.0f;
-    project.scene.lights = {sun};
+    scene::Project project = test::openCornellBox(glm::vec3(0.55f, -1.0f, 0.25f));
     project.scene.sky.intensity = 0.5f; // the open ceiling lets sky light in
     return project;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlContext.h"
 
 #include <gtest/gtest.h>
@@ -18,4 +19,16 @@ protected:
     void SetUp() override { ASSERT_TRUE(context_ && context_->makeCurrent()); }
 
     static inline std::optional<lpv::renderer::HeadlessContext> context_;
+};
+
+// A GlTest with a ForwardRenderer made for each test.
+class RendererGLTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        auto r = lpv::renderer::ForwardRenderer::create();
+        ASSERT_TRUE(r.has_value()) << r.error().describe();
+        renderer_.emplace(std::move(*r));
+    }
+    std::optional<lpv::renderer::ForwardRenderer> renderer_;
 };

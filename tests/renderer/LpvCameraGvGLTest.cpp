@@ -4,8 +4,8 @@
 // with the block's area, for fewer atomics). A hand-made G-buffer: a camera
 // looking at a wall and a floor, depth and normals computed here, so the GPU
 // and the CPU read the same numbers.
-#include "FakeRsm.h"
 #include "GlFixture.h"
+#include "LpvPassFixture.h"
 
 #include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
@@ -90,13 +90,7 @@ TEST_F(LpvCameraGvGLTest, CameraSurfelsMatchTheCpuTwinAtEveryStride) {
         settings.occlusion = true;
         settings.gvFromCamera = true;
         settings.gvCameraStride = stride;
-        LpvRsmInput input;
-        input.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-        input.texelArea = {0.01f};
-        input.tileSize = rsm.tileSize;
-        input.position = rsm.position.id();
-        input.normal = rsm.normal.id();
-        input.flux = rsm.flux.id();
+        const LpvRsmInput input = rsmInputOf(rsm, {LpvCascade{grid.origin, grid.cellSize, grid.n}}, {0.01f});
         LpvCameraInput camera;
         camera.depth = depth.id();
         camera.normal = normal.id();

@@ -99,15 +99,8 @@ scene::Scene importShared(const std::string& relative) {
     return std::move(imported->scene);
 }
 
-class LpvFitGLTest : public GlTest {
+class LpvFitGLTest : public RendererGLTest {
   protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto r = renderer::ForwardRenderer::create();
-        ASSERT_TRUE(r.has_value()) << r.error().describe();
-        renderer_.emplace(std::move(*r));
-    }
-
     // The indirect/direct ratio of `s` at 1 cm, 1 km and 100 km from the
     // origin against the ratio at 1 m: the fitted LPV makes them equal.
     void expectInvariant(const std::string& name, const scene::Scene& s, const scene::Camera& camera,
@@ -137,7 +130,6 @@ class LpvFitGLTest : public GlTest {
         EXPECT_NEAR(l.ratio() / metre.ratio(), 1.0, tolerance) << name << " 100 km from the origin";
     }
 
-    std::optional<renderer::ForwardRenderer> renderer_;
 };
 
 } // namespace

@@ -20,15 +20,6 @@ namespace ref = lpv::renderer::lpvref;
 
 namespace {
 
-glm::vec3 randomUnit(std::mt19937& rng) {
-    std::normal_distribution<float> g;
-    glm::vec3 v;
-    do {
-        v = {g(rng), g(rng), g(rng)};
-    } while (glm::length(v) < 1e-3f);
-    return glm::normalize(v);
-}
-
 // A scene in one cascade: VPLs scattered through the lower half, lit with
 // random colours, and a wall of dark surfels across the middle facing -x.
 std::vector<Texel> wallScene(const ref::GridFrame& grid, int vplCount, float fluxScale, unsigned seed) {

@@ -4,6 +4,7 @@
 // reflection vectors point at the unlit green wall) much less; a floor with
 // glossiness 0 must not change at all. Runs on llvmpipe.
 #include "GlFixture.h"
+#include "OpenCornellBox.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/scene/CornellBox.h"
@@ -21,15 +22,8 @@ constexpr int kWidth = 320, kHeight = 240;
 // The open Cornell box (ceiling collapsed), lit by a sun travelling toward
 // +x onto the red wall; the floor quad gets a material of its own.
 scene::Project glossyFloorBox(float glossiness) {
-    scene::Project project = scene::makeCornellBoxProject();
+    scene::Project project = test::openCornellBox(glm::vec3(0.55f, -1.0f, 0.25f));
     scene::Mesh& room = project.scene.meshes[0];
-    for (std::size_t t = 0; t + 2 < room.indices.size(); t += 3) {
-        bool ceiling = true;
-        for (std::size_t j = 0; j < 3; ++j)
-            ceiling = ceiling && room.positions[room.indices[t + j]].y > 5.4f;
-        if (ceiling)
-            room.indices[t + 1] = room.indices[t + 2] = room.indices[t];
-    }
     // Submesh 0 is floor, ceiling and back wall; the floor is its first quad (6 indices).
     scene::Material floor = project.scene.materials[0];
     floor.name = "glossyFloor";
@@ -43,13 +37,6 @@ scene::Project glossyFloorBox(float glossiness) {
     room.submeshes[0].indexCount -= 6;
     room.submeshes.push_back(floorPart);
 
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.55f, -1.0f, 0.25f));
-    sun.color = glm::vec3(1.0f);
-    sun.intensity = 3.0f;
-    project.scene.lights = {sun};
     // From above the open front, looking down at the floor: both side strips
     // are in view and their reflection vectors point at the walls beside them.
     scene::Camera& camera = project.scene.cameras.front();

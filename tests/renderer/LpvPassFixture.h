@@ -7,12 +7,15 @@
 #include "lpv/renderer/GpuTimer.h"
 
 #include <optional>
+#include <random>
 #include <vector>
 
 namespace lpv::renderer {
 
-// The LPV's RSM input: `rsm`'s tiles feeding `cascades` (tile k feeds cascade k).
-inline LpvRsmInput rsmInputOf(const FakeRsm& rsm, std::vector<LpvCascade> cascades, std::vector<float> texelArea,
+// The LPV's RSM input: `rsm`'s tiles feeding `cascades` (tile k feeds cascade
+// k). Any RSM of tileSize and position, normal and flux arrays will do.
+template <class Rsm>
+LpvRsmInput rsmInputOf(const Rsm& rsm, std::vector<LpvCascade> cascades, std::vector<float> texelArea,
                               glm::vec3 towardSun = glm::vec3(0.0f, 1.0f, 0.0f)) {
     LpvRsmInput input;
     input.cascades = std::move(cascades);
@@ -23,6 +26,16 @@ inline LpvRsmInput rsmInputOf(const FakeRsm& rsm, std::vector<LpvCascade> cascad
     input.flux = rsm.flux.id();
     input.towardSun = towardSun;
     return input;
+}
+
+// A random direction, uniform on the sphere.
+inline glm::vec3 randomUnit(std::mt19937& rng) {
+    std::normal_distribution<float> g;
+    glm::vec3 v;
+    do {
+        v = {g(rng), g(rng), g(rng)};
+    } while (glm::length(v) < 1e-3f);
+    return glm::normalize(v);
 }
 
 class LpvPassGLTest : public GlTest {

@@ -2,6 +2,7 @@
 // and a sun shining in, so the sunlit red (or green) wall must bleed its
 // colour onto the white blocks. Runs on llvmpipe.
 #include "GlFixture.h"
+#include "OpenCornellBox.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/LpvSnapshot.h"
@@ -21,23 +22,7 @@ constexpr int kWidth = 320, kHeight = 240;
 // point), lit by a sun that travels toward +x (sign +1: it lights the red
 // wall) or -x (sign -1: the green wall).
 scene::Project openCornellBox(float sign) {
-    scene::Project project = scene::makeCornellBoxProject();
-    scene::Mesh& room = project.scene.meshes[0];
-    for (std::size_t t = 0; t + 2 < room.indices.size(); t += 3) {
-        bool ceiling = true;
-        for (std::size_t j = 0; j < 3; ++j)
-            ceiling = ceiling && room.positions[room.indices[t + j]].y > 5.4f;
-        if (ceiling)
-            room.indices[t + 1] = room.indices[t + 2] = room.indices[t];
-    }
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.55f * sign, -1.0f, 0.25f));
-    sun.color = glm::vec3(1.0f);
-    sun.intensity = 3.0f;
-    project.scene.lights = {sun};
-    return project;
+    return test::openCornellBox(glm::vec3(0.55f * sign, -1.0f, 0.25f));
 }
 
 struct Frame {

@@ -4,6 +4,7 @@
 // side with the extension on while opaque surfaces do not change; and without
 // a translucent material the pass neither runs nor holds memory.
 #include "GlFixture.h"
+#include "LpvPassFixture.h"
 
 #include "passes/lpv/LpvPass.h"
 #include "passes/lpv/LpvSubsurfacePass.h"
@@ -51,15 +52,6 @@ struct TranslucentRsm {
     }
 };
 
-glm::vec3 randomUnit(std::mt19937& rng) {
-    std::normal_distribution<float> g;
-    glm::vec3 v;
-    do {
-        v = {g(rng), g(rng), g(rng)};
-    } while (glm::length(v) < 1e-3f);
-    return glm::normalize(v);
-}
-
 float maxAbs(const std::array<std::vector<glm::vec4>, 3>& a) {
     float m = 0.0f;
     for (const auto& channel : a)
@@ -89,13 +81,7 @@ TEST_F(LpvSubsurfaceGLTest, InjectionAndAttenuatedPropagationMatchReference) {
         texels.push_back({{p, randomUnit(rng), 2.0f * glm::vec3(u(rng), u(rng), u(rng))}, translucency});
     }
     const TranslucentRsm rsm(18, texels);
-    LpvRsmInput input;
-    input.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-    input.texelArea = {0.01f};
-    input.tileSize = rsm.tileSize;
-    input.position = rsm.position.id();
-    input.normal = rsm.normal.id();
-    input.flux = rsm.flux.id();
+    const LpvRsmInput input = rsmInputOf(rsm, {LpvCascade{grid.origin, grid.cellSize, grid.n}}, {0.01f});
 
     LpvSettings settings;
     settings.gridSize = grid.n;

@@ -98,16 +98,7 @@ glm::vec3 worldAt(const scene::Camera& c, const Frame& f, int x, int y) {
     return glm::vec3(w) / w.w;
 }
 
-class HardCaseRenderGLTest : public GlTest {
-  protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        auto r = renderer::ForwardRenderer::create();
-        ASSERT_TRUE(r.has_value()) << r.error().describe();
-        renderer_.emplace(std::move(*r));
-    }
-    std::optional<renderer::ForwardRenderer> renderer_;
-};
+class HardCaseRenderGLTest : public RendererGLTest {};
 
 } // namespace
 
