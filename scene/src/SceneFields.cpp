@@ -148,8 +148,11 @@ std::string markdownOf() {
         std::string notes = f.optional ? "optional (1.1)" : "";
         if (*f.description)
             notes += (notes.empty() ? "" : ": ") + std::string(f.description);
-        out << "| `" << f.name << "` | " << typeName<T>(f.shape) << " | " << range << " | " << f.unit << " | "
-            << notes << " |\n";
+        out << "|";
+        for (const std::string& cell : {"`" + std::string(f.name) + "`", typeName<T>(f.shape), range,
+                                        std::string(f.unit), notes})
+            out << (cell.empty() ? "" : " " + cell) << " |";
+        out << "\n";
     });
     return out.str();
 }

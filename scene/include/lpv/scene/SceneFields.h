@@ -140,7 +140,9 @@ struct FieldTable<Material> {
         field<&Material::name>({.name = "name", .hashed = false}),
         field<&Material::shading>({.name = "shading"}),
         field<&Material::diffuseColor>({.name = "diffuseColor", .range = kNonNegative, .shape = "[r, g, b]"}),
-        field<&Material::diffuseTexture>({.name = "diffuseTexture", .description = "path, see below"}),
+        field<&Material::diffuseTexture>(
+            {.name = "diffuseTexture",
+             .description = "path relative to the project file, `\"\"` = none (so every texture below)"}),
         field<&Material::normalTexture>({.name = "normalTexture"}),
         field<&Material::heightTexture>({.name = "heightTexture", .description = "bump map"}),
         field<&Material::specularColor>({.name = "specularColor", .range = kNonNegative, .shape = "[r, g, b]"}),
@@ -199,15 +201,20 @@ struct FieldTable<Object> {
         field<&Object::name>({.name = "name", .hashed = false}),
         field<&Object::mesh>({.name = "mesh", .description = "-1 = none", .index = IndexOf::Meshes}),
         field<&Object::parent>({.name = "parent",
-                                .description = "-1 = root; parent chains must not loop (`InvalidValue`)",
+                                .description = "-1 = root; parent chains must not loop (`InvalidValue`, which "
+                                               "names the loop; one of more than 11 objects by its first 8, its "
+                                               "last 2 and its length). Chains of any depth load, and world "
+                                               "matrices are computed, in time linear in the number of objects "
+                                               "(`worldMatrices`)",
                                 .index = IndexOf::Objects}),
         field<&Object::transform, &Transform::translation>(
-            {.name = "translation", .editRange = fields::kEditCoordinate}),
+            {.name = "translation", .description = "any finite", .editRange = fields::kEditCoordinate}),
         field<&Object::transform, &Transform::rotation>(
             {.name = "rotation",
              .description = "quaternion, not all zeros (`InvalidValue`); need not be normalised"}),
         // Positive in the editor: a zero scale collapses the object and its matrix cannot be inverted.
-        field<&Object::transform, &Transform::scale>({.name = "scale", .editRange = {0.001, 1.0e4}}),
+        field<&Object::transform, &Transform::scale>(
+            {.name = "scale", .description = "any finite", .editRange = {0.001, 1.0e4}}),
         field<&Object::visible>({.name = "visible"}),
         field<&Object::lods>({.name = "lods",
                               .description = "further levels of detail, each `{\"mesh\": index, \"distance\": "
@@ -222,12 +229,17 @@ template <>
 struct FieldTable<Camera> {
     static constexpr auto fields = std::tuple{
         field<&Camera::name>({.name = "name", .hashed = false}),
-        field<&Camera::position>({.name = "position", .unit = "m", .editRange = fields::kEditCoordinate}),
+        field<&Camera::position>({.name = "position",
+                                  .unit = "m",
+                                  .description = "coordinates within +-1e18, as `target`'s",
+                                  .editRange = fields::kEditCoordinate}),
         field<&Camera::target>({.name = "target",
                                 .unit = "m",
                                 .description = "not `position` (`InvalidValue`)",
                                 .editRange = fields::kEditCoordinate}),
-        field<&Camera::up>({.name = "up", .description = "non-zero (`InvalidValue`)"}),
+        field<&Camera::up>({.name = "up",
+                            .description = "non-zero, and at least 0.06 degrees off the view direction "
+                                           "(`InvalidValue`)"}),
         // The editor's 1..179 degrees; below and above, the product check's limits.
         field<&Camera::fovY>({.name = "fovY",
                               .range = {0.0, std::numbers::pi, true, true},
@@ -237,7 +249,8 @@ struct FieldTable<Camera> {
         field<&Camera::nearPlane>({.name = "nearPlane",
                                    .range = kPositive,
                                    .unit = "m",
-                                   .description = "1e-18 .. 1e18, and far / near <= 1.6e7",
+                                   .description = "1e-18 .. 1e18, and far / near <= 1.6e7 (`OutOfRange` at "
+                                                  "`nearPlane`)",
                                    .editRange = {1.0e-4, 1.0e7}}),
         field<&Camera::farPlane>({.name = "farPlane",
                                   .range = kPositive,
@@ -250,7 +263,8 @@ struct FieldTable<Camera> {
 template <>
 struct FieldTable<CameraKeyframe> {
     static constexpr auto fields = std::tuple{
-        field<&CameraKeyframe::time>({.name = "time", .range = kNonNegative, .unit = "s"}),
+        field<&CameraKeyframe::time>(
+            {.name = "time", .range = kNonNegative, .unit = "s", .description = "within a day (86,400 s)"}),
         field<&CameraKeyframe::position>({.name = "position", .unit = "m"}),
         field<&CameraKeyframe::orientation>(
             {.name = "orientation", .description = "not all zeros; normalised on playback"}),
@@ -264,15 +278,18 @@ struct FieldTable<CameraPath> {
         field<&CameraPath::name>({.name = "name", .hashed = false}),
         field<&CameraPath::keyframes>({.name = "keyframes",
                                        .description = "sorted by time: equal times are allowed (a cut), an earlier "
-                                                      "time than the key before is `InvalidValue`",
+                                                      "time than the key before is `InvalidValue` at "
+                                                      "`cameraPaths[i].keyframes[k].time`",
                                        .hashed = false}),
         field<&CameraPath::closed>({.name = "closed",
                                     .description = "the path returns from the last key to the first, the closing "
-                                                   "segment lasting as long as the mean segment",
+                                                   "segment lasting as long as the mean segment; default "
+                                                   "`false`, written always",
                                     .optional = true}),
         field<&CameraPath::constantSpeed>({.name = "constantSpeed",
                                            .description = "time maps to distance along the path (constant "
-                                                          "speed); the key times then set only the total duration",
+                                                          "speed); the key times then set only the total "
+                                                          "duration; default `false`, written always",
                                            .optional = true}),
     };
 };
