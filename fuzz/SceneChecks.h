@@ -18,6 +18,7 @@
 
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Scene.h"
+#include "lpv/scene/SceneFields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace lpv::fuzz {
@@ -48,42 +50,29 @@ inline void checkFinite(const glm::vec3& v, const std::string& what) {
         checkFinite(v[c], what + "[" + std::to_string(c) + "]");
 }
 
+// Every number in the fields of a scene struct's table (SceneFields.h), so
+// a field added there is checked here without being named.
+template <class S>
+void checkFiniteFields(const S& s, const std::string& at) {
+    scene::forEachField<S>([&](const auto& field) {
+        const auto& v = field.of(s);
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, float>)
+            checkFinite(v, at + field.name);
+        else if constexpr (std::is_same_v<T, glm::vec2> || std::is_same_v<T, glm::vec3> || std::is_same_v<T, glm::quat>)
+            for (int c = 0; c < T::length(); ++c)
+                checkFinite(v[c], at + field.name + "[" + std::to_string(c) + "]");
+    });
+}
+
 inline void checkScene(const scene::Scene& s, const std::string& file, bool render = true) {
-    for (std::size_t i = 0; i < s.materials.size(); ++i) {
-        const scene::Material& m = s.materials[i];
-        const std::string at = "materials[" + std::to_string(i) + "].";
-        checkFinite(m.diffuseColor, at + "diffuseColor");
-        checkFinite(m.specularColor, at + "specularColor");
-        checkFinite(m.emissive, at + "emissive");
-        checkFinite(m.shininess, at + "shininess");
-        checkFinite(m.metallic, at + "metallic");
-        checkFinite(m.roughness, at + "roughness");
-        checkFinite(m.opacity, at + "opacity");
-        checkFinite(m.alphaCutoff, at + "alphaCutoff");
-        checkFinite(m.translucency, at + "translucency");
-        checkFinite(m.glossiness, at + "glossiness");
-    }
-    for (std::size_t i = 0; i < s.lights.size(); ++i) {
-        const scene::Light& l = s.lights[i];
-        const std::string at = "lights[" + std::to_string(i) + "].";
-        checkFinite(l.color, at + "color");
-        checkFinite(l.intensity, at + "intensity");
-        checkFinite(l.position, at + "position");
-        checkFinite(l.direction, at + "direction");
-        checkFinite(l.range, at + "range");
-        checkFinite(l.innerConeAngle, at + "innerConeAngle");
-        checkFinite(l.outerConeAngle, at + "outerConeAngle");
-    }
-    for (std::size_t i = 0; i < s.cameras.size(); ++i) {
-        const scene::Camera& c = s.cameras[i];
-        const std::string at = "cameras[" + std::to_string(i) + "].";
-        checkFinite(c.position, at + "position");
-        checkFinite(c.target, at + "target");
-        checkFinite(c.up, at + "up");
-        checkFinite(c.fovY, at + "fovY");
-        checkFinite(c.nearPlane, at + "nearPlane");
-        checkFinite(c.farPlane, at + "farPlane");
-    }
+    for (std::size_t i = 0; i < s.materials.size(); ++i)
+        checkFiniteFields(s.materials[i], "materials[" + std::to_string(i) + "].");
+    for (std::size_t i = 0; i < s.lights.size(); ++i)
+        checkFiniteFields(s.lights[i], "lights[" + std::to_string(i) + "].");
+    for (std::size_t i = 0; i < s.cameras.size(); ++i)
+        checkFiniteFields(s.cameras[i], "cameras[" + std::to_string(i) + "].");
+    checkFiniteFields(s.sky, "sky.");
 
     for (std::size_t i = 0; i < s.meshes.size(); ++i)
         if (auto valid = scene::validateMesh(s.meshes[i], file, "meshes[" + std::to_string(i) + "]",
@@ -102,13 +91,7 @@ inline void checkScene(const scene::Scene& s, const std::string& file, bool rend
                 invariantBroken(label + " has a LOD with mesh " + std::to_string(lod.mesh));
         if (!isIndexOf(o.parent, s.objects.size()))
             invariantBroken(label + ".parent = " + std::to_string(o.parent));
-        const scene::Transform& t = o.transform;
-        for (int c = 0; c < 3; ++c)
-            if (!std::isfinite(t.translation[c]) || !std::isfinite(t.scale[c]))
-                invariantBroken(label + " has a non-finite translation or scale");
-        for (int c = 0; c < 4; ++c)
-            if (!std::isfinite(t.rotation[c]))
-                invariantBroken(label + " has a non-finite rotation");
+        checkFiniteFields(o, label + ".");
     }
 
     // Parent chains end at a root: each object is walked once (0 = unvisited,

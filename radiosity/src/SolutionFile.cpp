@@ -4,6 +4,7 @@
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
 #include "lpv/scene/ProjectLimits.h"
+#include "lpv/scene/SceneFields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,25 +67,10 @@ std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties
                              std::span<const scene::Light> lights) {
     Writer w;
     // Every light shoots (its direct light is the first bounce): moving,
-    // dimming or recolouring one changes the solution.
-    for (const scene::Light& l : lights) {
-        w.put(std::uint32_t(l.type));
-        w.putVec3(l.color);
-        w.put(l.intensity);
-        w.putVec3(l.position);
-        w.putVec3(l.direction);
-        w.put(l.range);
-        w.put(l.innerConeAngle);
-        w.put(l.outerConeAngle);
-        w.put(std::uint8_t(l.castShadows));
-        w.put(std::uint32_t(l.shape));
-        w.put(l.size.x);
-        w.put(l.size.y);
-        w.put(l.radius);
-        w.putVec3(l.tangent);
-        w.put(std::uint8_t(l.twoSided));
-        w.put(std::uint32_t(l.unit));
-    }
+    // dimming or recolouring one changes the solution. Every field its table
+    // hashes (SceneFields.h), so a field added there is part of the signature.
+    for (const scene::Light& l : lights)
+        scene::hashFields(l, [&](const void* p, std::size_t n) { w.bytes.append(static_cast<const char*>(p), n); });
     for (std::size_t i = 0; i < unrefined.size(); ++i) {
         const Patch& p = unrefined.patches[i];
         w.put(p.cornerCount);

@@ -1,4 +1,5 @@
 #include "RadiosityTestScenes.h"
+#include "../scene/FieldChanges.h"
 
 #include "lpv/radiosity/SolutionFile.h"
 #include "lpv/scene/MeshAsset.h"
@@ -196,3 +197,18 @@ TEST(SolutionFile, AFifoOrASparseGiantIsRefusedBeforeReading) {
     std::filesystem::remove_all(dir);
 }
 #endif
+
+// Every light field but the name is part of the signature, through the
+// light's field table (SceneFields.h): a field added there cannot be
+// forgotten here, which would let a stale solution be loaded as current.
+TEST(SolutionFile, EveryLightFieldButItsNameChangesTheSignature) {
+    const auto scene = test::closedBox(glm::vec3(0.6f), glm::vec3(2.0f));
+    const radiosity::PatchMesh mesh = radiosity::buildPatchMesh(scene, {0.5f});
+    const auto surfaces = radiosity::surfaceProperties(mesh, scene, {});
+    const auto signature = [&](const scene::Light& l) { return radiosity::sceneSignature(mesh, surfaces, {&l, 1}); };
+    scene::Light base;
+    base.type = scene::LightType::Area;
+    const auto missed = test::fieldsNotAffecting(
+        base, [&](const scene::Light& a, const scene::Light& b) { return signature(a) != signature(b); });
+    EXPECT_EQ(missed, std::vector<std::string>{"name"});
+}
