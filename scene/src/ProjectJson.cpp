@@ -240,33 +240,20 @@ public:
 
     // An index into a list of `size` things, or -1 for none.
     void index(const char* key, int& out, std::size_t size, const char* thing, const char* things) {
-        const Json* v = get(key);
-        if (!v)
-            return;
-        const auto i = readInteger(r_, *v, pathOf(key));
-        if (!i)
-            return;
-        if (*i < -1 || *i >= static_cast<std::int64_t>(size)) {
-            r_.fail(ErrorCode::IndexOutOfRange, pathOf(key),
-                    concat(thing, " ", *i, " does not exist (the project has ", size, " ", things,
-                           "; -1 means none)"));
-            return;
-        }
-        out = static_cast<int>(*i);
+        const auto i = integerIn(key, -1, static_cast<std::int64_t>(size) - 1, ErrorCode::IndexOutOfRange,
+                                 [&](std::int64_t bad) {
+                                     return concat(thing, " ", bad, " does not exist (the project has ", size, " ",
+                                                   things, "; -1 means none)");
+                                 });
+        if (i)
+            out = static_cast<int>(*i);
     }
 
     void count(const char* key, std::uint64_t& out) {
-        const Json* v = get(key);
-        if (!v)
-            return;
-        const auto i = readInteger(r_, *v, pathOf(key));
-        if (!i)
-            return;
-        if (*i < 0) {
-            r_.fail(ErrorCode::OutOfRange, pathOf(key), concat("a count cannot be negative (", *i, ")"));
-            return;
-        }
-        out = static_cast<std::uint64_t>(*i);
+        const auto i = integerIn(key, 0, std::numeric_limits<std::int64_t>::max(), ErrorCode::OutOfRange,
+                                 [](std::int64_t bad) { return concat("a count cannot be negative (", bad, ")"); });
+        if (i)
+            out = static_cast<std::uint64_t>(*i);
     }
 
     template <class E>
@@ -291,6 +278,21 @@ public:
     }
 
 private:
+    // An integer field in [min, max]; `why(value)` says what is wrong with one outside.
+    template <class Why>
+    std::optional<std::int64_t> integerIn(const char* key, std::int64_t min, std::int64_t max, ErrorCode code,
+                                          Why why) {
+        const Json* v = get(key);
+        if (!v)
+            return std::nullopt;
+        const auto i = readInteger(r_, *v, pathOf(key));
+        if (i && (*i < min || *i > max)) {
+            r_.fail(code, pathOf(key), why(*i));
+            return std::nullopt;
+        }
+        return i;
+    }
+
     Reader& r_;
     const Json* json_ = nullptr;
     std::string path_;
@@ -342,8 +344,10 @@ void readField(Fields& f, const Field<S, T>& field, T& out, const IndexCounts& c
         f.number(key, out, field.range);
     else if constexpr (std::is_same_v<T, glm::quat>)
         f.rotation(key, out);
-    else if constexpr (std::is_enum_v<T>)
-        f.enumeration(key, out, &EnumNames<T>::parse, EnumNames<T>::allowed);
+    else if constexpr (std::is_enum_v<T>) {
+        static_assert(kEnumNames<T>.parse != nullptr, "an enum field needs its kEnumNames (SceneFields.h)");
+        f.enumeration(key, out, kEnumNames<T>.parse, kEnumNames<T>.allowed);
+    }
     else if constexpr (std::is_same_v<T, int>) {
         if (field.index == IndexOf::Meshes)
             f.index(key, out, counts.meshes, "mesh", "meshes");

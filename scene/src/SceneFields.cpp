@@ -140,7 +140,7 @@ std::string markdownOf() {
         using T = typename std::decay_t<decltype(f)>::Type;
         std::string range;
         if constexpr (std::is_enum_v<T>)
-            range = quotedChoices(EnumNames<T>::allowed);
+            range = quotedChoices(kEnumNames<T>.allowed);
         else if constexpr (std::is_same_v<T, int>)
             range = f.index == IndexOf::Meshes ? "-1 or an index into `meshes`" : "-1 or an index into `objects`";
         else if (f.range.bounded())

@@ -137,9 +137,16 @@ constexpr auto field(FieldInfo<typename detail::MemberPath<Members...>::Struct> 
     return f;
 }
 
-// The enum types fields hold: their names in files, as "a, b or c" lists.
+// How an enum field is named in files: the names it takes ("a, b, c", as
+// error messages list them) and their parser. One specialisation of
+// kEnumNames per enum, in SceneFields.h.
 template <class E>
-struct EnumNames; // specialised in SceneFields.h: allowed, parse(), name()
+struct EnumNames {
+    const char* allowed = nullptr;
+    std::optional<E> (*parse)(std::string_view) = nullptr;
+};
+template <class E>
+inline constexpr EnumNames<E> kEnumNames{};
 
 // Each table is a tuple of Fields (SceneFields.h); fieldsOf<S>() returns it.
 template <class S>

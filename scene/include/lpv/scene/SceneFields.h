@@ -25,30 +25,15 @@ namespace lpv::scene {
 // --- enums ----------------------------------------------------------------
 
 template <>
-struct EnumNames<LightType> {
-    static constexpr const char* allowed = "directional, point, spot, area";
-    static std::optional<LightType> parse(std::string_view s) { return parseLightType(s); }
-};
+inline constexpr EnumNames<LightType> kEnumNames<LightType>{"directional, point, spot, area", parseLightType};
 template <>
-struct EnumNames<AreaShape> {
-    static constexpr const char* allowed = "rectangle, disc";
-    static std::optional<AreaShape> parse(std::string_view s) { return parseAreaShape(s); }
-};
+inline constexpr EnumNames<AreaShape> kEnumNames<AreaShape>{"rectangle, disc", parseAreaShape};
 template <>
-struct EnumNames<AreaUnit> {
-    static constexpr const char* allowed = "radiance, power";
-    static std::optional<AreaUnit> parse(std::string_view s) { return parseAreaUnit(s); }
-};
+inline constexpr EnumNames<AreaUnit> kEnumNames<AreaUnit>{"radiance, power", parseAreaUnit};
 template <>
-struct EnumNames<ShadingModel> {
-    static constexpr const char* allowed = "blinnPhong, metallicRoughness";
-    static std::optional<ShadingModel> parse(std::string_view s) { return parseShadingModel(s); }
-};
+inline constexpr EnumNames<ShadingModel> kEnumNames<ShadingModel>{"blinnPhong, metallicRoughness", parseShadingModel};
 template <>
-struct EnumNames<AlphaMode> {
-    static constexpr const char* allowed = "opaque, mask, blend";
-    static std::optional<AlphaMode> parse(std::string_view s) { return parseAlphaMode(s); }
-};
+inline constexpr EnumNames<AlphaMode> kEnumNames<AlphaMode>{"opaque, mask, blend", parseAlphaMode};
 
 namespace fields {
 
