@@ -3,6 +3,8 @@
 #include "Document.h"
 #include "PropertyWidgets.h"
 
+#include "lpv/scene/SceneFields.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -11,13 +13,16 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace lpv::editor {
 
 namespace {
-constexpr double kMinNear = 1.0e-4;
-constexpr double kMaxFar = 1.0e7;
-constexpr float kPlaneGap = 0.999f; // the largest near/far ratio the fields allow
+constexpr float kHuge = std::numeric_limits<float>::max();
+using scene::Camera;
+constexpr const auto& kNear = scene::fieldOf<&Camera::nearPlane>();
+constexpr const auto& kFar = scene::fieldOf<&Camera::farPlane>();
 } // namespace
 
 CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
@@ -29,16 +34,16 @@ CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(par
 
     name_ = new QLineEdit(group);
     name_->setObjectName("cameraName");
-    position_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    position_ = new Vec3Edit(scene::fieldOf<&Camera::position>(), 3, 0.1, {}, group);
     position_->setObjectName("cameraPosition");
-    target_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    target_ = new Vec3Edit(scene::fieldOf<&Camera::target>(), 3, 0.1, {}, group);
     target_->setObjectName("cameraTarget");
-    fov_ = makeSpinBox(1.0, 179.0, 2, 1.0, QStringLiteral("°"), group);
+    fov_ = makeFieldSpinBox(scene::fieldOf<&Camera::fovY>(), 2, 1.0, QStringLiteral("°"), group, Shown::Degrees);
     fov_->setObjectName("cameraFov");
     fov_->setToolTip(tr("Vertical field of view"));
-    near_ = makeSpinBox(kMinNear, kMaxFar, 4, 0.01, QStringLiteral(" m"), group);
+    near_ = makeFieldSpinBox(kNear, 4, 0.01, QStringLiteral(" m"), group);
     near_->setObjectName("cameraNear");
-    far_ = makeSpinBox(kMinNear, kMaxFar, 2, 10.0, QStringLiteral(" m"), group);
+    far_ = makeFieldSpinBox(kFar, 2, 10.0, QStringLiteral(" m"), group);
     far_->setObjectName("cameraFar");
     form->addRow(tr("Name"), name_);
     form->addRow(tr("Position"), position_);
@@ -58,16 +63,16 @@ CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(par
         edit(tr("Edit camera target"), [&](scene::Camera& c) { c.target[axis] = float(v); });
     });
     connect(fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        edit(tr("Edit camera field of view"), [&](scene::Camera& c) { c.fovY = float(glm::radians(v)); });
+        edit(tr("Edit camera field of view"), [&](scene::Camera& c) { c.fovY = storedValue(v, Shown::Degrees); });
     });
     connect(near_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         // Equal planes would make a singular projection: the near one stays strictly in front.
         edit(tr("Edit camera near plane"),
-             [&](scene::Camera& c) { c.nearPlane = std::min(float(v), c.farPlane * kPlaneGap); });
+             [&](scene::Camera& c) { c.nearPlane = std::min(float(v), std::nextafter(c.farPlane, 0.0f)); });
     });
     connect(far_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit(tr("Edit camera far plane"),
-             [&](scene::Camera& c) { c.farPlane = std::max(float(v), c.nearPlane / kPlaneGap); });
+             [&](scene::Camera& c) { c.farPlane = std::max(float(v), std::nextafter(c.nearPlane, kHuge)); });
     });
 
     setCameraIndex(-1);
@@ -99,16 +104,17 @@ void CameraProperties::refresh() {
     showText(name_, QString::fromStdString(c.name));
     position_->showValue(glm::dvec3(c.position));
     target_->showValue(glm::dvec3(c.target));
-    showValue(fov_, glm::degrees(double(c.fovY)));
-    // The near plane stays in front of the far one: each bounds the other.
+    showValue(fov_, shownValue(c.fovY, Shown::Degrees));
+    // The near plane stays in front of the far one, and within the depth
+    // buffer's ratio of it: each bounds the other (SceneFields.h's rule).
     const QSignalBlocker blockNear(near_);
     const QSignalBlocker blockFar(far_);
-    near_->setRange(kMinNear, kMaxFar);
-    far_->setRange(kMinNear, kMaxFar);
+    setFieldRange(near_, kNear.widgetRange());
+    setFieldRange(far_, kFar.widgetRange());
     showValue(near_, c.nearPlane);
     showValue(far_, c.farPlane);
-    near_->setMaximum(std::max(far_->value(), near_->value()));
-    far_->setMinimum(std::min(near_->value(), far_->value()));
+    setFieldRange(near_, kNear.widgetRange().within(rangeGivenOthers(c, kNear.name)));
+    setFieldRange(far_, kFar.widgetRange().within(rangeGivenOthers(c, kFar.name)));
 }
 
 } // namespace lpv::editor

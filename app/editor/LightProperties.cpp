@@ -2,6 +2,8 @@
 
 #include "Document.h"
 
+#include "lpv/scene/SceneFields.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -15,6 +17,18 @@
 #include <algorithm>
 
 namespace lpv::editor {
+
+namespace {
+// The table entries of the fields this panel edits (SceneFields.h).
+using scene::Light;
+constexpr const auto& kIntensity = scene::fieldOf<&Light::intensity>();
+constexpr const auto& kPosition = scene::fieldOf<&Light::position>();
+constexpr const auto& kRange = scene::fieldOf<&Light::range>();
+constexpr const auto& kInnerCone = scene::fieldOf<&Light::innerConeAngle>();
+constexpr const auto& kOuterCone = scene::fieldOf<&Light::outerConeAngle>();
+constexpr const auto& kSize = scene::fieldOf<&Light::size>();
+constexpr const auto& kRadius = scene::fieldOf<&Light::radius>();
+} // namespace
 
 LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* layout = new QVBoxLayout(this);
@@ -33,7 +47,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     type_->addItem(tr("Area"), int(scene::LightType::Area));
     color_ = new ColorButton(group);
     color_->setObjectName("lightColor");
-    intensity_ = makeSpinBox(0.0, 1.0e6, 3, 0.1, {}, group);
+    intensity_ = makeFieldSpinBox(kIntensity, 3, 0.1, {}, group);
     intensity_->setObjectName("lightIntensity");
 
     direction_ = new QWidget(group);
@@ -50,16 +64,16 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     direction_->setToolTip(tr("Where the light comes from: azimuth from +Z towards +X, elevation above the "
                               "horizon (90° = straight down from above)"));
 
-    position_ = new Vec3Edit(-1.0e6, 1.0e6, 3, 0.1, {}, group);
+    position_ = new Vec3Edit(kPosition, 3, 0.1, {}, group);
     position_->setObjectName("lightPosition");
-    range_ = makeSpinBox(0.0, 1.0e6, 3, 0.5, QStringLiteral(" m"), group);
+    range_ = makeFieldSpinBox(kRange, 3, 0.5, QStringLiteral(" m"), group);
     range_->setObjectName("lightRange");
     range_->setSpecialValueText(tr("unlimited"));
     // Cone angles are half-angles from the axis, as in glTF; 90° is a hemisphere.
-    innerCone_ = makeSpinBox(0.0, 90.0, 2, 1.0, QStringLiteral("°"), group);
+    innerCone_ = makeFieldSpinBox(kInnerCone, 2, 1.0, QStringLiteral("°"), group, Shown::Degrees);
     innerCone_->setObjectName("lightInnerCone");
     innerCone_->setToolTip(tr("Full intensity inside this angle from the axis"));
-    outerCone_ = makeSpinBox(0.0, 90.0, 2, 1.0, QStringLiteral("°"), group);
+    outerCone_ = makeFieldSpinBox(kOuterCone, 2, 1.0, QStringLiteral("°"), group, Shown::Degrees);
     outerCone_->setObjectName("lightOuterCone");
     outerCone_->setToolTip(tr("No light outside this angle from the axis"));
     castShadows_ = new QCheckBox(tr("Cast shadows"), group);
@@ -68,11 +82,11 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     areaShape_->setObjectName("lightAreaShape");
     areaShape_->addItem(tr("Rectangle"), int(scene::AreaShape::Rectangle));
     areaShape_->addItem(tr("Disc"), int(scene::AreaShape::Disc));
-    areaWidth_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaWidth_ = makeFieldSpinBox(kSize, 4, 0.05, QStringLiteral(" m"), group);
     areaWidth_->setObjectName("lightAreaWidth");
-    areaHeight_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaHeight_ = makeFieldSpinBox(kSize, 4, 0.05, QStringLiteral(" m"), group);
     areaHeight_->setObjectName("lightAreaHeight");
-    areaRadius_ = makeSpinBox(1e-6, 1e6, 4, 0.05, QStringLiteral(" m"), group);
+    areaRadius_ = makeFieldSpinBox(kRadius, 4, 0.05, QStringLiteral(" m"), group);
     areaRadius_->setObjectName("lightAreaRadius");
     areaUnit_ = new QComboBox(group);
     areaUnit_->setObjectName("lightAreaUnit");
@@ -120,11 +134,11 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     connect(innerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         // The boxes' ranges keep inner <= outer at their display precision; this keeps it exactly.
         edit(tr("Edit spot inner cone"),
-             [&](scene::Light& l) { l.innerConeAngle = std::min(float(glm::radians(v)), l.outerConeAngle); });
+             [&](scene::Light& l) { l.innerConeAngle = std::min(storedValue(v, Shown::Degrees), l.outerConeAngle); });
     });
     connect(outerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit(tr("Edit spot outer cone"),
-             [&](scene::Light& l) { l.outerConeAngle = std::max(float(glm::radians(v)), l.innerConeAngle); });
+             [&](scene::Light& l) { l.outerConeAngle = std::max(storedValue(v, Shown::Degrees), l.innerConeAngle); });
     });
     connect(areaShape_, &QComboBox::currentIndexChanged, this, [this] {
         const auto shape = scene::AreaShape(areaShape_->currentData().toInt());
@@ -241,17 +255,17 @@ void LightProperties::refresh() {
     position_->showValue(glm::dvec3(l.position));
     showValue(range_, l.range);
     {
-        // Each cone bounds the other, so the inner one can never exceed the outer one.
+        // Each cone bounds the other (SceneFields.h's rule), so the inner one can never exceed the outer one.
         const QSignalBlocker blockInner(innerCone_);
         const QSignalBlocker blockOuter(outerCone_);
-        innerCone_->setRange(0.0, 90.0);
-        outerCone_->setRange(0.0, 90.0);
-        const double inner = glm::degrees(double(l.innerConeAngle));
-        const double outer = glm::degrees(double(l.outerConeAngle));
-        showValue(innerCone_, inner);
-        showValue(outerCone_, outer);
-        innerCone_->setMaximum(std::max(outerCone_->value(), innerCone_->value()));
-        outerCone_->setMinimum(std::min(innerCone_->value(), outerCone_->value()));
+        setFieldRange(innerCone_, kInnerCone.widgetRange(), Shown::Degrees);
+        setFieldRange(outerCone_, kOuterCone.widgetRange(), Shown::Degrees);
+        showValue(innerCone_, shownValue(l.innerConeAngle, Shown::Degrees));
+        showValue(outerCone_, shownValue(l.outerConeAngle, Shown::Degrees));
+        setFieldRange(innerCone_, kInnerCone.widgetRange().within(rangeGivenOthers(l, kInnerCone.name)),
+                      Shown::Degrees);
+        setFieldRange(outerCone_, kOuterCone.widgetRange().within(rangeGivenOthers(l, kOuterCone.name)),
+                      Shown::Degrees);
     }
     {
         const QSignalBlocker block(castShadows_);

@@ -3,6 +3,8 @@
 #include "Document.h"
 #include "PropertyWidgets.h"
 
+#include "lpv/scene/SceneFields.h"
+
 #include <QCheckBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -37,8 +39,10 @@ const std::array<TextureSlot, 9> kTextureSlots = {{
     {QT_TRANSLATE_NOOP("MaterialProperties", "Environment map"), &scene::Material::environmentTexture},
 }};
 
-QDoubleSpinBox* unitBox(QWidget* parent, const char* objectName) {
-    QDoubleSpinBox* box = makeSpinBox(0.0, 1.0, 3, 0.05, {}, parent);
+// A box for a table field in [0, 1].
+template <class Field>
+QDoubleSpinBox* unitBox(QWidget* parent, const char* objectName, const Field& field) {
+    QDoubleSpinBox* box = makeFieldSpinBox(field, 3, 0.05, {}, parent);
     box->setObjectName(objectName);
     return box;
 }
@@ -60,20 +64,20 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
     diffuse_->setObjectName("materialDiffuse");
     specular_ = new ColorButton(group);
     specular_->setObjectName("materialSpecular");
-    shininess_ = makeSpinBox(0.0, 10000.0, 1, 4.0, {}, group);
+    shininess_ = makeFieldSpinBox(scene::fieldOf<&scene::Material::shininess>(), 1, 4.0, {}, group);
     shininess_->setObjectName("materialShininess");
     shininess_->setToolTip(tr("Blinn-Phong exponent: higher is a smaller, sharper highlight"));
-    metallic_ = unitBox(group, "materialMetallic");
-    roughness_ = unitBox(group, "materialRoughness");
+    metallic_ = unitBox(group, "materialMetallic", scene::fieldOf<&scene::Material::metallic>());
+    roughness_ = unitBox(group, "materialRoughness", scene::fieldOf<&scene::Material::roughness>());
     emissive_ = new ColorButton(group);
     emissive_->setObjectName("materialEmissive");
     emissiveStrength_ = makeSpinBox(0.0, 1.0e6, 3, 0.1, {}, group);
     emissiveStrength_->setObjectName("materialEmissiveStrength");
     emissiveStrength_->setToolTip(tr("Emitted radiance = colour × strength"));
-    opacity_ = unitBox(group, "materialOpacity");
-    translucency_ = unitBox(group, "materialTranslucency");
+    opacity_ = unitBox(group, "materialOpacity", scene::fieldOf<&scene::Material::opacity>());
+    translucency_ = unitBox(group, "materialTranslucency", scene::fieldOf<&scene::Material::translucency>());
     translucency_->setToolTip(tr("Fraction of light that passes through the surface (subsurface LPV)"));
-    glossiness_ = unitBox(group, "materialGlossiness");
+    glossiness_ = unitBox(group, "materialGlossiness", scene::fieldOf<&scene::Material::glossiness>());
     glossiness_->setToolTip(tr("0 = diffuse, 1 = mirror (glossy LPV reflections)"));
     twoSided_ = new QCheckBox(tr("Two-sided"), group);
     twoSided_->setObjectName("materialTwoSided");

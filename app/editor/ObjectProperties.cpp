@@ -3,6 +3,8 @@
 #include "Document.h"
 #include "PropertyWidgets.h"
 
+#include "lpv/scene/SceneFields.h"
+
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -16,11 +18,6 @@
 #include <algorithm>
 
 namespace lpv::editor {
-
-namespace {
-// Large enough for any scene in metres, small enough that a stray wheel turn stays visible.
-constexpr double kMaxCoordinate = 1.0e6;
-} // namespace
 
 ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* layout = new QVBoxLayout(this);
@@ -38,13 +35,14 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
 
     auto* transform = new QGroupBox(tr("Transform"), this);
     auto* tform = new QFormLayout(transform);
-    translation_ = new Vec3Edit(-kMaxCoordinate, kMaxCoordinate, 3, 0.1, QString(), transform);
+    translation_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::translation>(), 3, 0.1,
+                                QString(), transform);
     translation_->setObjectName("objectTranslation");
     rotation_ = new Vec3Edit(-360.0, 360.0, 2, 5.0, QStringLiteral("°"), transform);
     rotation_->setObjectName("objectRotation");
     rotation_->setToolTip(tr("Euler angles in degrees, applied about X, then Y, then Z"));
-    // Positive only: a zero scale collapses the object and its matrix cannot be inverted.
-    scale_ = new Vec3Edit(0.001, 1.0e4, 3, 0.1, QString(), transform);
+    scale_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::scale>(), 3, 0.1, QString(),
+                          transform);
     scale_->setObjectName("objectScale");
     tform->addRow(tr("Translation"), translation_);
     tform->addRow(tr("Rotation"), rotation_);

@@ -8,7 +8,9 @@
 #include <QPixmap>
 #include <QSignalBlocker>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace lpv::editor {
 
@@ -33,6 +35,44 @@ void showValue(QDoubleSpinBox* box, double value) {
     box->setValue(value);
 }
 
+double shownValue(double stored, Shown shown) {
+    return shown == Shown::Degrees ? stored * (180.0 / std::numbers::pi) : stored;
+}
+
+float storedValue(double value, Shown shown) {
+    // As glm::radians, which the panels used before the tables.
+    return float(shown == Shown::Degrees ? value * (std::numbers::pi / 180.0) : value);
+}
+
+std::pair<double, double> spinBoxBounds(const scene::FieldRange& range, Shown shown, int decimals) {
+    const double quantum = std::pow(10.0, -decimals);
+    // Spin boxes need finite ends; a table field the editor shows has them (editRange).
+    constexpr double kLargest = 1.0e15;
+    const auto atPrecision = [&](double v) {
+        return std::round(std::clamp(shownValue(v, shown), -kLargest, kLargest) / quantum) * quantum;
+    };
+    double lo = atPrecision(range.min);
+    double hi = atPrecision(range.max);
+    for (int i = 0; i < 3 && lo <= hi && !range.contains(storedValue(lo, shown)); ++i)
+        lo += quantum;
+    for (int i = 0; i < 3 && hi >= lo && !range.contains(storedValue(hi, shown)); ++i)
+        hi -= quantum;
+    return {lo, std::max(lo, hi)};
+}
+
+void setFieldRange(QDoubleSpinBox* box, const scene::FieldRange& range, Shown shown) {
+    const auto [lo, hi] = spinBoxBounds(range, shown, box->decimals());
+    box->setRange(lo, hi);
+}
+
+QDoubleSpinBox* makeFieldSpinBox(const char* field, const scene::FieldRange& range, int decimals, double step,
+                                 const QString& suffix, QWidget* parent, Shown shown) {
+    QDoubleSpinBox* box = makeSpinBox(0.0, 0.0, decimals, step, suffix, parent);
+    setFieldRange(box, range, shown);
+    box->setProperty("sceneField", QString::fromLatin1(field));
+    return box;
+}
+
 void showText(QLineEdit* edit, const QString& text) {
     if (edit->text() == text)
         return;
@@ -53,6 +93,13 @@ Vec3Edit::Vec3Edit(double min, double max, int decimals, double step, const QStr
         connect(box, &QDoubleSpinBox::valueChanged, this, [this, axis](double v) { emit edited(axis, v); });
         row->addWidget(box, 1);
         boxes_[std::size_t(axis)] = box;
+    }
+}
+
+void Vec3Edit::setField(const char* name, const scene::FieldRange& range) {
+    for (QDoubleSpinBox* box : boxes_) {
+        setFieldRange(box, range);
+        box->setProperty("sceneField", QString::fromLatin1(name));
     }
 }
 

@@ -6,10 +6,13 @@
 #include <QPushButton>
 #include <QWidget>
 
+#include "lpv/scene/SceneField.h"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <array>
+#include <utility>
 
 class QDoubleSpinBox;
 class QLineEdit;
@@ -25,6 +28,28 @@ QDoubleSpinBox* makeSpinBox(double min, double max, int decimals, double step, c
 // already shows that value (so a refresh does not reset the cursor of a box
 // being edited).
 void showValue(QDoubleSpinBox* box, double value);
+
+// Boxes for scene fields take their range from the field's table entry
+// (SceneFields.h), so they cannot offer a value the project loader refuses.
+// An angle stored in radians may be shown in degrees.
+enum class Shown { AsStored, Degrees };
+double shownValue(double stored, Shown shown);
+float storedValue(double shownValue, Shown shown);
+// The box's ends at `decimals`: an open end, or one that rounding moved
+// outside the range, moves inward by one step of the last decimal.
+std::pair<double, double> spinBoxBounds(const scene::FieldRange& range, Shown shown, int decimals);
+void setFieldRange(QDoubleSpinBox* box, const scene::FieldRange& range, Shown shown = Shown::AsStored);
+// The box of a table field, its property "sceneField" naming the field
+// (the tests walk every box by it).
+QDoubleSpinBox* makeFieldSpinBox(const char* field, const scene::FieldRange& range, int decimals, double step,
+                                 const QString& suffix = {}, QWidget* parent = nullptr,
+                                 Shown shown = Shown::AsStored);
+template <class S, class T>
+QDoubleSpinBox* makeFieldSpinBox(const scene::Field<S, T>& field, int decimals, double step,
+                                 const QString& suffix = {}, QWidget* parent = nullptr,
+                                 Shown shown = Shown::AsStored) {
+    return makeFieldSpinBox(field.name, field.widgetRange(), decimals, step, suffix, parent, shown);
+}
 void showText(QLineEdit* edit, const QString& text);
 
 // Three spin boxes in a row (x, y, z) for positions, rotations and scales.
@@ -33,6 +58,13 @@ class Vec3Edit : public QWidget {
   public:
     Vec3Edit(double min, double max, int decimals, double step, const QString& suffix = {},
              QWidget* parent = nullptr);
+    // A table field's three components, each box ranged by the field.
+    template <class S, class T>
+    Vec3Edit(const scene::Field<S, T>& field, int decimals, double step, const QString& suffix = {},
+             QWidget* parent = nullptr)
+        : Vec3Edit(0.0, 0.0, decimals, step, suffix, parent) {
+        setField(field.name, field.widgetRange());
+    }
     QDoubleSpinBox* box(int axis) const { return boxes_[std::size_t(axis)]; }
     void showValue(const glm::dvec3& v);
     glm::dvec3 value() const;
@@ -42,6 +74,7 @@ class Vec3Edit : public QWidget {
     void edited(int axis, double value);
 
   private:
+    void setField(const char* name, const scene::FieldRange& range);
     std::array<QDoubleSpinBox*, 3> boxes_{};
 };
 

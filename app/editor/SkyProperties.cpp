@@ -3,6 +3,8 @@
 #include "Document.h"
 #include "PropertyWidgets.h"
 
+#include "lpv/scene/SceneFields.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -19,7 +21,7 @@ SkyProperties::SkyProperties(Document* doc, QWidget* parent) : QWidget(parent), 
 
     color_ = new ColorButton(group);
     color_->setObjectName("skyColor");
-    intensity_ = makeSpinBox(0.0, 1.0e4, 3, 0.1, {}, group);
+    intensity_ = makeFieldSpinBox(scene::fieldOf<&scene::Sky::intensity>(), 3, 0.1, {}, group);
     intensity_->setObjectName("skyIntensity");
     intensity_->setToolTip(tr("0 = no sky light (closed interiors)"));
     form->addRow(tr("Colour"), color_);

@@ -9,6 +9,8 @@
 #include "PropertyWidgets.h"
 
 #include "lpv/scene/CornellBox.h"
+#include "lpv/scene/Project.h"
+#include "lpv/scene/ValueChecks.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -20,7 +22,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
 
 using namespace lpv;
 using editor::Selection;
@@ -377,4 +381,116 @@ TEST_F(PropertyPanelTest, EditsThatASaveWouldRefuseAreNotAppliedAndSayWhy) {
     dimmer.intensity = 5.0f;
     doc.setLight(0, dimmer, "dimmer");
     EXPECT_EQ(doc.scene().lights[0].intensity, 5.0f);
+}
+
+// --- every scene field's box against the loader ------------------------------
+// Every box the panels show for a scene field (its "sceneField" property
+// names the table entry, SceneFields.h) is walked to each end and one step
+// inside it: the project loader must take every scene the walk leaves
+// (issue #44: the spot cone's box went down to 0 degrees, which the loader
+// refuses, so a saved project would not open again).
+
+namespace {
+
+class SceneFieldWidgetsTest : public PropertyPanelTest {
+  protected:
+
+    // The loader's verdict on the document's scene as it stands.
+    void expectLoadable(const std::string& what) {
+        scene::Scene copy = doc.scene();
+        const auto valid = scene::validateSceneContent(copy, "walk");
+        EXPECT_TRUE(valid.has_value()) << what << ": " << (valid ? std::string() : valid.error().describe());
+    }
+
+    // Walks every visible field box of the panel; returns how many it walked.
+    int walkBoxes(const std::string& page) {
+        int walked = 0;
+        QString refusal;
+        const auto listening = QObject::connect(&doc, &editor::Document::editRefused,
+                                                [&](const QString& why) { refusal = why; });
+        const int startIndex = doc.undoStack()->index();
+        for (QDoubleSpinBox* box : panel->findChildren<QDoubleSpinBox*>()) {
+            const QVariant field = box->property("sceneField");
+            if (!field.isValid() || !box->isVisibleTo(panel.get()))
+                continue;
+            ++walked;
+            const double step = std::pow(10.0, -box->decimals());
+            // Read each end afresh: a box's range follows the fields that bound it.
+            const auto ends = [&] {
+                return std::array<double, 4>{box->minimum(), box->minimum() + step, box->maximum() - step,
+                                             box->maximum()};
+            };
+            for (int k = 0; k < 4; ++k) {
+                const double v = ends()[std::size_t(k)];
+                if (v < box->minimum() || v > box->maximum())
+                    continue;
+                const double shownBefore = box->value();
+                const scene::Scene before = doc.scene();
+                refusal.clear();
+                box->setValue(v);
+                // The Document refuses what its product checks refuse: a box must not offer that either.
+                // Except the camera's vector rules (target off the position, up off the view
+                // direction), which tie three vectors no range of one component can express.
+                const bool vectorRule = refusal.startsWith("Camera, up:") || refusal.startsWith("Camera, target:");
+                if (float(box->value()) != float(shownBefore) && !vectorRule) // else nothing to store
+                    EXPECT_FALSE(doc.scene() == before)
+                        << page << " " << field.toString().toStdString() << " = " << box->value()
+                        << ": the box offers it, the document refused it: " << refusal.toStdString();
+                expectLoadable(page + " " + field.toString().toStdString() + " (" + box->objectName().toStdString() +
+                               ") = " + std::to_string(box->value()));
+            }
+            // Each box from the page's first state, so one box's ends do not meet another's.
+            doc.undoStack()->setIndex(startIndex);
+        }
+        QObject::disconnect(listening);
+        return walked;
+    }
+
+    void setLight(scene::LightType type, scene::AreaShape shape = scene::AreaShape::Rectangle) {
+        scene::Light l = doc.scene().lights[0];
+        l.type = type;
+        l.shape = shape;
+        doc.setLight(0, l, "retype");
+        doc.select({Selection::Kind::Light, 0});
+    }
+};
+
+} // namespace
+
+TEST_F(SceneFieldWidgetsTest, EveryLightBoxValueLoads) {
+    for (const auto type : {scene::LightType::Spot, scene::LightType::Point, scene::LightType::Directional}) {
+        setLight(type);
+        EXPECT_GT(walkBoxes(scene::toString(type)), 0);
+    }
+    setLight(scene::LightType::Area, scene::AreaShape::Rectangle);
+    EXPECT_GE(walkBoxes("area rectangle"), 4);
+    setLight(scene::LightType::Area, scene::AreaShape::Disc);
+    EXPECT_GE(walkBoxes("area disc"), 2);
+}
+
+TEST_F(SceneFieldWidgetsTest, EveryMaterialCameraObjectAndSkyBoxValueLoads) {
+    doc.select({Selection::Kind::Material, 0});
+    EXPECT_GE(walkBoxes("material (Blinn-Phong)"), 4);
+    scene::Material pbr = doc.scene().materials[1];
+    pbr.shading = scene::ShadingModel::MetallicRoughness;
+    doc.setMaterial(1, pbr, "pbr");
+    doc.select({Selection::Kind::Material, 1});
+    EXPECT_GE(walkBoxes("material (metallic-roughness)"), 4);
+    doc.select({Selection::Kind::Camera, 0});
+    EXPECT_GE(walkBoxes("camera"), 9);
+    doc.select({Selection::Kind::Object, 0});
+    EXPECT_GE(walkBoxes("object"), 6);
+    doc.select({});
+    EXPECT_EQ(walkBoxes("sky"), 1);
+}
+
+// The case issue #44 found: 0 degrees, refused by the loader as outside (0, pi/2].
+TEST_F(SceneFieldWidgetsTest, SpotConeBoxStopsAboveZero) {
+    setLight(scene::LightType::Spot);
+    QDoubleSpinBox* outer = panel->findChild<QDoubleSpinBox*>("lightOuterCone");
+    ASSERT_NE(outer, nullptr);
+    outer->setValue(0.0);
+    EXPECT_GT(outer->minimum(), 0.0);
+    EXPECT_GE(doc.scene().lights[0].outerConeAngle, float(scene::kMinSpotCone));
+    expectLoadable("outer cone at its box's minimum");
 }

@@ -38,8 +38,8 @@ inline constexpr EnumNames<AlphaMode> kEnumNames<AlphaMode>{"opaque, mask, blend
 namespace fields {
 
 inline constexpr double kHalfPi = std::numbers::pi / 2;
-// Spin boxes need finite ends: coordinates and sizes beyond a million metres
-// are typed into the file, not dialled in.
+// Spin boxes need finite ends: a million metres is large enough for any
+// scene in metres, small enough that a stray wheel turn stays visible.
 inline constexpr FieldRange kEditCoordinate{-1.0e6, 1.0e6};
 inline constexpr FieldRange kEditLength{1.0e-6, 1.0e6};
 inline constexpr FieldRange kEditRadiometric{0.0, 1.0e6};
