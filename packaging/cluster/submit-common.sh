@@ -2,6 +2,27 @@
 # count, the lpv binary the jobs run, and submitting a job array followed by
 # a merge job that runs only after every task succeeded.
 
+# usage_unless_at_least N ARGS...: with fewer than N arguments, prints the
+# calling script's header comment (its usage) and exits 2.
+usage_unless_at_least() {
+  local need=$1
+  shift
+  if [ $# -lt "$need" ]; then
+    sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0" >&2
+    exit 2
+  fi
+}
+
+# take_project_out_count PROJECT OUT N [...]: the usage without three
+# arguments; else sets project (which must exist), out and count (checked).
+take_project_out_count() {
+  usage_unless_at_least 3 "$@"
+  project=$(realpath -e "$1")
+  out=$(realpath -m "$2")
+  count=$3
+  check_count "$count"
+}
+
 # check_count N: exits with a usage error unless N is a positive integer.
 check_count() {
   case $1 in

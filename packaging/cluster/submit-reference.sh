@@ -18,17 +18,10 @@
 #                    --cpus-per-task=32" (word-split); SBATCH_* variables work too
 set -euo pipefail
 
-if [ $# -lt 3 ]; then
-  sed -n '2,20s/^# \{0,1\}//p' "$0" >&2
-  exit 2
-fi
 here=$(dirname "$(realpath "$0")")
 source "$here/submit-common.sh"
-project=$(realpath -e "$1")
-out=$(realpath -m "$2")
-count=$3
+take_project_out_count "$@"
 shift 3
-check_count "$count"
 case $out in
   *.exr) ;;
   *) echo "OUT must end in .exr: $out" >&2; exit 2 ;;

@@ -19,12 +19,9 @@
 #                    (word-split); SBATCH_* variables work too
 set -euo pipefail
 
-if [ $# -lt 2 ]; then
-  sed -n '2,21s/^# \{0,1\}//p' "$0" >&2
-  exit 2
-fi
 here=$(dirname "$(realpath "$0")")
 source "$here/submit-common.sh"
+usage_unless_at_least 2 "$@"
 out=$(realpath -m "$1")
 count=$2
 shift 2

@@ -19,17 +19,10 @@
 #                    (word-split); SBATCH_* variables work too
 set -euo pipefail
 
-if [ $# -lt 3 ]; then
-  sed -n '2,21s/^# \{0,1\}//p' "$0" >&2
-  exit 2
-fi
 here=$(dirname "$(realpath "$0")")
 source "$here/submit-common.sh"
-project=$(realpath -e "$1")
-out=$(realpath -m "$2")
-count=$3
+take_project_out_count "$@"
 shift 3
-check_count "$count"
 shard_dir=$(realpath -m "${LPV_SHARD_DIR:-$out.shards}")
 resolve_lpv_and_sbatch_args
 mkdir -p "$shard_dir"

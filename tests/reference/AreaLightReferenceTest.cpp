@@ -2,12 +2,15 @@
 // estimation), one-sided unless flagged, their irradiance equal to Lambert's
 // formula; what the renderer's shader twin computes for the same light.
 #include "lpv/reference/PathTracer.h"
+#include "GreyFloor.h"
 #include "lpv/scene/AreaLight.h"
 #include "lpv/scene/Primitives.h"
 
+#include "ReferenceTestScenes.h"
 #include "Sampling.h"
 
 #include <glm/gtc/quaternion.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,16 +20,7 @@ namespace {
 using namespace lpv;
 
 scene::Scene floorWithPanel(bool twoSided) {
-    scene::Scene s;
-    s.meshes.push_back(scene::makePlane());
-    scene::Material m;
-    m.diffuseColor = glm::vec3(0.5f);
-    s.materials.push_back(m);
-    scene::Object o;
-    o.mesh = 0;
-    o.transform.scale = glm::vec3(100.0f, 1.0f, 100.0f);
-    s.objects.push_back(o);
-    s.sky.intensity = 0.0f;
+    scene::Scene s = test::greyFloor(0.5f, 100.0f);
     scene::Light panel;
     panel.type = scene::LightType::Area;
     panel.size = {1.2f, 0.8f};
@@ -37,14 +31,6 @@ scene::Scene floorWithPanel(bool twoSided) {
     panel.twoSided = twoSided;
     s.lights.push_back(panel);
     return s;
-}
-
-scene::Camera lookingDown() {
-    scene::Camera c;
-    c.position = {0.0f, 5.0f, 0.0f};
-    c.target = {0.0f, 0.0f, 0.0f};
-    c.up = {0.0f, 0.0f, -1.0f};
-    return c;
 }
 
 // The mean of `n` one-point estimates of the direct irradiance.
@@ -70,7 +56,7 @@ TEST(AreaLightReference, IrradianceUnderARectangleIsLambertsFormula) {
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree) << embree.error().describe();
     reference::PathTracerSettings settings;
-    const reference::PathTracer tracer(*embree, s, lookingDown(), settings);
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), settings);
     const scene::Light& light = s.lights.front();
     for (const glm::vec3 p : {glm::vec3(0.0f), glm::vec3(1.5f, 0.0f, 0.4f)}) {
         const double expected = 4.0 * lambert(light, glm::dvec3(p), {0, 1, 0});
@@ -86,14 +72,14 @@ TEST(AreaLightReference, NothingReachesTheBackOfAOneSidedEmitter) {
     const scene::Scene s = floorWithPanel(false);
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree);
-    const reference::PathTracer tracer(*embree, s, lookingDown(), {});
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), {});
     EXPECT_EQ(meanIrradiance(tracer, {0.3f, 3.0f, -0.2f}, {0, -1, 0}, 1000), glm::dvec3(0.0));
 
     // Flagged two-sided, it lights both sides alike.
     const scene::Scene both = floorWithPanel(true);
     auto embreeBoth = reference::EmbreeScene::build(both, {});
     ASSERT_TRUE(embreeBoth);
-    const reference::PathTracer twoSided(*embreeBoth, both, lookingDown(), {});
+    const reference::PathTracer twoSided(*embreeBoth, both, test::lookingDown(), {});
     const double expected = 4.0 * lambert(both.lights.front(), {0.3, 3.0, -0.2}, {0, -1, 0});
     EXPECT_NEAR(meanIrradiance(twoSided, {0.3f, 3.0f, -0.2f}, {0, -1, 0}, 40000).r, expected, 0.01 * expected);
 }
@@ -108,7 +94,7 @@ TEST(AreaLightReference, ABlockerCastsASoftShadow) {
     s.objects.push_back(blocker);
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree);
-    const reference::PathTracer tracer(*embree, s, lookingDown(), {});
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), {});
     const double open = 4.0 * lambert(s.lights.front(), {0.3, 0.0, -0.2}, {0, 1, 0});
     const double shadowed = meanIrradiance(tracer, {0.3f, 0.0f, -0.2f}, {0, 1, 0}, 20000).r;
     // Partly blocked: a penumbra, neither fully lit nor black.

@@ -3,6 +3,8 @@
 // furnace) converges to Le / (1 - a), masked texels let rays through, and
 // the image does not depend on the number of threads.
 #include "lpv/reference/PathTracer.h"
+#include "GreyFloor.h"
+#include "ReferenceTestScenes.h"
 #include "lpv/scene/CornellBox.h"
 #include "lpv/scene/Primitives.h"
 
@@ -15,27 +17,7 @@ namespace {
 using namespace lpv;
 constexpr float kPi = 3.14159265358979f;
 
-scene::Scene planeScene(float albedo) {
-    scene::Scene s;
-    s.meshes.push_back(scene::makePlane());
-    scene::Material m;
-    m.diffuseColor = glm::vec3(albedo);
-    s.materials.push_back(m);
-    scene::Object o;
-    o.mesh = 0;
-    o.transform.scale = glm::vec3(100.0f, 1.0f, 100.0f);
-    s.objects.push_back(o);
-    s.sky.intensity = 0.0f;
-    return s;
-}
-
-scene::Camera lookingDown() {
-    scene::Camera c;
-    c.position = {0.0f, 5.0f, 0.0f};
-    c.target = {0.0f, 0.0f, 0.0f};
-    c.up = {0.0f, 0.0f, -1.0f};
-    return c;
-}
+scene::Scene planeScene(float albedo) { return test::greyFloor(albedo, 100.0f); }
 
 reference::PathTracerSettings small(int spp, int bounces = 4) {
     reference::PathTracerSettings s;
@@ -56,7 +38,7 @@ TEST(PathTracer, LitPlaneDirectIrradianceIsECosTheta) {
     s.lights.push_back(sun);
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree) << embree.error().describe();
-    const reference::PathTracer tracer(*embree, s, lookingDown(), small(4));
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), small(4));
     const glm::vec3 e = tracer.directIrradiance({1.0f, 0.0f, 2.0f}, {0, 1, 0}, {0, 1, 0});
     EXPECT_NEAR(e.x, 3.0f * std::cos(theta), 1e-5f);
 
@@ -86,7 +68,7 @@ TEST(PathTracer, PointLightFallsOffWithDistanceSquaredAndShadows) {
     s.objects.push_back(blocker);
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree);
-    const reference::PathTracer tracer(*embree, s, lookingDown(), small(1));
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), small(1));
     EXPECT_EQ(tracer.directIrradiance({0, 0, 0}, {0, 1, 0}, {0, 1, 0}), glm::vec3(0.0f));
     const glm::vec3 p{1.5f, 0.0f, 0.0f};
     const float d2 = glm::dot(point.position - p, point.position - p);
@@ -98,20 +80,8 @@ TEST(PathTracer, PointLightFallsOffWithDistanceSquaredAndShadows) {
 // L = Le (1 + a + a^2 + ...) = Le / (1 - a); the irradiance at any wall from
 // the others is pi Le after one bounce and pi Le (1 + ... + a^(B-1)) after B.
 TEST(PathTracer, FurnaceBoxConvergesToAnalyticRadiance) {
-    scene::Scene s;
-    s.meshes.push_back(scene::makeBox());
-    scene::Material m;
     const float a = 0.5f, le = 1.0f;
-    m.diffuseColor = glm::vec3(a);
-    m.emissive = glm::vec3(le);
-    // The box's faces point out and the camera is inside: emission must leave the
-    // back too, which a material says explicitly (emitters are one-sided otherwise).
-    m.twoSided = true;
-    s.materials.push_back(m);
-    scene::Object o;
-    o.mesh = 0;
-    o.transform.scale = glm::vec3(4.0f);
-    s.objects.push_back(o);
+    const scene::Scene s = test::furnaceBox(a, le);
     scene::Camera c;
     c.position = {0.0f, 0.0f, 1.0f};
     c.target = {0.0f, 0.0f, -1.0f};
@@ -220,7 +190,7 @@ TEST(PathTracer, MaskedTexelsLetRaysThrough) {
     s.lights.push_back(sun);
     auto embree = reference::EmbreeScene::build(s, {});
     ASSERT_TRUE(embree);
-    const reference::PathTracer tracer(*embree, s, lookingDown(), small(1));
+    const reference::PathTracer tracer(*embree, s, test::lookingDown(), small(1));
     EXPECT_NEAR(tracer.directIrradiance({0, 0, 0}, {0, 1, 0}, {0, 1, 0}).r, 1.0f, 1e-6f);
     const auto hit = embree->intersect({0, 5, 0}, {0, -1, 0}, 0.0f, 100.0f);
     ASSERT_TRUE(hit);

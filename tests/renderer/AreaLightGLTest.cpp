@@ -5,6 +5,7 @@
 // penumbra widens with the light; a glossy metal floor reflects the light's
 // specular lobe as the LTC CPU twin (scene::areaLightSpecularFactor) says.
 #include "GlFixture.h"
+#include "GreyFloor.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/scene/AreaLight.h"
@@ -27,16 +28,10 @@ class AreaLightGL : public GlTest {
 protected:
     void SetUp() override {
         GlTest::SetUp();
-        scene.meshes.push_back(scene::makePlane());
         scene::Material m;
         m.diffuseColor = glm::vec3(kAlbedo);
         m.specularColor = glm::vec3(0.0f);
-        scene.materials.push_back(m);
-        scene::Object floor;
-        floor.mesh = 0;
-        floor.transform.scale = glm::vec3(20.0f, 1.0f, 20.0f);
-        scene.objects.push_back(floor);
-        scene.sky.intensity = 0.0f;
+        scene = test::greyFloor(m, 20.0f);
         light.type = scene::LightType::Area;
         light.size = {1.0f, 0.6f};
         light.position = {0.2f, 1.0f, 0.1f};
