@@ -23,6 +23,7 @@
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/lpv/SceneGeometryVolume.h"
+#include "lpv/scene/SceneFields.h"
 
 #include <memory>
 #include <optional>
@@ -31,13 +32,12 @@
 
 namespace lpv::renderer {
 
-// What lighting a pass reads: every light's parameters but its name.
+// What lighting a pass reads: every field the light's table hashes (all but
+// its name, SceneFields.h), so a field added there is in every reuse key.
 inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& lights) {
     h.add(lights.size());
     for (const scene::Light& l : lights)
-        h.add(l.type).add(l.color).add(l.intensity).add(l.position).add(l.direction).add(l.range)
-            .add(l.innerConeAngle).add(l.outerConeAngle).add(l.castShadows).add(l.shape).add(l.size).add(l.radius)
-            .add(l.tangent).add(l.twoSided).add(l.unit);
+        scene::hashFields(l, [&](const void* p, std::size_t n) { h.bytes(p, n); });
 }
 
 // A graph pass's decision when no scene analysis stands behind it: it runs
