@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -18,6 +19,7 @@
 #include <string_view>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace lpv::scene {
@@ -210,19 +212,30 @@ void fieldBytes(Sink& sink, const T& v) {
     }
 }
 
-// Feeds sink(const void*, std::size_t) every hashed field of `s` in table
-// order, whether it applies to this light type or not (a field the editor
-// keeps across a type switch still counts): a field added to the table is in
-// every hash without anyone remembering it.
+// Feeds sink(const void*, std::size_t) every hashed field of `s`, whether it
+// applies to this light type or not (a field the editor keeps across a type
+// switch still counts): a field added to the table is in every hash without
+// anyone remembering it. In the struct's member order, not the file's: the
+// order radiosity's stored scene signatures were made in, so solutions baked
+// before the tables still match.
 template <class S, class Sink>
 void hashFields(const S& s, Sink&& sink) {
+    std::vector<std::pair<std::ptrdiff_t, std::string>> parts;
     forEachField<S>([&](const auto& f) {
         using T = typename std::decay_t<decltype(f)>::Type;
         if constexpr (kHasFieldBytes<T>) {
-            if (f.hashed)
-                fieldBytes(sink, f.of(s));
+            if (!f.hashed)
+                return;
+            std::string bytes;
+            auto append = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
+            fieldBytes(append, f.of(s));
+            const auto offset = reinterpret_cast<const char*>(&f.of(s)) - reinterpret_cast<const char*>(&s);
+            parts.emplace_back(offset, std::move(bytes));
         }
     });
+    std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [offset, bytes] : parts)
+        sink(bytes.data(), bytes.size());
 }
 
 } // namespace lpv::scene
