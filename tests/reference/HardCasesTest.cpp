@@ -3,6 +3,8 @@
 #include "lpv/reference/PathTracer.h"
 #include "lpv/scene/Primitives.h"
 
+#include "ReferenceTestScenes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,19 +136,7 @@ TEST(ReferenceHardCases, FarCameraStaysFinite) {
 // (100x at a = 0.99); with 64 bounces and Russian roulette the estimate stays
 // finite and below the infinite-bounce bound.
 TEST(ReferenceHardCases, NearOneReflectanceStaysFiniteAndBounded) {
-    scene::Scene s;
-    s.meshes.push_back(scene::makeBox());
-    scene::Material m;
-    m.diffuseColor = glm::vec3(0.99f);
-    m.emissive = glm::vec3(1.0f);
-    // The box's faces point out and the camera is inside: emission must leave the
-    // back too, which a material says explicitly (emitters are one-sided otherwise).
-    m.twoSided = true;
-    s.materials.push_back(m);
-    scene::Object o;
-    o.mesh = 0;
-    o.transform.scale = glm::vec3(4.0f);
-    s.objects.push_back(o);
+    const scene::Scene s = test::furnaceBox(0.99f, 1.0f);
     scene::Camera c;
     c.position = {0.0f, 0.0f, 1.0f};
     auto settings = tiny();
