@@ -18,9 +18,13 @@ using renderer::graph::FrameGraph;
 using renderer::graph::Lifetime;
 using renderer::graph::PassContext;
 using renderer::graph::PassSpec;
+using renderer::graph::ResourceHandle;
 using scene::Pass;
 
 namespace {
+
+// The test graph's resources (the frame's own are in FrameResources.h).
+constexpr ResourceHandle kA{"a"}, kB{"b"}, kC{"c"}, kT{"t"};
 
 class FrameGraphGLTest : public GlTest {
   protected:
@@ -34,7 +38,7 @@ class FrameGraphGLTest : public GlTest {
         return {project.scene, params, project.scene.cameras.front(), 8, 8, {}, {}, {}, timer};
     }
     // A pass that records its name when it runs; reads and writes as given.
-    PassSpec pass(Pass id, std::vector<std::string> reads, std::vector<std::string> writes, bool final = false,
+    PassSpec pass(Pass id, std::vector<ResourceHandle> reads, std::vector<ResourceHandle> writes, bool final = false,
                   std::optional<std::uint64_t> key = 1) {
         PassSpec p;
         p.id = id;
@@ -52,7 +56,7 @@ class FrameGraphGLTest : public GlTest {
         return p;
     }
     void declareResources() {
-        for (const char* name : {"a", "b", "c"})
+        for (ResourceHandle name : {kA, kB, kC})
             graph.importResource(name, [] { return renderer::graph::ImportedView{}; });
     }
     // One frame: declare via `build`, compile with reuse, execute; returns the passes that ran.
@@ -82,10 +86,10 @@ using Names = std::vector<std::string>;
 TEST_F(FrameGraphGLTest, RunsWritersBeforeReadersAndCullsWhatNothingReads) {
     auto build = [&] {
         // Added out of order on purpose: the tonemap-like final pass first is still run last.
-        graph.addPass(pass(Pass::Rsm, {}, {"a"}));
-        graph.addPass(pass(Pass::LpvInjection, {"a"}, {"b"}));
-        graph.addPass(pass(Pass::SkyHeight, {}, {"c"})); // nobody reads c
-        graph.addPass(pass(Pass::Tonemap, {"b"}, {}, true));
+        graph.addPass(pass(Pass::Rsm, {}, {kA}));
+        graph.addPass(pass(Pass::LpvInjection, {kA}, {kB}));
+        graph.addPass(pass(Pass::SkyHeight, {}, {kC})); // nobody reads c
+        graph.addPass(pass(Pass::Tonemap, {kB}, {}, true));
     };
     EXPECT_EQ(runFrame(build), (Names{"rsm", "lpvInjection", "tonemap"}));
     EXPECT_EQ(report(Pass::SkyHeight).status, PassStatus::Culled);
@@ -97,17 +101,17 @@ TEST_F(FrameGraphGLTest, RunsWritersBeforeReadersAndCullsWhatNothingReads) {
 
 TEST_F(FrameGraphGLTest, AReadRunsBeforeTheNextWriterOfWhatItRead) {
     auto build = [&] {
-        graph.addPass(pass(Pass::LpvInjection, {}, {"a"}));
-        graph.addPass(pass(Pass::LpvNormals, {"a"}, {"b"}));        // reads a as injection left it
-        graph.addPass(pass(Pass::LpvPropagation, {"a", "b"}, {"a"})); // then a is updated in place
-        graph.addPass(pass(Pass::Tonemap, {"a"}, {}, true));
+        graph.addPass(pass(Pass::LpvInjection, {}, {kA}));
+        graph.addPass(pass(Pass::LpvNormals, {kA}, {kB}));        // reads a as injection left it
+        graph.addPass(pass(Pass::LpvPropagation, {kA, kB}, {kA})); // then a is updated in place
+        graph.addPass(pass(Pass::Tonemap, {kA}, {}, true));
     };
     EXPECT_EQ(runFrame(build), (Names{"lpvInjection", "lpvNormals", "lpvPropagation", "tonemap"}));
 }
 
 TEST_F(FrameGraphGLTest, ADecisionThatSaysNoCullsThePassWithItsReason) {
     auto build = [&] {
-        PassSpec sky = pass(Pass::SkyHeight, {}, {"c"});
+        PassSpec sky = pass(Pass::SkyHeight, {}, {kC});
         sky.decision.wanted = false;
         sky.decision.reason = "closed interior: no sky light reaches the scene";
         graph.addPass(std::move(sky));
@@ -121,9 +125,9 @@ TEST_F(FrameGraphGLTest, ADecisionThatSaysNoCullsThePassWithItsReason) {
 TEST_F(FrameGraphGLTest, AnOutputIsReusedUntilAParameterThatInvalidatesItChanges) {
     // rsm.tileSize invalidates the RSM; lpv.propagationSteps only what propagates.
     auto build = [&] {
-        graph.addPass(pass(Pass::Rsm, {}, {"a"}));
-        graph.addPass(pass(Pass::LpvPropagation, {"a"}, {"b"}));
-        graph.addPass(pass(Pass::Tonemap, {"b"}, {}, true, std::nullopt));
+        graph.addPass(pass(Pass::Rsm, {}, {kA}));
+        graph.addPass(pass(Pass::LpvPropagation, {kA}, {kB}));
+        graph.addPass(pass(Pass::Tonemap, {kB}, {}, true, std::nullopt));
     };
     EXPECT_EQ(runFrame(build), (Names{"rsm", "lpvPropagation", "tonemap"}));
     EXPECT_EQ(report(Pass::Rsm).reason, "nothing to reuse: first run");
@@ -146,8 +150,8 @@ TEST_F(FrameGraphGLTest, AnOutputIsReusedUntilAParameterThatInvalidatesItChanges
 TEST_F(FrameGraphGLTest, ANewInputsKeyReruns) {
     std::uint64_t key = 1;
     auto build = [&] {
-        graph.addPass(pass(Pass::ShadowMaps, {}, {"a"}, false, key));
-        graph.addPass(pass(Pass::Tonemap, {"a"}, {}, true, std::nullopt));
+        graph.addPass(pass(Pass::ShadowMaps, {}, {kA}, false, key));
+        graph.addPass(pass(Pass::Tonemap, {kA}, {}, true, std::nullopt));
     };
     runFrame(build);
     EXPECT_EQ(runFrame(build), (Names{"tonemap"}));
@@ -160,10 +164,10 @@ TEST_F(FrameGraphGLTest, PassesThatUpdateOneResourceRerunTogether) {
     // Injection writes a, propagation updates it in place: a changed
     // propagation must start again from a fresh injection, whose own key did not change.
     auto build = [&] {
-        graph.addPass(pass(Pass::LpvInjection, {}, {"a"}));
-        graph.addPass(pass(Pass::LpvNormals, {"a"}, {"b"}));
-        graph.addPass(pass(Pass::LpvPropagation, {"a", "b"}, {"a"}));
-        graph.addPass(pass(Pass::Tonemap, {"a"}, {}, true, std::nullopt));
+        graph.addPass(pass(Pass::LpvInjection, {}, {kA}));
+        graph.addPass(pass(Pass::LpvNormals, {kA}, {kB}));
+        graph.addPass(pass(Pass::LpvPropagation, {kA, kB}, {kA}));
+        graph.addPass(pass(Pass::Tonemap, {kA}, {}, true, std::nullopt));
     };
     runFrame(build);
     EXPECT_EQ(runFrame(build), (Names{"tonemap"}));
@@ -181,8 +185,8 @@ TEST_F(FrameGraphGLTest, PassesThatUpdateOneResourceRerunTogether) {
 
 TEST_F(FrameGraphGLTest, ReuseOffRunsEverything) {
     auto build = [&] {
-        graph.addPass(pass(Pass::Rsm, {}, {"a"}));
-        graph.addPass(pass(Pass::Tonemap, {"a"}, {}, true));
+        graph.addPass(pass(Pass::Rsm, {}, {kA}));
+        graph.addPass(pass(Pass::Tonemap, {kA}, {}, true));
     };
     runFrame(build);
     EXPECT_EQ(runFrame(build, false), (Names{"rsm", "tonemap"}));
@@ -192,19 +196,19 @@ TEST_F(FrameGraphGLTest, ReuseOffRunsEverything) {
 TEST_F(FrameGraphGLTest, TransientTargetsAreAllocatedForTheFrameAndNeverReused) {
     GLuint seen = 0;
     auto build = [&] {
-        graph.createResource("t", {renderer::graph::ResourceKind::Texture2D, GL_RGBA8, 4, 2}, Lifetime::Transient);
-        PassSpec p = pass(Pass::SunRays, {}, {"t"});
+        graph.createResource(kT, {renderer::graph::ResourceKind::Texture2D, GL_RGBA8, 4, 2}, Lifetime::Transient);
+        PassSpec p = pass(Pass::SunRays, {}, {kT});
         p.execute = [&](PassContext& ctx) {
-            seen = ctx.id("t");
+            seen = ctx.id(kT);
             ran.push_back("sunRays");
             return scene::Expected<void>{};
         };
         graph.addPass(std::move(p));
-        graph.addPass(pass(Pass::Tonemap, {"t"}, {}, true, std::nullopt));
+        graph.addPass(pass(Pass::Tonemap, {kT}, {}, true, std::nullopt));
     };
     runFrame(build);
     EXPECT_NE(seen, 0u);
-    EXPECT_EQ(graph.resourceDesc("t")->width, 4);
+    EXPECT_EQ(graph.resourceDesc(kT.name())->width, 4);
     EXPECT_EQ(runFrame(build), (Names{"sunRays", "tonemap"}));
     EXPECT_EQ(report(Pass::SunRays).reason, "t is transient: nothing is kept");
     EXPECT_EQ(report(Pass::SunRays).writes.at(0).description, "2D RGBA8 4x2");
@@ -213,15 +217,15 @@ TEST_F(FrameGraphGLTest, TransientTargetsAreAllocatedForTheFrameAndNeverReused) 
 TEST_F(FrameGraphGLTest, WrongDeclarationsAreErrorsNotCrashes) {
     graph.beginFrame();
     declareResources();
-    graph.addPass(pass(Pass::Rsm, {"nope"}, {"a"}));
+    graph.addPass(pass(Pass::Rsm, {ResourceHandle{"nope"}}, {kA}));
     auto compiled = graph.compile(params, true);
     ASSERT_FALSE(compiled.has_value());
     EXPECT_NE(compiled.error().describe().find("'nope'"), std::string::npos) << compiled.error().describe();
 
     graph.beginFrame();
     declareResources();
-    graph.addPass(pass(Pass::Rsm, {}, {"a"}));
-    graph.addPass(pass(Pass::Rsm, {"a"}, {"b"}, true));
+    graph.addPass(pass(Pass::Rsm, {}, {kA}));
+    graph.addPass(pass(Pass::Rsm, {kA}, {kB}, true));
     ASSERT_FALSE(graph.compile(params, true).has_value()) << "two passes with one name";
 
     // Using a resource the pass did not declare fails the frame with a message.
@@ -229,7 +233,7 @@ TEST_F(FrameGraphGLTest, WrongDeclarationsAreErrorsNotCrashes) {
     declareResources();
     PassSpec p = pass(Pass::Tonemap, {}, {}, true);
     p.execute = [](PassContext& ctx) {
-        (void)ctx.id("a");
+        (void)ctx.id(kA);
         return scene::Expected<void>{};
     };
     graph.addPass(std::move(p));

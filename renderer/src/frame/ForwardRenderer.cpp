@@ -72,6 +72,7 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();
     r.impl_->graph.reserveUnits(MaterialGpu::kBaseColorUnit, 15); // MaterialGpu binds these per draw
+    r.impl_->buildPassTable();
     return r;
 }
 
@@ -161,9 +162,9 @@ GpuMemory ForwardRenderer::gpuMemory() const {
     if (m.shadows)
         m.shadows->addGpuMemory(ledger);
     if (m.rsm) {
-        ledger.addTexture("rsm.position", m.rsm->positionArray());
-        ledger.addTexture("rsm.normal", m.rsm->normalArray());
-        ledger.addTexture("rsm.flux", m.rsm->fluxArray());
+        ledger.addTexture(resources::RsmPosition.name(), m.rsm->positionArray());
+        ledger.addTexture(resources::RsmNormal.name(), m.rsm->normalArray());
+        ledger.addTexture(resources::RsmFlux.name(), m.rsm->fluxArray());
         ledger.addTexture("rsm.depth", m.rsm->depthArray());
     }
     if (m.localRsm)
@@ -171,7 +172,7 @@ GpuMemory ForwardRenderer::gpuMemory() const {
     if (m.emissiveVpls) {
         const LpvLocalInput vpls = m.emissiveVpls->input();
         for (GLuint t : {vpls.position, vpls.normal, vpls.flux})
-            ledger.addTexture("emissiveVpls", t);
+            ledger.addTexture(resources::EmissiveVpls.name(), t);
     }
     if (m.lpv)
         m.lpv->addGpuMemory(ledger);
@@ -179,8 +180,8 @@ GpuMemory ForwardRenderer::gpuMemory() const {
         m.subsurface->addGpuMemory(ledger);
     if (m.exposure)
         m.exposure->addGpuMemory(ledger);
-    if (m.radiosityIndirect)
-        m.radiosityIndirect->addGpuMemory(ledger);
+    for (const std::unique_ptr<FramePass>& pass : m.passes)
+        pass->addGpuMemory(ledger);
     ledger.addBuffer("shading.ltcTable", m.ltcTable.id());
     // Then every resource the frame graph declared: its own targets and what the passes imported.
     for (const std::string& name : m.graph.resourceNames())
@@ -248,10 +249,16 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
         if (auto ok = d.planIndirect(frame); !ok)
             return ok;
         d.declareCameraTargets(frame);
-        d.declareShadows(frame);
-        d.declareIndirect(frame);
-        d.declareShading(frame);
-        d.declarePost(frame);
+        FrameState state{.frame = frame,
+                         .graph = d.graph,
+                         .sceneGeneration = d.sceneGeneration,
+                         .depthPrepass = frame.params.getBool("output.depthPrepass"),
+                         .radiosity = d.plan.radiosity,
+                         .baked = d.baked.get(),
+                         .bakedGeneration = d.bakedGeneration,
+                         .lpv = d.lpvStageInputs(frame)};
+        for (const std::unique_ptr<FramePass>& pass : d.passes)
+            pass->addTo(state);
         if (auto ok = d.graph.compile(d.frameParams, params.getBool("lpv.reuse")); !ok)
             return ok;
         d.releaseCulled();
@@ -266,7 +273,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
         else
             d.lpv->finish(d.plan.settings, d.plan.cameraGv, d.plan.sky.runs(), d.localInputs());
     }
-    d.previousCamera = {d.graph.resourceId("camera.depth"), d.graph.resourceId("camera.normal"),
+    d.previousCamera = {d.graph.resourceId(resources::CameraDepth), d.graph.resourceId(resources::CameraNormal),
                         glm::inverse(frame.viewProj), camera.position,
                         2.0f * std::tan(0.5f * camera.fovY) / float(height)};
     d.gBufferValid = true;
@@ -303,21 +310,21 @@ std::vector<float> readFloats(GLuint texture, GLenum format, int channels, int w
 } // namespace
 
 std::vector<float> ForwardRenderer::readHdr() const {
-    return readFloats(impl_->graph.resourceId("camera.hdr"), GL_RGBA, 4, impl_->width, impl_->height);
+    return readFloats(impl_->graph.resourceId(resources::CameraHdr), GL_RGBA, 4, impl_->width, impl_->height);
 }
 std::vector<float> ForwardRenderer::readGBufferNormal() const {
-    return readFloats(impl_->graph.resourceId("camera.normal"), GL_RGBA, 4, impl_->width, impl_->height);
+    return readFloats(impl_->graph.resourceId(resources::CameraNormal), GL_RGBA, 4, impl_->width, impl_->height);
 }
 std::vector<float> ForwardRenderer::readGBufferAlbedo() const {
-    return readFloats(impl_->graph.resourceId("camera.albedo"), GL_RGBA, 4, impl_->width, impl_->height);
+    return readFloats(impl_->graph.resourceId(resources::CameraAlbedo), GL_RGBA, 4, impl_->width, impl_->height);
 }
 std::vector<float> ForwardRenderer::readDepth() const {
-    return readFloats(impl_->graph.resourceId("camera.depth"), GL_DEPTH_COMPONENT, 1, impl_->width, impl_->height);
+    return readFloats(impl_->graph.resourceId(resources::CameraDepth), GL_DEPTH_COMPONENT, 1, impl_->width, impl_->height);
 }
 
 std::vector<std::uint8_t> ForwardRenderer::readDisplay() const {
     std::vector<std::uint8_t> px(std::size_t(impl_->width) * std::size_t(impl_->height) * 4);
-    glGetTextureImage(impl_->graph.resourceId("display"), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
+    glGetTextureImage(impl_->graph.resourceId(resources::Display), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(px.size()), px.data());
     flipRows(px, impl_->width, impl_->height, 4);
     return px;
 }

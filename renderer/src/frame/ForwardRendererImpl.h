@@ -1,19 +1,23 @@
 #pragma once
 // ForwardRenderer's state between frames, and the frame as a graph of
 // passes (graph/FrameGraph.h). Each frame render() plans the indirect light
-// (which effects the scene calls for), declares the resources and passes
-// (FramePasses.cpp: shadows, shading, sun rays, exposure, tonemap;
-// IndirectPasses.cpp: RSMs, VPLs, sky, the LPV's stages, subsurface), then
-// compiles and executes the graph.
+// (which effects the scene calls for), lets every pass of the table
+// (PassTable.cpp) declare itself with its resources, then compiles and
+// executes the graph. Passes in their own files (FramePass.h) read the
+// frame's FrameState; the others are still declared here (FramePasses.cpp:
+// shadows, depth pre-pass, shading, sun rays, exposure, tonemap;
+// IndirectPasses.cpp: RSMs, VPLs, sky height, subsurface).
 #include "passes/direct/AutoExposurePass.h"
 #include "passes/lpv/EmissiveVplBuffer.h"
 #include "frame/FrameContext.h"
+#include "frame/FramePass.h"
+#include "frame/FrameState.h"
+#include "frame/FrameResources.h"
 #include "passes/lpv/LocalRsmPass.h"
 #include "passes/lpv/LpvPass.h"
 #include "passes/lpv/LpvSubsurfacePass.h"
 #include "scenegpu/MaterialGpu.h"
 #include "gl/ProgramCache.h"
-#include "passes/radiosity/RadiosityIndirectPass.h"
 #include "scenegpu/RenderSpace.h"
 #include "passes/lpv/RsmPass.h"
 #include "passes/direct/ShadowPass.h"
@@ -38,20 +42,6 @@ inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& li
     h.add(lights.size());
     for (const scene::Light& l : lights)
         scene::hashFields(l, [&](const void* p, std::size_t n) { h.bytes(p, n); });
-}
-
-// A graph pass's decision when no scene analysis stands behind it: it runs
-// (or does not) for the reason given.
-inline EffectDecision runsBecause(std::string why) {
-    EffectDecision d;
-    d.wanted = true;
-    d.reason = std::move(why);
-    return d;
-}
-inline EffectDecision skippedBecause(std::string why) {
-    EffectDecision d;
-    d.reason = std::move(why);
-    return d;
 }
 
 struct ForwardRenderer::Impl {
@@ -81,7 +71,6 @@ struct ForwardRenderer::Impl {
     std::optional<LpvSubsurfacePass> subsurface;
     std::optional<LocalRsmPass> localRsm;
     std::optional<EmissiveVplBuffer> emissiveVpls;
-    std::optional<RadiosityIndirectPass> radiosityIndirect;
     // gi.method = radiosity: the solution given (setBakedRadiosity), and a
     // number that changes with it (part of the pass's reuse key).
     std::shared_ptr<const radiosity::BakedSolution> baked;
@@ -150,11 +139,17 @@ struct ForwardRenderer::Impl {
         EffectDecision radiosity; // gi.method = radiosity with a solution: the baked indirect light
     } plan;
 
+    // The frame's passes in declaration order (PassTable.cpp): each adds
+    // itself to the graph every frame.
+    std::vector<std::unique_ptr<FramePass>> passes;
+    void buildPassTable();
+
     // FramePasses.cpp
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
     void declareShadows(const FrameContext& frame);
-    void declareShading(const FrameContext& frame);
+    void declareDepthPrepass(const FrameState& state);
+    void declareShading(const FrameState& state);
     void declarePost(const FrameContext& frame);
     void renderDepthPrepass(graph::PassContext& ctx);
     void renderForward(graph::PassContext& ctx, bool afterPrepass);
@@ -164,15 +159,16 @@ struct ForwardRenderer::Impl {
 
     // IndirectPasses.cpp
     scene::Expected<void> planIndirect(const FrameContext& frame);
-    void declareIndirect(const FrameContext& frame);
+    // The plan as the LPV's stages read it.
+    LpvStageInputs lpvStageInputs(const FrameContext& frame);
+    void declareLightSources(const FrameContext& frame);
+    void declareSubsurface(const FrameState& state);
     // Passes the graph culled free what they hold.
     void releaseCulled();
     LpvRsmInput rsmInput(const FrameContext& frame) const;
     // This frame's cascades' windows of the scene's geometry volume, building it first if the scene changed.
     const LpvSceneGeometry& sceneGeometryFor(const FrameContext& frame);
     std::vector<LpvLocalInput> localInputs() const;
-    // After the depth pre-pass, whose depth it reads (`prepass`), before shading.
-    void declareBakedRadiosity(const FrameContext& frame, bool prepass);
 
     // FrameDumps.cpp
     std::vector<DebugImage> dump(const std::string& name) const;

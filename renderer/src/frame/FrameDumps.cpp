@@ -1,5 +1,5 @@
 // `lpv render --dump NAME`: every output the frame graph declared, by its
-// resource name ("rsm.flux", "camera.depth", "lpv.accumulator") or by the
+// resource name (FrameResources.h: rsm.flux, camera.depth, lpv.accumulator) or by the
 // name of the pass that wrote it ("rsm" = all three RSM images). Passes
 // with a picture of their own (the LPV's slices of the DC term, shadow
 // maps as depth) give theirs; everything else is read back as stored.
@@ -76,16 +76,17 @@ std::vector<DebugImage> ForwardRenderer::Impl::dump(const std::string& name) con
 
 std::vector<DebugImage> ForwardRenderer::Impl::dumpResource(const std::string& name) const {
     // Outputs whose pass draws them better than the raw texels.
-    if (name == "shadowMaps")
+    if (name == resources::ShadowMaps.name())
         return shadows->debugImages();
-    if (name.starts_with("rsm."))
+    if (name == resources::RsmPosition.name() || name == resources::RsmNormal.name() || name == resources::RsmFlux.name())
         return rsm->active() ? keepSuffix(rsm->debugImages(), "-" + name.substr(4)) : std::vector<DebugImage>{};
-    if (name.starts_with("localRsm."))
+    if (name == resources::LocalRsmPosition.name() || name == resources::LocalRsmNormal.name() ||
+        name == resources::LocalRsmFlux.name())
         return localRsm && localRsm->active() ? keepSuffix(localRsm->debugImages(), "-" + name.substr(9))
                                               : std::vector<DebugImage>{};
-    if (name == "lpv.accumulator")
+    if (name == resources::LpvAccumulator.name())
         return lpv->active() ? keepSuffix(lpv->debugImages(), "-accum") : std::vector<DebugImage>{};
-    if (name == "lpv.geometry")
+    if (name == resources::LpvGeometry.name())
         return lpv->active() && graph.produced(scene::Pass::GeometryVolume) ? keepSuffix(lpv->debugImages(), "-gv")
                                                                             : std::vector<DebugImage>{};
     const std::optional<graph::ResourceDesc> desc = graph.resourceDesc(name);
@@ -104,12 +105,9 @@ std::vector<std::string> ForwardRenderer::Impl::dumpNames() const {
 
 const std::vector<std::string>& frameGraphNames() {
     static const std::vector<std::string> names = [] {
-        std::vector<std::string> all = {"camera.hdr", "camera.normal", "camera.albedo", "camera.depth", "display",
-                                        "shadowMaps", "rsm.position", "rsm.normal", "rsm.flux",
-                                        "localRsm.position", "localRsm.normal", "localRsm.flux", "emissiveVpls",
-                                        "skyHeight", "lpv.volumes", "lpv.accumulator", "lpv.geometry",
-                                        "lpv.normals", "subsurface.accumulator", "radiosity.incident", "radiosity.depth",
-                                        "sunRays.occlusion", "exposure"};
+        std::vector<std::string> all;
+        for (graph::ResourceHandle r : resources::all)
+            all.push_back(r.str());
         for (scene::Pass p : scene::allPasses())
             if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity && p != scene::Pass::Reference &&
                 std::find(all.begin(), all.end(), scene::passName(p)) == all.end())

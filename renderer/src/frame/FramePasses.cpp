@@ -131,26 +131,26 @@ void ForwardRenderer::Impl::declareCameraTargets(const FrameContext& frame) {
     const std::uint64_t gBufferVersion =
         gBufferValid ? graph::ContentHash().add(previousCamera.inverseViewProj).add(gBufferSceneGeneration).value() : 0;
     using graph::Lifetime;
-    graph.createResource("camera.hdr", target2D(GL_RGBA16F, w, h), Lifetime::History);
-    graph.createResource("camera.normal", target2D(GL_RGBA16F, w, h), Lifetime::History, gBufferVersion);
-    graph.createResource("camera.albedo", target2D(GL_RGBA8, w, h), Lifetime::History);
-    graph.createResource("camera.depth", target2D(GL_DEPTH_COMPONENT32F, w, h), Lifetime::History, gBufferVersion);
-    graph.createResource("display", target2D(GL_RGBA8, w, h), Lifetime::History);
+    graph.createResource(resources::CameraHdr, target2D(GL_RGBA16F, w, h), Lifetime::History);
+    graph.createResource(resources::CameraNormal, target2D(GL_RGBA16F, w, h), Lifetime::History, gBufferVersion);
+    graph.createResource(resources::CameraAlbedo, target2D(GL_RGBA8, w, h), Lifetime::History);
+    graph.createResource(resources::CameraDepth, target2D(GL_DEPTH_COMPONENT32F, w, h), Lifetime::History, gBufferVersion);
+    graph.createResource(resources::Display, target2D(GL_RGBA8, w, h), Lifetime::History);
 }
 
 void ForwardRenderer::Impl::attachCameraTargets() {
-    const GLuint depth = graph.resourceId("camera.depth");
+    const GLuint depth = graph.resourceId(resources::CameraDepth);
     if (depth != hdrFboDepth) {
         hdrFbo = createFramebuffer();
-        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT0, graph.resourceId("camera.hdr"), 0);
-        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT1, graph.resourceId("camera.normal"), 0);
-        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT2, graph.resourceId("camera.albedo"), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT0, graph.resourceId(resources::CameraHdr), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT1, graph.resourceId(resources::CameraNormal), 0);
+        glNamedFramebufferTexture(hdrFbo.id(), GL_COLOR_ATTACHMENT2, graph.resourceId(resources::CameraAlbedo), 0);
         glNamedFramebufferTexture(hdrFbo.id(), GL_DEPTH_ATTACHMENT, depth, 0);
         const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
         glNamedFramebufferDrawBuffers(hdrFbo.id(), 3, buffers);
         hdrFboDepth = depth;
     }
-    const GLuint display = graph.resourceId("display");
+    const GLuint display = graph.resourceId(resources::Display);
     if (display != displayFboColor) {
         displayFbo = createFramebuffer();
         glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display, 0);
@@ -159,14 +159,14 @@ void ForwardRenderer::Impl::attachCameraTargets() {
 }
 
 void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
-    graph.importResource("shadowMaps", [this] {
+    graph.importResource(resources::ShadowMaps, [this] {
         const GLuint id = shadows->primaryMap();
         return graph::ImportedView{id, graph::queryTexture(id)};
     });
     graph::PassSpec p;
     p.id = Pass::ShadowMaps;
     p.decision = runsBecause("direct light is shadowed");
-    p.writes = {"shadowMaps"};
+    p.writes = {resources::ShadowMaps};
     // What the maps are drawn from besides the cascades' matrices: a cascade
     // whose snapped matrix did not move keeps its layer (ShadowPass).
     graph::ContentHash content;
@@ -190,38 +190,39 @@ void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
     graph.addPass(std::move(p));
 }
 
-void ForwardRenderer::Impl::declareShading(const FrameContext& frame) {
-    const bool prepass = frame.params.getBool("output.depthPrepass");
-    {
-        graph::PassSpec p;
-        p.id = Pass::DepthPrepass;
-        p.decision = prepass ? runsBecause("output.depthPrepass is on: shading lights each visible pixel once")
-                             : skippedBecause("output.depthPrepass is off");
-        p.writes = {"camera.depth"};
-        p.execute = [this](graph::PassContext& ctx) {
-            attachCameraTargets();
-            renderDepthPrepass(ctx);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    declareBakedRadiosity(frame, prepass);
+void ForwardRenderer::Impl::declareDepthPrepass(const FrameState& state) {
+    graph::PassSpec p;
+    p.id = Pass::DepthPrepass;
+    p.decision = state.depthPrepass ? runsBecause("output.depthPrepass is on: shading lights each visible pixel once")
+                                    : skippedBecause("output.depthPrepass is off");
+    p.writes = {resources::CameraDepth};
+    p.execute = [this](graph::PassContext& ctx) {
+        attachCameraTargets();
+        renderDepthPrepass(ctx);
+        return scene::Expected<void>{};
+    };
+    graph.addPass(std::move(p));
+}
+
+void ForwardRenderer::Impl::declareShading(const FrameState& state) {
+    const FrameContext& frame = state.frame;
+    const bool prepass = state.depthPrepass;
     graph::PassSpec p;
     p.id = Pass::Shading;
     p.decision = runsBecause("the image");
     p.final = true;
-    p.reads = {"shadowMaps"};
+    p.reads = {resources::ShadowMaps};
     if (prepass)
-        p.reads.push_back("camera.depth");
+        p.reads.push_back(resources::CameraDepth);
     if (plan.lpvRuns)
-        p.reads.push_back("lpv.accumulator");
+        p.reads.push_back(resources::LpvAccumulator);
     if (plan.lpvRuns && plan.sss.runs())
-        p.reads.push_back("subsurface.accumulator");
+        p.reads.push_back(resources::SubsurfaceAccumulator);
     if (plan.radiosity.runs())
-        p.reads.push_back("radiosity.incident");
-    p.writes = {"camera.hdr", "camera.normal", "camera.albedo"};
+        p.reads.push_back(resources::RadiosityIncident);
+    p.writes = {resources::CameraHdr, resources::CameraNormal, resources::CameraAlbedo};
     if (!prepass)
-        p.writes.push_back("camera.depth");
+        p.writes.push_back(resources::CameraDepth);
     // Glossy reflections march through the LPV inside this pass.
     if (!traits)
         traits = analyseSceneTraits(frame.scene);
@@ -328,7 +329,7 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
         LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
     bindGlossyReflections(shader, frame.params, glossyRuns);
     if (radiosity)
-        ctx.bindTexture(fp, shader.uniform("uRadiosityIncident"), "radiosity.incident");
+        ctx.bindTexture(fp, shader.uniform("uRadiosityIncident"), resources::RadiosityIncident);
     glProgramUniform1i(fp, shader.uniform("uShadowCascadeTint"), shadowCascadeTint ? 1 : 0);
     const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position, &cameraStats);
     // Opaque and masked items first; blended ones (sorted last, back to
@@ -359,13 +360,13 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     // Sun rays: added to the HDR image through a half-resolution transient target.
     frameEffects.push_back(decideSunRays(frame.scene, frame.params, &frame.camera, float(frame.width) / float(frame.height)));
     {
-        graph.createResource("sunRays.occlusion", SunRaysPass::occlusionTarget(frame.width, frame.height),
+        graph.createResource(resources::SunRaysOcclusion, SunRaysPass::occlusionTarget(frame.width, frame.height),
                              graph::Lifetime::Transient);
         graph::PassSpec p;
         p.id = Pass::SunRays;
         p.decision = frameEffects.back();
-        p.reads = {"camera.depth", "camera.hdr"};
-        p.writes = {"camera.hdr", "sunRays.occlusion"};
+        p.reads = {resources::CameraDepth, resources::CameraHdr};
+        p.writes = {resources::CameraHdr, resources::SunRaysOcclusion};
         p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
             if (!sunRays) {
                 auto created = SunRaysPass::create();
@@ -373,7 +374,7 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
                     return std::unexpected(created.error());
                 sunRays.emplace(std::move(*created));
             }
-            sunRays->render(ctx.frame, ctx.id("camera.depth"), ctx.id("camera.hdr"), ctx.id("sunRays.occlusion"),
+            sunRays->render(ctx.frame, ctx.id(resources::CameraDepth), ctx.id(resources::CameraHdr), ctx.id(resources::SunRaysOcclusion),
                             *sunOf(ctx.frame.scene));
             return {};
         };
@@ -382,7 +383,7 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
     if (!autoExposure)
         exposure->reset(); // back on auto, the exposure starts from its target
-    graph.importResource("exposure", [this] {
+    graph.importResource(resources::Exposure, [this] {
         const GLuint id = exposure->exposureBuffer();
         return graph::ImportedView{id, graph::queryBuffer(id)};
     });
@@ -391,13 +392,13 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
         p.id = Pass::Exposure;
         p.decision = autoExposure ? runsBecause("output.exposureMode is auto")
                                   : skippedBecause("output.exposureMode is manual");
-        p.reads = {"camera.hdr"};
-        p.writes = {"exposure"};
+        p.reads = {resources::CameraHdr};
+        p.writes = {resources::Exposure};
         p.execute = [this](graph::PassContext& ctx) {
             const FrameContext& f = ctx.frame;
             const double blend =
                 exposureTimeStep ? adaptationBlend(*exposureTimeStep, f.params.getFloat("output.exposureAdaptation")) : 1.0;
-            exposure->meter(ctx.id("camera.hdr"), f.width, f.height, meterTargetOf(f.params), float(blend));
+            exposure->meter(ctx.id(resources::CameraHdr), f.width, f.height, meterTargetOf(f.params), float(blend));
             return scene::Expected<void>{};
         };
         graph.addPass(std::move(p));
@@ -406,10 +407,10 @@ void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     p.id = Pass::Tonemap;
     p.decision = runsBecause("the display image");
     p.final = true;
-    p.reads = {"camera.hdr"};
+    p.reads = {resources::CameraHdr};
     if (autoExposure)
-        p.reads.push_back("exposure");
-    p.writes = {"display"};
+        p.reads.push_back(resources::Exposure);
+    p.writes = {resources::Display};
     p.execute = [this, autoExposure](graph::PassContext& ctx) {
         attachCameraTargets();
         renderTonemap(ctx, autoExposure);
@@ -430,7 +431,7 @@ void ForwardRenderer::Impl::renderTonemap(graph::PassContext& ctx, bool autoExpo
     glProgramUniform1i(tp, shader.uniform("uAutoExposure"), autoExposure ? 1 : 0);
     glProgramUniform1f(tp, shader.uniform("uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
     glProgramUniform1i(tp, shader.uniform("uOperator"), tonemapperIndex(frame.params));
-    ctx.bindTexture(tp, shader.uniform("uHdr"), "camera.hdr");
+    ctx.bindTexture(tp, shader.uniform("uHdr"), resources::CameraHdr);
     glBindVertexArray(emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

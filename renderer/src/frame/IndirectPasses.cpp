@@ -1,10 +1,9 @@
-// The indirect light as graph nodes: the sun's RSM, the local lights' RSMs,
-// the emissive VPLs, the sky's height map, the LPV's stages (injection, sky
-// injection, normals, geometry volume, propagation, bounces) and the
-// subsurface LPV; with gi.method = radiosity instead, a baked solution drawn
-// from the camera. planIndirect() decides what the scene calls for (each
-// decision with its reason); declareIndirect() and declareBakedRadiosity()
-// turn that into passes.
+// The indirect light: planIndirect() decides what the scene calls for (each
+// decision with its reason) and lpvStageInputs() hands that plan to the
+// LPV's stages (passes/lpv/LpvStages.h). The passes not yet in their own
+// files are declared here: the sun's RSM, the local lights' RSMs, the
+// emissive VPLs, the sky's height map (declareLightSources) and the
+// subsurface LPV (declareSubsurface).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -16,18 +15,6 @@
 namespace lpv::renderer {
 
 using scene::Pass;
-
-namespace {
-
-// A resource a pass owns, described by asking GL when the graph needs it.
-void importTexture(graph::FrameGraph& g, std::string name, std::function<GLuint()> id) {
-    g.importResource(std::move(name), [id = std::move(id)] {
-        const GLuint t = id();
-        return graph::ImportedView{t, graph::queryTexture(t)};
-    });
-}
-
-} // namespace
 
 scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& frame) {
     plan = {};
@@ -153,24 +140,50 @@ std::vector<LpvLocalInput> ForwardRenderer::Impl::localInputs() const {
     return local;
 }
 
-void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
-    const LpvSettings& settings = plan.settings;
-    const bool lpvRuns = plan.lpvRuns;
-    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
+LpvStageInputs ForwardRenderer::Impl::lpvStageInputs(const FrameContext& frame) {
+    LpvStageInputs in;
+    in.lpv = &*lpv;
+    in.settings = plan.settings;
+    in.runs = plan.lpvRuns;
+    in.offReason = plan.lpvOffReason;
+    in.sun = plan.sun;
+    in.local = plan.lpvRuns && plan.local.runs();
+    in.emissive = plan.lpvRuns && plan.emissive.runs();
+    in.sky = plan.sky;
     graph::ContentHash base; // what every LPV pass is computed within: the scene, its lights, the volumes
     base.add(sceneGeneration).add(lpv->volumesGeneration()).add(plan.cascades);
     addLights(base, frame.scene.lights);
+    in.key = base.value();
+    in.skyKey = graph::ContentHash().add(in.key).add(frame.scene.sky).value();
+    // A visualizer that reads the volumes back watches the computation itself: no reuse while it does.
+    in.propagationKey = lpv->capturing() ? std::nullopt : std::optional<std::uint64_t>(in.key);
+    in.rsm = [this, &frame] { return rsmInput(frame); };
+    in.localInputs = [this] { return localInputs(); };
+    in.skyInput = [this, &frame] {
+        LpvSkyInput input = *skyInput;
+        input.radiance = frame.scene.sky.color * frame.scene.sky.intensity;
+        return input;
+    };
+    in.cameraGv = plan.cameraGv;
+    in.camera = !plan.settings.gvFromScene && plan.cameraGv ? &previousCamera : nullptr;
+    if (plan.settings.gvFromScene)
+        in.sceneGeometry = [this, &frame] { return &sceneGeometryFor(frame); };
+    return in;
+}
+
+void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
+    const bool lpvRuns = plan.lpvRuns;
+    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
 
     // --- The sun's RSM ---
-    for (const char* name : {"rsm.position", "rsm.normal", "rsm.flux"})
-        importTexture(graph, name, [this, n = std::string(name)] {
-            return n == "rsm.position" ? rsm->positionArray() : n == "rsm.normal" ? rsm->normalArray() : rsm->fluxArray();
-        });
+    importTexture(graph, resources::RsmPosition, [this] { return rsm->positionArray(); });
+    importTexture(graph, resources::RsmNormal, [this] { return rsm->normalArray(); });
+    importTexture(graph, resources::RsmFlux, [this] { return rsm->fluxArray(); });
     {
         graph::PassSpec p;
         p.id = Pass::Rsm;
         p.decision = !lpvRuns ? skippedBecause(off) : plan.sun ? runsBecause("the sun lights the scene") : skippedBecause("no directional light");
-        p.writes = {"rsm.position", "rsm.normal", "rsm.flux"};
+        p.writes = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux};
         graph::ContentHash h;
         // The tiles follow the cascades (the camera's position, its view with lpv.viewShift).
         h.add(sceneGeneration).add(plan.rsmCascades);
@@ -182,20 +195,14 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         graph.addPass(std::move(p));
     }
     // --- Spot and point lights' RSMs ---
-    for (const char* name : {"localRsm.position", "localRsm.normal", "localRsm.flux"})
-        importTexture(graph, name, [this, n = std::string(name)] {
-            if (!localRsm)
-                return GLuint(0);
-            return n == "localRsm.position" ? localRsm->positionArray()
-                   : n == "localRsm.normal" ? localRsm->normalArray()
-                                            : localRsm->fluxArray();
-        });
-    const bool local = lpvRuns && plan.local.runs();
+    importTexture(graph, resources::LocalRsmPosition, [this] { return localRsm ? localRsm->positionArray() : 0u; });
+    importTexture(graph, resources::LocalRsmNormal, [this] { return localRsm ? localRsm->normalArray() : 0u; });
+    importTexture(graph, resources::LocalRsmFlux, [this] { return localRsm ? localRsm->fluxArray() : 0u; });
     {
         graph::PassSpec p;
         p.id = Pass::LocalRsm;
         p.decision = !lpvRuns ? skippedBecause(off) : plan.local;
-        p.writes = {"localRsm.position", "localRsm.normal", "localRsm.flux"};
+        p.writes = {resources::LocalRsmPosition, resources::LocalRsmNormal, resources::LocalRsmFlux};
         graph::ContentHash h;
         h.add(sceneGeneration);
         addLights(h, frame.scene.lights);
@@ -212,13 +219,12 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         graph.addPass(std::move(p));
     }
     // --- Emissive surfaces' VPLs (sampled on the CPU, uploaded once per scene and cell size) ---
-    importTexture(graph, "emissiveVpls", [this] { return emissiveVpls ? emissiveVpls->input().position : 0u; });
-    const bool emissive = lpvRuns && plan.emissive.runs();
+    importTexture(graph, resources::EmissiveVpls, [this] { return emissiveVpls ? emissiveVpls->input().position : 0u; });
     {
         graph::PassSpec p;
         p.id = Pass::EmissiveVpls;
         p.decision = !lpvRuns ? skippedBecause(off) : plan.emissive;
-        p.writes = {"emissiveVpls"};
+        p.writes = {resources::EmissiveVpls};
         p.inputsKey = graph::ContentHash().add(sceneGeneration).value();
         p.execute = [this](graph::PassContext& ctx) {
             // Two VPLs per finest cell along an emitter, at most 256^2.
@@ -231,12 +237,12 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         graph.addPass(std::move(p));
     }
     // --- The sky's height map ---
-    importTexture(graph, "skyHeight", [this] { return skyInput ? skyInput->depth : 0u; });
+    importTexture(graph, resources::SkyHeight, [this] { return skyInput ? skyInput->depth : 0u; });
     {
         graph::PassSpec p;
         p.id = Pass::SkyHeight;
         p.decision = !lpvRuns ? skippedBecause(off) : plan.sky;
-        p.writes = {"skyHeight"};
+        p.writes = {resources::SkyHeight};
         p.inputsKey = graph::ContentHash().add(sceneGeneration).add(plan.cascades).value();
         p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
             if (!skyHeight) {
@@ -255,130 +261,20 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         };
         graph.addPass(std::move(p));
     }
+}
 
-    // --- The LPV's stages, updating its volumes in place ---
-    const LpvVolumes& volumes = lpv->volumes();
-    importTexture(graph, "lpv.volumes", [&volumes] { return volumes.volume[0].channel[0].id(); });
-    importTexture(graph, "lpv.accumulator", [&volumes] { return volumes.accumulator.channel[0].id(); });
-    importTexture(graph, "lpv.geometry", [&volumes] { return volumes.geometry.id(); });
-    importTexture(graph, "lpv.normals", [&volumes] { return volumes.normals[0].id(); });
-    const std::uint64_t lpvKey = base.value();
-    // A visualizer that reads the volumes back watches the computation itself: no reuse while it does.
-    const std::optional<std::uint64_t> propagationKey =
-        lpv->capturing() ? std::nullopt : std::optional<std::uint64_t>(lpvKey);
-    const EffectDecision lpvDecision = lpvRuns ? runsBecause(plan.sun ? "the sun's RSM" : "local lights or emissive surfaces")
-                                               : skippedBecause(plan.lpvOffReason);
-    {
-        graph::PassSpec p;
-        p.id = Pass::LpvInjection;
-        p.decision = lpvDecision;
-        if (plan.sun)
-            p.reads = {"rsm.position", "rsm.normal", "rsm.flux"};
-        if (local)
-            p.reads.insert(p.reads.end(), {"localRsm.position", "localRsm.normal", "localRsm.flux"});
-        if (emissive)
-            p.reads.push_back("emissiveVpls");
-        p.writes = {"lpv.volumes", "lpv.accumulator"};
-        p.inputsKey = lpvKey;
-        p.execute = [this](graph::PassContext& ctx) {
-            lpv->injectStage(rsmInput(ctx.frame), localInputs(), plan.settings.directed);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    {
-        graph::PassSpec p;
-        p.id = Pass::SkyInjection;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.sky;
-        p.reads = {"skyHeight", "lpv.volumes", "lpv.accumulator"};
-        p.writes = {"lpv.volumes", "lpv.accumulator"};
-        p.inputsKey = graph::ContentHash().add(lpvKey).add(frame.scene.sky).value();
-        p.execute = [this](graph::PassContext& ctx) {
-            LpvSkyInput input = *skyInput;
-            input.radiance = ctx.frame.scene.sky.color * ctx.frame.scene.sky.intensity;
-            lpv->skyStage(input);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    {
-        graph::PassSpec p;
-        p.id = Pass::LpvNormals;
-        p.decision = !lpvRuns ? skippedBecause(off)
-                     : settings.directed ? runsBecause("directed propagation")
-                                         : skippedBecause("lpv.directedPropagation is off");
-        p.reads = {"lpv.volumes"}; // the VPL normals summed at injection
-        p.writes = {"lpv.normals"};
-        p.inputsKey = lpvKey;
-        p.execute = [this](graph::PassContext&) {
-            lpv->normalsStage(plan.settings.directedDilation);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    {
-        graph::PassSpec p;
-        p.id = Pass::GeometryVolume;
-        // Bounces reflect at the GV's surfels, so they need it even without occlusion.
-        p.decision = !lpvRuns ? skippedBecause(off)
-                     : settings.geometryVolumeRuns() ? runsBecause("lpv.occlusion or lpv.bounces > 1")
-                                                                   : skippedBecause("lpv.occlusion is off and one bounce");
-        if (plan.sun && !settings.gvFromScene)
-            p.reads = {"rsm.position", "rsm.normal"};
-        if (plan.cameraGv)
-            p.readsHistory = {"camera.depth", "camera.normal"};
-        p.writes = {"lpv.geometry"};
-        p.inputsKey = lpvKey;
-        p.execute = [this](graph::PassContext& ctx) {
-            if (plan.settings.gvFromScene)
-                lpv->geometryStage(rsmInput(ctx.frame), nullptr, &sceneGeometryFor(ctx.frame));
-            else
-                lpv->geometryStage(rsmInput(ctx.frame), plan.cameraGv ? &previousCamera : nullptr);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    {
-        graph::PassSpec p;
-        p.id = Pass::LpvPropagation;
-        p.decision = lpvDecision;
-        p.reads = {"lpv.volumes", "lpv.accumulator"};
-        if (settings.geometryVolumeRuns())
-            p.reads.push_back("lpv.geometry");
-        if (settings.directed)
-            p.reads.push_back("lpv.normals");
-        p.writes = {"lpv.volumes", "lpv.accumulator"};
-        p.inputsKey = propagationKey;
-        p.execute = [this](graph::PassContext&) {
-            lpv->propagationStage(plan.settings);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-    {
-        graph::PassSpec p;
-        p.id = Pass::LpvBounces;
-        p.decision = !lpvRuns ? skippedBecause(off)
-                     : settings.bounces > 1 ? runsBecause("lpv.bounces = " + std::to_string(settings.bounces))
-                                            : skippedBecause("lpv.bounces is 1");
-        p.reads = {"lpv.volumes", "lpv.accumulator", "lpv.geometry"};
-        p.writes = {"lpv.volumes", "lpv.accumulator"};
-        p.inputsKey = propagationKey;
-        p.execute = [this](graph::PassContext&) {
-            lpv->bounceStage(plan.settings);
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
+void ForwardRenderer::Impl::declareSubsurface(const FrameState& state) {
+    const bool lpvRuns = plan.lpvRuns;
+    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
     // --- The subsurface LPV, fed by the sun's RSM (its translucent texels) ---
-    importTexture(graph, "subsurface.accumulator", [this] { return subsurface ? subsurface->accumulatorTexture() : 0u; });
+    importTexture(graph, resources::SubsurfaceAccumulator, [this] { return subsurface ? subsurface->accumulatorTexture() : 0u; });
     {
         graph::PassSpec p;
         p.id = Pass::Subsurface;
         p.decision = !lpvRuns ? skippedBecause(off) : plan.sss;
-        p.reads = {"rsm.position", "rsm.normal", "rsm.flux", "lpv.volumes"};
-        p.writes = {"subsurface.accumulator"};
-        p.inputsKey = lpvKey;
+        p.reads = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux, resources::LpvVolumes};
+        p.writes = {resources::SubsurfaceAccumulator};
+        p.inputsKey = state.lpv.key;
         p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
             if (!subsurface) {
                 auto created = LpvSubsurfacePass::create();
@@ -391,47 +287,6 @@ void ForwardRenderer::Impl::declareIndirect(const FrameContext& frame) {
         };
         graph.addPass(std::move(p));
     }
-}
-
-void ForwardRenderer::Impl::declareBakedRadiosity(const FrameContext& frame, bool prepass) {
-    const bool runs = plan.radiosity.runs();
-    graph::PassSpec p;
-    p.id = Pass::RadiosityIndirect;
-    p.decision = plan.radiosity;
-    p.writes = {"radiosity.incident", "radiosity.depth"};
-    if (runs) {
-        // Kept across frames, so a still camera reuses them.
-        for (const auto& [name, format] : {std::pair{"radiosity.incident", GL_RGBA16F},
-                                           std::pair{"radiosity.depth", GL_DEPTH_COMPONENT32F}})
-            graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), frame.width, frame.height},
-                                 graph::Lifetime::History);
-    } else {
-        // Named, so the report and --dump can say why they hold nothing; not allocated.
-        for (const char* name : {"radiosity.incident", "radiosity.depth"})
-            graph.importResource(name, [] { return graph::ImportedView{}; });
-    }
-    if (prepass)
-        p.reads = {"camera.depth"};
-    // radiosity.smoothing is declared as invalidating shading (the radiosity
-    // view's); here the corner values are uploaded from it, so it is part of
-    // what this pass's output is computed from.
-    const bool smooth = frame.params.getBool("radiosity.smoothing");
-    graph::ContentHash h;
-    h.add(sceneGeneration).add(bakedGeneration).add(smooth).add(frame.viewProj).add(frame.camera.position)
-        .add(frame.width).add(frame.height);
-    p.inputsKey = h.value();
-    p.execute = [this, prepass, smooth](graph::PassContext& ctx) -> scene::Expected<void> {
-        if (!radiosityIndirect) {
-            auto created = RadiosityIndirectPass::create();
-            if (!created)
-                return std::unexpected(created.error());
-            radiosityIndirect.emplace(std::move(*created));
-        }
-        radiosityIndirect->upload(*baked, bakedGeneration, ctx.frame.scene, smooth);
-        radiosityIndirect->render(ctx, prepass);
-        return {};
-    };
-    graph.addPass(std::move(p));
 }
 
 void ForwardRenderer::Impl::releaseCulled() {
@@ -449,8 +304,8 @@ void ForwardRenderer::Impl::releaseCulled() {
         subsurface.reset();
     if (!graph.produced(Pass::SunRays))
         sunRays.reset();
-    if (!graph.produced(Pass::RadiosityIndirect))
-        radiosityIndirect.reset();
+    for (const std::unique_ptr<FramePass>& pass : passes)
+        pass->releaseIfCulled(graph);
     if (!plan.lpvRuns)
         lpv->disable(plan.lpvOffReason);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <queue>
+#include <ranges>
 #include <set>
 #include <stdexcept>
 
@@ -14,8 +15,8 @@ using scene::makeError;
 
 namespace {
 
-bool contains(const std::vector<std::string>& names, std::string_view name) {
-    return std::find(names.begin(), names.end(), name) != names.end();
+bool contains(const std::vector<ResourceHandle>& handles, std::string_view name) {
+    return std::ranges::any_of(handles, [name](ResourceHandle h) { return h.name() == name; });
 }
 
 // The registry keys whose change makes this pass's output stale.
@@ -29,16 +30,19 @@ const std::vector<std::string>& invalidatingKeys(scene::Pass pass) {
     return it->second;
 }
 
+// The handles' names, for the bookkeeping below that keys by name.
+auto names(const std::vector<ResourceHandle>& handles) { return handles | std::views::transform(&ResourceHandle::str); }
+
 } // namespace
 
 // --- PassContext ---
 
-GLuint PassContext::id(std::string_view resource) const {
-    if (!contains(pass_.reads, resource) && !contains(pass_.writes, resource) &&
-        !contains(pass_.readsHistory, resource))
-        throw std::logic_error("pass " + scene::passName(pass_.id) + " uses '" + std::string(resource) +
+GLuint PassContext::id(ResourceHandle resource) const {
+    const std::string_view name = resource.name();
+    if (!contains(pass_.reads, name) && !contains(pass_.writes, name) && !contains(pass_.readsHistory, name))
+        throw std::logic_error("pass " + scene::passName(pass_.id) + " uses '" + resource.str() +
                                "', which it did not declare");
-    const auto* r = graph_.findResource(resource);
+    const auto* r = graph_.findResource(name);
     return r ? graph_.viewOf(*r).id : 0;
 }
 
@@ -49,7 +53,7 @@ GLuint PassContext::allocateUnit() {
     return nextUnit_++;
 }
 
-GLuint PassContext::bindTexture(GLuint program, GLint samplerLocation, std::string_view resource) {
+GLuint PassContext::bindTexture(GLuint program, GLint samplerLocation, ResourceHandle resource) {
     const GLuint unit = allocateUnit();
     glBindTextureUnit(unit, id(resource));
     glProgramUniform1i(program, samplerLocation, GLint(unit));
@@ -69,12 +73,12 @@ void FrameGraph::beginFrame() {
     pending_.clear();
 }
 
-void FrameGraph::importResource(std::string name, std::function<ImportedView()> view, std::uint64_t initialVersion) {
-    resources_.push_back({std::move(name), Lifetime::Imported, std::move(view), {}, initialVersion});
+void FrameGraph::importResource(ResourceHandle name, std::function<ImportedView()> view, std::uint64_t initialVersion) {
+    resources_.push_back({name.str(), Lifetime::Imported, std::move(view), {}, initialVersion});
 }
 
-void FrameGraph::createResource(std::string name, ResourceDesc desc, Lifetime lifetime, std::uint64_t initialVersion) {
-    resources_.push_back({std::move(name), lifetime, {}, desc, initialVersion});
+void FrameGraph::createResource(ResourceHandle name, ResourceDesc desc, Lifetime lifetime, std::uint64_t initialVersion) {
+    resources_.push_back({name.str(), lifetime, {}, desc, initialVersion});
 }
 
 void FrameGraph::addPass(PassSpec spec) { passes_.push_back(std::move(spec)); }
@@ -108,7 +112,7 @@ scene::Expected<void> FrameGraph::resolveVersions() {
             continue;
         const PassSpec& p = passes_[i];
         for (const auto* list : {&p.readsHistory, &p.reads})
-            for (const std::string& name : *list) {
+            for (const std::string& name : names(*list)) {
                 const auto w = finalWriter_.find(name);
                 const int producer = w == finalWriter_.end() ? -1 : w->second;
                 if (list == &p.readsHistory && producer >= 0)
@@ -120,7 +124,7 @@ scene::Expected<void> FrameGraph::resolveVersions() {
                     edges_[std::size_t(producer)].insert(i);
                 readersOf[name].push_back(i);
             }
-        for (const std::string& name : p.writes) {
+        for (const std::string& name : names(p.writes)) {
             for (std::size_t r : readersOf[name])
                 if (r != i)
                     edges_[r].insert(i);
@@ -182,11 +186,11 @@ scene::Expected<void> FrameGraph::compile(const scene::ParameterSet& params, boo
             return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
                              "each pass needs its own name from scene::Pass");
         for (const auto* list : {&p.reads, &p.writes, &p.readsHistory})
-            for (const std::string& name : *list)
+            for (const std::string& name : names(*list))
                 if (!findResource(name))
                     return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
                                      "uses '" + name + "', which no resource of the frame is called");
-        for (const std::string& name : p.readsHistory)
+        for (const std::string& name : names(p.readsHistory))
             if (findResource(name)->lifetime != Lifetime::History)
                 return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
                                  "reads '" + name + "' as last frame's, but it is not a history resource");
@@ -293,7 +297,7 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
         for (const auto& [name, v] : run.inputVersions)
             h.add(std::string_view(name)).add(v);
         run.key = h.value();
-        for (const std::string& name : p.writes)
+        for (const std::string& name : names(p.writes))
             written[i][name] = ContentHash().add(run.key).add(std::string_view(name)).value();
 
         const auto last = last_.find(std::uint32_t(p.id));
@@ -317,7 +321,7 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
             if (why.empty())
                 why = "its inputs changed";
         } else {
-            for (const std::string& name : p.writes) {
+            for (const std::string& name : names(p.writes)) {
                 if (why.empty() && findResource(name)->lifetime == Lifetime::Transient)
                     why = name + " is transient: nothing is kept";
                 if (why.empty() && fresh_.count(name))
@@ -397,12 +401,12 @@ const FrameGraphReport& FrameGraph::report() const {
     auto entry = [&](std::size_t i) {
         const PassSpec& p = passes_[i];
         GraphPassReport r{scene::passName(p.id), status_[i], reasons_[i], {}, {}};
-        for (const std::string& name : p.readsHistory)
+        for (const std::string& name : names(p.readsHistory))
             r.reads.push_back(name + " (last frame's)");
-        for (const std::string& name : p.reads)
+        for (const std::string& name : names(p.reads))
             if (!contains(p.writes, name))
                 r.reads.push_back(name);
-        for (const std::string& name : p.writes)
+        for (const std::string& name : names(p.writes))
             r.writes.push_back({name + (contains(p.reads, name) ? " (updated)" : ""),
                                 describe(viewOf(*findResource(name)).desc)});
         report_.passes.push_back(std::move(r));

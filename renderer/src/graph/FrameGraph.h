@@ -15,6 +15,7 @@
 // update a resource in place form a chain: when one of them reruns, all do.
 #include "frame/FrameContext.h"
 #include "graph/ResourceDesc.h"
+#include "graph/ResourceHandle.h"
 #include "lpv/renderer/FrameGraphReport.h"
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/Error.h"
@@ -54,13 +55,13 @@ struct PassSpec {
     // A read sees the resource as the passes added before this one left it
     // (Filament's versions): the graph runs it after that version's writer
     // and before the next writer.
-    std::vector<std::string> reads;
+    std::vector<ResourceHandle> reads;
     // A name in both reads and writes is updated in place.
-    std::vector<std::string> writes;
+    std::vector<ResourceHandle> writes;
     // History resources read as the last frame left them (no pass added
     // before this one writes them this frame): the LPV's geometry volume
     // reads the last frame's camera G-buffer.
-    std::vector<std::string> readsHistory;
+    std::vector<ResourceHandle> readsHistory;
     // What the output is computed from besides parameters and inputs (scene
     // generation, lights, camera...). nullopt: never reused, runs every frame.
     std::optional<std::uint64_t> inputsKey;
@@ -73,11 +74,11 @@ class PassContext {
   public:
     // The GL name of a resource this pass declared (read or write).
     // Undeclared: throws std::logic_error, which execute() turns into an error value.
-    GLuint id(std::string_view resource) const;
+    GLuint id(ResourceHandle resource) const;
     // The next texture unit no other binding of this pass uses.
     GLuint allocateUnit();
     // Binds a declared texture to a fresh unit and points the sampler uniform at it.
-    GLuint bindTexture(GLuint program, GLint samplerLocation, std::string_view resource);
+    GLuint bindTexture(GLuint program, GLint samplerLocation, ResourceHandle resource);
     const FrameContext& frame;
 
   private:
@@ -97,10 +98,10 @@ class FrameGraph {
     // Starts a frame's declarations; owned targets, pools and last keys are kept.
     void beginFrame();
 
-    void importResource(std::string name, std::function<ImportedView()> view, std::uint64_t initialVersion = 0);
+    void importResource(ResourceHandle name, std::function<ImportedView()> view, std::uint64_t initialVersion = 0);
     // A graph-owned target. A History target keeps its content across frames
     // while its description stays the same; `initialVersion` names that content.
-    void createResource(std::string name, ResourceDesc desc, Lifetime lifetime, std::uint64_t initialVersion = 0);
+    void createResource(ResourceHandle name, ResourceDesc desc, Lifetime lifetime, std::uint64_t initialVersion = 0);
     void addPass(PassSpec spec);
 
     // Orders, culls, decides reuse (only when `reuse`), allocates. Errors: a
@@ -114,7 +115,9 @@ class FrameGraph {
     // A pass's status in the last compile (nullopt: not declared).
     std::optional<PassStatus> status(scene::Pass pass) const;
     // After execute(): a resource's GL name and shape (0 / empty if the frame did not declare it).
+    // By name: what a user asked for (--dump NAME) or a report listed.
     GLuint resourceId(std::string_view name) const;
+    GLuint resourceId(ResourceHandle resource) const { return resourceId(resource.name()); }
     std::optional<ResourceDesc> resourceDesc(std::string_view name) const;
     std::vector<std::string> resourceNames() const;
     // Whether the last frame's pass ran or was reused (its outputs are valid).

@@ -36,4 +36,27 @@ std::string formatGraph(const FrameGraphReport& report) {
     return out;
 }
 
+namespace {
+
+// `name` with a note in parentheses kept outside the code span: `lpv.volumes` (updated).
+std::string codeName(const std::string& name) {
+    const std::size_t note = name.find(" (");
+    return note == std::string::npos ? "`" + name + "`" : "`" + name.substr(0, note) + "`" + name.substr(note);
+}
+
+} // namespace
+
+std::string formatGraphMarkdown(const FrameGraphReport& report) {
+    std::string out = "| pass | reads | writes |\n|---|---|---|\n";
+    for (const GraphPassReport& p : report.passes) {
+        std::string reads, writes;
+        for (const std::string& r : p.reads)
+            reads += (reads.empty() ? "" : ", ") + codeName(r);
+        for (const GraphResourceUse& w : p.writes)
+            writes += (writes.empty() ? "" : ", ") + codeName(w.name);
+        out += "| `" + p.name + "` | " + reads + " | " + writes + " |\n";
+    }
+    return out;
+}
+
 } // namespace lpv::renderer

@@ -89,9 +89,9 @@ public:
     std::vector<float> readGBufferAlbedo() const;
     std::vector<float> readDepth() const;
     // Internals of the last frame by the frame graph's names: an output
-    // ("rsm.flux", "camera.depth", "lpv.accumulator": per cascade the
-    // accumulated DC per channel, slices side by side; "shadowMaps": every
-    // map and cascade) or a pass ("rsm": all it wrote). Unknown, or not
+    // (rsm.flux, camera.depth, lpv.accumulator: per cascade the
+    // accumulated DC per channel, slices side by side; shadowMaps: every
+    // map and cascade) or a pass (rsm: all it wrote). Unknown, or not
     // produced this frame: empty.
     std::vector<DebugImage> debugImages(const std::string& what) const;
     // Every name debugImages() knows in the last frame: outputs, then passes.

@@ -11,7 +11,7 @@ enum class PassStatus { Ran, Reused, Culled };
 const char* toString(PassStatus status);
 
 struct GraphResourceUse {
-    std::string name;        // "rsm.flux"
+    std::string name;        // a resource's name, e.g. rsm.flux
     std::string description; // "2D array RGBA16F 512x512x4"
 };
 
@@ -30,6 +30,11 @@ struct FrameGraphReport {
 
 // The report as an indented text listing.
 std::string formatGraph(const FrameGraphReport& report);
+
+// The report as docs/renderer.md's pass table: one row per pass (execution
+// order, then the culled ones) with the resources it declared reading and
+// writing, from the passes' own declarations (a test keeps the doc equal).
+std::string formatGraphMarkdown(const FrameGraphReport& report);
 
 // Every pass and output name ForwardRenderer's graph can declare (for
 // `--dump` to check before rendering; a test keeps it true).

@@ -19,7 +19,7 @@
 namespace lpv::renderer {
 
 struct GpuAllocation {
-    std::string name; // a frame-graph resource or a pass's own: "camera.depth", "lpv.volumes"
+    std::string name; // a frame-graph resource or a pass's own: camera.depth, lpv.volumes
     std::string what; // its shape (graph::describe): "2D RGBA16F 320x180", "6 x 3D RGBA32F 32x32x128"
     std::uint64_t bytes = 0;
 };

@@ -1,5 +1,6 @@
 #include "passes/direct/AutoExposurePass.h"
 
+#include "frame/FrameResources.h"
 #include "gl/GpuMemoryLedger.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
@@ -70,7 +71,7 @@ double AutoExposurePass::readExposure() const {
 }
 
 void AutoExposurePass::addGpuMemory(GpuMemoryLedger& ledger) const {
-    ledger.addBuffer("exposure", exposure_.id());
+    ledger.addBuffer(resources::Exposure.name(), exposure_.id());
     ledger.addBuffer("exposure.tiles", tiles_.id());
     ledger.addBuffer("exposure.histogram", histogram_.id());
 }

@@ -1,5 +1,6 @@
 #include "passes/lpv/LocalRsmPass.h"
 
+#include "frame/FrameResources.h"
 #include "gl/GpuMemoryLedger.h"
 #include "lpv/scene/AreaLight.h"
 
@@ -198,9 +199,9 @@ std::vector<DebugImage> LocalRsmPass::debugImages() const {
 }
 
 void LocalRsmPass::addGpuMemory(GpuMemoryLedger& ledger) const {
-    ledger.addTexture("localRsm.position", position_.id());
-    ledger.addTexture("localRsm.normal", normal_.id());
-    ledger.addTexture("localRsm.flux", flux_.id());
+    ledger.addTexture(resources::LocalRsmPosition.name(), position_.id());
+    ledger.addTexture(resources::LocalRsmNormal.name(), normal_.id());
+    ledger.addTexture(resources::LocalRsmFlux.name(), flux_.id());
     ledger.addTexture("localRsm.depth", depth_.id());
 }
 

@@ -1,6 +1,7 @@
 #include "passes/lpv/LpvPass.h"
 
 #include "gl/GpuMemoryLedger.h"
+#include "passes/lpv/LpvStages.h"
 #include "lpv/renderer/ShaderLibrary.h"
 #include "lpv/renderer/lpv/LpvVisibility.h"
 
@@ -285,26 +286,32 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     }
     if (auto ok = prepare(settings, rsm.cascades); !ok)
         return ok;
-    // The stages in the frame graph's order, timed under the graph's pass names.
-    auto timed = [&](scene::Pass pass, auto&& stage) {
-        const std::string name = scene::passName(pass);
-        timer.begin(name);
-        stage();
-        timer.end(name);
-    };
     const bool withSky = sky && sky->depth && sky->size > 0;
-    timed(scene::Pass::LpvInjection, [&] { injectStage(rsm, local, settings.directed); });
-    if (withSky)
-        timed(scene::Pass::SkyInjection, [&] { skyStage(*sky); });
-    if (settings.directed)
-        timed(scene::Pass::LpvNormals, [&] { normalsStage(settings.directedDilation); });
-    if (settings.geometryVolumeRuns())
-        timed(scene::Pass::GeometryVolume, [&] {
-            geometryStage(rsm, settings.gvFromCamera ? camera : nullptr, settings.gvFromScene ? sceneGeometry : nullptr);
-        });
-    timed(scene::Pass::LpvPropagation, [&] { propagationStage(settings); });
-    if (settings.bounces > 1)
-        timed(scene::Pass::LpvBounces, [&] { bounceStage(settings); });
+    LpvStageInputs in;
+    in.lpv = this;
+    in.settings = settings;
+    in.runs = true;
+    in.sun = rsm.position && rsm.tileSize > 0;
+    in.sky = withSky ? runsBecause("a sky height map was given") : skippedBecause("no sky height map was given");
+    in.rsm = [&rsm] { return rsm; };
+    in.localInputs = [&local] { return local; };
+    in.skyInput = [sky] { return *sky; };
+    in.camera = settings.gvFromCamera ? camera : nullptr;
+    if (settings.gvFromScene)
+        in.sceneGeometry = [sceneGeometry] { return sceneGeometry; };
+    // The stages' own decisions schedule them, as in the frame graph; each
+    // timed under its pass name.
+    for (const std::unique_ptr<LpvStage>& stage : makeLpvStages()) {
+        const LpvStageDefinition& s = stage->definition();
+        graph::PassSpec declared;
+        s.declare(declared, in);
+        if (!declared.decision.runs())
+            continue;
+        const std::string name = scene::passName(s.id);
+        timer.begin(name);
+        s.run(in);
+        timer.end(name);
+    }
     finish(settings, camera != nullptr, withSky, local);
     return {};
 }

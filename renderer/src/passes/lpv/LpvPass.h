@@ -171,8 +171,9 @@ class LpvPass {
     // Bumped whenever the volumes are (re)allocated or freed: outputs of older generations are gone.
     std::uint64_t volumesGeneration() const { return volumes_.generation(); }
 
-    // All stages at once, outside a graph (tests and tools), timed under
-    // the graph's pass names.
+    // All stages at once, outside a graph (tests and tools): the stages of
+    // LpvStages.h, each run when its own declaration says so, timed under
+    // its pass name.
     // `sky` (may be null): inject sky light as well. `local`: spot and point
     // lights' and emissive surfaces' VPLs as well; with them, `rsm` may hold
     // cascades but no tiles (position 0, tileSize 0): a scene without a sun.

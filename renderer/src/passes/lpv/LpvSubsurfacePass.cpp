@@ -1,5 +1,6 @@
 #include "passes/lpv/LpvSubsurfacePass.h"
 
+#include "frame/FrameResources.h"
 #include "gl/GpuMemoryLedger.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
@@ -170,7 +171,7 @@ std::array<std::vector<glm::vec4>, 3> LpvSubsurfacePass::readAccumulator(int cas
 void LpvSubsurfacePass::addGpuMemory(GpuMemoryLedger& ledger) const {
     for (const Texture& t : volume_)
         ledger.addTexture("subsurface.volumes", t.id());
-    ledger.addTexture("subsurface.accumulator", accumulator_.id());
+    ledger.addTexture(resources::SubsurfaceAccumulator.name(), accumulator_.id());
 }
 
 } // namespace lpv::renderer

@@ -1,5 +1,6 @@
 #include "passes/lpv/LpvVolumes.h"
 
+#include "frame/FrameResources.h"
 #include "gl/GpuMemoryLedger.h"
 
 #include <algorithm>
@@ -187,15 +188,15 @@ void LpvVolumes::addGpuMemory(GpuMemoryLedger& ledger) const {
             ledger.addTexture(name, t.id());
     };
     for (const LpvVolumeSet& set : volume)
-        addSet("lpv.volumes", set);
-    addSet("lpv.accumulator", accumulator);
-    ledger.addTexture("lpv.geometry", geometry.id());
+        addSet(resources::LpvVolumes.name(), set);
+    addSet(resources::LpvAccumulator.name(), accumulator);
+    ledger.addTexture(resources::LpvGeometry.name(), geometry.id());
     ledger.addTexture("lpv.faceBlocking", faceBlocking.id());
     ledger.addBuffer("lpv.lpvSums", lpvSums.id());
     ledger.addBuffer("lpv.gvSums", gvSums.id());
     ledger.addBuffer("lpv.scales", scales.id());
     for (const Texture& t : normals)
-        ledger.addTexture("lpv.normals", t.id());
+        ledger.addTexture(resources::LpvNormals.name(), t.id());
     ledger.addBuffer("lpv.normalSums", normalSums.id());
     addSet("lpv.bounceTotal", bounceTotal);
     for (const Texture& t : interleaved)

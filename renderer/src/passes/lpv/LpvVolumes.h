@@ -40,8 +40,8 @@ class LpvVolumes {
     std::uint64_t generation() const { return generation_; }
     int cascades() const { return cascades_; }
     std::size_t allocatedBytes() const;
-    // Names every volume and buffer allocated now ("lpv.volumes",
-    // "lpv.geometry"...) for ForwardRenderer::gpuMemory().
+    // Names every volume and buffer allocated now (resources::LpvVolumes,
+    // LpvGeometry... in FrameResources.h) for ForwardRenderer::gpuMemory().
     void addGpuMemory(GpuMemoryLedger& ledger) const;
 
     std::array<LpvVolumeSet, 2> volume; // ping-pong

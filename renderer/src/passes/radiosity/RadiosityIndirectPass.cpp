@@ -1,5 +1,8 @@
 #include "passes/radiosity/RadiosityIndirectPass.h"
 
+#include "frame/FrameResources.h"
+#include "frame/FrameState.h"
+#include "graph/ContentHash.h"
 #include "gl/GpuMemoryLedger.h"
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/radiosity/VertexRadiosity.h"
@@ -24,52 +27,85 @@ GLint loc(GLuint program, const char* name) {
 
 } // namespace
 
-scene::Expected<RadiosityIndirectPass> RadiosityIndirectPass::create() {
-    auto program = buildEmbeddedProgram({"radiosity_indirect.vert", "radiosity_indirect.frag"});
-    if (!program)
-        return std::unexpected(program.error());
-    RadiosityIndirectPass pass;
-    pass.program_ = std::move(*program);
-    return pass;
+void RadiosityIndirectPass::setup(graph::PassSpec& pass, FrameState& state) {
+    const FrameContext& frame = state.frame;
+    pass.decision = state.radiosity;
+    pass.writes = {resources::RadiosityIncident, resources::RadiosityDepth};
+    if (state.radiosity.runs()) {
+        // Kept across frames, so a still camera reuses them.
+        for (const auto& [name, format] : {std::pair{resources::RadiosityIncident, GL_RGBA16F},
+                                           std::pair{resources::RadiosityDepth, GL_DEPTH_COMPONENT32F}})
+            state.graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), frame.width, frame.height},
+                                       graph::Lifetime::History);
+    } else {
+        // Named, so the report and --dump can say why they hold nothing; not allocated.
+        for (graph::ResourceHandle name : {resources::RadiosityIncident, resources::RadiosityDepth})
+            state.graph.importResource(name, [] { return graph::ImportedView{}; });
+    }
+    if (state.depthPrepass)
+        pass.reads = {resources::CameraDepth};
+    // radiosity.smoothing is declared as invalidating shading (the radiosity
+    // view's); here the corner values are uploaded from it, so it is part of
+    // what this pass's output is computed from.
+    const bool smooth = frame.params.getBool("radiosity.smoothing");
+    graph::ContentHash h;
+    h.add(state.sceneGeneration).add(state.bakedGeneration).add(smooth).add(frame.viewProj).add(frame.camera.position)
+        .add(frame.width).add(frame.height);
+    pass.inputsKey = h.value();
+}
+
+scene::Expected<void> RadiosityIndirectPass::execute(graph::PassContext& ctx, FrameState& state) {
+    if (!gpu_) {
+        auto program = buildEmbeddedProgram({"radiosity_indirect.vert", "radiosity_indirect.frag"});
+        if (!program)
+            return std::unexpected(program.error());
+        gpu_.emplace();
+        gpu_->program = std::move(*program);
+    }
+    upload(*state.baked, state.bakedGeneration, ctx.frame.scene, ctx.frame.params.getBool("radiosity.smoothing"));
+    render(ctx, state.depthPrepass);
+    return {};
 }
 
 void RadiosityIndirectPass::upload(const radiosity::BakedSolution& solution, std::uint64_t generation,
                                    const scene::Scene& scene, bool smooth) {
-    if (uploaded_ && generation_ == generation && smooth_ == smooth)
+    Gpu& g = *gpu_;
+    if (g.uploaded && g.generation == generation && g.smooth == smooth)
         return;
     const std::vector<glm::vec3> corners = radiosity::cornerValues(solution.mesh, solution.incident, smooth);
-    draw_ = uploadPatchVertices(patchTriangles(solution.mesh, corners, [&](const radiosity::Patch& p) {
+    g.draw = uploadPatchVertices(patchTriangles(solution.mesh, corners, [&](const radiosity::Patch& p) {
         return p.material >= scene.materials.size() ||
                scene.materials[p.material].alphaMode != scene::AlphaMode::Blend;
     }));
-    uploaded_ = true;
-    generation_ = generation;
-    smooth_ = smooth;
+    g.uploaded = true;
+    g.generation = generation;
+    g.smooth = smooth;
 }
 
 void RadiosityIndirectPass::render(graph::PassContext& ctx, bool afterPrepass) {
     const FrameContext& frame = ctx.frame;
-    const GLuint incident = ctx.id("radiosity.incident"), depth = ctx.id("radiosity.depth");
-    if (attachedIncident_ != incident || attachedDepth_ != depth) {
+    Gpu& g = *gpu_;
+    const GLuint incident = ctx.id(resources::RadiosityIncident), depth = ctx.id(resources::RadiosityDepth);
+    if (g.attachedIncident != incident || g.attachedDepth != depth) {
         // Rebuilt when the graph hands out other targets (a resize).
-        fbo_ = createFramebuffer();
-        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, incident, 0);
-        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth, 0);
-        attachedIncident_ = incident;
-        attachedDepth_ = depth;
+        g.fbo = createFramebuffer();
+        glNamedFramebufferTexture(g.fbo.id(), GL_COLOR_ATTACHMENT0, incident, 0);
+        glNamedFramebufferTexture(g.fbo.id(), GL_DEPTH_ATTACHMENT, depth, 0);
+        g.attachedIncident = incident;
+        g.attachedDepth = depth;
     }
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, none);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glClearNamedFramebufferfv(g.fbo.id(), GL_COLOR, 0, none);
+    glClearNamedFramebufferfv(g.fbo.id(), GL_DEPTH, 0, &farDepth);
+    glBindFramebuffer(GL_FRAMEBUFFER, g.fbo.id());
     glViewport(0, 0, frame.width, frame.height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); // a patch seen from behind still hides what lies behind it
     glDisable(GL_BLEND);
-    const GLuint p = program_.id();
+    const GLuint p = g.program.id();
     glUseProgram(p);
     // The solution's patches are in world space; the frame's matrices in
     // render space (FrameContext::anchor): move the patches there.
@@ -82,16 +118,17 @@ void RadiosityIndirectPass::render(graph::PassContext& ctx, bool afterPrepass) {
     glProgramUniform1f(p, loc(p, "uDepthTolerance"), kDepthTolerance);
     glProgramUniform2f(p, loc(p, "uProjectionZ"), frame.projection[2][2], frame.projection[3][2]);
     if (afterPrepass)
-        ctx.bindTexture(p, loc(p, "uSceneDepth"), "camera.depth");
-    if (draw_.vertices > 0) {
-        glBindVertexArray(draw_.vao.id());
-        glDrawArrays(GL_TRIANGLES, 0, draw_.vertices);
+        ctx.bindTexture(p, loc(p, "uSceneDepth"), resources::CameraDepth);
+    if (g.draw.vertices > 0) {
+        glBindVertexArray(g.draw.vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, g.draw.vertices);
     }
     glBindVertexArray(0);
 }
 
 void RadiosityIndirectPass::addGpuMemory(GpuMemoryLedger& ledger) const {
-    ledger.addBuffer("radiosity.patches", draw_.buffer.id());
+    if (gpu_)
+        ledger.addBuffer("radiosity.patches", gpu_->draw.buffer.id());
 }
 
 } // namespace lpv::renderer

@@ -5,13 +5,13 @@
 // factors (irradiance / pi, without the lights' direct light, which shading
 // draws itself), are drawn into a screen-sized target that shading reads at
 // its own pixel and multiplies by the texel's albedo.
-#include "frame/FrameContext.h"
+#include "frame/FramePass.h"
 #include "passes/radiosity/PatchVertices.h"
-#include "graph/FrameGraph.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/scene/Error.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace lpv::radiosity {
 struct BakedSolution;
@@ -21,9 +21,35 @@ namespace lpv::renderer {
 
 class GpuMemoryLedger;
 
-class RadiosityIndirectPass {
+// The pass in the frame's table (PassTable.cpp): it declares itself in
+// setup() and draws in execute(); its GL objects exist from its first run
+// until a frame culls it.
+class RadiosityIndirectPass final : public GraphPass {
   public:
-    static scene::Expected<RadiosityIndirectPass> create();
+    RadiosityIndirectPass() : GraphPass(scene::Pass::RadiosityIndirect) {}
+
+    std::size_t patchTriangleVertices() const { return gpu_ ? std::size_t(gpu_->draw.vertices) : 0; }
+    // Names its GL objects for ForwardRenderer::gpuMemory().
+    void addGpuMemory(GpuMemoryLedger& ledger) const override;
+
+  protected:
+    // Runs with gi.method = radiosity and a solution; writes radiosity.incident
+    // and radiosity.depth (kept across frames, so a still camera reuses them),
+    // after the depth pre-pass whose camera.depth it reads.
+    void setup(graph::PassSpec& pass, FrameState& state) override;
+    scene::Expected<void> execute(graph::PassContext& ctx, FrameState& state) override;
+    void release() override { gpu_.reset(); }
+
+  private:
+    struct Gpu {
+        Program program;
+        PatchDraw draw;
+        bool uploaded = false;
+        std::uint64_t generation = 0;
+        bool smooth = false;
+        Framebuffer fbo;
+        GLuint attachedIncident = 0, attachedDepth = 0;
+    };
 
     // Uploads the patches of `solution` with their incident light smoothed to
     // the corners (or flat), unless this solution (`generation`) is already
@@ -39,20 +65,7 @@ class RadiosityIndirectPass {
     // the surface shading lights there.
     void render(graph::PassContext& ctx, bool afterPrepass);
 
-    std::size_t patchTriangleVertices() const { return std::size_t(draw_.vertices); }
-    // Names its GL objects for ForwardRenderer::gpuMemory().
-    void addGpuMemory(GpuMemoryLedger& ledger) const;
-
-  private:
-    RadiosityIndirectPass() = default;
-
-    Program program_;
-    PatchDraw draw_;
-    bool uploaded_ = false;
-    std::uint64_t generation_ = 0;
-    bool smooth_ = false;
-    Framebuffer fbo_;
-    GLuint attachedIncident_ = 0, attachedDepth_ = 0;
+    std::optional<Gpu> gpu_;
 };
 
 } // namespace lpv::renderer

@@ -1,0 +1,49 @@
+#pragma once
+// Every resource of the frame graph, declared once: passes read, write and
+// look up their GL objects through these handles, and the name in quotes
+// is the one reports, `lpv render --dump` and the GPU memory table print.
+#include "graph/ResourceHandle.h"
+
+#include <array>
+
+namespace lpv::renderer::resources {
+
+using graph::ResourceHandle;
+
+// The camera's targets (FramePasses.cpp): shading writes the G-buffer beside
+// the HDR image; the geometry volume reads last frame's.
+inline constexpr ResourceHandle CameraHdr{"camera.hdr"};
+inline constexpr ResourceHandle CameraNormal{"camera.normal"};
+inline constexpr ResourceHandle CameraAlbedo{"camera.albedo"};
+inline constexpr ResourceHandle CameraDepth{"camera.depth"};
+inline constexpr ResourceHandle Display{"display"};
+inline constexpr ResourceHandle ShadowMaps{"shadowMaps"};
+// The sun's RSM tiles and the local lights' RSM faces.
+inline constexpr ResourceHandle RsmPosition{"rsm.position"};
+inline constexpr ResourceHandle RsmNormal{"rsm.normal"};
+inline constexpr ResourceHandle RsmFlux{"rsm.flux"};
+inline constexpr ResourceHandle LocalRsmPosition{"localRsm.position"};
+inline constexpr ResourceHandle LocalRsmNormal{"localRsm.normal"};
+inline constexpr ResourceHandle LocalRsmFlux{"localRsm.flux"};
+inline constexpr ResourceHandle EmissiveVpls{"emissiveVpls"};
+inline constexpr ResourceHandle SkyHeight{"skyHeight"};
+// The LPV's volumes, updated in place by its stages.
+inline constexpr ResourceHandle LpvVolumes{"lpv.volumes"};
+inline constexpr ResourceHandle LpvAccumulator{"lpv.accumulator"};
+inline constexpr ResourceHandle LpvGeometry{"lpv.geometry"};
+inline constexpr ResourceHandle LpvNormals{"lpv.normals"};
+inline constexpr ResourceHandle SubsurfaceAccumulator{"subsurface.accumulator"};
+inline constexpr ResourceHandle RadiosityIncident{"radiosity.incident"};
+inline constexpr ResourceHandle RadiosityDepth{"radiosity.depth"};
+inline constexpr ResourceHandle SunRaysOcclusion{"sunRays.occlusion"};
+inline constexpr ResourceHandle Exposure{"exposure"};
+
+// In the order `lpv render --help` and --dump's error list them.
+inline constexpr std::array all{CameraHdr,       CameraNormal,     CameraAlbedo,     CameraDepth,
+                                Display,         ShadowMaps,       RsmPosition,      RsmNormal,
+                                RsmFlux,         LocalRsmPosition, LocalRsmNormal,   LocalRsmFlux,
+                                EmissiveVpls,    SkyHeight,        LpvVolumes,       LpvAccumulator,
+                                LpvGeometry,     LpvNormals,       SubsurfaceAccumulator, RadiosityIncident,
+                                RadiosityDepth,  SunRaysOcclusion, Exposure};
+
+} // namespace lpv::renderer::resources

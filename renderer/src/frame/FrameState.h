@@ -1,0 +1,34 @@
+#pragma once
+// What the frame's passes share while one frame is declared and run
+// (Filament's blackboard): the frame, its graph, and the plan the renderer
+// made before declaring it. Built by ForwardRenderer::render; a pass's
+// setup() and execute() read it, never the renderer.
+#include "frame/FrameContext.h"
+#include "graph/FrameGraph.h"
+#include "lpv/renderer/SceneAnalysis.h"
+#include "passes/lpv/LpvStages.h"
+
+#include <cstdint>
+
+namespace lpv::radiosity {
+struct BakedSolution;
+}
+
+namespace lpv::renderer {
+
+struct FrameState {
+    const FrameContext& frame;
+    graph::FrameGraph& graph;
+    // Bumped on every scene change: part of every reuse key.
+    std::uint64_t sceneGeneration = 0;
+    // output.depthPrepass: the camera's depth is drawn before shading.
+    bool depthPrepass = false;
+    // gi.method = radiosity: the decision, and the solution with a number that changes with it.
+    EffectDecision radiosity;
+    const radiosity::BakedSolution* baked = nullptr;
+    std::uint64_t bakedGeneration = 0;
+    // The LPV's stages (LpvStages.h).
+    LpvStageInputs lpv;
+};
+
+} // namespace lpv::renderer

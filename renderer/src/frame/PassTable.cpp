@@ -1,0 +1,44 @@
+// The frame's passes, one line each, in the order they are declared (the
+// graph orders them by what they read and write; among independent passes
+// the earlier line runs first, and `lpv render --graph` lists them so).
+// A pass in its own file (FramePass.h) joins the frame here with one line.
+// The rest are still declared by the renderer (FramePasses.cpp,
+// IndirectPasses.cpp) and take their place through declaredByRenderer.
+#include "frame/ForwardRendererImpl.h"
+
+#include "passes/lpv/LpvStages.h"
+#include "passes/radiosity/RadiosityIndirectPass.h"
+
+namespace lpv::renderer {
+
+namespace {
+
+// A group of passes the renderer still declares itself.
+class DeclaredByRenderer final : public FramePass {
+  public:
+    explicit DeclaredByRenderer(std::function<void(FrameState&)> declare) : declare_(std::move(declare)) {}
+    void addTo(FrameState& state) override { declare_(state); }
+
+  private:
+    std::function<void(FrameState&)> declare_;
+};
+
+std::unique_ptr<FramePass> declaredByRenderer(std::function<void(FrameState&)> declare) {
+    return std::make_unique<DeclaredByRenderer>(std::move(declare));
+}
+
+} // namespace
+
+void ForwardRenderer::Impl::buildPassTable() {
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declareShadows(s.frame); }));
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
+    for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
+        passes.push_back(std::move(stage));
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declareSubsurface(s); }));
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declareDepthPrepass(s); }));
+    passes.push_back(std::make_unique<RadiosityIndirectPass>());
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));
+    passes.push_back(declaredByRenderer([this](FrameState& s) { declarePost(s.frame); }));
+}
+
+} // namespace lpv::renderer
