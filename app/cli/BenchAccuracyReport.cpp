@@ -237,61 +237,29 @@ std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode) {
     o.questions = args.options("--question");
     o.quick = args.flag("--quick");
     o.resume = args.flag("--resume");
-    const auto width = parseCount(args.option("--width").value_or("320"), 1);
-    const auto height = parseCount(args.option("--height").value_or("180"), 1);
-    const auto frames = parseCount(args.option("--frames").value_or("10"), 1);
-    const auto warmup = parseCount(args.option("--warmup").value_or("2"), 0);
-    const auto sppOption = args.option("--spp");
-    const auto spp = parseCount(sppOption.value_or("1"), 1);
-    const auto radiosityText = args.option("--radiosity-seconds");
+    o.width = args.integer("--width", o.width, {1});
+    o.height = args.integer("--height", o.height, {1});
+    o.frames = args.integer("--frames", o.frames, {1});
+    o.warmup = args.integer("--warmup", o.warmup, {0});
+    o.spp = args.optionalInteger("--spp", {1});
+    // A quick run is a smoke test of the radiosity step too: the shortest solve.
+    o.radiosityCount = args.integer("--radiosity-seconds", o.quick ? 5 : 160, {5});
+    parseRoundOptions(args, o.rounds);
     auto fail = [&](const std::string& message) -> std::optional<ReportOptions> {
         exitCode = usageError(message, "bench");
         return std::nullopt;
     };
-    if (const std::string error = parseRoundOptions(args, o.rounds); !error.empty())
-        return fail(error);
-    if (!args.missingValue().empty())
-        return fail(args.missingValue() + " needs a value");
-    if (auto unknown = args.unknownOption())
-        return fail("unknown option '" + *unknown + "'");
+    if (auto e = args.error())
+        return fail(*e);
     if (args.positionals().size() != 1)
         return fail("bench report takes no files (scenes come from --scenes)");
-    if (!width || !height || !frames || !warmup || !spp)
-        return fail("--width, --height, --frames and --spp must be positive integers, --warmup zero or more");
-    const auto radiosityCount = parseCount(radiosityText.value_or(o.quick ? "5" : "160"), 5);
-    if (!radiosityCount)
-        return fail("--radiosity-seconds must be a whole number of seconds, at least 5");
     for (const std::string& name : o.questions)
         if (std::ranges::find(kQuestions, name, &Question::name) == kQuestions.end())
             return fail("unknown question '" + name + "' (see lpv bench --help)");
     for (const std::string& name : o.scenes)
         if (std::ranges::find(kScenes, name, &SceneSpec::name) == kScenes.end())
             return fail("unknown scene '" + name + "' (cornell-box, cornell-obj, sibenik, sponza)");
-    o.width = *width;
-    o.height = *height;
-    o.frames = *frames;
-    o.warmup = *warmup;
-    if (sppOption)
-        o.spp = *spp;
-    o.radiosityCount = *radiosityCount;
     return o;
-}
-
-std::string reportCommand(const ReportOptions& o) {
-    std::string command = "lpv bench report --out " + o.outDir.string() + " --scenes " + o.scenesDir.string() +
-                          " --width " + std::to_string(o.width) + " --height " + std::to_string(o.height) +
-                          " --frames " + std::to_string(o.frames) + " --warmup " + std::to_string(o.warmup) +
-                          (o.spp ? " --spp " + std::to_string(*o.spp) : std::string()) + " --radiosity-seconds " +
-                          std::to_string(o.radiosityCount) + roundOptionsText(o.rounds);
-    for (const std::string& s : o.scenes)
-        command += " --scene " + s;
-    for (const std::string& q : o.questions)
-        command += " --question " + q;
-    if (o.resume)
-        command += " --resume";
-    if (o.quick)
-        command += " --quick";
-    return command;
 }
 
 int runWholeReport(const ReportOptions& o) {
@@ -318,7 +286,7 @@ int runWholeReport(const ReportOptions& o) {
         const bool keepProject = o.resume && scene::loadProject(project).has_value();
         if (keepProject)
             std::printf("reusing %s (--resume)\n", project.string().c_str());
-        const auto plan = keepProject || makeProject(spec, o.scenesDir, project) ? planScene(spec, o) : std::nullopt;
+        const auto plan = keepProject || makeProject(spec, o.scenesDir, project) ? planSceneOrSay(spec, o) : std::nullopt;
         if (!plan) {
             report.failures.push_back("making the project");
             reports.push_back(report);
@@ -398,26 +366,18 @@ int runWholeReport(const ReportOptions& o) {
 } // namespace report
 
 int benchAccuracyReport(Args args) {
-    const auto shardText = args.option("--shard");
-    const auto mergeText = args.option("--merge-shards");
+    const auto shard = args.shard("--shard");
+    const auto shardCount = args.optionalInteger("--merge-shards", {1});
     int exitCode = kOk;
     const auto options = parseReportOptions(args, exitCode);
     if (!options)
         return exitCode;
-    if (shardText && mergeText)
+    if (shard && shardCount)
         return usageError("--shard runs one shard, --merge-shards joins them: give one", "bench");
-    if (shardText) {
-        auto shard = reference::parseShard(*shardText);
-        if (!shard)
-            return usageError(shard.error().message, "bench");
+    if (shard)
         return report::runReportShard(*options, *shard);
-    }
-    if (mergeText) {
-        const auto count = parseCount(*mergeText, 1);
-        if (!count)
-            return usageError("--merge-shards needs the shard count N (a whole number, at least 1)", "bench");
-        return report::runReportCoordinator(*options, *count);
-    }
+    if (shardCount)
+        return report::runReportCoordinator(*options, *shardCount);
     return report::runWholeReport(*options);
 }
 

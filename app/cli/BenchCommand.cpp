@@ -2,7 +2,6 @@
 // and noisy). `lpv bench import` compares importing a source file with
 // loading the project it becomes.
 #include "BenchReport.h"
-#include "BenchSweepShard.h"
 #include "Cli.h"
 
 #include "lpv/importers/Importer.h"
@@ -140,17 +139,13 @@ scene::Expected<ImportFigures> benchOne(const fs::path& file, int repeat, const 
 }
 
 int benchImport(Args& args) {
-    const int repeat = std::stoi(args.option("--repeat").value_or("5"));
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
+    const int repeat = args.integer("--repeat", 5, {1, 1000});
+    if (auto e = args.error())
+        return usageError(*e, "bench");
     auto files = args.positionals();
     files.erase(files.begin()); // "import"
     if (files.empty())
         return usageError("bench import needs at least one scene file", "bench");
-    if (repeat < 1 || repeat > 1000)
-        return usageError("--repeat must be 1..1000", "bench");
 
     const fs::path scratch = fs::temp_directory_path() / ("lpv-bench-import-" + std::to_string(scene::processId()));
     fs::create_directories(scratch);
@@ -193,13 +188,8 @@ int runBench(Args args) {
         return benchCompareTimes(std::move(args));
     if (pos.front() == "merge")
         return benchMerge(std::move(args));
-    if (pos.front() == "import") {
-        try {
-            return benchImport(args);
-        } catch (const std::exception&) { // std::stoi on a bad --repeat
-            return usageError("--repeat needs a whole number", "bench");
-        }
-    }
+    if (pos.front() == "import")
+        return benchImport(args);
     return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report, merge)", "bench");
 }
 

@@ -28,12 +28,9 @@ ordered oppositely), 1 when it does not.
 }
 
 int benchCompareTimes(Args args) {
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    auto pos = args.positionals();
-    pos.erase(pos.begin()); // "compare-times"
-    if (pos.size() != 2)
-        return usageError("bench compare-times expects two timing files (OUT/NAME/timing.json)", "bench");
+    const auto pos = args.expectPositionals(2, "bench compare-times expects two timing files (OUT/NAME/timing.json)", 1); // after "compare-times"
+    if (pos.empty())
+        return usageError(*args.error(), "bench");
     const auto a = bench::loadSharedTiming(pos[0]);
     const auto b = bench::loadSharedTiming(pos[1]);
     for (const auto* t : {&a, &b})

@@ -46,33 +46,21 @@ int benchFlicker(Args args) {
     request.cameraName = args.option("--camera");
     const std::vector<std::string> sets = args.options("--set");
     const auto pathName = args.option("--path");
-    const auto sunRotate = args.option("--sun-rotate");
+    std::string sunRotateText;
+    const auto sunRotate = args.optionalReal("--sun-rotate", {}, &sunRotateText);
     const auto referenceFile = args.option("--reference");
     const auto csv = args.option("--csv");
     const auto md = args.option("--markdown");
-    const auto width = parseCount(args.option("--width").value_or("320"), 1);
-    const auto height = parseCount(args.option("--height").value_or("180"), 1);
-    const auto frames = parseCount(args.option("--frames").value_or("16"), 2);
-    const auto fps = parseCount(args.option("--fps").value_or("30"), 1);
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("bench --flicker expects exactly one project file", "bench");
-    if (!width || !height || !frames || !fps)
-        return usageError("--width, --height and --fps must be positive integers, --frames at least 2",
-                          "bench");
+    const int width = args.integer("--width", 320, {1});
+    const int height = args.integer("--height", 180, {1});
+    const int frames = args.integer("--frames", 16, {2});
+    const int fps = args.integer("--fps", 30, {1});
+    const auto pos = args.expectPositionals(1, "bench --flicker expects exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "bench");
     if (pathName.has_value() == sunRotate.has_value())
         return usageError("bench --flicker needs either --path NAME or --sun-rotate DEG", "bench");
-    float degrees = 0.0f;
-    if (sunRotate) {
-        const auto parsed = parseDegrees(*sunRotate);
-        if (!parsed)
-            return usageError("--sun-rotate needs a number of degrees, got '" + *sunRotate + "'", "bench");
-        degrees = *parsed;
-    }
+    const float degrees = float(sunRotate.value_or(0.0));
     std::string planError;
     const SetPlan plan = planSettings(sets, planError);
     if (!planError.empty())
@@ -111,7 +99,7 @@ int benchFlicker(Args args) {
             std::cerr << "lpv: " << loaded.error().describe() << "\n";
             return kFailure;
         }
-        if (loaded->image.width != *width || loaded->image.height != *height) {
+        if (loaded->image.width != width || loaded->image.height != height) {
             std::cerr << "lpv: " << *referenceFile << " is " << loaded->image.width << "x"
                       << loaded->image.height << "; give the same --width and --height\n";
             return kFailure;
@@ -121,10 +109,10 @@ int benchFlicker(Args args) {
     spec.project = std::move(*project);
     spec.projectDir = std::filesystem::absolute(request.projectFile).parent_path();
     spec.camera = *camera;
-    spec.width = *width;
-    spec.height = *height;
-    spec.frames = *frames;
-    spec.fps = *fps;
+    spec.width = width;
+    spec.height = height;
+    spec.frames = frames;
+    spec.fps = fps;
     spec.sunDegrees = degrees;
     spec.fixed = plan.fixed;
     spec.combinations = plan.combinations;
@@ -150,10 +138,10 @@ int benchFlicker(Args args) {
 
     const renderer::GlInfo& gl = result->gl;
     std::string command = "lpv bench " + request.projectFile + " --flicker" +
-                          (pathName ? " --path " + *pathName + " --fps " + std::to_string(*fps)
-                                    : " --sun-rotate " + *sunRotate) +
-                          " --frames " + std::to_string(*frames) + " --width " + std::to_string(*width) +
-                          " --height " + std::to_string(*height);
+                          (pathName ? " --path " + *pathName + " --fps " + std::to_string(fps)
+                                    : " --sun-rotate " + sunRotateText) +
+                          " --frames " + std::to_string(frames) + " --width " + std::to_string(width) +
+                          " --height " + std::to_string(height);
     if (request.cameraName)
         command += " --camera " + *request.cameraName;
     for (const std::string& s : sets)

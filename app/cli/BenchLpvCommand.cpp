@@ -27,23 +27,6 @@ namespace {
 
 constexpr const char* kVariants[] = {"computeGather", "computeScatter", "rasterGather", "rasterScatter"};
 
-std::optional<std::vector<int>> parseList(const std::string& text, int minimum, int maximum) {
-    std::vector<int> values;
-    std::istringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        int v = 0;
-        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
-        if (ec != std::errc() || ptr != item.data() + item.size() || v < minimum || v > maximum)
-            return std::nullopt;
-        values.push_back(v);
-    }
-    if (values.empty())
-        return std::nullopt;
-    return values;
-}
-
-
 // One setting of the tables, timed over the rounds.
 struct Measured {
     std::map<std::string, std::string> settings;
@@ -125,28 +108,17 @@ int benchLpv(Args args) {
     request.sets = args.options("--set");
     const auto csvFile = args.option("--csv");
     const auto markdownFile = args.option("--markdown");
-    const auto width = parseCount(args.option("--width").value_or("1024"), 1);
-    const auto height = parseCount(args.option("--height").value_or("600"), 1);
-    const auto frames = parseCount(args.option("--frames").value_or("5"), 1);
-    const auto warmup = parseCount(args.option("--warmup").value_or("2"), 0);
-    const auto tiles = parseList(args.option("--tiles").value_or("32,64,128,256,512,1024"), 32, 1024);
-    const auto steps = parseList(args.option("--steps").value_or("1,2,4,8,16,32,64"), 0, 64);
+    const int width = args.integer("--width", 1024, {1});
+    const int height = args.integer("--height", 600, {1});
+    const int frames = args.integer("--frames", 5, {1});
+    const int warmup = args.integer("--warmup", 2, {0});
+    const std::vector<int> tiles = args.integerList("--tiles", {32, 1024}).value_or(std::vector{32, 64, 128, 256, 512, 1024});
+    const std::vector<int> steps = args.integerList("--steps", {0, 64}).value_or(std::vector{1, 2, 4, 8, 16, 32, 64});
     bench::RoundPlan roundPlan;
-    const std::string roundError = parseRoundOptions(args, roundPlan);
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    auto pos = args.positionals();
-    pos.erase(pos.begin()); // "lpv"
-    if (pos.size() != 1)
-        return usageError("bench lpv expects exactly one project file", "bench");
-    if (!width || !height || !frames || !warmup)
-        return usageError("--width, --height and --frames must be positive integers, --warmup zero or more", "bench");
-    if (!tiles || !steps)
-        return usageError("--tiles takes sizes 32..1024 and --steps counts 0..64, comma-separated", "bench");
-    if (!roundError.empty())
-        return usageError(roundError, "bench");
+    parseRoundOptions(args, roundPlan);
+    const auto pos = args.expectPositionals(1, "bench lpv expects exactly one project file", 1); // after "lpv"
+    if (pos.empty())
+        return usageError(*args.error(), "bench");
     if (roundPlan.maxRounds < 1)
         return usageError("bench lpv times in rounds: --rounds must be 1 or more", "bench");
     // A benchmark measures the LPV being computed: no reuse of the last frame's
@@ -162,12 +134,12 @@ int benchLpv(Args args) {
 
     // Every setting of both tables, timed against each other in the same rounds.
     std::vector<Measured> measured;
-    for (int tile : *tiles)
+    for (int tile : tiles)
         measured.push_back({{{"rsm.tileSize", std::to_string(tile)}}, {}, {}, {}});
     const std::size_t tileCount = measured.size();
     for (const char* occlusion : {"false", "true"})
         for (const char* variant : kVariants)
-            for (int s : *steps)
+            for (int s : steps)
                 measured.push_back({{{"lpv.propagationSteps", std::to_string(s)},
                                      {"lpv.variant", variant},
                                      {"lpv.occlusion", occlusion}},
@@ -192,10 +164,10 @@ int benchLpv(Args args) {
 
     std::printf("%s\n", setup->context->info().renderer.c_str());
     const std::string loadBefore = bench::describeLoad();
-    std::printf("warming up %zu settings (%d frames each)\n", measured.size(), std::max(*warmup, 1));
+    std::printf("warming up %zu settings (%d frames each)\n", measured.size(), std::max(warmup, 1));
     std::fflush(stdout);
     for (const Measured& m : measured)
-        if (!apply(m) || !renderFrames(*setup, *width, *height, std::max(*warmup, 1)))
+        if (!apply(m) || !renderFrames(*setup, width, height, std::max(warmup, 1)))
             return kFailure;
 
     // The rounds (bench/Timing.h): one untimed frame after each switch (the
@@ -216,10 +188,10 @@ int benchLpv(Args args) {
             failed = true;
             return scene::makeError(scene::ErrorCode::InvalidValue, request.projectFile, "", "a frame failed");
         };
-        if (!apply(m) || !renderFrames(*setup, *width, *height, 1))
+        if (!apply(m) || !renderFrames(*setup, width, height, 1))
             return stop();
         setup->renderer->timer().clearHistory();
-        if (!renderFrames(*setup, *width, *height, *frames))
+        if (!renderFrames(*setup, width, height, frames))
             return stop();
         m.rounds.push_back(setup->renderer->timer().table());
         return m.rounds.back();
@@ -251,9 +223,9 @@ int benchLpv(Args args) {
 
     // The report.
     const renderer::GlInfo& gl = setup->context->info();
-    std::string command = "lpv bench lpv " + request.projectFile + " --width " + std::to_string(*width) +
-                          " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup) + roundOptionsText(roundPlan);
+    std::string command = "lpv bench lpv " + request.projectFile + " --width " + std::to_string(width) +
+                          " --height " + std::to_string(height) + " --frames " + std::to_string(frames) +
+                          " --warmup " + std::to_string(warmup) + roundOptionsText(roundPlan);
     for (const std::string& kv : request.sets)
         command += " --set " + kv;
     std::ostringstream md, csv;
@@ -261,8 +233,8 @@ int benchLpv(Args args) {
        << "Load: " << load << "\n\n"
        << "Timing: " << timed->rounds << " interleaved round" << (timed->rounds == 1 ? "" : "s")
        << " of all the settings below (in order, then in reverse, ...); stopped: " << timed->stopReason << ".\n\n"
-       << "GPU ms from timer queries: each round's median over " << *frames << " frames (after one untimed frame; "
-       << *warmup << " warm-up frames per setting before the rounds), then the median over the rounds ±half the "
+       << "GPU ms from timer queries: each round's median over " << frames << " frames (after one untimed frame; "
+       << warmup << " warm-up frames per setting before the rounds), then the median over the rounds ±half the "
        << "interquartile range (min-max); " << cascades << " cascades of " << base.getInt("lpv.gridSize")
        << "^3. Settings whose times differ by less than the noise (quartiles overlapping, or medians closer than "
        << "the larger spread, at least " << int(std::lround(100.0 * bench::kSameCostFraction))
@@ -324,7 +296,7 @@ int benchLpv(Args args) {
     for (std::size_t i = tileCount; i < measured.size(); ++i) {
         const Measured& m = measured[i];
         const bench::TimingStats* t = findPass(m, "lpvPropagation");
-        const int s = std::stoi(m.settings.at("lpv.propagationSteps"));
+        const int s = parseInteger(m.settings.at("lpv.propagationSteps")).value_or(0); // written from --steps
         const std::string& occlusion = m.settings.at("lpv.occlusion");
         const std::string& variant = m.settings.at("lpv.variant");
         char perStep[32] = "-";

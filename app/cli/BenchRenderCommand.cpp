@@ -42,37 +42,24 @@ int benchRender(Args args) {
     const auto csvFile = args.option("--csv");
     const auto markdownFile = args.option("--markdown");
     const bool thesis = args.flag("--thesis-settings");
-    const auto width =
-        parseCount(args.option("--width").value_or(thesis ? std::to_string(bench::kThesisWidth) : "1280"), 1);
-    const auto height =
-        parseCount(args.option("--height").value_or(thesis ? std::to_string(bench::kThesisHeight) : "720"), 1);
-    const auto frames = parseCount(args.option("--frames").value_or("20"), 1);
-    const auto warmup = parseCount(args.option("--warmup").value_or("5"), 0);
+    const int width = args.integer("--width", thesis ? bench::kThesisWidth : 1280, {1});
+    const int height = args.integer("--height", thesis ? bench::kThesisHeight : 720, {1});
+    const int frames = args.integer("--frames", 20, {1});
+    const int warmup = args.integer("--warmup", 5, {0});
     const bool perFrame = args.flag("--per-frame");
-    const auto turnText = args.option("--turn");
+    // Degrees the camera turns each way; a turn of more than half a circle is the same as a smaller one.
+    const auto turnDegrees = args.optionalReal("--turn", {0.0, 180.0, true, false});
     const bool roundOptionsGiven = namesRoundOption(args);
     bench::RoundPlan roundPlan;
-    const std::string roundError = parseRoundOptions(args, roundPlan);
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    auto pos = args.positionals();
-    pos.erase(pos.begin()); // "render"
-    if (pos.size() != 1)
-        return usageError("bench render expects exactly one project file", "bench");
-    if (!width || !height || !frames || !warmup)
-        return usageError("--width, --height and --frames must be positive integers, --warmup zero or more", "bench");
-    if (!roundError.empty())
-        return usageError(roundError, "bench");
+    parseRoundOptions(args, roundPlan);
+    const auto pos = args.expectPositionals(1, "bench render expects exactly one project file", 1); // after "render"
+    if (pos.empty())
+        return usageError(*args.error(), "bench");
     if (roundPlan.maxRounds < 1)
         return usageError("bench render times in rounds: --rounds must be 1 or more", "bench");
     std::optional<float> turn;
-    if (turnText) {
-        const auto parsed = parseDegrees(*turnText);
-        if (!parsed || !(*parsed > 0.0f) || *parsed > 180.0f)
-            return usageError("--turn takes degrees in (0, 180], not '" + *turnText + "'", "bench");
-        turn = *parsed;
+    if (turnDegrees) {
+        turn = float(*turnDegrees);
         if (csvFile || markdownFile)
             return usageError("--turn prints its own table; --csv and --markdown write the rounds' tables", "bench");
         if (roundOptionsGiven)
@@ -135,10 +122,10 @@ int benchRender(Args args) {
             apply(combination);
             heading(combination);
             TurnFrames turned;
-            if (!renderTurnFrames(*setup, *width, *height, *warmup, *frames, *turn, turned))
+            if (!renderTurnFrames(*setup, width, height, warmup, frames, *turn, turned))
                 return kFailure;
             std::printf("%s: %dx%d, %d frames after %d warm-up (frame by frame, not in rounds)\n%s",
-                        request.projectFile.c_str(), *width, *height, *frames, *warmup,
+                        request.projectFile.c_str(), width, height, frames, warmup,
                         formatTurnFrames(turned, *turn).c_str());
         }
         return kOk;
@@ -146,12 +133,12 @@ int benchRender(Args args) {
 
     // Each setting's warm-up once, before the rounds; what it draws and the
     // LPV's layout are shown with its times (so at least one frame).
-    const int warmupFrames = std::max(*warmup, 1);
+    const int warmupFrames = std::max(warmup, 1);
     const std::string loadBefore = bench::describeLoad();
     std::vector<std::string> drawn(combinations.size()), lpvNotes(combinations.size());
     for (std::size_t i = 0; i < combinations.size(); ++i) {
         apply(combinations[i]);
-        if (!renderFrames(*setup, *width, *height, warmupFrames))
+        if (!renderFrames(*setup, width, height, warmupFrames))
             return kFailure;
         const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
         char line[256];
@@ -182,10 +169,10 @@ int benchRender(Args args) {
             renderFailed = true;
             return scene::makeError(scene::ErrorCode::InvalidValue, request.projectFile, "", "a frame failed");
         };
-        if (!renderFrames(*setup, *width, *height, 1))
+        if (!renderFrames(*setup, width, height, 1))
             return failed();
         timer.clearHistory();
-        if (!renderFrames(*setup, *width, *height, *frames))
+        if (!renderFrames(*setup, width, height, frames))
             return failed();
         if (perFrame)
             std::printf("\nround %d%s, every timed frame:\n%s", currentRound + 1,
@@ -210,8 +197,8 @@ int benchRender(Args args) {
         const BenchRun& run = runs.back();
         heading(combinations[i]);
         std::printf("%s: %s, %dx%d, %s of %s (after %s, and one untimed frame per round)\n",
-                    request.projectFile.c_str(), drawn[i].c_str(), *width, *height,
-                    counted(run.total.rounds, "round").c_str(), counted(*frames, "frame").c_str(),
+                    request.projectFile.c_str(), drawn[i].c_str(), width, height,
+                    counted(run.total.rounds, "round").c_str(), counted(frames, "frame").c_str(),
                     counted(warmupFrames, "warm-up frame").c_str());
         std::printf("%s\n", lpvNotes[i].c_str());
         std::printf("%s", benchTable(run).c_str());
@@ -223,13 +210,13 @@ int benchRender(Args args) {
     if (runs.size() > 1)
         std::printf("\n%s", benchComparison(runs).c_str());
     if (thesis)
-        std::printf("\nthe thesis application's phases (--thesis-settings: %dx%d, its start camera):\n%s", *width,
-                    *height, bench::formatThesisPhases(bench::thesisPhases(roundTables[0], runs[1].total)).c_str());
+        std::printf("\nthe thesis application's phases (--thesis-settings: %dx%d, its start camera):\n%s", width,
+                    height, bench::formatThesisPhases(bench::thesisPhases(roundTables[0], runs[1].total)).c_str());
 
     const renderer::GlInfo& gl = setup->context->info();
-    std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(*width) +
-                          " --height " + std::to_string(*height) + " --frames " + std::to_string(*frames) +
-                          " --warmup " + std::to_string(*warmup) + roundOptionsText(roundPlan) +
+    std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(width) +
+                          " --height " + std::to_string(height) + " --frames " + std::to_string(frames) +
+                          " --warmup " + std::to_string(warmup) + roundOptionsText(roundPlan) +
                           (thesis ? " --thesis-settings" : "");
     for (const std::string& kv : sets)
         command += " --set " + kv;

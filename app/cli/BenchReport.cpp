@@ -266,56 +266,15 @@ const char* const kRoundOptionsHelp = R"(  --rounds N            Timing rounds a
                         range is within P% of its median (default 10)
 )";
 
-std::string parseRoundOptions(Args& args, bench::RoundPlan& plan) {
-    const auto rounds = args.option("--rounds");
-    const auto budget = args.option("--time-budget");
-    const auto target = args.option("--spread-target");
-    if (rounds) {
-        const auto n = parseCount(*rounds, 0);
-        if (!n)
-            return "--rounds must be a whole number, 0 or more";
-        plan.maxRounds = *n;
-        plan.minRounds = std::min(plan.minRounds, *n);
+void parseRoundOptions(Args& args, bench::RoundPlan& plan) {
+    if (const auto rounds = args.optionalInteger("--rounds", {0})) {
+        plan.maxRounds = *rounds;
+        plan.minRounds = std::min(plan.minRounds, *rounds);
     }
-    auto positive = [](const std::string& text) -> std::optional<double> {
-        double v = 0.0;
-        auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v <= 0.0)
-            return std::nullopt;
-        return v;
-    };
-    if (budget) {
-        const auto v = positive(*budget);
-        if (!v)
-            return "--time-budget must be a positive number of seconds";
-        plan.timeBudgetSeconds = *v;
-    }
-    if (target) {
-        const auto v = positive(*target);
-        if (!v)
-            return "--spread-target must be a positive percentage";
-        plan.spreadTarget = *v / 100.0;
-    }
-    return {};
-}
-
-std::string roundOptionsText(const bench::RoundPlan& plan) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, " --rounds %d --spread-target %g", plan.maxRounds, 100.0 * plan.spreadTarget);
-    std::string text = buf;
-    if (plan.timeBudgetSeconds > 0.0) {
-        std::snprintf(buf, sizeof buf, " --time-budget %g", plan.timeBudgetSeconds);
-        text += buf;
-    }
-    return text;
-}
-
-std::optional<int> parseCount(const std::string& text, int minimum) {
-    int v = 0;
-    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || ptr != text.data() + text.size() || v < minimum)
-        return std::nullopt;
-    return v;
+    if (const auto budget = args.optionalReal("--time-budget", RealRange::above(0.0)))
+        plan.timeBudgetSeconds = *budget;
+    if (const auto target = args.optionalReal("--spread-target", RealRange::above(0.0)))
+        plan.spreadTarget = *target / 100.0;
 }
 
 double median(std::vector<double> values) {
@@ -324,14 +283,6 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-std::optional<float> parseDegrees(const std::string& text) {
-    float v = 0.0f;
-    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
-        return std::nullopt;
-    return v;
 }
 
 } // namespace lpv::cli

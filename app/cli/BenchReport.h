@@ -2,6 +2,8 @@
 // The tables `lpv bench render` writes: per combination of swept settings,
 // each pass's GPU time over interleaved rounds (median, quartiles, extremes),
 // as CSV and as Markdown headed by the machine it ran on and its load.
+#include "Args.h"
+
 #include "lpv/bench/Machine.h"
 #include "lpv/bench/Settings.h"
 #include "lpv/bench/Sweep.h"
@@ -76,19 +78,14 @@ bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<Swee
                      const scene::ParameterSet& display = {});
 
 // --rounds N, --time-budget S and --spread-target PERCENT into `plan` (its
-// fields are the defaults); a usage error's text, or empty. Shared by every
-// bench command that times (bench.md "Timing with its spread").
-std::string parseRoundOptions(class Args& args, bench::RoundPlan& plan);
-// The same options as a command line would give them (" --rounds 9 ...").
-std::string roundOptionsText(const bench::RoundPlan& plan);
+// fields are the defaults); a bad value is left in args.error(). Shared by
+// every bench command that times (bench.md "Timing with its spread").
+void parseRoundOptions(Args& args, bench::RoundPlan& plan);
+using bench::roundOptionsText;
 // The help lines of those options.
 extern const char* const kRoundOptionsHelp;
 
-// A whole number >= minimum (command-line counts), or nullopt.
-std::optional<int> parseCount(const std::string& text, int minimum);
 // The median of `values` (the mean of the middle two for an even count; 0 when empty).
 double median(std::vector<double> values);
-// A finite number of degrees, or nullopt.
-std::optional<float> parseDegrees(const std::string& text);
 
 } // namespace lpv::cli

@@ -1,19 +1,15 @@
 #pragma once
-// What `lpv bench report` does, laid out before it does it: per scene the
-// project, the references it needs (one per bounce count and sky setting a
-// sweep measures against) and the sweeps (one per question, or per value for
-// bounces and sky). The report runs the plan in one process
-// (BenchAccuracyReport.cpp); on a cluster, shards and a coordinator run it in
-// pieces (BenchReportShards.cpp, docs/cluster.md).
+// `lpv bench report` runs its plan (bench/ReportPlan.h: the scenes, their
+// references and sweeps, what is done already) as commands: in one process
+// (BenchAccuracyReport.cpp) or, on a cluster, as shards and a coordinator
+// (BenchReportShards.cpp, docs/cluster.md). What is here turns a planned
+// step into the command that does it, and echoes it as a user would type it.
 #include "Cli.h"
 #include "BenchSweepCommand.h"
-#include "lpv/bench/ContentHash.h"
-#include "lpv/bench/ReferenceFile.h"
 #include "ReferenceTrace.h"
 
-#include "lpv/bench/Questions.h"
+#include "lpv/bench/ReportPlan.h"
 #include "lpv/reference/Shards.h"
-#include "lpv/scene/ParameterRegistry.h"
 
 #include <filesystem>
 #include <optional>
@@ -25,58 +21,12 @@ namespace lpv::cli::report {
 using bench::Question;
 extern const std::vector<Question>& kQuestions;
 
-struct SceneSpec {
-    std::string name;
-    std::string source; // relative to --scenes; empty = the built-in template
-    // Reference samples per pixel unless --spp says otherwise (see kScenes).
-    int defaultSpp;
-};
-extern const std::vector<SceneSpec> kScenes;
+// The plan and its names from lpv_bench (ReportPlan.h, ReportShards.h), as
+// the report's commands use them.
+using namespace bench::report;
 
-struct ReportOptions {
-    std::filesystem::path outDir = "bench-report";
-    std::filesystem::path scenesDir = "../shared/scenes";
-    std::vector<std::string> scenes;    // --scene; empty = all
-    std::vector<std::string> questions; // --question; empty = all
-    bool quick = false;
-    bool resume = false;
-    int width = 320, height = 180, frames = 10, warmup = 2;
-    std::optional<int> spp; // --spp; else per scene
-    int radiosityCount = 160;
-    bench::RoundPlan rounds; // the timing step's rounds (--rounds, --time-budget, --spread-target), per scene
-
-    bool wantsScene(const std::string& name) const;
-    bool wantsQuestion(const std::string& name) const;
-    int sppFor(const SceneSpec& spec) const; // --quick is a smoke run: 256 unless --spp
-};
-
-struct PlannedReference {
-    std::filesystem::path file;
-    int bounces = 1;
-    std::string sky; // effects.skyInjection it is traced for ("": the project's)
-};
-
-struct PlannedSweep {
-    std::string question;
-    std::string sweep; // "KEY=V1,V2,..."
-    std::filesystem::path dir;
-    std::size_t reference = 0; // into ScenePlan::references
-};
-
-struct ScenePlan {
-    const SceneSpec* spec = nullptr;
-    std::filesystem::path dir;     // OUT/NAME
-    std::filesystem::path project; // OUT/NAME/NAME.lpvproj
-    int spp = 0;
-    int projectBounces = 1;
-    scene::ParameterSet current; // the project's own parameters
-    std::vector<PlannedReference> references; // the project's own first
-    std::vector<PlannedSweep> sweeps;
-};
-
-std::filesystem::path projectFileOf(const SceneSpec& spec, const ReportOptions& options);
-// The plan of one scene; its project must exist (its lpv.bounces decides the references).
-std::optional<ScenePlan> planScene(const SceneSpec& spec, const ReportOptions& options);
+// bench::report::planScene, its error printed (nullopt then).
+std::optional<ScenePlan> planSceneOrSay(const SceneSpec& spec, const ReportOptions& options);
 
 // `lpv reference` tracing `ref` into `out`, and `lpv bench --sweep` for
 // `sweep` into its folder, as the report runs them (in this process, options
@@ -90,30 +40,17 @@ int runEchoed(const SweepCommand& command, std::vector<SweepRun>* runs = nullptr
 
 // Runs one `lpv` command in this process, echoing it as a user would type it.
 int call(const char* name, int (*command)(Args), std::vector<std::string> args);
-// "lpv.bounces=1,2,3" -> {"1", "2", "3"}.
-std::vector<std::string> splitValues(const std::string& sweep);
 // A fresh project for the scene; false (and a message) when it cannot be made.
 bool makeProject(const SceneSpec& spec, const std::filesystem::path& scenesDir,
                  const std::filesystem::path& project);
-// A reference traced earlier with the same size and bounce count and at least `spp` is reused.
-bool referenceMatches(const std::filesystem::path& file, int width, int height, int bounces = 0, int spp = 0);
-bool referenceMatches(const bench::LoadedReference& ref, int width, int height, int bounces, int spp);
-// --resume: whether `file` was written by the very sweep the report would run
-// now (its recorded command holds the project, the swept values, the
-// reference, the size, frames and warm-up) after the reference was traced.
-bool sweepDoneAlready(const std::filesystem::path& file, const ScenePlan& plan, const PlannedSweep& sweep,
-                      const ReportOptions& options);
 
 // The options every form of `lpv bench report` shares; nullopt after a usage
 // error, whose exit code is in `exitCode`.
 std::optional<ReportOptions> parseReportOptions(Args& args, int& exitCode);
-// The command line that gives these options (headed in report.md; printed as the next step).
-std::string reportCommand(const ReportOptions& options);
 
-// OUT/NAME/timing.json: every distinct setting of the scene's sweeps timed
-// once, together, in interleaved rounds (BenchReportTiming.cpp); the sweeps
-// take their times from it. False after printing why it failed.
-std::filesystem::path timingFileOf(const ScenePlan& plan);
+// OUT/NAME/timing.json (timingFileOf): every distinct setting of the scene's
+// sweeps timed once, together, in interleaved rounds (BenchReportTiming.cpp);
+// the sweeps take their times from it. False after printing why it failed.
 bool timeScene(const ScenePlan& plan, const ReportOptions& options);
 
 // The whole report in this process (BenchAccuracyReport.cpp).

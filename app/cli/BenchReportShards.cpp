@@ -12,7 +12,8 @@
 //                writes report.md and report.json as one process would
 #include "BenchReport.h"
 #include "BenchReportPlan.h"
-#include "BenchSweepShard.h"
+#include "lpv/bench/ReportShards.h"
+#include "lpv/bench/SweepShard.h"
 #include "lpv/bench/ContentHash.h"
 #include "lpv/bench/ReferenceFile.h"
 
@@ -27,29 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path referenceShardFile(const PlannedReference& ref, const reference::ShardSpec& shard) {
-    fs::path out = ref.file;
-    out.replace_filename(ref.file.stem().string() + ".shard-" + std::to_string(shard.index) + "-of-" +
-                         std::to_string(shard.count) + ".exr");
-    return out;
-}
-
-fs::path sweepShardDir(const PlannedSweep& sweep, const reference::ShardSpec& shard) {
-    return sweep.dir / "shards" / (std::to_string(shard.index) + "-of-" + std::to_string(shard.count));
-}
-
-// Whether `file` is this shard of a reference of this size, bounce count and sample count.
-bool referenceShardDone(const fs::path& file, const reference::ShardSpec& shard, const PlannedReference& ref,
-                        const ScenePlan& plan, const ReportOptions& o) {
-    if (!fs::exists(file))
-        return false;
-    const auto loaded = bench::readReferenceExr(file); // read once: the size, bounces and spp, then the shard
-    if (!loaded || !referenceMatches(*loaded, o.width, o.height, ref.bounces, plan.spp))
-        return false;
-    auto it = loaded->attributes.find("lpv:shard");
-    return it != loaded->attributes.end() && it->second == reference::formatShard(shard);
-}
-
 std::optional<std::vector<ScenePlan>> planAll(const ReportOptions& o, int shardCount) {
     std::vector<ScenePlan> plans;
     for (const SceneSpec& spec : kScenes) {
@@ -61,20 +39,12 @@ std::optional<std::vector<ScenePlan>> planAll(const ReportOptions& o, int shardC
                       << reportCommand(o) << " --merge-shards " << shardCount << "\n";
             return std::nullopt;
         }
-        auto plan = planScene(spec, o);
+        auto plan = planSceneOrSay(spec, o);
         if (!plan)
             return std::nullopt;
         plans.push_back(std::move(*plan));
     }
     return plans;
-}
-
-bool anyReferenceMissing(const std::vector<ScenePlan>& plans, const ReportOptions& o) {
-    for (const ScenePlan& plan : plans)
-        for (const PlannedReference& ref : plan.references)
-            if (!referenceMatches(ref.file, o.width, o.height, ref.bounces, plan.spp))
-                return true;
-    return false;
 }
 
 void printNext(const ReportOptions& o, int shardCount, const std::string& what) {

@@ -46,8 +46,6 @@ std::string timingCommand(const ScenePlan& plan, const ReportOptions& o) {
 
 } // namespace
 
-fs::path timingFileOf(const ScenePlan& plan) { return plan.dir / "timing.json"; }
-
 bool timeScene(const ScenePlan& plan, const ReportOptions& o) {
     int exitCode = kOk;
     auto project = loadProjectWithSets(plan.project.string(), {kSweepBaseSet}, "bench", exitCode);

@@ -6,7 +6,7 @@
 #include "BenchSweepCommand.h"
 #include "lpv/bench/Sweep.h"
 #include "lpv/bench/SweepOutput.h"
-#include "BenchSweepShard.h"
+#include "lpv/bench/SweepShard.h"
 #include "Cli.h"
 #include "lpv/bench/ContentHash.h"
 #include "lpv/bench/ReferenceFile.h"
@@ -20,7 +20,6 @@
 #include "lpv/reference/Metrics.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -86,34 +85,22 @@ int benchSweep(Args args) {
     c.sweeps = args.options("--sweep");
     c.referenceFile = args.option("--reference");
     c.outDir = args.option("--out").value_or("bench-sweep");
-    const auto width = parseCount(args.option("--width").value_or("320"), 1);
-    const auto height = parseCount(args.option("--height").value_or("180"), 1);
-    const auto frames = parseCount(args.option("--frames").value_or("20"), 1);
-    const auto warmup = parseCount(args.option("--warmup").value_or("3"), 0);
+    c.width = args.integer("--width", 320, {1});
+    c.height = args.integer("--height", 180, {1});
+    c.frames = args.integer("--frames", 20, {1});
+    c.warmup = args.integer("--warmup", 3, {0});
     c.spp = args.option("--spp");
     c.seconds = args.option("--max-seconds");
-    const auto shardText = args.option("--shard");
-    if (const auto times = args.option("--times-from"))
-        c.timesFrom = *times;
-    if (const std::string error = parseRoundOptions(args, c.rounds); !error.empty())
-        return usageError(error, "bench");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("bench --sweep expects exactly one project file", "bench");
-    if (!width || !height || !frames || !warmup)
-        return usageError("--width, --height and --frames must be positive integers, --warmup zero or more",
-                          "bench");
+    const auto shard = args.shard("--shard");
+    c.timesFrom = args.path("--times-from");
+    parseRoundOptions(args, c.rounds);
+    const auto pos = args.expectPositionals(1, "bench --sweep expects exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "bench");
     if (c.sweeps.empty())
         return usageError("give at least one --sweep KEY=V1,V2,...", "bench");
-    if (shardText) {
-        auto parsed = reference::parseShard(*shardText);
-        if (!parsed)
-            return usageError(parsed.error().message, "bench");
-        c.shard = *parsed;
+    if (shard) {
+        c.shard = *shard;
         // Every shard must be measured against one and the same reference.
         if (!c.referenceFile)
             return usageError("--shard needs --reference REF.exr: every shard is measured against the one "
@@ -121,10 +108,6 @@ int benchSweep(Args args) {
                               "bench");
     }
     c.projectFile = pos.front();
-    c.width = *width;
-    c.height = *height;
-    c.frames = *frames;
-    c.warmup = *warmup;
     return runSweepCommand(c);
 }
 
@@ -254,7 +237,7 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
     std::vector<int> runIndices;
     spec.combinations.clear();
     for (std::size_t index = 0; index < combinations.size(); ++index)
-        if (shardRunsCombination(shard, int(index))) {
+        if (bench::shardRunsCombination(shard, int(index))) {
             runIndices.push_back(int(index));
             spec.combinations.push_back(combinations[index]);
         }
@@ -326,13 +309,17 @@ int runSweepCommand(const SweepCommand& c, std::vector<SweepRun>* runsOut) {
             std::cerr << "lpv: " << referenceHash.error().describe() << "\n";
             return kFailure;
         }
-        SweepShard out{shard, int(combinations.size()), command, machine, *width, *height, *referenceFile,
+        bench::SweepShard out{shard, int(combinations.size()), command, machine, *width, *height, *referenceFile,
                        fs::absolute(*referenceFile).string(), *referenceHash, runIndices, std::move(runs), {}, timing};
         for (const auto& [key, value] : bench::settingsOf(project.parameters))
             if (key.starts_with("output."))
                 out.display.emplace_back(key, value);
-        if (!writeSweepShard(outDir, out))
+        const auto written = bench::writeSweepShard(outDir, out);
+        if (!written) {
+            std::cerr << "lpv: " << written.error().describe() << "\n";
             return kFailure;
+        }
+        std::printf("wrote %s\n", written->string().c_str());
         std::printf("shard %s: %zu of %zu combinations; join the shards with `lpv bench merge`\n",
                     reference::formatShard(shard).c_str(), out.runs.size(), combinations.size());
         return kOk;

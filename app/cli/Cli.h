@@ -1,6 +1,9 @@
 #pragma once
-// Shared pieces of the `lpv` command-line tool: exit codes and a small
-// argument reader. Each command lives in its own file and calls the libraries.
+// Shared pieces of the `lpv` command-line tool: exit codes, the argument
+// reader (Args.h) and the commands. Each command lives in its own file and
+// calls the libraries.
+#include "Args.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,25 +11,6 @@
 namespace lpv::cli {
 
 enum ExitCode : int { kOk = 0, kFailure = 1, kUsage = 2 };
-
-// Reads "--name value", "--name=value", flags and positionals in order.
-class Args {
-public:
-    explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
-
-    bool flag(const std::string& name);                          // removes it if present
-    std::optional<std::string> option(const std::string& name);  // last occurrence, removed
-    std::vector<std::string> options(const std::string& name);   // every occurrence, removed
-    // What is left once options are taken; anything starting with "--" is an unknown option.
-    std::vector<std::string> positionals() const { return args_; }
-    std::optional<std::string> unknownOption() const;
-    // Set when an option was given without its value.
-    const std::string& missingValue() const { return missingValue_; }
-
-private:
-    std::vector<std::string> args_;
-    std::string missingValue_;
-};
 
 int usageError(const std::string& message, const std::string& command);
 
@@ -69,6 +53,8 @@ int benchAccuracyReport(Args args); // `lpv bench report`, in BenchAccuracyRepor
 int benchCompareTimes(Args args);   // `lpv bench compare-times`, in BenchCompareTimes.cpp
 void printBenchCompareTimesHelp();
 int benchFlicker(Args args); // `lpv bench PROJECT --flicker`, in BenchFlickerCommand.cpp
+int benchMerge(Args args);   // `lpv bench merge OUT_DIR SHARD_DIR...`, in BenchMergeCommand.cpp
+void printBenchMergeHelp();
 
 void printRenderHelp();
 void printParamsHelp();

@@ -106,26 +106,14 @@ int compareDisplayImages(const std::string& testFile, const std::string& refFile
 } // namespace
 
 int runCompare(Args args) {
-    const auto layerText = args.option("--layer");
+    const auto layerText = args.choice("--layer", {"image", "indirect", "indirect1"});
     const bool json = args.flag("--json");
-    const auto ppdText = args.option("--ppd");
+    // Pixels per degree: FLIP's viewing distance; beyond 10,000 a pixel is smaller than any eye resolves.
+    const double ppd = args.real("--ppd", reference::defaultPixelsPerDegree(), {0.0, 1e4, true, true});
     const auto flipMap = args.option("--flip-map");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "compare");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "compare");
-    const auto pos = args.positionals();
-    if (pos.size() != 2)
-        return usageError("expected TEST and REF images", "compare");
-    if (layerText && *layerText != "image" && *layerText != "indirect" && *layerText != "indirect1")
-        return usageError("--layer must be image, indirect or indirect1", "compare");
-    double ppd = reference::defaultPixelsPerDegree();
-    if (ppdText) {
-        char* end = nullptr;
-        ppd = std::strtod(ppdText->c_str(), &end);
-        if (end == ppdText->c_str() || *end != '\0' || !(ppd > 0.0 && ppd < 1e4))
-            return usageError("--ppd must be a number of pixels per degree above 0", "compare");
-    }
+    const auto pos = args.expectPositionals(2, "expected TEST and REF images");
+    if (pos.empty())
+        return usageError(*args.error(), "compare");
     if (isExr(pos[0]) != isExr(pos[1]))
         return usageError(
             "compare two EXR images (renderer and reference) or two display images, not one of each",

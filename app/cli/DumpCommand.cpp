@@ -8,10 +8,8 @@
 #include "lpv/renderer/viz/LpvViews.h"
 #include "lpv/renderer/viz/TileImages.h"
 
-#include <charconv>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 namespace lpv::cli {
 
@@ -55,36 +53,6 @@ editor's Visualizers dock shows it (slice, false colour, legend).
 
 namespace {
 
-std::optional<int> parseInt(const std::string& s) {
-    int v = 0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size())
-        return std::nullopt;
-    return v;
-}
-
-std::optional<float> parseFloat(const std::string& s) {
-    float v = 0.0f;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size())
-        return std::nullopt;
-    return v;
-}
-
-std::optional<glm::vec3> parseDirection(const std::string& s) {
-    std::vector<float> parts;
-    std::stringstream in(s);
-    std::string item;
-    while (std::getline(in, item, ','))
-        if (auto v = parseFloat(item))
-            parts.push_back(*v);
-        else
-            return std::nullopt;
-    if (parts.size() != 3)
-        return std::nullopt;
-    return glm::vec3(parts[0], parts[1], parts[2]);
-}
-
 bool writePng(const std::filesystem::path& path, const scene::Image8& image) {
     if (auto ok = importers::writeImage(path, image); !ok) {
         std::cerr << "lpv: " << ok.error().describe() << "\n";
@@ -97,142 +65,76 @@ bool writePng(const std::filesystem::path& path, const scene::Image8& image) {
 } // namespace
 
 int runDump(Args args) {
-    auto output = args.option("--output");
-    if (auto o = args.option("-o"))
-        output = o;
-    const auto what = args.option("--what");
-    const auto cascadeText = args.option("--cascade");
-    const auto axisText = args.option("--axis");
-    const auto sliceText = args.option("--slice");
-    const auto sourceText = args.option("--source");
-    const auto stepText = args.option("--step");
-    const auto quantityText = args.option("--quantity");
-    const auto coefficientText = args.option("--coefficient");
-    const auto directionText = args.option("--direction");
-    const auto channelText = args.option("--channel");
-    const auto scaleText = args.option("--scale");
-    const auto maxText = args.option("--max");
-    const auto cellPixelsText = args.option("--cell-pixels");
-    const auto maxTileText = args.option("--max-tile");
-    const auto thresholdText = args.option("--wall-threshold");
-    const auto widthText = args.option("--width");
-    const auto heightText = args.option("--height");
-    const auto framesText = args.option("--frames");
+    const auto output = args.option("--output", "-o");
+    const auto what = args.choice("--what", {"lpv", "gv", "leak", "backside", "rsm", "shadow"});
+    const int cascade = args.integer("--cascade", 0, {0});
+    const auto axisName = args.choice("--axis", {"x", "y", "z"});
+    const auto slice = args.optionalInteger("--slice");
+    const auto sourceName = args.choice("--source", {"injected", "step", "accumulated"});
+    const auto step = args.optionalInteger("--step", {0});
+    const auto quantityName = args.choice("--quantity", {"band0", "coefficient", "directional"});
+    const auto coefficient = args.optionalInteger("--coefficient", {0, 3});
+    const auto direction = args.realList("--direction", 3);
+    const auto channelName = args.choice("--channel", {"red", "green", "blue", "luminance", "rgb"});
+    const auto scaleName = args.choice("--scale", {"linear", "log"});
+    const auto rangeMax = args.optionalReal("--max", RealRange::above(0.0));
+    const auto cellPixels = args.optionalInteger("--cell-pixels", {1, 64});
+    const int maxTile = args.integer("--max-tile", 0, {0});
+    const auto threshold = args.optionalReal("--wall-threshold", {0.0, 1.0});
+    const int width = args.integer("--width", 1280, {1});
+    const int height = args.integer("--height", 720, {1});
+    const int frames = args.integer("--frames", 2, {1});
     const bool grey = args.flag("--grey");
     RenderRequest request;
     request.cameraName = args.option("--camera");
     request.sets = args.options("--set");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "dump");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "dump");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "dump");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "dump");
     if (!output)
         return usageError("missing -o OUT.png", "dump");
     if (!what)
         return usageError("missing --what lpv|gv|leak|backside|rsm|shadow", "dump");
     const std::string view = *what;
     const bool isSlice = view == "lpv" || view == "gv" || view == "leak" || view == "backside";
-    if (!isSlice && view != "rsm" && view != "shadow")
-        return usageError("--what: unknown view '" + view + "' (lpv, gv, leak, backside, rsm, shadow)",
-                          "dump");
 
     renderer::viz::LpvViewSpec spec;
-    spec.colour.pixelsPerCell = 12;
-    const auto cascade = parseInt(cascadeText.value_or("0"));
-    if (!cascade || *cascade < 0)
-        return usageError("--cascade must be a non-negative integer", "dump");
-    spec.cascade = *cascade;
+    spec.colour.pixelsPerCell = cellPixels.value_or(12);
+    spec.cascade = cascade;
     if (view == "gv")
         spec.source = renderer::viz::LpvSource::Geometry;
     else if (view == "leak")
         spec.source = renderer::viz::LpvSource::LeakHeat;
     else if (view == "backside")
         spec.source = renderer::viz::LpvSource::Backside;
-    if (sourceText) {
-        const auto source = renderer::viz::sourceFromName(*sourceText);
-        if (view != "lpv" || !source || int(*source) > int(renderer::viz::LpvSource::Accumulated))
+    if (sourceName) {
+        if (view != "lpv")
             return usageError("--source is injected, step or accumulated, with --what lpv", "dump");
-        spec.source = *source;
+        spec.source = *renderer::viz::sourceFromName(*sourceName);
     }
-    if (stepText) {
-        const auto step = parseInt(*stepText);
-        if (!step || *step < 0)
-            return usageError("--step must be a non-negative integer", "dump");
+    if (step)
         spec.step = *step;
+    if (axisName)
+        spec.slice.axis = *renderer::viz::axisFromName(*axisName);
+    if (quantityName)
+        spec.slice.quantity = *renderer::viz::quantityFromName(*quantityName);
+    if (coefficient)
+        spec.slice.coefficient = *coefficient;
+    if (direction) {
+        const glm::vec3 d{float((*direction)[0]), float((*direction)[1]), float((*direction)[2])};
+        if (glm::length(d) < 1e-6f)
+            return usageError("--direction: all zero is no direction", "dump");
+        spec.slice.direction = d;
     }
-    if (axisText) {
-        const auto axis = renderer::viz::axisFromName(*axisText);
-        if (!axis)
-            return usageError("--axis must be x, y or z", "dump");
-        spec.slice.axis = *axis;
-    }
-    std::optional<int> slice;
-    if (sliceText) {
-        slice = parseInt(*sliceText);
-        if (!slice)
-            return usageError("--slice must be an integer", "dump");
-    }
-    if (quantityText) {
-        const auto q = renderer::viz::quantityFromName(*quantityText);
-        if (!q)
-            return usageError("--quantity must be band0, coefficient or directional", "dump");
-        spec.slice.quantity = *q;
-    }
-    if (coefficientText) {
-        const auto k = parseInt(*coefficientText);
-        if (!k || *k < 0 || *k > 3)
-            return usageError("--coefficient must be 0, 1, 2 or 3", "dump");
-        spec.slice.coefficient = *k;
-    }
-    if (directionText) {
-        const auto d = parseDirection(*directionText);
-        if (!d || glm::length(*d) < 1e-6f)
-            return usageError("--direction must be X,Y,Z, not all zero", "dump");
-        spec.slice.direction = *d;
-    }
-    if (channelText) {
-        const auto c = renderer::viz::channelFromName(*channelText);
-        if (!c)
-            return usageError("--channel must be red, green, blue, luminance or rgb", "dump");
-        spec.slice.channel = *c;
-    }
-    if (scaleText) {
-        if (*scaleText != "linear" && *scaleText != "log")
-            return usageError("--scale must be linear or log", "dump");
-        spec.colour.scale = *scaleText == "log" ? renderer::viz::Scale::Log : renderer::viz::Scale::Linear;
-    }
-    if (maxText) {
-        const auto m = parseFloat(*maxText);
-        if (!m || *m <= 0.0f)
-            return usageError("--max must be a positive number", "dump");
-        spec.colour.rangeMax = *m;
-    }
-    if (cellPixelsText) {
-        const auto p = parseInt(*cellPixelsText);
-        if (!p || *p < 1 || *p > 64)
-            return usageError("--cell-pixels must be 1..64", "dump");
-        spec.colour.pixelsPerCell = *p;
-    }
-    if (thresholdText) {
-        const auto t = parseFloat(*thresholdText);
-        if (!t || *t < 0.0f || *t > 1.0f)
-            return usageError("--wall-threshold must be in 0..1", "dump");
-        spec.wallThreshold = *t;
-    }
-    const auto maxTile = parseInt(maxTileText.value_or("0"));
-    if (!maxTile || *maxTile < 0)
-        return usageError("--max-tile must be a non-negative integer", "dump");
+    if (channelName)
+        spec.slice.channel = *renderer::viz::channelFromName(*channelName);
+    if (scaleName)
+        spec.colour.scale = *scaleName == "log" ? renderer::viz::Scale::Log : renderer::viz::Scale::Linear;
+    if (rangeMax)
+        spec.colour.rangeMax = float(*rangeMax);
+    if (threshold)
+        spec.wallThreshold = float(*threshold);
     spec.colour.falseColour = !grey;
-    const auto width = parseInt(widthText.value_or("1280"));
-    const auto height = parseInt(heightText.value_or("720"));
-    const auto frames = parseInt(framesText.value_or("2"));
-    if (!width || !height || *width <= 0 || *height <= 0)
-        return usageError("--width and --height must be positive integers", "dump");
-    if (!frames || *frames <= 0)
-        return usageError("--frames must be a positive integer", "dump");
 
     request.projectFile = pos.front();
     int exitCode = kOk;
@@ -241,7 +143,7 @@ int runDump(Args args) {
         return exitCode;
     if (isSlice)
         setup->renderer->setLpvCapture(renderer::viz::captureFor(spec));
-    if (!renderFrames(*setup, *width, *height, *frames))
+    if (!renderFrames(*setup, width, height, frames))
         return kFailure;
     std::printf("%s\n", setup->renderer->lpvNote().c_str());
 
@@ -252,7 +154,7 @@ int runDump(Args args) {
                       << ": no shadow maps (the scene has no light that casts shadows)\n";
             return kFailure;
         }
-        return writePng(*output, renderer::viz::tileRow(images, *maxTile)) ? kOk : kFailure;
+        return writePng(*output, renderer::viz::tileRow(images, maxTile)) ? kOk : kFailure;
     }
     if (view == "rsm") {
         const auto all = setup->renderer->debugImages("rsm");
@@ -265,7 +167,7 @@ int runDump(Args args) {
             return usageError("--cascade " + std::to_string(spec.cascade) + " is outside 0.." +
                                   std::to_string(int(all.size() / 3) - 1) + " (the RSM tiles of this frame)",
                               "dump");
-        return writePng(*output, renderer::viz::tileRow(tiles, *maxTile)) ? kOk : kFailure;
+        return writePng(*output, renderer::viz::tileRow(tiles, maxTile)) ? kOk : kFailure;
     }
 
     const auto frames3d = setup->renderer->lpvCascadeFrames();

@@ -8,7 +8,6 @@
 #include "lpv/scene/SaveCleanup.h"
 #include "lpv/scene/SceneMerge.h"
 
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -80,18 +79,6 @@ std::string withCommas(std::size_t n) {
     return out;
 }
 
-// A whole argument that is a finite number above 0, or nothing.
-std::optional<double> parseScale(const std::string& text) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod(begin, &end);
-    if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value) ||
-        value <= 0.0)
-        return std::nullopt;
-    return value;
-}
-
 std::string factorText(double f) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", f);
@@ -138,35 +125,30 @@ std::string addDefaultSun(scene::Scene& s) {
 } // namespace
 
 int runImport(Args args) {
-    auto output = args.option("--output");
-    if (auto shortOutput = args.option("-o"))
-        output = shortOutput;
+    const auto output = args.option("--output", "-o");
     importers::ImportOptions options;
     for (const std::string& dir : args.options("--texture-path"))
         options.textureSearchPaths.emplace_back(dir);
     for (const std::string& dir : args.options("--allow-path"))
         options.allowPaths.emplace_back(dir);
     const auto unit = args.option("--unit");
-    const auto scale = args.option("--scale");
+    if (unit && !importers::metresPerUnit(*unit))
+        args.reject("--unit", *unit, std::string("one of ") + importers::unitNames());
+    std::string scaleText;
+    const auto scale = args.optionalReal("--scale", RealRange::above(0.0), &scaleText);
     const bool noSun = args.flag("--no-sun");
     const bool verbose = args.flag("--verbose");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "import");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "import");
+    if (auto e = args.error())
+        return usageError(*e, "import");
     if (unit && scale)
         return usageError("--unit and --scale both say what a unit of the file is: give one", "import");
     if (unit) {
         options.metresPerUnit = importers::metresPerUnit(*unit);
-        if (!options.metresPerUnit)
-            return usageError("--unit '" + *unit + "' is not one of " + importers::unitNames(), "import");
         options.unitSource = "--unit " + *unit;
     }
     if (scale) {
-        options.metresPerUnit = parseScale(*scale);
-        if (!options.metresPerUnit)
-            return usageError("--scale '" + *scale + "' is not a finite number above 0", "import");
-        options.unitSource = "--scale " + *scale;
+        options.metresPerUnit = *scale;
+        options.unitSource = "--scale " + scaleText;
     }
     const auto inputs = args.positionals();
     if (inputs.empty())

@@ -22,11 +22,9 @@ their checksums) and prints what it contains. Exit code 1 with the error
 }
 
 int runInfo(Args args) {
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "info");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "info");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "info");
     auto project = scene::loadProject(pos.front());
     if (!project) {
         std::cerr << "lpv: " << project.error().describe() << "\n";

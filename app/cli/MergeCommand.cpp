@@ -32,8 +32,8 @@ tracing seconds (lpv:seconds) and records lpv:shards.
 }
 
 int runMerge(Args args) {
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "merge");
+    if (auto e = args.error())
+        return usageError(*e, "merge");
     const auto pos = args.positionals();
     if (pos.size() < 2)
         return usageError("expected OUT.exr and at least one shard", "merge");

@@ -20,13 +20,9 @@ Creates a project: FILE.lpvproj plus its FILE.assets/ folder.
 int runNew(Args args) {
     const std::string templ = args.option("--template").value_or("cornell-box");
     const bool force = args.flag("--force");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "new");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "new");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "new");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "new");
     const std::filesystem::path file = pos.front();
     if (file.extension() != ".lpvproj")
         return usageError("the project file must end in .lpvproj", "new");

@@ -22,8 +22,8 @@ saved in a project's "parameters" object.
 
 int runParams(Args args) {
     const bool json = args.flag("--json");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "params");
+    if (auto e = args.error())
+        return usageError(*e, "params");
     if (!args.positionals().empty())
         return usageError("unexpected argument '" + args.positionals().front() + "'", "params");
     const auto& registry = scene::ParameterRegistry::instance();

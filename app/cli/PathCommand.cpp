@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,18 +62,12 @@ std::string pathNames(const scene::Project& project) {
 }
 
 int exportPath(Args& args) {
-    auto output = args.option("--output");
-    if (auto o = args.option("-o"))
-        output = o;
+    const auto output = args.option("--output", "-o");
     const auto name = args.option("--path");
-    const auto fpsText = args.option("--fps");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "path");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "path");
-    const auto pos = args.positionals(); // "export", PROJECT
-    if (pos.size() != 2)
-        return usageError("expected one project file after 'export'", "path");
+    const auto givenFps = args.optionalReal("--fps", RealRange::above(0.0));
+    const auto pos = args.expectPositionals(2, "expected one project file after 'export'");
+    if (pos.empty())
+        return usageError(*args.error(), "path");
     if (!name)
         return usageError("missing --path NAME", "path");
     if (!output)
@@ -82,15 +75,9 @@ int exportPath(Args& args) {
     const std::string extension = lowerExtension(*output);
     if (extension != ".json" && extension != ".csv")
         return usageError("-o must end in .json or .csv, got '" + *output + "'", "path");
-    double fps = 30.0;
-    if (fpsText) {
-        if (extension != ".csv")
-            return usageError("--fps applies to CSV export only", "path");
-        const auto [end, ec] = std::from_chars(fpsText->data(), fpsText->data() + fpsText->size(), fps);
-        if (ec != std::errc() || end != fpsText->data() + fpsText->size() || !(fps > 0.0) ||
-            !std::isfinite(fps))
-            return usageError("--fps must be a positive number, got '" + *fpsText + "'", "path");
-    }
+    if (givenFps && extension != ".csv")
+        return usageError("--fps applies to CSV export only", "path");
+    const double fps = givenFps.value_or(30.0);
 
     const auto project = scene::loadProject(pos[1]);
     if (!project) {
@@ -127,13 +114,9 @@ int exportPath(Args& args) {
 
 int importPath(Args& args) {
     const auto rename = args.option("--name");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "path");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "path");
-    const auto pos = args.positionals(); // "import", PROJECT, FILE
-    if (pos.size() != 3)
-        return usageError("expected a project file and a path file after 'import'", "path");
+    const auto pos = args.expectPositionals(3, "expected a project file and a path file after 'import'");
+    if (pos.empty())
+        return usageError(*args.error(), "path");
     auto path = scene::loadCameraPathFile(pos[2]);
     if (!path) {
         std::cerr << "lpv: " << path.error().describe() << "\n";

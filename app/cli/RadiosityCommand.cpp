@@ -18,7 +18,6 @@
 #include "lpv/scene/SaveCleanup.h"
 
 #include <atomic>
-#include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -90,14 +89,6 @@ extern "C" void onRadiosityInterrupt(int) {
     gInterrupted = true;
 }
 
-std::optional<double> parseNumber(const std::string& s) {
-    double v = 0.0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size() || !(v >= 0.0))
-        return std::nullopt;
-    return v;
-}
-
 // Relative texture paths point into the source project's folder; a copy saved
 // elsewhere gets them copied into its own assets.
 void makeTexturePathsAbsolute(scene::Scene& s, const std::filesystem::path& projectDir) {
@@ -140,54 +131,25 @@ struct Milestones {
 
 int runRadiosity(Args args) {
     RadiosityCommand c;
-    c.output = args.option("--output");
-    if (auto o = args.option("-o"))
-        c.output = o;
-    const auto residualText = args.option("--residual");
-    const auto secondsText = args.option("--max-seconds");
-    const auto refineText = args.option("--refine");
+    c.output = args.option("--output", "-o");
+    c.residual = args.optionalReal("--residual", {0.0, 1.0, true, false});
+    c.maxSeconds = args.real("--max-seconds", radiosity::kDefaultMaxSeconds, RealRange::atLeast(0.0));
+    c.refine = args.optionalReal("--refine", RealRange::atLeast(0.0));
     c.imageFile = args.option("--image");
-    const auto viewText = args.option("--view");
+    c.view = args.choice("--view", {"radiosity", "ambient", "unshot", "shot"}).value_or(c.view);
     c.cameraName = args.option("--camera");
-    const auto widthText = args.option("--width");
-    const auto heightText = args.option("--height");
+    c.width = args.integer("--width", c.width, {1});
+    c.height = args.integer("--height", c.height, {1});
     c.hemicubeFile = args.option("--hemicube-image");
-    const auto intervalText = args.option("--progress-interval");
+    c.progressInterval = args.real("--progress-interval", c.progressInterval, RealRange::atLeast(0.0));
     c.restart = args.flag("--restart");
     c.wireframe = args.flag("--wireframe");
     c.useCpu = args.flag("--cpu");
     c.sets = args.options("--set");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "radiosity");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "radiosity");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "radiosity");
-    const auto maxSeconds =
-        secondsText ? parseNumber(*secondsText) : std::optional(radiosity::kDefaultMaxSeconds);
-    const auto interval = parseNumber(intervalText.value_or("1"));
-    const auto width = parseNumber(widthText.value_or("800"));
-    const auto height = parseNumber(heightText.value_or("600"));
-    if (!maxSeconds || !interval || !width || !height || *width < 1 || *height < 1)
-        return usageError("--max-seconds, --progress-interval, --width and --height must be positive numbers",
-                          "radiosity");
-    c.view = viewText.value_or("radiosity");
-    if (c.view != "radiosity" && c.view != "ambient" && c.view != "unshot" && c.view != "shot")
-        return usageError("--view must be radiosity, ambient, unshot or shot", "radiosity");
-    if (refineText && !(c.refine = parseNumber(*refineText)))
-        return usageError("--refine needs a positive number", "radiosity");
-    if (residualText) {
-        const auto r = parseNumber(*residualText);
-        if (!r || *r <= 0.0 || *r > 1.0)
-            return usageError("--residual must be in (0, 1]", "radiosity");
-        c.residual = *r;
-    }
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "radiosity");
     c.projectFile = pos.front();
-    c.maxSeconds = *maxSeconds;
-    c.progressInterval = *interval;
-    c.width = int(*width);
-    c.height = int(*height);
     return runRadiosityCommand(c);
 }
 

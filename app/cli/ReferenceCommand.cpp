@@ -95,48 +95,26 @@ std::optional<TracedReference> traceReference(const scene::Project& project, con
 
 int runReference(Args args) {
     ReferenceCommand c;
-    auto output = args.option("--output");
-    if (auto o = args.option("-o"))
-        output = o;
-    const auto widthText = args.option("--width");
-    const auto heightText = args.option("--height");
-    const auto threadsText = args.option("--threads");
+    const auto output = args.option("--output", "-o");
+    c.width = args.integer("--width", c.width, {1});
+    c.height = args.integer("--height", c.height, {1});
+    c.threads = args.integer("--threads", c.threads, {0});
     c.spp = args.option("--spp");
     c.seconds = args.option("--max-seconds");
     c.bounces = args.option("--bounces");
     c.cameraName = args.option("--camera");
-    const auto shardText = args.option("--shard");
+    c.shard = args.shard("--shard").value_or(reference::ShardSpec{});
     c.preview = args.flag("--preview");
     c.sets = args.options("--set");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "reference");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "reference");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "reference");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "reference");
     if (!output)
         return usageError("missing -o REF.exr", "reference");
     if (std::filesystem::path(*output).extension() != ".exr")
         return usageError("the reference is written as EXR: -o must end in .exr", "reference");
-    const auto width = parseCount(widthText.value_or("320"), 1);
-    const auto height = parseCount(heightText.value_or("180"), 1);
-    const auto threads = parseCount(threadsText.value_or("0"), 0);
-    if (!width || !height)
-        return usageError("--width and --height must be positive integers", "reference");
-    if (!threads)
-        return usageError("--threads must be a whole number", "reference");
-    if (shardText) {
-        auto parsed = reference::parseShard(*shardText);
-        if (!parsed)
-            return usageError(parsed.error().message, "reference");
-        c.shard = *parsed;
-    }
     c.projectFile = pos.front();
     c.output = *output;
-    c.width = *width;
-    c.height = *height;
-    c.threads = *threads;
     return runReferenceCommand(c);
 }
 

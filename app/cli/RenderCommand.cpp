@@ -10,7 +10,6 @@
 #include "lpv/renderer/SceneAnalysis.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -64,14 +63,6 @@ one row per frame, then median/min/max over the frames rendered.
 
 namespace {
 
-std::optional<int> parsePositive(const std::string& s) {
-    int v = 0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size() || v <= 0)
-        return std::nullopt;
-    return v;
-}
-
 std::vector<std::string> splitCommas(const std::string& s) {
     std::vector<std::string> out;
     std::size_t start = 0;
@@ -97,34 +88,21 @@ scene::Expected<void> writeHdrExr(const std::filesystem::path& out, RenderSetup&
 } // namespace
 
 int runRender(Args args) {
-    auto output = args.option("--output");
-    if (auto o = args.option("-o"))
-        output = o;
-    const auto widthText = args.option("--width");
-    const auto heightText = args.option("--height");
-    const auto framesText = args.option("--frames");
+    const auto output = args.option("--output", "-o");
+    const int width = args.integer("--width", 1280, {1});
+    const int height = args.integer("--height", 720, {1});
+    const int frames = args.integer("--frames", 5, {1});
     const auto dumpText = args.option("--dump");
     const bool explain = args.flag("--explain");
     const bool printGraph = args.flag("--graph");
     RenderRequest request;
     request.cameraName = args.option("--camera");
     request.sets = args.options("--set");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "render");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "render");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "render");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "render");
     if (!output)
         return usageError("missing -o OUT.png", "render");
-    const auto width = parsePositive(widthText.value_or("1280"));
-    const auto height = parsePositive(heightText.value_or("720"));
-    const auto frames = parsePositive(framesText.value_or("5"));
-    if (!width || !height)
-        return usageError("--width and --height must be positive integers", "render");
-    if (!frames)
-        return usageError("--frames must be a positive integer", "render");
     const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
     const std::vector<std::string>& known = renderer::frameGraphNames();
     for (const std::string& d : dumps)
@@ -174,25 +152,25 @@ int runRender(Args args) {
                         int(std::lround(100.0f * traits.openSkyFraction)), traits.skyProbes);
             for (const renderer::EffectDecision& e :
                  renderer::decideEffects(setup->project.scene, traits, setup->project.parameters, &setup->camera,
-                                         float(*width) / float(*height)))
+                                         float(width) / float(height)))
                 std::printf("  %-26s %-4s %s = %s: %s\n", e.effect.c_str(), e.runs() ? "run" : "skip",
                             e.parameter.c_str(), e.setting.c_str(), e.reason.c_str());
         }
         setup->renderer->timer().clearHistory();
-        if (!renderFrames(*setup, *width, *height, *frames))
+        if (!renderFrames(*setup, width, height, frames))
             return kFailure;
         // EXR keeps the linear HDR radiance (or the view output.view picks), before exposure and tonemapping,
         // so `lpv compare` can measure it against the path-traced reference.
         const bool hdr = out.extension() == ".exr";
-        const auto written = hdr ? writeHdrExr(out, *setup, *width, *height)
-                                 : importers::writeImage(out, {*width, *height, 4, setup->renderer->readDisplay()});
+        const auto written = hdr ? writeHdrExr(out, *setup, width, height)
+                                 : importers::writeImage(out, {width, height, 4, setup->renderer->readDisplay()});
         if (!written) {
             std::cerr << "lpv: " << written.error().describe() << "\n";
             return kFailure;
         }
         const renderer::DrawListStats draws = setup->renderer->cameraDrawStats();
         std::printf("%s: %zu triangles, %zu draw items (%zu culled), %dx%d, %d frames\n", pos.front().c_str(),
-                    setup->project.scene.triangleCount(), draws.total, draws.culled, *width, *height, *frames);
+                    setup->project.scene.triangleCount(), draws.total, draws.culled, width, height, frames);
         std::printf("%s\n", setup->renderer->lpvNote().c_str());
         if (setup->project.parameters.getEnum("gi.method") == "reference")
             std::printf("note: gi.method = reference is the editor's live path-traced view; this image has direct "

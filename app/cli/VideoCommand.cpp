@@ -6,7 +6,6 @@
 #include "lpv/scene/Project.h"
 #include "lpv/video/VideoExport.h"
 
-#include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -72,22 +71,6 @@ extern "C" void onInterrupt(int) {
     interrupted = 1;
 }
 
-std::optional<int> parseCount(const std::string& s, int minimum) {
-    int v = 0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size() || v < minimum)
-        return std::nullopt;
-    return v;
-}
-
-std::optional<double> parseRate(const std::string& s) {
-    double v = 0.0;
-    auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || ptr != s.data() + s.size() || !(v > 0.0) || !std::isfinite(v))
-        return std::nullopt;
-    return v;
-}
-
 // "KEY=VALUE" pairs; false (and the offending text in `bad`) if one has no '='.
 bool splitSettings(const std::vector<std::string>& texts,
                    std::vector<std::pair<std::string, std::string>>& out, std::string& bad) {
@@ -111,52 +94,28 @@ std::string formatSeconds(double s) {
 } // namespace
 
 int runVideo(Args args) {
-    auto output = args.option("--output");
-    if (auto o = args.option("-o"))
-        output = o;
+    const auto output = args.option("--output", "-o");
     const auto pathName = args.option("--path");
-    const auto fpsText = args.option("--fps");
-    const auto widthText = args.option("--width");
-    const auto heightText = args.option("--height");
-    const auto crfText = args.option("--crf");
-    const auto warmupText = args.option("--warmup");
+    video::VideoOptions options;
+    options.fps = args.real("--fps", 30.0, RealRange::above(0.0));
+    options.width = args.integer("--width", 1280, {1});
+    options.height = args.integer("--height", 720, {1});
+    options.crf = args.integer("--crf", 18, {0, 51});
+    options.warmupFrames = args.integer("--warmup", 2, {0});
     const auto labelA = args.option("--label-a");
     const auto labelB = args.option("--label-b");
     const auto sets = args.options("--set");
     const auto compareSets = args.options("--compare-set");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "video");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "video");
-    const auto pos = args.positionals();
-    if (pos.size() != 1)
-        return usageError("expected exactly one project file", "video");
+    const auto pos = args.expectPositionals(1, "expected exactly one project file");
+    if (pos.empty())
+        return usageError(*args.error(), "video");
     if (!pathName)
         return usageError("missing --path NAME", "video");
     if (!output)
         return usageError("missing -o OUT.mp4 (or a folder, or NAME-%05d.png)", "video");
 
-    video::VideoOptions options;
     options.pathName = *pathName;
     options.output = *output;
-    const auto fps = parseRate(fpsText.value_or("30"));
-    const auto width = parseCount(widthText.value_or("1280"), 1);
-    const auto height = parseCount(heightText.value_or("720"), 1);
-    const auto crf = parseCount(crfText.value_or("18"), 0);
-    const auto warmup = parseCount(warmupText.value_or("2"), 0);
-    if (!fps)
-        return usageError("--fps must be a positive number", "video");
-    if (!width || !height)
-        return usageError("--width and --height must be positive integers", "video");
-    if (!crf)
-        return usageError("--crf must be a whole number 0..51", "video");
-    if (!warmup)
-        return usageError("--warmup must be a whole number >= 0", "video");
-    options.fps = *fps;
-    options.width = *width;
-    options.height = *height;
-    options.crf = *crf;
-    options.warmupFrames = *warmup;
     std::string bad;
     if (!splitSettings(sets, options.setA, bad))
         return usageError("--set expects KEY=VALUE, got '" + bad + "'", "video");

@@ -172,4 +172,15 @@ std::string describeLoad() {
     return buf;
 }
 
+std::string roundOptionsText(const RoundPlan& plan) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, " --rounds %d --spread-target %g", plan.maxRounds, 100.0 * plan.spreadTarget);
+    std::string text = buf;
+    if (plan.timeBudgetSeconds > 0.0) {
+        std::snprintf(buf, sizeof buf, " --time-budget %g", plan.timeBudgetSeconds);
+        text += buf;
+    }
+    return text;
+}
+
 } // namespace lpv::bench

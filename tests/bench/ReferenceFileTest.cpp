@@ -9,6 +9,8 @@
 #include "lpv/importers/ImageIO.h"
 #include "lpv/scene/ParameterRegistry.h"
 
+#include "TestFiles.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,16 +18,10 @@
 #include <unistd.h>
 
 using namespace lpv;
+using lpv::test::freshTempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path tempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("lpv-reference-file-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 reference::ReferenceImage sampleImage() {
     reference::ReferenceImage image;
@@ -42,7 +38,7 @@ reference::ReferenceImage sampleImage() {
 }
 
 TEST(ReferenceFile, WrittenAndReadBackIsTheSameImageWithItsHeaderNumbers) {
-    const fs::path file = tempDir("round-trip") / "ref.exr";
+    const fs::path file = freshTempDir("reference-file", "round-trip") / "ref.exr";
     const reference::ReferenceImage image = sampleImage();
     ASSERT_TRUE(bench::writeReferenceExr(file, image,
                                          {{"lpv:spp", "64"}, {"lpv:seconds", "2.500000"}, {"lpv:bounces", "3"}}));
@@ -62,7 +58,7 @@ TEST(ReferenceFile, WrittenAndReadBackIsTheSameImageWithItsHeaderNumbers) {
 }
 
 TEST(ReferenceFile, HeaderNumbersThatAreNotNumbersReadAsAbsent) {
-    const fs::path file = tempDir("bad-header") / "ref.exr";
+    const fs::path file = freshTempDir("reference-file", "bad-header") / "ref.exr";
     ASSERT_TRUE(bench::writeReferenceExr(file, sampleImage(), {{"lpv:spp", "64x"}, {"lpv:bounces", "many"}}));
     const auto loaded = bench::readReferenceExr(file);
     ASSERT_TRUE(loaded) << loaded.error().describe();
@@ -72,7 +68,7 @@ TEST(ReferenceFile, HeaderNumbersThatAreNotNumbersReadAsAbsent) {
 }
 
 TEST(ReferenceFile, AnRgbImageIsNotAReferenceButReadsAsRgb) {
-    const fs::path file = tempDir("rgb") / "frame.exr";
+    const fs::path file = freshTempDir("reference-file", "rgb") / "frame.exr";
     importers::FloatChannels rgb{2, 1, {"R", "G", "B"}, {1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f}, {}};
     ASSERT_TRUE(importers::writeImageChannels(file, rgb, {{"lpv:outputView", "indirect"}}));
 
@@ -90,7 +86,7 @@ TEST(ReferenceFile, AnRgbImageIsNotAReferenceButReadsAsRgb) {
 }
 
 TEST(ReferenceFile, AnImageWithoutRgbIsRefusedAsRgb) {
-    const fs::path file = tempDir("no-rgb") / "y.exr";
+    const fs::path file = freshTempDir("reference-file", "no-rgb") / "y.exr";
     ASSERT_TRUE(importers::writeImageChannels(file, {1, 1, {"Y"}, {0.5f}, {}}));
     const auto rgb = bench::readRgbExr(file);
     ASSERT_FALSE(rgb);
@@ -98,7 +94,7 @@ TEST(ReferenceFile, AnImageWithoutRgbIsRefusedAsRgb) {
 }
 
 TEST(ContentHash, FileHashFollowsTheBytes) {
-    const fs::path dir = tempDir("hash");
+    const fs::path dir = freshTempDir("reference-file", "hash");
     std::ofstream(dir / "a") << "same bytes";
     std::ofstream(dir / "b") << "same bytes";
     std::ofstream(dir / "c") << "other bytes";

@@ -2,6 +2,8 @@
 
 #include "lpv/scene/Project.h"
 
+#include "TestFiles.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,16 +11,10 @@
 #include <sstream>
 
 using namespace lpv;
+using lpv::test::freshTempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path tempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("lpv-saved-sweep-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 scene::Image8 gradient(int w, int h) {
     scene::Image8 img{w, h, 4, {}};
@@ -57,7 +53,7 @@ bench::SavedSweep sample() {
 } // namespace
 
 TEST(SavedSweep, SavesBesideTheProjectAndReloadsAsSaved) {
-    const fs::path dir = tempDir("roundtrip");
+    const fs::path dir = freshTempDir("saved-sweep", "roundtrip");
     const fs::path file = bench::savedSweepFileOf(dir / "Room.lpvproj");
     EXPECT_EQ(file, dir / "Room.assets" / "sweep.json");
     const bench::SavedSweep saved = sample();
@@ -80,7 +76,7 @@ TEST(SavedSweep, SavesBesideTheProjectAndReloadsAsSaved) {
 }
 
 TEST(SavedSweep, TheDocksQuestionRowsAreKeptAndOptional) {
-    const fs::path dir = tempDir("questions");
+    const fs::path dir = freshTempDir("saved-sweep", "questions");
     const fs::path file = dir / "sweep.json";
     // A file without rows (as before issue #46) reads with none and writes none.
     ASSERT_TRUE(bench::saveSweep(sample(), file).has_value());
@@ -104,7 +100,7 @@ TEST(SavedSweep, TheDocksQuestionRowsAreKeptAndOptional) {
 }
 
 TEST(SavedSweep, ADamagedFileIsAnErrorNamingItNotACrash) {
-    const fs::path dir = tempDir("damaged");
+    const fs::path dir = freshTempDir("saved-sweep", "damaged");
     const fs::path file = dir / "sweep.json";
     ASSERT_TRUE(bench::saveSweep(sample(), file).has_value());
     std::string text;

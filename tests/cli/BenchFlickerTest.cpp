@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& file) {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // flicker_mean of each data row of the CSV, in order.
 std::vector<double> flickerColumn(const std::string& csv) {
     std::vector<double> out;

@@ -13,12 +13,6 @@ using namespace lpv::test;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path tempDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("lpv-cli-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
 } // namespace
 
 TEST(Cli, HelpListsCommandsAndExitsZero) {
@@ -63,7 +57,7 @@ TEST(Cli, ParamsPrintsEveryRegistryKey) {
 }
 
 TEST(Cli, RenderWritesACornellImageAndPrintsPassTimes) {
-    const fs::path dir = tempDir("render");
+    const fs::path dir = freshTempDir("cli", "render");
     const fs::path png = dir / "cornell.png";
     const RunResult r = runLpv("render " + cornellProject() + " -o " + png.string() +
                                " --width 96 --height 96 --frames 3 --set lpv.propagationSteps=4");
@@ -87,7 +81,7 @@ TEST(Cli, RenderWritesACornellImageAndPrintsPassTimes) {
 }
 
 TEST(Cli, NewCreatesAProjectThatInfoValidates) {
-    const fs::path dir = tempDir("new");
+    const fs::path dir = freshTempDir("cli", "new");
     const std::string file = (dir / "box.lpvproj").string();
     ASSERT_EQ(runLpv("new " + file).exitCode, 0);
     EXPECT_EQ(runLpv("new " + file).exitCode, 1) << "refuses to overwrite without --force";

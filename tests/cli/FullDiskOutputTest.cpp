@@ -19,23 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-RunResult runShell(const std::string& command) {
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buf{};
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe))
-        r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
 fs::path freshDir(const std::string& name) {
     const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-full-disk" / name;
     fs::remove_all(dir);
@@ -55,10 +38,6 @@ std::optional<std::string> onFullDisk(const fs::path& disk, const std::string& c
     if (r.exitCode == 99)
         return std::nullopt;
     return r.output;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 void expectCleanFailure(const std::string& out) {

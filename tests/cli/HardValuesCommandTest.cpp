@@ -2,7 +2,7 @@
 // Cornell box with one value edited by hand, run through `lpv`. Each case
 // used to hang, write NaN or print nonsense with exit 0; each now exits 1
 // within a second, naming the file and the field.
-#include "RunLpv.h"
+#include "CornellCopyTest.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,25 +21,9 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-class HardValues : public testing::Test {
+class HardValues : public CornellCopyTest {
   protected:
-    void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("lpv-cli-hard-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-        fs::copy(fs::path(cornellProject()).parent_path(), dir_ / "cornell", fs::copy_options::recursive);
-        project_ = (dir_ / "cornell" / "cornell-box.lpvproj").string();
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
+    HardValues() : CornellCopyTest("cli-hard") {}
 
     // The project's JSON edited by `change` and written back.
     void edit(const std::function<void(Json&)>& change) {
@@ -74,9 +58,6 @@ class HardValues : public testing::Test {
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return r;
     }
-
-    fs::path dir_;
-    std::string project_;
 };
 
 } // namespace

@@ -19,22 +19,6 @@ namespace {
 
 fs::path scenes() { return fs::path(kSharedScenesDir); }
 
-fs::path tempDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("lpv-import-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
 // Fraction of pixels that differ from the first one by more than a little.
 double nonUniformFraction(const lpv::importers::Image8& img) {
     std::size_t differ = 0, count = std::size_t(img.width) * std::size_t(img.height);
@@ -61,7 +45,7 @@ double litFraction(const lpv::importers::Image8& img) {
 } // namespace
 
 TEST(ImportCommand, SibenikFourDsWithAllItsTexturesRenders) {
-    const fs::path dir = tempDir("sibenik4ds");
+    const fs::path dir = freshTempDir("import", "sibenik4ds");
     const fs::path project = dir / "sibenik.lpvproj";
     const RunResult r = runLpv("import " + quoted(scenes() / "4ds/sibenik.4ds") + " -o " + quoted(project));
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -108,7 +92,7 @@ TEST(ImportCommand, SibenikFourDsWithAllItsTexturesRenders) {
 }
 
 TEST(ImportCommand, SponzaObjThenAddingTheCornellGltf) {
-    const fs::path dir = tempDir("sponza");
+    const fs::path dir = freshTempDir("import", "sponza");
     const fs::path project = dir / "mix.lpvproj";
     const RunResult first = runLpv("import " + quoted(scenes() / "sponza/sponza.obj") + " -o " + quoted(project));
     ASSERT_EQ(first.exitCode, 0) << first.output;
@@ -133,7 +117,7 @@ TEST(ImportCommand, SponzaObjThenAddingTheCornellGltf) {
 }
 
 TEST(ImportCommand, CornellObjAndSponza3dsRender) {
-    const fs::path dir = tempDir("objs");
+    const fs::path dir = freshTempDir("import", "objs");
     // Direct light only until the LPV exists (issue #5): Sponza's own Camera01
     // looks up at the side of the atrium the sun does not reach, so only a
     // few percent of its pixels are lit; the Cornell box is lit all over.
@@ -173,7 +157,7 @@ TEST(ImportCommand, CornellObjAndSponza3dsRender) {
 }
 
 TEST(ImportCommand, AFailedImportLeavesTheProjectUnchanged) {
-    const fs::path dir = tempDir("fail");
+    const fs::path dir = freshTempDir("import", "fail");
     const fs::path project = dir / "p.lpvproj";
     ASSERT_EQ(runLpv("import " + quoted(scenes() / "4ds/cube00.4ds") + " -o " + quoted(project)).exitCode, 0);
     const std::string before = readText(project);

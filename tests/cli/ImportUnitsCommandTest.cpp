@@ -25,17 +25,6 @@ fs::path scenes() {
     return fs::path(kSharedScenesDir);
 }
 
-fs::path tempDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("lpv-import-units-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
-
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
 lpv::scene::Scene loadScene(const fs::path& project) {
     auto loaded = lpv::scene::loadProject(project);
     EXPECT_TRUE(loaded.has_value()) << (loaded ? "" : loaded.error().describe());
@@ -91,7 +80,7 @@ fs::path scaledCornell(const fs::path& dir, double factor) {
 } // namespace
 
 TEST(ImportUnitsCommand, UnitCmGivesAHundredthOfTheMetreImport) {
-    const fs::path dir = tempDir("cm");
+    const fs::path dir = freshTempDir("import-units", "cm");
     const fs::path obj = scenes() / "cornell/CornellBox-Original.obj";
     const RunResult metres = runLpv("import " + quoted(obj) + " -o " + quoted(dir / "m.lpvproj"));
     ASSERT_EQ(metres.exitCode, 0) << metres.output;
@@ -122,7 +111,7 @@ TEST(ImportUnitsCommand, UnitCmGivesAHundredthOfTheMetreImport) {
 }
 
 TEST(ImportUnitsCommand, AddingToAProjectScalesOnlyTheNewPart) {
-    const fs::path dir = tempDir("add");
+    const fs::path dir = freshTempDir("import-units", "add");
     const fs::path obj = scenes() / "cornell/CornellBox-Original.obj";
     const fs::path project = dir / "p.lpvproj";
     ASSERT_EQ(runLpv("import " + quoted(obj) + " -o " + quoted(project)).exitCode, 0);
@@ -140,7 +129,7 @@ TEST(ImportUnitsCommand, AddingToAProjectScalesOnlyTheNewPart) {
 }
 
 TEST(ImportUnitsCommand, UnitAndScaleTogetherOrBadValuesAreUsageErrors) {
-    const fs::path dir = tempDir("usage");
+    const fs::path dir = freshTempDir("import-units", "usage");
     const std::string obj = quoted(scenes() / "cornell/CornellBox-Original.obj");
     const std::string out = " -o " + quoted(dir / "x.lpvproj");
     const RunResult both = runLpv("import " + obj + " --unit cm --scale 0.01" + out);
@@ -148,7 +137,7 @@ TEST(ImportUnitsCommand, UnitAndScaleTogetherOrBadValuesAreUsageErrors) {
     EXPECT_NE(both.output.find("--unit and --scale"), std::string::npos) << both.output;
     const RunResult km = runLpv("import " + obj + " --unit km" + out);
     EXPECT_EQ(km.exitCode, 2) << km.output;
-    EXPECT_NE(km.output.find("--unit 'km' is not one of mm, cm, m, in, ft"), std::string::npos) << km.output;
+    EXPECT_NE(km.output.find("--unit: 'km' is not one of mm, cm, m, in, ft"), std::string::npos) << km.output;
     for (const char* bad : {"0", "-1", "nan", "inf", "1e400", "abc", "2x", "''"}) {
         const RunResult r = runLpv("import " + obj + " --scale " + bad + out);
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
@@ -161,7 +150,7 @@ TEST(ImportUnitsCommand, UnitAndScaleTogetherOrBadValuesAreUsageErrors) {
 }
 
 TEST(ImportUnitsCommand, SizeNoteForTheCornellBoxInCentimetres) {
-    const fs::path dir = tempDir("note");
+    const fs::path dir = freshTempDir("import-units", "note");
     const fs::path obj = scaledCornell(dir, 100.0);
     const RunResult r = runLpv("import " + quoted(obj) + " -o " + quoted(dir / "big.lpvproj"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -185,7 +174,7 @@ TEST(ImportUnitsCommand, SizeNoteForTheCornellBoxInCentimetres) {
 // A 2 m box 100 km out along x: its mesh is stored around its centre and the
 // offset lives in the object's translation, so the world stays in place.
 TEST(ImportUnitsCommand, AFarBoxIsRecentred) {
-    const fs::path dir = tempDir("far");
+    const fs::path dir = freshTempDir("import-units", "far");
     const fs::path obj = dir / "far.obj";
     {
         std::ofstream out(obj);

@@ -22,8 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
 double luma(const lpv::importers::Image8& img, std::size_t i) {
     const std::uint8_t* p = &img.pixels[i * std::size_t(img.channels)];
     return (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]) / 255.0;
@@ -58,10 +56,7 @@ class LpvScenes : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(LpvScenes, IndirectLightReachesWhatTheSunDoesNot) {
     const fs::path source = fs::path(kSharedScenesDir) / GetParam();
-    const fs::path dir = fs::temp_directory_path() / ("lpv-scenes-" + source.stem().string() + "-" +
-                                                      std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("scenes", source.stem().string());
     const fs::path project = dir / "scene.lpvproj";
     const RunResult imported = runLpv("import " + quoted(source) + " -o " + quoted(project));
     ASSERT_EQ(imported.exitCode, 0) << imported.output;
@@ -107,10 +102,7 @@ TEST_P(LpvScenes, IndirectLightReachesWhatTheSunDoesNot) {
 // image 0). With auto exposure and the import's sun, the interior shows.
 TEST_P(LpvScenes, TheDefaultsShowAVisibleInterior) {
     const fs::path source = fs::path(kSharedScenesDir) / GetParam();
-    const fs::path dir = fs::temp_directory_path() / ("lpv-visible-" + source.stem().string() + "-" +
-                                                      std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("visible", source.stem().string());
     const fs::path project = dir / "scene.lpvproj";
     ASSERT_EQ(runLpv("import " + quoted(source) + " -o " + quoted(project)).exitCode, 0);
     const fs::path out = dir / "view.png";
@@ -134,10 +126,7 @@ TEST_P(LpvScenes, TheDefaultsShowAVisibleInterior) {
 // scenes, alpha-masked and colour-keyed materials included.
 TEST_P(LpvScenes, TheDepthPrepassKeepsTheImage) {
     const fs::path source = fs::path(kSharedScenesDir) / GetParam();
-    const fs::path dir = fs::temp_directory_path() / ("lpv-prepass-" + source.stem().string() + "-" +
-                                                      std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("prepass", source.stem().string());
     const fs::path project = dir / "scene.lpvproj";
     const RunResult imported = runLpv("import " + quoted(source) + " -o " + quoted(project));
     ASSERT_EQ(imported.exitCode, 0) << imported.output;

@@ -2,7 +2,7 @@
 // them, on a temporary copy of the Cornell box: no solution is a failure
 // that says what to do, a solution is drawn, a solution of another scene is
 // refused.
-#include "RunLpv.h"
+#include "CornellCopyTest.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,39 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-// A 1-second path into the box, for the video.
-const char* kPathFile = R"({
-  "format": "lpvstudio-camera-path",
-  "version": 1,
-  "name": "dolly",
-  "closed": false,
-  "constantSpeed": false,
-  "keyframes": [
-    {"time": 0, "position": [2.78, 2.73, -8.0], "orientation": [0, 1, 0, 0], "fovYDegrees": 39.3},
-    {"time": 1, "position": [2.5, 2.8, -5.5], "orientation": [0, 0.995, 0, -0.0998], "fovYDegrees": 50}
-  ]
-}
-)";
-
-class RadiosityRender : public testing::Test {
+class RadiosityRender : public CornellCopyTest {
   protected:
-    void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("lpv-cli-radiosity-render-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-        fs::copy(fs::path(cornellProject()).parent_path(), dir_ / "cornell", fs::copy_options::recursive);
-        project_ = (dir_ / "cornell" / "cornell-box.lpvproj").string();
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
+    RadiosityRender() : CornellCopyTest("cli-radiosity-render") {}
 
     void solve() {
         const RunResult r =
@@ -63,9 +33,6 @@ class RadiosityRender : public testing::Test {
         return runLpv("render " + project_ + " -o " + (dir_ / out).string() +
                       " --width 64 --height 48 --frames 2 --set gi.method=radiosity");
     }
-
-    fs::path dir_;
-    std::string project_;
 };
 
 TEST_F(RadiosityRender, WithoutASolutionTheRenderFailsAndSaysWhatToDo) {
@@ -105,7 +72,7 @@ TEST_F(RadiosityRender, ASolutionOfAnotherSceneIsRefused) {
 
 // lpv video loads the solution the same way, for either half.
 TEST_F(RadiosityRender, AVideoShowsTheSolutionOrFailsWithoutOne) {
-    std::ofstream(dir_ / "dolly.json") << kPathFile;
+    std::ofstream(dir_ / "dolly.json") << kDollyPathFile;
     const RunResult imported = runLpv("path import " + project_ + " " + (dir_ / "dolly.json").string());
     ASSERT_EQ(imported.exitCode, 0) << imported.output;
     const std::string video =

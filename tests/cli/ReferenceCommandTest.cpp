@@ -22,13 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& file) {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The number after "key": in a one-line JSON object.
 double jsonNumber(const std::string& json, const std::string& key) {
     const auto at = json.find("\"" + key + "\": ");

@@ -19,17 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir(const std::string& name) {
-    fs::path p = fs::temp_directory_path() / ("lpv-dump-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
-
 } // namespace
 
 TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
-    const fs::path dir = tempDir("shadow");
+    const fs::path dir = freshTempDir("dump", "shadow");
     const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
                                " --width 64 --height 64 --frames 2 --set shadow.mapSize=256 --dump shadowMaps");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -72,7 +65,7 @@ TEST(RenderDump, UnknownImageSetIsAUsageError) {
 }
 
 TEST(RenderDump, EveryFrameGetsARowOfPassTimes) {
-    const fs::path dir = tempDir("frames");
+    const fs::path dir = freshTempDir("dump", "frames");
     const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
                                " --width 48 --height 48 --frames 4");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -141,7 +134,7 @@ TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
     // The Cornell box without its ceiling, lit by a sun slanting in from the
     // green side (-X) towards the red wall (+X): the RSM sees the floor, the
     // blocks and the red wall.
-    const fs::path dir = tempDir("rsm");
+    const fs::path dir = freshTempDir("dump", "rsm");
     auto project = lpv::scene::loadProject(cornellProject());
     ASSERT_TRUE(project.has_value()) << project.error().describe();
     lpv::scene::Light sun;
@@ -180,7 +173,7 @@ TEST(RenderDump, RsmTilesOfACornellBoxUnderASunShowTheRedWallRed) {
 }
 
 TEST(RenderSweep, AListOfValuesRendersOneImagePerValue) {
-    const fs::path dir = tempDir("sweep");
+    const fs::path dir = freshTempDir("dump", "sweep");
     const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
                                " --width 48 --height 48 --frames 1 --set output.exposure=-1,1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -204,7 +197,7 @@ TEST(RenderSweep, AListOfValuesRendersOneImagePerValue) {
 }
 
 TEST(BenchRender, SweepsWriteCsvAndMarkdownTables) {
-    const fs::path dir = tempDir("bench");
+    const fs::path dir = freshTempDir("dump", "bench");
     const RunResult r = runLpv("bench render " + cornellProject() +
                                " --width 32 --height 32 --frames 2 --warmup 1 --set shadow.mapSize=256,512 --csv " +
                                (dir / "t.csv").string() + " --markdown " + (dir / "t.md").string());
@@ -254,7 +247,7 @@ std::vector<std::string> splitCsv(const std::string& line) {
 // the Markdown (headed by the machine, its load and why the rounds stopped)
 // and the printed table.
 TEST(BenchRender, CornellTemplateInRoundsWritesTheSpread) {
-    const fs::path dir = tempDir("rounds");
+    const fs::path dir = freshTempDir("dump", "rounds");
     const fs::path project = dir / "cb.lpvproj";
     const RunResult made = runLpv("new '" + project.string() + "' --template cornell-box");
     ASSERT_EQ(made.exitCode, 0) << made.output;

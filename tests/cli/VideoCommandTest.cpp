@@ -1,6 +1,6 @@
 // `lpv video` and `lpv path` as a user runs them, on a temporary copy of the
 // Cornell box (the committed project has no camera path).
-#include "RunLpv.h"
+#include "CornellCopyTest.h"
 
 #include "lpv/scene/CameraPathFile.h"
 #include "lpv/scene/Project.h"
@@ -20,47 +20,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// A 1-second path that moves into the Cornell box, as a path file.
-const char* kPathFile = R"({
-  "format": "lpvstudio-camera-path",
-  "version": 1,
-  "name": "dolly",
-  "closed": false,
-  "constantSpeed": false,
-  "keyframes": [
-    {"time": 0, "position": [2.78, 2.73, -8.0], "orientation": [0, 1, 0, 0], "fovYDegrees": 39.3},
-    {"time": 0.5, "position": [3.2, 2.9, -6.5], "orientation": [0, 0.995, 0, 0.0998], "fovYDegrees": 45},
-    {"time": 1, "position": [2.5, 2.8, -5.5], "orientation": [0, 0.995, 0, -0.0998], "fovYDegrees": 50}
-  ]
-}
-)";
-
-class VideoCommand : public testing::Test {
+class VideoCommand : public CornellCopyTest {
   protected:
+    VideoCommand() : CornellCopyTest("cli-video") {}
     void SetUp() override {
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("lpv-cli-video-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-        fs::copy(fs::path(cornellProject()).parent_path(), dir_ / "cornell", fs::copy_options::recursive);
-        project_ = (dir_ / "cornell" / "cornell-box.lpvproj").string();
-        std::ofstream(dir_ / "dolly.json") << kPathFile;
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
+        CornellCopyTest::SetUp();
+        std::ofstream(dir_ / "dolly.json") << kDollyPathFile;
     }
 
     // Imports the dolly path into the copy.
@@ -68,9 +33,6 @@ class VideoCommand : public testing::Test {
         const RunResult r = runLpv("path import " + project_ + " " + (dir_ / "dolly.json").string());
         ASSERT_EQ(r.exitCode, 0) << r.output;
     }
-
-    fs::path dir_;
-    std::string project_;
 };
 
 } // namespace
@@ -198,7 +160,7 @@ TEST_F(VideoCommand, PathExportImportRoundTrip) {
 TEST_F(VideoCommand, BadPathFileChangesNothing) {
     importDolly();
     const std::string before = readText(project_);
-    std::string text = kPathFile;
+    std::string text = kDollyPathFile;
     text.replace(text.find("\"time\": 1,"), 10, "\"time\": 0.2,");
     std::ofstream(dir_ / "unsorted.json") << text;
     const RunResult r = runLpv("path import " + project_ + " " + (dir_ / "unsorted.json").string());

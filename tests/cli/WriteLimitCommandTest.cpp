@@ -15,10 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
 fs::path freshDir(const std::string& name) {
     const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-write-limits" / name;
     fs::remove_all(dir);

@@ -3,6 +3,7 @@
 // installs or pulls in. The check itself is tests/install/check-install-list.sh
 // (run it by hand to see which package is missing); these tests run it on this
 // build, and once with a needed package left out to show that it can fail.
+#include "TestFiles.h"
 #include "TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -13,25 +14,9 @@
 #include <string>
 #include <sys/wait.h>
 
+using namespace lpv::test;
+
 namespace {
-
-struct RunResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
-
-RunResult run(const std::string& command) {
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buf{};
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe))
-        r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
 
 std::string checkCommand(const std::string& extra) {
     return "'" + std::string(lpv::test::kSourceDir) + "/tests/install/check-install-list.sh' '" +
@@ -47,7 +32,7 @@ bool haveDebianTools() {
 TEST(InstallList, EverySystemFileTheBuildReadComesFromAListedPackage) {
     if (!haveDebianTools())
         GTEST_SKIP() << "not a Debian system (no dpkg-query/apt-cache): the install list is Debian's";
-    const RunResult r = run(checkCommand(""));
+    const RunResult r = runShell(checkCommand(""));
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("system files checked"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("MISSING PACKAGE"), std::string::npos) << r.output;
@@ -59,7 +44,7 @@ TEST(InstallList, EverySystemFileTheBuildReadComesFromAListedPackage) {
 TEST(InstallList, FailsNamingAPackageLeftOutOfTheList) {
     if (!haveDebianTools())
         GTEST_SKIP() << "not a Debian system (no dpkg-query/apt-cache): the install list is Debian's";
-    const RunResult r = run(checkCommand("--without zlib1g-dev"));
+    const RunResult r = runShell(checkCommand("--without zlib1g-dev"));
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("MISSING PACKAGE zlib1g-dev:"), std::string::npos) << r.output;
     // It names one of the package's files the build read: the library Assimp
@@ -98,19 +83,19 @@ bool listed(const std::string& list, const std::string& package) {
 // lists the real package of the release /etc/os-release names.
 TEST(InstallList, SetupChoosesPackageNamesByRelease) {
     const RunResult bookworm =
-        run(setupCommand(writeOsRelease("bookworm", "ID=debian\nVERSION_ID=\"12\"\nVERSION_CODENAME=bookworm\n")));
+        runShell(setupCommand(writeOsRelease("bookworm", "ID=debian\nVERSION_ID=\"12\"\nVERSION_CODENAME=bookworm\n")));
     ASSERT_EQ(bookworm.exitCode, 0) << bookworm.output;
     EXPECT_TRUE(listed(bookworm.output, "libqt6opengl6-dev")) << bookworm.output;
     EXPECT_TRUE(listed(bookworm.output, "qt6-base-dev")) << bookworm.output;
 
     const RunResult trixie =
-        run(setupCommand(writeOsRelease("trixie", "ID=debian\nVERSION_ID=\"13\"\nVERSION_CODENAME=trixie\n")));
+        runShell(setupCommand(writeOsRelease("trixie", "ID=debian\nVERSION_ID=\"13\"\nVERSION_CODENAME=trixie\n")));
     ASSERT_EQ(trixie.exitCode, 0) << trixie.output;
     EXPECT_FALSE(listed(trixie.output, "libqt6opengl6-dev")) << trixie.output;
     EXPECT_TRUE(listed(trixie.output, "qt6-base-dev")) << trixie.output;
 
     // Another system gets a warning that says what is assumed, and still a list.
-    const RunResult other = run(setupCommand(writeOsRelease("other", "ID=arch\n")));
+    const RunResult other = runShell(setupCommand(writeOsRelease("other", "ID=arch\n")));
     ASSERT_EQ(other.exitCode, 0) << other.output;
     EXPECT_NE(other.output.find("knows Debian 12 (bookworm) and 13 (trixie)"), std::string::npos) << other.output;
     EXPECT_TRUE(listed(other.output, "qt6-base-dev")) << other.output;
@@ -122,7 +107,7 @@ TEST(InstallList, SetupChoosesPackageNamesByRelease) {
 TEST(InstallList, EveryPackageListedForThisReleaseIsInstalledUnderItsName) {
     if (!haveDebianTools())
         GTEST_SKIP() << "not a Debian system (no dpkg-query/apt-cache): the install list is Debian's";
-    const RunResult list = run("'" + std::string(lpv::test::kSourceDir) + "/scripts/setup.sh' --print-packages");
+    const RunResult list = runShell("'" + std::string(lpv::test::kSourceDir) + "/scripts/setup.sh' --print-packages");
     ASSERT_EQ(list.exitCode, 0) << list.output;
     std::size_t checked = 0;
     std::size_t start = 0;
@@ -132,7 +117,7 @@ TEST(InstallList, EveryPackageListedForThisReleaseIsInstalledUnderItsName) {
         start = end == std::string::npos ? list.output.size() : end + 1;
         if (package.empty() || package.starts_with("=="))
             continue;
-        const RunResult status = run("dpkg-query -W -f='${Status}' " + package);
+        const RunResult status = runShell("dpkg-query -W -f='${Status}' " + package);
         EXPECT_NE(status.output.find("install ok installed"), std::string::npos)
             << package << " is listed by scripts/setup.sh but not installed under that name: " << status.output;
         ++checked;

@@ -6,6 +6,7 @@
 // One CTest test for the whole binary (the install happens once, in
 // SetUpTestSuite); the staging tree is left in build/tests/install-staging
 // for a look after a failure and replaced by the next run.
+#include "TestFiles.h"
 #include "TestPaths.h"
 
 #include "lpv/importers/ImageIO.h"
@@ -21,36 +22,9 @@
 
 namespace fs = std::filesystem;
 
+using namespace lpv::test;
+
 namespace {
-
-struct RunResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
-
-RunResult run(const std::string& command) {
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buf{};
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe))
-        r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) {
-    return "'" + p.string() + "'";
-}
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 const std::string kAppId = "org.lpvstudio.lpvstudio";
 
@@ -61,7 +35,7 @@ class Installed : public ::testing::Test {
 
     static void SetUpTestSuite() {
         fs::remove_all(prefix);
-        install = run(std::string(LPV_TEST_CMAKE_COMMAND) + " --install " + quoted(lpv::test::kBinaryDir) +
+        install = runShell(std::string(LPV_TEST_CMAKE_COMMAND) + " --install " + quoted(lpv::test::kBinaryDir) +
                       " --prefix " + quoted(prefix));
     }
 
@@ -86,7 +60,7 @@ TEST_F(Installed, LaysOutProgramsAndTheSampleProject) {
             continue;
         const fs::path installed = project().parent_path() / fs::relative(entry.path(), source);
         ASSERT_TRUE(fs::is_regular_file(installed)) << installed;
-        EXPECT_EQ(readFile(installed), readFile(entry.path())) << installed;
+        EXPECT_EQ(readText(installed), readText(entry.path())) << installed;
         ++files;
     }
     EXPECT_GE(files, 2) << "the project file and its mesh assets";
@@ -100,7 +74,7 @@ TEST_F(Installed, LaysOutTheClusterJobFiles) {
     for (const auto& entry : fs::directory_iterator(source)) {
         const fs::path copy = installed / entry.path().filename();
         ASSERT_TRUE(fs::is_regular_file(copy)) << copy;
-        EXPECT_EQ(readFile(copy), readFile(entry.path())) << copy;
+        EXPECT_EQ(readText(copy), readText(entry.path())) << copy;
         const std::string ext = entry.path().extension().string();
         if (ext == ".sh" || ext == ".sbatch") {
             EXPECT_NE(fs::status(copy).permissions() & fs::perms::owner_exec, fs::perms::none) << copy;
@@ -111,7 +85,7 @@ TEST_F(Installed, LaysOutTheClusterJobFiles) {
 }
 
 TEST_F(Installed, LpvReportsItsVersion) {
-    const RunResult r = run(quoted(prefix / "bin/lpv") + " --version");
+    const RunResult r = runShell(quoted(prefix / "bin/lpv") + " --version");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.rfind(std::string("lpv ") + LPV_TEST_PROJECT_VERSION + "\n", 0), 0u) << r.output;
     EXPECT_NE(r.output.find("\nrevision:  "), std::string::npos) << r.output;
@@ -120,7 +94,7 @@ TEST_F(Installed, LpvReportsItsVersion) {
 TEST_F(Installed, LpvRendersTheInstalledCornellBox) {
     const fs::path png = output("cornell-box.png");
     fs::remove(png);
-    const RunResult r = run(quoted(prefix / "bin/lpv") + " render " + quoted(project()) + " -o " +
+    const RunResult r = runShell(quoted(prefix / "bin/lpv") + " render " + quoted(project()) + " -o " +
                             quoted(png) + " --width 96 --height 96");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     ASSERT_TRUE(fs::is_regular_file(png)) << r.output;
@@ -150,15 +124,15 @@ TEST_F(Installed, LaysOutTheDesktopIntegration) {
 
     // Double-clicking a project: the entry launches the installed editor with
     // the file, for the MIME type the MIME package declares.
-    const std::string desktop = readFile(share / "applications" / (kAppId + ".desktop"));
+    const std::string desktop = readText(share / "applications" / (kAppId + ".desktop"));
     EXPECT_NE(desktop.find("\nExec=lpvstudio %f\n"), std::string::npos) << desktop;
     EXPECT_NE(desktop.find("\nMimeType=application/x-lpvproj;\n"), std::string::npos) << desktop;
     EXPECT_NE(desktop.find("\nIcon=" + kAppId + "\n"), std::string::npos) << desktop;
-    const std::string mime = readFile(share / "mime/packages" / (kAppId + ".xml"));
+    const std::string mime = readText(share / "mime/packages" / (kAppId + ".xml"));
     EXPECT_NE(mime.find("<mime-type type=\"application/x-lpvproj\">"), std::string::npos) << mime;
     EXPECT_NE(mime.find("<glob pattern=\"*.lpvproj\"/>"), std::string::npos) << mime;
 
-    const std::string metainfo = readFile(share / "metainfo" / (kAppId + ".metainfo.xml"));
+    const std::string metainfo = readText(share / "metainfo" / (kAppId + ".metainfo.xml"));
     EXPECT_NE(metainfo.find("<id>" + kAppId + "</id>"), std::string::npos);
     EXPECT_NE(metainfo.find("<launchable type=\"desktop-id\">" + kAppId + ".desktop</launchable>"),
               std::string::npos);
@@ -175,22 +149,22 @@ TEST_F(Installed, MimeDatabaseMapsProjectFilesToTheType) {
     const fs::path mime = output("mime");
     fs::remove_all(mime);
     fs::copy(prefix / "share/mime", mime, fs::copy_options::recursive);
-    const RunResult r = run(std::string(LPV_TEST_UPDATE_MIME_DATABASE) + " " + quoted(mime));
+    const RunResult r = runShell(std::string(LPV_TEST_UPDATE_MIME_DATABASE) + " " + quoted(mime));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(readFile(mime / "globs2").find("application/x-lpvproj:*.lpvproj"), std::string::npos)
-        << readFile(mime / "globs2");
+    EXPECT_NE(readText(mime / "globs2").find("application/x-lpvproj:*.lpvproj"), std::string::npos)
+        << readText(mime / "globs2");
 }
 
 TEST_F(Installed, EditorStartsOnTheInstalledProjectAndRendersIt) {
     const RunResult version =
-        run("QT_QPA_PLATFORM=offscreen " + quoted(prefix / "bin/lpvstudio") + " --version");
+        runShell("QT_QPA_PLATFORM=offscreen " + quoted(prefix / "bin/lpvstudio") + " --version");
     EXPECT_EQ(version.exitCode, 0) << version.output;
     EXPECT_NE(version.output.find(std::string("LPV Studio ") + LPV_TEST_PROJECT_VERSION), std::string::npos)
         << version.output;
 
     // Qt's offscreen platform has no OpenGL: a real window needs an X server (Xvfb).
     const RunResult r =
-        run(std::string(LPV_TEST_XVFB_RUN) + " -a -s '-screen 0 1280x1024x24' env QT_QPA_PLATFORM=xcb " +
+        runShell(std::string(LPV_TEST_XVFB_RUN) + " -a -s '-screen 0 1280x1024x24' env QT_QPA_PLATFORM=xcb " +
             quoted(prefix / "bin/lpvstudio") + " --quit-after 3000");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("showed " + project().string()), std::string::npos)

@@ -51,6 +51,10 @@ struct RoundPlan {
     double timeBudgetSeconds = 0.0; // --time-budget: no new round starts past it (0 = none)
 };
 
+// The plan as the options that give it (" --rounds 9 --spread-target 10"),
+// for the command a report or sweep records, so a rerun times alike.
+std::string roundOptionsText(const RoundPlan& plan);
+
 // The settings' order in round `round` (0-based): forward on even rounds, backward on odd.
 std::vector<int> roundOrder(int count, int round);
 

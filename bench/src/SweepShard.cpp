@@ -1,21 +1,18 @@
-#include "BenchSweepShard.h"
+#include "lpv/bench/SweepShard.h"
 
-#include "BenchReport.h"
 #include "lpv/bench/ContentHash.h"
 #include "lpv/bench/ReferenceFile.h"
-
 #include "lpv/bench/SweepRunJson.h"
 #include "lpv/importers/ImageIO.h"
 #include "lpv/scene/Project.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
+#include <algorithm>
 #include <fstream>
-#include <iostream>
 #include <set>
 
-namespace lpv::cli {
+namespace lpv::bench {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -29,7 +26,8 @@ std::string runImageName(int index) {
     return "run-" + std::to_string(index) + ".exr";
 }
 
-// Reads DIR/shard.json and its run images; the error names the file.
+} // namespace
+
 scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
     const fs::path file = dir / "shard.json";
     std::error_code ec;
@@ -70,7 +68,7 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
             s.timing.load = j["timing"].at("load").get<std::string>();
         }
         for (const Json& r : j.at("runs")) {
-            SweepRun run = bench::sweepRunFromJson(r);
+            SweepRun run = sweepRunFromJson(r);
             const int index = r.at("index").get<int>();
             auto pixels = importers::readImageChannels(dir / runImageName(index));
             if (!pixels)
@@ -110,13 +108,11 @@ scene::Expected<SweepShard> readSweepShard(const fs::path& dir) {
     return s;
 }
 
-} // namespace
-
 bool shardRunsCombination(const reference::ShardSpec& shard, int combinationIndex) {
     return combinationIndex % shard.count == shard.index;
 }
 
-bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
+scene::Expected<fs::path> writeSweepShard(const fs::path& dir, const SweepShard& shard) {
     Json display = Json::array();
     for (const auto& [key, value] : shard.display)
         display.push_back({key, value});
@@ -134,11 +130,9 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
             if (frame)
                 rgb.pixels.insert(rgb.pixels.end(), {r.imagePixels[i].r, r.imagePixels[i].g, r.imagePixels[i].b});
         }
-        if (auto ok = importers::writeImageChannels(dir / runImageName(index), rgb); !ok) {
-            std::cerr << "lpv: " << ok.error().describe() << "\n";
-            return false;
-        }
-        Json run = bench::sweepRunToJson(r);
+        if (auto ok = importers::writeImageChannels(dir / runImageName(index), rgb); !ok)
+            return std::unexpected(ok.error());
+        Json run = sweepRunToJson(r);
         run["index"] = index;
         runs.push_back(std::move(run));
     }
@@ -160,56 +154,22 @@ bool writeSweepShard(const fs::path& dir, const SweepShard& shard) {
                    {"stopReason", shard.timing.stopReason},
                    {"load", shard.timing.load}}},
                  {"runs", runs}};
-    return writeReportFiles({{(dir / "shard.json").string(), j.dump(1) + "\n"}});
+    const fs::path file = dir / "shard.json";
+    if (auto ok = scene::writeFileAtomically(file, j.dump(1) + "\n"); !ok)
+        return std::unexpected(ok.error());
+    return file;
 }
 
-void printBenchMergeHelp() {
-    std::cout << R"(
-bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]:
-joins the shards of one sweep (`lpv bench PROJECT --sweep ... --reference
-REF.exr --shard I/N --out SHARD_DIR`, one per process or cluster task, see
-docs/cluster.md) and writes into OUT_DIR the files the sweep writes unsharded
-(sweep.csv, sweep.json, sweep.md, the plots and crops), its error columns
-exactly as one process would have measured them. Refuses shards of different
-sweeps (command, size, reference file content, shard count), a shard given
-twice, a shard folder without its shard.json (killed before it finished) and
-an incomplete set, naming the missing shards. Warns, and says so in sweep.md,
-when the shards ran on different machines (their timings do not compare).
-  --reference REF.exr   The reference, where it is no longer at the path the
-                        shards recorded (its content must be the same)
-)";
-}
-
-int benchMerge(Args args) {
-    const auto referenceOverride = args.option("--reference");
-    if (!args.missingValue().empty())
-        return usageError(args.missingValue() + " needs a value", "bench");
-    if (auto unknown = args.unknownOption())
-        return usageError("unknown option '" + *unknown + "'", "bench");
-    auto pos = args.positionals();
-    pos.erase(pos.begin()); // "merge"
-    if (pos.size() < 2)
-        return usageError("bench merge expects OUT_DIR and at least one shard folder", "bench");
-    const fs::path outDir = pos.front();
-    std::vector<SweepShard> shards;
-    std::vector<std::string> folders(pos.begin() + 1, pos.end());
-    for (const std::string& folder : folders) {
-        auto s = readSweepShard(folder);
-        if (!s) {
-            std::cerr << "lpv: " << s.error().describe() << "\n";
-            return kFailure;
-        }
-        shards.push_back(std::move(*s));
-    }
-    if (shards.empty()) // not reached (two positionals at least); GCC 14 cannot see it
-        return usageError("bench merge expects at least one shard folder", "bench");
+scene::Expected<MergedSweep> mergeSweepShards(const std::vector<SweepShard>& shards,
+                                              const std::vector<std::string>& folders) {
+    auto refuse = [](const std::string& folder, const std::string& why) -> scene::Expected<MergedSweep> {
+        return scene::makeError(scene::ErrorCode::InvalidValue, folder, "", why);
+    };
+    if (shards.empty() || shards.size() != folders.size())
+        return refuse("", "no shards to merge");
     const SweepShard& first = shards.front();
     std::vector<const SweepShard*> byIndex(std::size_t(first.shard.count), nullptr);
     std::set<std::string> machines;
-    auto refuse = [&](const std::string& folder, const std::string& why) {
-        std::cerr << "lpv: " << folder << ": " << why << "\n";
-        return kFailure;
-    };
     for (std::size_t k = 0; k < shards.size(); ++k) {
         const SweepShard& s = shards[k];
         const std::string& folder = folders[k];
@@ -238,52 +198,41 @@ int benchMerge(Args args) {
                                       std::to_string(expected.size()) + " combinations");
         machines.insert(s.machine);
     }
-    std::vector<bool> present(static_cast<std::size_t>(first.shard.count));
+    std::vector<bool> present(byIndex.size());
     for (std::size_t i = 0; i < present.size(); ++i)
         present[i] = byIndex[i] != nullptr;
     if (const std::string missing = reference::describeMissingShards(present); !missing.empty())
-        return refuse("lpv bench merge", "incomplete set: " + missing);
+        return refuse("", "incomplete set: " + missing);
 
-    // The reference: for the crops and the report's header; it must be the one measured against.
-    fs::path refFile = referenceOverride ? fs::path(*referenceOverride) : fs::path(first.referenceAbsolute);
-    if (!referenceOverride && !fs::exists(refFile))
-        refFile = first.referenceFile;
-    if (const auto hash = bench::fileContentHash(refFile); !hash || *hash != first.referenceHash)
-        return refuse(refFile.string(), "not the reference the shards were measured against (content hash " +
-                                            first.referenceHash + "); give that file with --reference");
-    auto loaded = bench::readReferenceExr(refFile);
-    if (!loaded) {
-        std::cerr << "lpv: " << loaded.error().describe() << "\n";
-        return kFailure;
-    }
-    reference::ReferenceImage ref = std::move(loaded->image);
-    if (auto it = loaded->attributes.find("lpv:seconds"); it != loaded->attributes.end())
-        ref.seconds = std::atof(it->second.c_str());
-
-    std::vector<SweepRun> runs(std::size_t(first.combinations));
+    MergedSweep merged;
+    merged.runs.resize(std::size_t(first.combinations));
     for (const SweepShard* s : byIndex)
         for (std::size_t k = 0; k < s->runs.size(); ++k)
-            runs[std::size_t(s->indices[k])] = s->runs[k];
-    std::string note;
+            merged.runs[std::size_t(s->indices[k])] = s->runs[k];
+    merged.machineCount = machines.size();
     if (machines.size() > 1) {
-        note = "**The shards ran on different machines**; their timings do not compare:";
+        merged.note = "**The shards ran on different machines**; their timings do not compare:";
         for (const std::string& m : machines)
-            note += "\n- " + m;
-        std::cerr << "lpv: warning: the shards ran on " << machines.size()
-                  << " different machines; their timings do not compare (listed in sweep.md)\n";
+            merged.note += "\n- " + m;
     }
-    std::error_code ec;
-    fs::create_directories(outDir, ec);
-    if (ec)
-        return refuse(outDir.string(), "cannot create the folder: " + ec.message());
-    scene::ParameterSet display;
     for (const auto& [key, value] : first.display)
-        (void)display.setFromText(key, value, "shard.json");
-    if (!writeSweepFiles(outDir, runs, first.width, first.height, first.command, first.machine, ref, note,
-                         first.timing, display))
-        return kFailure;
-    std::printf("merged %d shards: %d runs\n", first.shard.count, first.combinations);
-    return kOk;
+        (void)merged.display.setFromText(key, value, "shard.json");
+    return merged;
 }
 
-} // namespace lpv::cli
+scene::Expected<reference::ReferenceImage> loadShardsReference(const SweepShard& first,
+                                                              const std::optional<fs::path>& override) {
+    fs::path file = override ? *override : fs::path(first.referenceAbsolute);
+    std::error_code ec;
+    if (!override && !fs::exists(file, ec))
+        file = first.referenceFile;
+    if (const auto hash = fileContentHash(file); !hash || *hash != first.referenceHash)
+        return scene::makeError(scene::ErrorCode::InvalidValue, file.string(), "",
+                                "not the reference the shards were measured against (content hash " +
+                                    first.referenceHash + "); give that file with --reference");
+    auto loaded = readReferenceExr(file);
+    if (!loaded)
+        return std::unexpected(loaded.error());
+    return std::move(loaded->image);
+}
+} // namespace lpv::bench
