@@ -52,14 +52,14 @@ inline void checkFinite(const glm::vec3& v, const std::string& what) {
 
 // Every number in the fields of a scene struct's table (SceneFields.h), so
 // a field added there is checked here without being named.
-template <class S>
-void checkFiniteFields(const S& s, const std::string& at) {
+template <class S> void checkFiniteFields(const S& s, const std::string& at) {
     scene::forEachField<S>([&](const auto& field) {
         const auto& v = field.of(s);
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, float>)
             checkFinite(v, at + field.name);
-        else if constexpr (std::is_same_v<T, glm::vec2> || std::is_same_v<T, glm::vec3> || std::is_same_v<T, glm::quat>)
+        else if constexpr (std::is_same_v<T, glm::vec2> || std::is_same_v<T, glm::vec3> ||
+                           std::is_same_v<T, glm::quat>)
             for (int c = 0; c < T::length(); ++c)
                 checkFinite(v[c], at + field.name + "[" + std::to_string(c) + "]");
     });

@@ -13,13 +13,10 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace lpv::editor {
 
 namespace {
-constexpr float kHuge = std::numeric_limits<float>::max();
 using scene::Camera;
 constexpr const auto& kNear = scene::fieldOf<&Camera::nearPlane>();
 constexpr const auto& kFar = scene::fieldOf<&Camera::farPlane>();
@@ -38,7 +35,8 @@ CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(par
     position_->setObjectName("cameraPosition");
     target_ = new Vec3Edit(scene::fieldOf<&Camera::target>(), 3, 0.1, {}, group);
     target_->setObjectName("cameraTarget");
-    fov_ = makeFieldSpinBox(scene::fieldOf<&Camera::fovY>(), 2, 1.0, QStringLiteral("°"), group, Shown::Degrees);
+    fov_ =
+        makeFieldSpinBox(scene::fieldOf<&Camera::fovY>(), 2, 1.0, QStringLiteral("°"), group, Shown::Degrees);
     fov_->setObjectName("cameraFov");
     fov_->setToolTip(tr("Vertical field of view"));
     near_ = makeFieldSpinBox(kNear, 4, 0.01, QStringLiteral(" m"), group);
@@ -63,16 +61,18 @@ CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(par
         edit(tr("Edit camera target"), [&](scene::Camera& c) { c.target[axis] = float(v); });
     });
     connect(fov_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        edit(tr("Edit camera field of view"), [&](scene::Camera& c) { c.fovY = storedValue(v, Shown::Degrees); });
+        edit(tr("Edit camera field of view"),
+             [&](scene::Camera& c) { c.fovY = storedValue(v, Shown::Degrees); });
     });
     connect(near_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        // Equal planes would make a singular projection: the near one stays strictly in front.
+        // Equal planes would make a singular projection: the rule keeps the near one strictly in
+        // front, within the depth buffer's ratio of the far one.
         edit(tr("Edit camera near plane"),
-             [&](scene::Camera& c) { c.nearPlane = std::min(float(v), std::nextafter(c.farPlane, 0.0f)); });
+             [&](Camera& c) { kNear.of(c) = rangeGivenOthers(c, kNear.name).clamp(float(v)); });
     });
     connect(far_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit(tr("Edit camera far plane"),
-             [&](scene::Camera& c) { c.farPlane = std::max(float(v), std::nextafter(c.nearPlane, kHuge)); });
+             [&](Camera& c) { kFar.of(c) = rangeGivenOthers(c, kFar.name).clamp(float(v)); });
     });
 
     setCameraIndex(-1);

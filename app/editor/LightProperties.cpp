@@ -133,12 +133,14 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
             [this](double v) { edit(tr("Edit light range"), [&](scene::Light& l) { l.range = float(v); }); });
     connect(innerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         // The boxes' ranges keep inner <= outer at their display precision; this keeps it exactly.
-        edit(tr("Edit spot inner cone"),
-             [&](scene::Light& l) { l.innerConeAngle = std::min(storedValue(v, Shown::Degrees), l.outerConeAngle); });
+        edit(tr("Edit spot inner cone"), [&](Light& l) {
+            kInnerCone.of(l) = rangeGivenOthers(l, kInnerCone.name).clamp(storedValue(v, Shown::Degrees));
+        });
     });
     connect(outerCone_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        edit(tr("Edit spot outer cone"),
-             [&](scene::Light& l) { l.outerConeAngle = std::max(storedValue(v, Shown::Degrees), l.innerConeAngle); });
+        edit(tr("Edit spot outer cone"), [&](Light& l) {
+            kOuterCone.of(l) = rangeGivenOthers(l, kOuterCone.name).clamp(storedValue(v, Shown::Degrees));
+        });
     });
     connect(areaShape_, &QComboBox::currentIndexChanged, this, [this] {
         const auto shape = scene::AreaShape(areaShape_->currentData().toInt());
@@ -260,8 +262,8 @@ void LightProperties::refresh() {
         const QSignalBlocker blockOuter(outerCone_);
         setFieldRange(innerCone_, kInnerCone.widgetRange(), Shown::Degrees);
         setFieldRange(outerCone_, kOuterCone.widgetRange(), Shown::Degrees);
-        showValue(innerCone_, shownValue(l.innerConeAngle, Shown::Degrees));
-        showValue(outerCone_, shownValue(l.outerConeAngle, Shown::Degrees));
+        showValue(innerCone_, shownValue(kInnerCone.of(l), Shown::Degrees));
+        showValue(outerCone_, shownValue(kOuterCone.of(l), Shown::Degrees));
         setFieldRange(innerCone_, kInnerCone.widgetRange().within(rangeGivenOthers(l, kInnerCone.name)),
                       Shown::Degrees);
         setFieldRange(outerCone_, kOuterCone.widgetRange().within(rangeGivenOthers(l, kOuterCone.name)),

@@ -40,8 +40,7 @@ const std::array<TextureSlot, 9> kTextureSlots = {{
 }};
 
 // A box for a table field in [0, 1].
-template <class Field>
-QDoubleSpinBox* unitBox(QWidget* parent, const char* objectName, const Field& field) {
+template <class Field> QDoubleSpinBox* unitBox(QWidget* parent, const char* objectName, const Field& field) {
     QDoubleSpinBox* box = makeFieldSpinBox(field, 3, 0.05, {}, parent);
     box->setObjectName(objectName);
     return box;

@@ -35,14 +35,14 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
 
     auto* transform = new QGroupBox(tr("Transform"), this);
     auto* tform = new QFormLayout(transform);
-    translation_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::translation>(), 3, 0.1,
-                                QString(), transform);
+    translation_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::translation>(),
+                                3, 0.1, QString(), transform);
     translation_->setObjectName("objectTranslation");
     rotation_ = new Vec3Edit(-360.0, 360.0, 2, 5.0, QStringLiteral("°"), transform);
     rotation_->setObjectName("objectRotation");
     rotation_->setToolTip(tr("Euler angles in degrees, applied about X, then Y, then Z"));
-    scale_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::scale>(), 3, 0.1, QString(),
-                          transform);
+    scale_ = new Vec3Edit(scene::fieldOf<&scene::Object::transform, &scene::Transform::scale>(), 3, 0.1,
+                          QString(), transform);
     scale_->setObjectName("objectScale");
     tform->addRow(tr("Translation"), translation_);
     tform->addRow(tr("Rotation"), rotation_);

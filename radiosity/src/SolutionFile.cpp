@@ -70,7 +70,8 @@ std::uint64_t sceneSignature(const PatchMesh& unrefined, const SurfaceProperties
     // dimming or recolouring one changes the solution. Every field its table
     // hashes (SceneFields.h), so a field added there is part of the signature.
     for (const scene::Light& l : lights)
-        scene::hashFields(l, [&](const void* p, std::size_t n) { w.bytes.append(static_cast<const char*>(p), n); });
+        scene::hashFields(
+            l, [&](const void* p, std::size_t n) { w.bytes.append(static_cast<const char*>(p), n); });
     for (std::size_t i = 0; i < unrefined.size(); ++i) {
         const Patch& p = unrefined.patches[i];
         w.put(p.cornerCount);

@@ -242,16 +242,17 @@ public:
     void index(const char* key, int& out, std::size_t size, const char* thing, const char* things) {
         const auto i = integerIn(key, -1, static_cast<std::int64_t>(size) - 1, ErrorCode::IndexOutOfRange,
                                  [&](std::int64_t bad) {
-                                     return concat(thing, " ", bad, " does not exist (the project has ", size, " ",
-                                                   things, "; -1 means none)");
+                                     return concat(thing, " ", bad, " does not exist (the project has ", size,
+                                                   " ", things, "; -1 means none)");
                                  });
         if (i)
             out = static_cast<int>(*i);
     }
 
     void count(const char* key, std::uint64_t& out) {
-        const auto i = integerIn(key, 0, std::numeric_limits<std::int64_t>::max(), ErrorCode::OutOfRange,
-                                 [](std::int64_t bad) { return concat("a count cannot be negative (", bad, ")"); });
+        const auto i =
+            integerIn(key, 0, std::numeric_limits<std::int64_t>::max(), ErrorCode::OutOfRange,
+                      [](std::int64_t bad) { return concat("a count cannot be negative (", bad, ")"); });
         if (i)
             out = static_cast<std::uint64_t>(*i);
     }
@@ -278,20 +279,20 @@ public:
     }
 
 private:
-    // An integer field in [min, max]; `why(value)` says what is wrong with one outside.
-    template <class Why>
-    std::optional<std::int64_t> integerIn(const char* key, std::int64_t min, std::int64_t max, ErrorCode code,
-                                          Why why) {
-        const Json* v = get(key);
-        if (!v)
-            return std::nullopt;
-        const auto i = readInteger(r_, *v, pathOf(key));
-        if (i && (*i < min || *i > max)) {
-            r_.fail(code, pathOf(key), why(*i));
-            return std::nullopt;
-        }
-        return i;
-    }
+  // An integer field in [min, max]; `why(value)` says what is wrong with one outside.
+  template <class Why>
+  std::optional<std::int64_t> integerIn(const char* key, std::int64_t min, std::int64_t max, ErrorCode code,
+                                        Why why) {
+      const Json* v = get(key);
+      if (!v)
+          return std::nullopt;
+      const auto i = readInteger(r_, *v, pathOf(key));
+      if (i && (*i < min || *i > max)) {
+          r_.fail(code, pathOf(key), why(*i));
+          return std::nullopt;
+      }
+      return i;
+  }
 
     Reader& r_;
     const Json* json_ = nullptr;
@@ -324,11 +325,9 @@ struct IndexCounts {
     std::size_t objects = 0;
 };
 
-template <class S>
-S readStruct(Fields& f, const IndexCounts& counts);
+template <class S> S readStruct(Fields& f, const IndexCounts& counts);
 
-template <class S>
-std::vector<S> readStructs(Fields& parent, const char* key, const IndexCounts& counts) {
+template <class S> std::vector<S> readStructs(Fields& parent, const char* key, const IndexCounts& counts) {
     return readArray<S>(parent, key, [&](Fields& element) { return readStruct<S>(element, counts); });
 }
 
@@ -347,8 +346,7 @@ void readField(Fields& f, const Field<S, T>& field, T& out, const IndexCounts& c
     else if constexpr (std::is_enum_v<T>) {
         static_assert(kEnumNames<T>.parse != nullptr, "an enum field needs its kEnumNames (SceneFields.h)");
         f.enumeration(key, out, kEnumNames<T>.parse, kEnumNames<T>.allowed);
-    }
-    else if constexpr (std::is_same_v<T, int>) {
+    } else if constexpr (std::is_same_v<T, int>) {
         if (field.index == IndexOf::Meshes)
             f.index(key, out, counts.meshes, "mesh", "meshes");
         else
@@ -362,8 +360,7 @@ void readField(Fields& f, const Field<S, T>& field, T& out, const IndexCounts& c
 // Every field of S in table order: one that does not apply (an area light's
 // shape on a spot) is skipped, an optional one read only when present. Then
 // the rules between fields and the product checks.
-template <class S>
-S readStruct(Fields& f, const IndexCounts& counts) {
+template <class S> S readStruct(Fields& f, const IndexCounts& counts) {
     S s;
     forEachField<S>([&](const auto& field) {
         if (!f.ok() || !field.appliesTo(s) || (!field.requiredIn(s) && !f.has(field.name)))
@@ -636,19 +633,20 @@ Json numbers(const glm::vec<L, float, Q>& v) {
 
 Json numbers(const glm::quat& q) { return Json::array({number(q.x), number(q.y), number(q.z), number(q.w)}); }
 
-template <class T>
-Json arrayOf(const std::vector<T>& items);
+template <class T> Json arrayOf(const std::vector<T>& items);
 
 // One field's JSON form, following its C++ type (the reader's readField).
-template <class T>
-Json fieldJson(const T& v) {
+template <class T> Json fieldJson(const T& v) {
     if constexpr (std::is_same_v<T, float>)
         return number(v);
     else if constexpr (std::is_enum_v<T>)
         return toString(v);
     else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, bool> || std::is_same_v<T, int>)
         return v;
-    else if constexpr (requires { v.size(); typename T::value_type; })
+    else if constexpr (requires {
+                           v.size();
+                           typename T::value_type;
+                       })
         return arrayOf(v);
     else
         return numbers(v);
@@ -656,8 +654,7 @@ Json fieldJson(const T& v) {
 
 // Every field of S that applies and is written, in table order (the order
 // files have always listed them).
-template <class S>
-Json toJson(const S& s) {
+template <class S> Json toJson(const S& s) {
     Json j = Json::object();
     forEachField<S>([&](const auto& field) {
         if (field.appliesTo(s) && (!field.written || field.written(s)))

@@ -10,8 +10,7 @@ namespace lpv::scene {
 namespace {
 
 // Shortest text that reads back as the same value (so messages show what is in the file).
-template <class T>
-std::string shortest(T v) {
+template <class T> std::string shortest(T v) {
     char buffer[64];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
     return ec == std::errc() ? std::string(buffer, end) : std::string("?");
@@ -36,8 +35,9 @@ std::optional<ValueProblem> checkFieldRules(const Light& l) {
         const glm::vec3 d = l.direction == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.direction);
         const glm::vec3 t = l.tangent == glm::vec3(0.0f) ? glm::vec3(0.0f) : glm::normalize(l.tangent);
         if (l.tangent == glm::vec3(0.0f) || std::abs(glm::dot(d, t)) > 0.9999f)
-            return problem(ErrorCode::InvalidValue, "tangent",
-                           "a rectangular area light needs a tangent that is not zero and not along its direction");
+            return problem(
+                ErrorCode::InvalidValue, "tangent",
+                "a rectangular area light needs a tangent that is not zero and not along its direction");
     }
     if (l.innerConeAngle > l.outerConeAngle)
         return problem(ErrorCode::OutOfRange, "innerConeAngle",
@@ -53,7 +53,8 @@ std::optional<ValueProblem> checkFieldRules(const Light& l) {
 std::optional<ValueProblem> checkFieldRules(const Camera& c) {
     if (c.farPlane <= c.nearPlane)
         return problem(ErrorCode::OutOfRange, "farPlane",
-                       "far plane " + shortest(c.farPlane) + " is not beyond the near plane " + shortest(c.nearPlane));
+                       "far plane " + shortest(c.farPlane) + " is not beyond the near plane " +
+                           shortest(c.nearPlane));
     // Both would make the view matrix NaN.
     if (c.position == c.target)
         return problem(ErrorCode::InvalidValue, "target", "the camera looks at its own position");
@@ -62,17 +63,26 @@ std::optional<ValueProblem> checkFieldRules(const Camera& c) {
     return checkCamera(c);
 }
 
-std::optional<ValueProblem> checkFieldRules(const Material& m) { return checkMaterial(m); }
-std::optional<ValueProblem> checkFieldRules(const Object& o) { return checkObject(o); }
-std::optional<ValueProblem> checkFieldRules(const Sky& s) { return checkSky(s); }
-std::optional<ValueProblem> checkFieldRules(const CameraKeyframe& k) { return checkKeyframe(k); }
+std::optional<ValueProblem> checkFieldRules(const Material& m) {
+    return checkMaterial(m);
+}
+std::optional<ValueProblem> checkFieldRules(const Object& o) {
+    return checkObject(o);
+}
+std::optional<ValueProblem> checkFieldRules(const Sky& s) {
+    return checkSky(s);
+}
+std::optional<ValueProblem> checkFieldRules(const CameraKeyframe& k) {
+    return checkKeyframe(k);
+}
 
 // Playback interpolates between neighbours, which needs them in time order.
 std::optional<ValueProblem> checkFieldRules(const CameraPath& p) {
     for (std::size_t i = 1; i < p.keyframes.size(); ++i)
         if (p.keyframes[i].time < p.keyframes[i - 1].time)
             return problem(ErrorCode::InvalidValue, "keyframes[" + std::to_string(i) + "].time",
-                           "keyframe time " + shortest(p.keyframes[i].time) + " is earlier than the previous keyframe's " +
+                           "keyframe time " + shortest(p.keyframes[i].time) +
+                               " is earlier than the previous keyframe's " +
                                shortest(p.keyframes[i - 1].time) + "; keyframes must be sorted by time");
     return std::nullopt;
 }
@@ -96,8 +106,7 @@ FieldRange rangeGivenOthers(const Camera& c, std::string_view field) {
 
 namespace {
 
-template <class T>
-std::string typeName(const char* shape) {
+template <class T> std::string typeName(const char* shape) {
     if (shape)
         return shape;
     if constexpr (std::is_same_v<T, std::string> || std::is_enum_v<T>)
@@ -132,8 +141,7 @@ std::string quotedChoices(std::string_view allowed) {
     return out;
 }
 
-template <class S>
-std::string markdownOf() {
+template <class S> std::string markdownOf() {
     std::ostringstream out;
     out << "| field | type | range | unit | notes |\n|---|---|---|---|---|\n";
     forEachField<S>([&](const auto& f) {
@@ -142,15 +150,16 @@ std::string markdownOf() {
         if constexpr (std::is_enum_v<T>)
             range = quotedChoices(kEnumNames<T>.allowed);
         else if constexpr (std::is_same_v<T, int>)
-            range = f.index == IndexOf::Meshes ? "-1 or an index into `meshes`" : "-1 or an index into `objects`";
+            range =
+                f.index == IndexOf::Meshes ? "-1 or an index into `meshes`" : "-1 or an index into `objects`";
         else if (f.range.bounded())
             range = (std::is_same_v<T, float> ? "" : "each ") + f.range.describe();
         std::string notes = f.optional ? "optional (1.1)" : "";
         if (*f.description)
             notes += (notes.empty() ? "" : ": ") + std::string(f.description);
         out << "|";
-        for (const std::string& cell : {"`" + std::string(f.name) + "`", typeName<T>(f.shape), range,
-                                        std::string(f.unit), notes})
+        for (const std::string& cell :
+             {"`" + std::string(f.name) + "`", typeName<T>(f.shape), range, std::string(f.unit), notes})
             out << (cell.empty() ? "" : " " + cell) << " |";
         out << "\n";
     });

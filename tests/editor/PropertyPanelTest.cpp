@@ -394,7 +394,6 @@ namespace {
 
 class SceneFieldWidgetsTest : public PropertyPanelTest {
   protected:
-
     // The loader's verdict on the document's scene as it stands.
     void expectLoadable(const std::string& what) {
         scene::Scene copy = doc.scene();
@@ -431,13 +430,14 @@ class SceneFieldWidgetsTest : public PropertyPanelTest {
                 // The Document refuses what its product checks refuse: a box must not offer that either.
                 // Except the camera's vector rules (target off the position, up off the view
                 // direction), which tie three vectors no range of one component can express.
-                const bool vectorRule = refusal.startsWith("Camera, up:") || refusal.startsWith("Camera, target:");
+                const bool vectorRule =
+                    refusal.startsWith("Camera, up:") || refusal.startsWith("Camera, target:");
                 if (float(box->value()) != float(shownBefore) && !vectorRule) // else nothing to store
                     EXPECT_FALSE(doc.scene() == before)
                         << page << " " << field.toString().toStdString() << " = " << box->value()
                         << ": the box offers it, the document refused it: " << refusal.toStdString();
-                expectLoadable(page + " " + field.toString().toStdString() + " (" + box->objectName().toStdString() +
-                               ") = " + std::to_string(box->value()));
+                expectLoadable(page + " " + field.toString().toStdString() + " (" +
+                               box->objectName().toStdString() + ") = " + std::to_string(box->value()));
             }
             // Each box from the page's first state, so one box's ends do not meet another's.
             doc.undoStack()->setIndex(startIndex);

@@ -1,5 +1,5 @@
-#include "RadiosityTestScenes.h"
 #include "../scene/FieldChanges.h"
+#include "RadiosityTestScenes.h"
 
 #include "lpv/radiosity/SolutionFile.h"
 #include "lpv/scene/MeshAsset.h"
@@ -205,7 +205,9 @@ TEST(SolutionFile, EveryLightFieldButItsNameChangesTheSignature) {
     const auto scene = test::closedBox(glm::vec3(0.6f), glm::vec3(2.0f));
     const radiosity::PatchMesh mesh = radiosity::buildPatchMesh(scene, {0.5f});
     const auto surfaces = radiosity::surfaceProperties(mesh, scene, {});
-    const auto signature = [&](const scene::Light& l) { return radiosity::sceneSignature(mesh, surfaces, {&l, 1}); };
+    const auto signature = [&](const scene::Light& l) {
+        return radiosity::sceneSignature(mesh, surfaces, {&l, 1});
+    };
     scene::Light base;
     base.type = scene::LightType::Area;
     const auto missed = test::fieldsNotAffecting(

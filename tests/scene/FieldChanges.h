@@ -10,8 +10,7 @@
 
 namespace lpv::test {
 
-template <class T>
-T changed(const T& v) {
+template <class T> T changed(const T& v) {
     if constexpr (std::is_same_v<T, bool>)
         return !v;
     else if constexpr (std::is_integral_v<T>)

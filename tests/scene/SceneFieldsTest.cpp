@@ -27,13 +27,12 @@ std::vector<unsigned char> bytesOf(const auto& s) {
     return out;
 }
 
-template <class S>
-std::vector<std::string> fieldsOutsideTheHash() {
+template <class S> std::vector<std::string> fieldsOutsideTheHash() {
     return test::fieldsNotAffecting(S{}, [](const S& a, const S& b) { return bytesOf(a) != bytesOf(b); });
 }
 
 class SceneFieldsTest : public test::TempDirTest {
-protected:
+  protected:
     SceneFieldsTest() : TempDirTest("scene-fields-") {}
 };
 
@@ -42,7 +41,8 @@ protected:
 // The tables list fields in the order files have always had them: the
 // Cornell box loads and saves to the very bytes it was committed with.
 TEST_F(SceneFieldsTest, CornellBoxSavesToTheSameBytes) {
-    const std::filesystem::path source = std::filesystem::path(test::kSourceDir) / "projects/cornell-box/cornell-box.lpvproj";
+    const std::filesystem::path source =
+        std::filesystem::path(test::kSourceDir) / "projects/cornell-box/cornell-box.lpvproj";
     const auto project = scene::loadProject(source);
     ASSERT_TRUE(project.has_value()) << project.error().describe();
     const std::filesystem::path copy = dir_ / "cornell-box.lpvproj";
@@ -62,13 +62,13 @@ TEST(SceneFields, EveryFieldButNamesAndListsIsHashed) {
 }
 
 // What the editor offers (editRange) is inside what the loader takes.
-template <class S>
-void expectEditRangesInsideRanges() {
+template <class S> void expectEditRangesInsideRanges() {
     scene::forEachField<S>([](const auto& field) {
         const scene::FieldRange edit = field.editRange;
         if (!edit.bounded())
             return;
-        EXPECT_TRUE(std::isfinite(edit.min) && std::isfinite(edit.max)) << field.name << ": a spin box needs finite ends";
+        EXPECT_TRUE(std::isfinite(edit.min) && std::isfinite(edit.max))
+            << field.name << ": a spin box needs finite ends";
         if (!edit.openMin)
             EXPECT_TRUE(field.range.contains(float(edit.min))) << field.name << " " << edit.describe();
         if (!edit.openMax)
@@ -106,7 +106,8 @@ TEST(SceneFields, FuzzDictionaryHoldsEveryFieldName) {
 // "<!-- scene-fields NAME -->" and "<!-- /scene-fields -->". When they
 // differ, the doc as it should be is written beside the build, to copy over.
 TEST(SceneFields, FormatDocsTablesAreGeneratedFromTheTables) {
-    const std::string doc = test::readFile(std::filesystem::path(test::kSourceDir) / "docs/project-format.md");
+    const std::string doc =
+        test::readFile(std::filesystem::path(test::kSourceDir) / "docs/project-format.md");
     ASSERT_FALSE(doc.empty());
     std::string current = doc;
     for (const char* table : {"sky", "material", "object", "light", "camera", "cameraPath"}) {
@@ -118,7 +119,8 @@ TEST(SceneFields, FormatDocsTablesAreGeneratedFromTheTables) {
         current.replace(start + open.size(), end - start - open.size(), scene::sceneFieldsMarkdown(table));
     }
     if (current != doc) {
-        const std::filesystem::path fixed = std::filesystem::path(test::kBinaryDir) / "project-format.generated.md";
+        const std::filesystem::path fixed =
+            std::filesystem::path(test::kBinaryDir) / "project-format.generated.md";
         test::writeFile(fixed, current);
         ADD_FAILURE() << "docs/project-format.md's field tables differ from SceneFields.h; the doc with the "
                          "generated tables is "

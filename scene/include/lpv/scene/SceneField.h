@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -38,7 +39,21 @@ struct FieldRange {
         const float hi = static_cast<float>(max);
         return (openMin ? v > lo : v >= lo) && (openMax ? v < hi : v <= hi);
     }
-    bool bounded() const { return min > -std::numeric_limits<double>::infinity() || max < std::numeric_limits<double>::infinity(); }
+    // The nearest value inside (one float step in from an open end): what an
+    // edit becomes when another field's rule bounds it.
+    float clamp(float v) const {
+        const float lo = static_cast<float>(min);
+        const float hi = static_cast<float>(max);
+        if (openMin ? !(v > lo) : v < lo)
+            v = openMin ? std::nextafter(lo, std::numeric_limits<float>::infinity()) : lo;
+        if (openMax ? !(v < hi) : v > hi)
+            v = openMax ? std::nextafter(hi, -std::numeric_limits<float>::infinity()) : hi;
+        return v;
+    }
+    bool bounded() const {
+        return min > -std::numeric_limits<double>::infinity() ||
+               max < std::numeric_limits<double>::infinity();
+    }
     // The values both ranges hold (a widget's range narrowed by another field).
     constexpr FieldRange within(const FieldRange& o) const {
         FieldRange r = *this;
@@ -63,8 +78,7 @@ enum class IndexOf { None, Meshes, Objects };
 // Everything about a field but its C++ type. Optional fields were added
 // after version 1 was published: a file without them means the default;
 // they are always written.
-template <class S>
-struct FieldInfo {
+template <class S> struct FieldInfo {
     const char* name = "";
     FieldRange range{};
     const char* unit = "";        // "rad", "m", "W/sr"; empty for none
@@ -91,8 +105,7 @@ struct FieldInfo {
 };
 
 // A field of S of type T: FieldInfo plus the way to reach it.
-template <class S, class T>
-struct Field : FieldInfo<S> {
+template <class S, class T> struct Field : FieldInfo<S> {
     using Struct = S;
     using Type = T;
     T& (*ref)(S&) = nullptr;
@@ -106,22 +119,18 @@ struct Field : FieldInfo<S> {
 };
 
 namespace detail {
-template <class>
-struct MemberTraits;
-template <class S, class T>
-struct MemberTraits<T S::*> {
+template <class> struct MemberTraits;
+template <class S, class T> struct MemberTraits<T S::*> {
     using Struct = S;
     using Type = T;
 };
-template <auto First, auto... Rest>
-struct MemberPath {
+template <auto First, auto... Rest> struct MemberPath {
     using Struct = typename MemberTraits<decltype(First)>::Struct;
     using Last = std::tuple_element_t<sizeof...(Rest) - 1, std::tuple<decltype(Rest)...>>;
     using Type = typename MemberTraits<Last>::Type;
-    static Type& get(Struct& s) { return ((s.*First) .* ... .*Rest); }
+    static Type& get(Struct& s) { return ((s.*First).*....*Rest); }
 };
-template <auto First>
-struct MemberPath<First> {
+template <auto First> struct MemberPath<First> {
     using Struct = typename MemberTraits<decltype(First)>::Struct;
     using Type = typename MemberTraits<decltype(First)>::Type;
     static Type& get(Struct& s) { return s.*First; }
@@ -142,27 +151,22 @@ constexpr auto field(FieldInfo<typename detail::MemberPath<Members...>::Struct> 
 // How an enum field is named in files: the names it takes ("a, b, c", as
 // error messages list them) and their parser. One specialisation of
 // kEnumNames per enum, in SceneFields.h.
-template <class E>
-struct EnumNames {
+template <class E> struct EnumNames {
     const char* allowed = nullptr;
     std::optional<E> (*parse)(std::string_view) = nullptr;
 };
-template <class E>
-inline constexpr EnumNames<E> kEnumNames{};
+template <class E> inline constexpr EnumNames<E> kEnumNames{};
 
 // Each table is a tuple of Fields (SceneFields.h); fieldsOf<S>() returns it.
-template <class S>
-struct FieldTable; // specialised in SceneFields.h: static constexpr auto fields
+template <class S> struct FieldTable; // specialised in SceneFields.h: static constexpr auto fields
 
-template <class S, class Visit>
-constexpr void forEachField(Visit&& visit) {
+template <class S, class Visit> constexpr void forEachField(Visit&& visit) {
     std::apply([&](const auto&... f) { (visit(f), ...); }, FieldTable<S>::fields);
 }
 
 // The table entry of a member: fieldOf<&Light::outerConeAngle>(), for code
 // that edits one field by hand (an editor widget) and wants its range.
-template <auto... Members>
-constexpr const auto& fieldOf() {
+template <auto... Members> constexpr const auto& fieldOf() {
     using Path = detail::MemberPath<Members...>;
     using Wanted = Field<typename Path::Struct, typename Path::Type>;
     constexpr std::size_t kNone = ~std::size_t(0);
@@ -191,12 +195,11 @@ constexpr const auto& fieldOf() {
 // bytes on every run, so a reuse key or a stored signature stays valid.
 // Lists of structs (keyframes, LODs) have no byte form: their tables mark them unhashed.
 template <class T>
-inline constexpr bool kHasFieldBytes = std::is_enum_v<T> || std::is_arithmetic_v<T> ||
-                                       std::is_same_v<T, glm::vec2> || std::is_same_v<T, glm::vec3> ||
-                                       std::is_same_v<T, glm::quat> || std::is_same_v<T, std::string>;
+inline constexpr bool kHasFieldBytes =
+    std::is_enum_v<T> || std::is_arithmetic_v<T> || std::is_same_v<T, glm::vec2> ||
+    std::is_same_v<T, glm::vec3> || std::is_same_v<T, glm::quat> || std::is_same_v<T, std::string>;
 
-template <class Sink, class T>
-void fieldBytes(Sink& sink, const T& v) {
+template <class Sink, class T> void fieldBytes(Sink& sink, const T& v) {
     if constexpr (std::is_enum_v<T>) {
         const auto u = static_cast<std::uint32_t>(v);
         sink(&u, sizeof u);
@@ -218,8 +221,7 @@ void fieldBytes(Sink& sink, const T& v) {
 // anyone remembering it. In the struct's member order, not the file's: the
 // order radiosity's stored scene signatures were made in, so solutions baked
 // before the tables still match.
-template <class S, class Sink>
-void hashFields(const S& s, Sink&& sink) {
+template <class S, class Sink> void hashFields(const S& s, Sink&& sink) {
     std::vector<std::pair<std::ptrdiff_t, std::string>> parts;
     forEachField<S>([&](const auto& f) {
         using T = typename std::decay_t<decltype(f)>::Type;

@@ -26,12 +26,11 @@ namespace lpv::scene {
 
 template <>
 inline constexpr EnumNames<LightType> kEnumNames<LightType>{"directional, point, spot, area", parseLightType};
+template <> inline constexpr EnumNames<AreaShape> kEnumNames<AreaShape>{"rectangle, disc", parseAreaShape};
+template <> inline constexpr EnumNames<AreaUnit> kEnumNames<AreaUnit>{"radiance, power", parseAreaUnit};
 template <>
-inline constexpr EnumNames<AreaShape> kEnumNames<AreaShape>{"rectangle, disc", parseAreaShape};
-template <>
-inline constexpr EnumNames<AreaUnit> kEnumNames<AreaUnit>{"radiance, power", parseAreaUnit};
-template <>
-inline constexpr EnumNames<ShadingModel> kEnumNames<ShadingModel>{"blinnPhong, metallicRoughness", parseShadingModel};
+inline constexpr EnumNames<ShadingModel> kEnumNames<ShadingModel>{"blinnPhong, metallicRoughness",
+                                                                  parseShadingModel};
 template <>
 inline constexpr EnumNames<AlphaMode> kEnumNames<AlphaMode>{"opaque, mask, blend", parseAlphaMode};
 
@@ -44,17 +43,24 @@ inline constexpr FieldRange kEditCoordinate{-1.0e6, 1.0e6};
 inline constexpr FieldRange kEditLength{1.0e-6, 1.0e6};
 inline constexpr FieldRange kEditRadiometric{0.0, 1.0e6};
 
-inline bool isArea(const Light& l) { return l.type == LightType::Area; }
-inline bool isRectangle(const Light& l) { return l.shape == AreaShape::Rectangle; }
-inline bool isDisc(const Light& l) { return l.shape == AreaShape::Disc; }
-inline bool hasLods(const Object& o) { return !o.lods.empty(); }
+inline bool isArea(const Light& l) {
+    return l.type == LightType::Area;
+}
+inline bool isRectangle(const Light& l) {
+    return l.shape == AreaShape::Rectangle;
+}
+inline bool isDisc(const Light& l) {
+    return l.shape == AreaShape::Disc;
+}
+inline bool hasLods(const Object& o) {
+    return !o.lods.empty();
+}
 
 } // namespace fields
 
 // --- tables ---------------------------------------------------------------
 
-template <>
-struct FieldTable<Light> {
+template <> struct FieldTable<Light> {
     static constexpr auto fields = std::tuple{
         field<&Light::name>({.name = "name", .hashed = false}),
         field<&Light::type>({.name = "type", .description = "`area`: format version 2"}),
@@ -66,7 +72,8 @@ struct FieldTable<Light> {
         field<&Light::position>({.name = "position", .unit = "m", .editRange = fields::kEditCoordinate}),
         field<&Light::direction>(
             {.name = "direction",
-             .description = "the direction light travels; non-zero for directional and spot lights (`InvalidValue`)"}),
+             .description =
+                 "the direction light travels; non-zero for directional and spot lights (`InvalidValue`)"}),
         field<&Light::range>({.name = "range",
                               .range = kNonNegative,
                               .unit = "m",
@@ -86,14 +93,15 @@ struct FieldTable<Light> {
         field<&Light::castShadows>({.name = "castShadows"}),
         field<&Light::shape>(
             {.name = "shape", .description = "area lights only (required)", .applies = fields::isArea}),
-        field<&Light::size>({.name = "size",
-                             .range = kPositive,
-                             .unit = "m",
-                             .description = "area lights: width, height; required for a rectangle, kept for a disc",
-                             .applies = fields::isArea,
-                             .required = fields::isRectangle,
-                             .editRange = fields::kEditLength,
-                             .shape = "[w, h]"}),
+        field<&Light::size>(
+            {.name = "size",
+             .range = kPositive,
+             .unit = "m",
+             .description = "area lights: width, height; required for a rectangle, kept for a disc",
+             .applies = fields::isArea,
+             .required = fields::isRectangle,
+             .editRange = fields::kEditLength,
+             .shape = "[w, h]"}),
         field<&Light::tangent>({.name = "tangent",
                                 .description = "area lights: the rectangle's width axis, made orthogonal to "
                                                "`direction`; not zero and not along `direction` "
@@ -112,15 +120,15 @@ struct FieldTable<Light> {
                                                 "one-sided, as pbrt, Cycles and glTF)",
                                  .applies = fields::isArea}),
         field<&Light::unit>({.name = "unit",
-                             .description = "area lights (required): what `intensity` is, `radiance` (W/(m^2 sr) "
-                                            "leaving the emitting side) or `power` (W emitted in all; radiance = "
-                                            "power / (pi A sides))",
+                             .description =
+                                 "area lights (required): what `intensity` is, `radiance` (W/(m^2 sr) "
+                                 "leaving the emitting side) or `power` (W emitted in all; radiance = "
+                                 "power / (pi A sides))",
                              .applies = fields::isArea}),
     };
 };
 
-template <>
-struct FieldTable<Material> {
+template <> struct FieldTable<Material> {
     static constexpr auto fields = std::tuple{
         field<&Material::name>({.name = "name", .hashed = false}),
         field<&Material::shading>({.name = "shading"}),
@@ -130,7 +138,8 @@ struct FieldTable<Material> {
              .description = "path relative to the project file, `\"\"` = none (so every texture below)"}),
         field<&Material::normalTexture>({.name = "normalTexture"}),
         field<&Material::heightTexture>({.name = "heightTexture", .description = "bump map"}),
-        field<&Material::specularColor>({.name = "specularColor", .range = kNonNegative, .shape = "[r, g, b]"}),
+        field<&Material::specularColor>(
+            {.name = "specularColor", .range = kNonNegative, .shape = "[r, g, b]"}),
         field<&Material::specularTexture>({.name = "specularTexture"}),
         field<&Material::shininess>({.name = "shininess",
                                      .range = kNonNegative,
@@ -145,21 +154,24 @@ struct FieldTable<Material> {
         field<&Material::opacity>({.name = "opacity", .range = kUnitInterval}),
         field<&Material::alphaMode>({.name = "alphaMode"}),
         field<&Material::alphaCutoff>({.name = "alphaCutoff", .range = kUnitInterval}),
-        field<&Material::translucency>({.name = "translucency",
-                                        .range = kUnitInterval,
-                                        .description = "fraction of light that passes through (subsurface LPV)"}),
+        field<&Material::translucency>(
+            {.name = "translucency",
+             .range = kUnitInterval,
+             .description = "fraction of light that passes through (subsurface LPV)"}),
         field<&Material::glossiness>(
             {.name = "glossiness", .range = kUnitInterval, .description = "0 = diffuse, 1 = mirror"}),
         field<&Material::twoSided>(
             {.name = "twoSided",
-             .description = "kept from the source (4ds flag, glTF `doubleSided`); the renderer draws without "
-                            "culling and shades every face on the side it is seen from, as the reference path "
-                            "tracer does, so it does not change the image"}),
+             .description =
+                 "kept from the source (4ds flag, glTF `doubleSided`); the renderer draws without "
+                 "culling and shades every face on the side it is seen from, as the reference path "
+                 "tracer does, so it does not change the image"}),
         field<&Material::alphaTexture>(
             {.name = "alphaTexture", .description = "coverage map, red channel = alpha", .optional = true}),
         field<&Material::colorKey>({.name = "colorKey",
-                                    .description = "the diffuse map's key colour (first palette entry of an 8-bit "
-                                                   "map, else black) is transparent",
+                                    .description =
+                                        "the diffuse map's key colour (first palette entry of an 8-bit "
+                                        "map, else black) is transparent",
                                     .optional = true}),
         field<&Material::additive>(
             {.name = "additive", .description = "blended by adding (glows, flares)", .optional = true}),
@@ -172,25 +184,24 @@ struct FieldTable<Material> {
     };
 };
 
-template <>
-struct FieldTable<LodLevel> {
+template <> struct FieldTable<LodLevel> {
     static constexpr auto fields = std::tuple{
         field<&LodLevel::mesh>({.name = "mesh", .index = IndexOf::Meshes}),
         field<&LodLevel::distance>({.name = "distance", .range = kNonNegative, .unit = "m"}),
     };
 };
 
-template <>
-struct FieldTable<Object> {
+template <> struct FieldTable<Object> {
     static constexpr auto fields = std::tuple{
         field<&Object::name>({.name = "name", .hashed = false}),
         field<&Object::mesh>({.name = "mesh", .description = "-1 = none", .index = IndexOf::Meshes}),
         field<&Object::parent>({.name = "parent",
-                                .description = "-1 = root; parent chains must not loop (`InvalidValue`, which "
-                                               "names the loop; one of more than 11 objects by its first 8, its "
-                                               "last 2 and its length). Chains of any depth load, and world "
-                                               "matrices are computed, in time linear in the number of objects "
-                                               "(`worldMatrices`)",
+                                .description =
+                                    "-1 = root; parent chains must not loop (`InvalidValue`, which "
+                                    "names the loop; one of more than 11 objects by its first 8, its "
+                                    "last 2 and its length). Chains of any depth load, and world "
+                                    "matrices are computed, in time linear in the number of objects "
+                                    "(`worldMatrices`)",
                                 .index = IndexOf::Objects}),
         field<&Object::transform, &Transform::translation>(
             {.name = "translation", .description = "any finite", .editRange = fields::kEditCoordinate}),
@@ -202,16 +213,16 @@ struct FieldTable<Object> {
             {.name = "scale", .description = "any finite", .editRange = {0.001, 1.0e4}}),
         field<&Object::visible>({.name = "visible"}),
         field<&Object::lods>({.name = "lods",
-                              .description = "further levels of detail, each `{\"mesh\": index, \"distance\": "
-                                             "number >= 0}`; stored, not drawn yet; written when there are any",
+                              .description =
+                                  "further levels of detail, each `{\"mesh\": index, \"distance\": "
+                                  "number >= 0}`; stored, not drawn yet; written when there are any",
                               .optional = true,
                               .hashed = false,
                               .written = fields::hasLods}),
     };
 };
 
-template <>
-struct FieldTable<Camera> {
+template <> struct FieldTable<Camera> {
     static constexpr auto fields = std::tuple{
         field<&Camera::name>({.name = "name", .hashed = false}),
         field<&Camera::position>({.name = "position",
@@ -245,31 +256,32 @@ struct FieldTable<Camera> {
     };
 };
 
-template <>
-struct FieldTable<CameraKeyframe> {
+template <> struct FieldTable<CameraKeyframe> {
     static constexpr auto fields = std::tuple{
         field<&CameraKeyframe::time>(
             {.name = "time", .range = kNonNegative, .unit = "s", .description = "within a day (86,400 s)"}),
         field<&CameraKeyframe::position>({.name = "position", .unit = "m"}),
         field<&CameraKeyframe::orientation>(
             {.name = "orientation", .description = "not all zeros; normalised on playback"}),
-        field<&CameraKeyframe::fovY>({.name = "fovY", .range = {0.0, std::numbers::pi, true, true}, .unit = "rad"}),
+        field<&CameraKeyframe::fovY>(
+            {.name = "fovY", .range = {0.0, std::numbers::pi, true, true}, .unit = "rad"}),
     };
 };
 
-template <>
-struct FieldTable<CameraPath> {
+template <> struct FieldTable<CameraPath> {
     static constexpr auto fields = std::tuple{
         field<&CameraPath::name>({.name = "name", .hashed = false}),
         field<&CameraPath::keyframes>({.name = "keyframes",
-                                       .description = "sorted by time: equal times are allowed (a cut), an earlier "
-                                                      "time than the key before is `InvalidValue` at "
-                                                      "`cameraPaths[i].keyframes[k].time`",
+                                       .description =
+                                           "sorted by time: equal times are allowed (a cut), an earlier "
+                                           "time than the key before is `InvalidValue` at "
+                                           "`cameraPaths[i].keyframes[k].time`",
                                        .hashed = false}),
         field<&CameraPath::closed>({.name = "closed",
-                                    .description = "the path returns from the last key to the first, the closing "
-                                                   "segment lasting as long as the mean segment; default "
-                                                   "`false`, written always",
+                                    .description =
+                                        "the path returns from the last key to the first, the closing "
+                                        "segment lasting as long as the mean segment; default "
+                                        "`false`, written always",
                                     .optional = true}),
         field<&CameraPath::constantSpeed>({.name = "constantSpeed",
                                            .description = "time maps to distance along the path (constant "
@@ -279,8 +291,7 @@ struct FieldTable<CameraPath> {
     };
 };
 
-template <>
-struct FieldTable<Sky> {
+template <> struct FieldTable<Sky> {
     static constexpr auto fields = std::tuple{
         field<&Sky::color>({.name = "color", .range = kNonNegative, .shape = "[r, g, b]"}),
         field<&Sky::intensity>({.name = "intensity",
@@ -301,7 +312,9 @@ std::optional<ValueProblem> checkFieldRules(const Object& object);
 std::optional<ValueProblem> checkFieldRules(const Sky& sky);
 std::optional<ValueProblem> checkFieldRules(const CameraKeyframe& key);
 std::optional<ValueProblem> checkFieldRules(const CameraPath& path);
-inline std::optional<ValueProblem> checkFieldRules(const LodLevel&) { return std::nullopt; }
+inline std::optional<ValueProblem> checkFieldRules(const LodLevel&) {
+    return std::nullopt;
+}
 
 // What a field may take given the struct's other fields (the inner cone
 // within the outer one, far / near within kMaxDepthRatio): the editor's
