@@ -251,6 +251,7 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
         d.declareCameraTargets(frame);
         FrameState state{.frame = frame,
                          .graph = d.graph,
+                         .effects = d.frameEffects,
                          .sceneGeneration = d.sceneGeneration,
                          .depthPrepass = frame.params.getBool("output.depthPrepass"),
                          .radiosity = d.plan.radiosity,

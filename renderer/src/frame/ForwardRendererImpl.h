@@ -5,7 +5,7 @@
 // (PassTable.cpp) declare itself with its resources, then compiles and
 // executes the graph. Passes in their own files (FramePass.h) read the
 // frame's FrameState; the others are still declared here (FramePasses.cpp:
-// shadows, depth pre-pass, shading, sun rays, exposure, tonemap;
+// shadows, depth pre-pass, shading, exposure, tonemap;
 // IndirectPasses.cpp: RSMs, VPLs, sky height, subsurface).
 #include "passes/direct/AutoExposurePass.h"
 #include "passes/lpv/EmissiveVplBuffer.h"
@@ -22,7 +22,6 @@
 #include "passes/lpv/RsmPass.h"
 #include "passes/direct/ShadowPass.h"
 #include "passes/lpv/SkyHeightPass.h"
-#include "passes/direct/SunRaysPass.h"
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/ForwardRenderer.h"
@@ -64,7 +63,6 @@ struct ForwardRenderer::Impl {
     std::optional<LpvPass> lpv;
     // Passes that run only when the scene calls for them are created on
     // their first frame and dropped when culled: they hold no GPU memory then.
-    std::optional<SunRaysPass> sunRays;
     std::optional<AutoExposurePass> exposure; // its result stays on the GPU
     std::optional<SkyHeightPass> skyHeight;
     std::optional<LpvSkyInput> skyInput; // the height map skyHeight last rendered

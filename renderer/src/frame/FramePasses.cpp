@@ -1,6 +1,7 @@
-// The frame's direct-light passes as graph nodes: shadow maps, shading (the
-// forward pass that also writes the camera G-buffer), sun rays, exposure and
-// tonemapping, and the camera targets they share.
+// The frame's direct-light passes the renderer still declares itself: shadow
+// maps, the depth pre-pass, shading (the forward pass that also writes the
+// camera G-buffer), exposure and tonemapping, and the camera targets they
+// share. Sun rays declare themselves (passes/direct/SunRaysPass.cpp).
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/lpv/GlossyReflections.h"
@@ -357,29 +358,6 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
 }
 
 void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
-    // Sun rays: added to the HDR image through a half-resolution transient target.
-    frameEffects.push_back(decideSunRays(frame.scene, frame.params, &frame.camera, float(frame.width) / float(frame.height)));
-    {
-        graph.createResource(resources::SunRaysOcclusion, SunRaysPass::occlusionTarget(frame.width, frame.height),
-                             graph::Lifetime::Transient);
-        graph::PassSpec p;
-        p.id = Pass::SunRays;
-        p.decision = frameEffects.back();
-        p.reads = {resources::CameraDepth, resources::CameraHdr};
-        p.writes = {resources::CameraHdr, resources::SunRaysOcclusion};
-        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
-            if (!sunRays) {
-                auto created = SunRaysPass::create();
-                if (!created)
-                    return std::unexpected(created.error());
-                sunRays.emplace(std::move(*created));
-            }
-            sunRays->render(ctx.frame, ctx.id(resources::CameraDepth), ctx.id(resources::CameraHdr), ctx.id(resources::SunRaysOcclusion),
-                            *sunOf(ctx.frame.scene));
-            return {};
-        };
-        graph.addPass(std::move(p));
-    }
     const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
     if (!autoExposure)
         exposure->reset(); // back on auto, the exposure starts from its target

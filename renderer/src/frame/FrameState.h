@@ -9,6 +9,7 @@
 #include "passes/lpv/LpvStages.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace lpv::radiosity {
 struct BakedSolution;
@@ -19,6 +20,8 @@ namespace lpv::renderer {
 struct FrameState {
     const FrameContext& frame;
     graph::FrameGraph& graph;
+    // The frame's effect decisions with their reasons, as the editor and the CLI show them.
+    std::vector<EffectDecision>& effects;
     // Bumped on every scene change: part of every reuse key.
     std::uint64_t sceneGeneration = 0;
     // output.depthPrepass: the camera's depth is drawn before shading.

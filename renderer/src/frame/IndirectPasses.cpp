@@ -302,8 +302,6 @@ void ForwardRenderer::Impl::releaseCulled() {
     }
     if (!graph.produced(Pass::Subsurface))
         subsurface.reset();
-    if (!graph.produced(Pass::SunRays))
-        sunRays.reset();
     for (const std::unique_ptr<FramePass>& pass : passes)
         pass->releaseIfCulled(graph);
     if (!plan.lpvRuns)

@@ -6,6 +6,7 @@
 // IndirectPasses.cpp) and take their place through declaredByRenderer.
 #include "frame/ForwardRendererImpl.h"
 
+#include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/radiosity/RadiosityIndirectPass.h"
 
@@ -38,6 +39,7 @@ void ForwardRenderer::Impl::buildPassTable() {
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareDepthPrepass(s); }));
     passes.push_back(std::make_unique<RadiosityIndirectPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));
+    passes.push_back(std::make_unique<SunRaysPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declarePost(s.frame); }));
 }
 

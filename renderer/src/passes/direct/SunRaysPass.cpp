@@ -1,5 +1,7 @@
 #include "passes/direct/SunRaysPass.h"
 
+#include "frame/FrameResources.h"
+#include "frame/FrameState.h"
 #include "lpv/renderer/ShaderLibrary.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -23,18 +25,41 @@ GLint loc(GLuint program, const char* name) { return glGetUniformLocation(progra
 
 } // namespace
 
-Expected<SunRaysPass> SunRaysPass::create() {
-    SunRaysPass pass;
+scene::Expected<SunRaysPass::Gpu> SunRaysPass::createGpu() {
+    Gpu gpu;
     auto occlusion = buildEmbeddedProgram({"fullscreen.vert", "sun_occlusion.frag"});
     if (!occlusion)
         return std::unexpected(occlusion.error());
     auto rays = buildEmbeddedProgram({"fullscreen.vert", "sun_rays.frag"});
     if (!rays)
         return std::unexpected(rays.error());
-    pass.occlusionProgram_ = std::move(*occlusion);
-    pass.raysProgram_ = std::move(*rays);
-    pass.emptyVao_ = createVertexArray();
-    return pass;
+    gpu.occlusionProgram = std::move(*occlusion);
+    gpu.raysProgram = std::move(*rays);
+    gpu.emptyVao = createVertexArray();
+    return gpu;
+}
+
+void SunRaysPass::setup(graph::PassSpec& pass, FrameState& state) {
+    const FrameContext& frame = state.frame;
+    state.effects.push_back(
+        decideSunRays(frame.scene, frame.params, &frame.camera, float(frame.width) / float(frame.height)));
+    pass.decision = state.effects.back();
+    state.graph.createResource(resources::SunRaysOcclusion, occlusionTarget(frame.width, frame.height),
+                               graph::Lifetime::Transient);
+    pass.reads = {resources::CameraDepth, resources::CameraHdr};
+    pass.writes = {resources::CameraHdr, resources::SunRaysOcclusion};
+}
+
+scene::Expected<void> SunRaysPass::execute(graph::PassContext& ctx, FrameState&) {
+    if (!gpu_) {
+        auto created = createGpu();
+        if (!created)
+            return std::unexpected(created.error());
+        gpu_.emplace(std::move(*created));
+    }
+    render(ctx.frame, ctx.id(resources::CameraDepth), ctx.id(resources::CameraHdr), ctx.id(resources::SunRaysOcclusion),
+           *sunOf(ctx.frame.scene));
+    return {};
 }
 
 graph::ResourceDesc SunRaysPass::occlusionTarget(int width, int height) {
@@ -45,30 +70,32 @@ graph::ResourceDesc SunRaysPass::occlusionTarget(int width, int height) {
 }
 
 void SunRaysPass::ensureTargets(GLuint occlusion, GLuint hdrColor) {
+    Gpu& g = *gpu_;
     // Framebuffers around the graph's targets, rebuilt when the graph hands out others.
-    if (attachedOcclusion_ != occlusion) {
-        occlusionFbo_ = createFramebuffer();
-        glNamedFramebufferTexture(occlusionFbo_.id(), GL_COLOR_ATTACHMENT0, occlusion, 0);
-        attachedOcclusion_ = occlusion;
+    if (g.attachedOcclusion != occlusion) {
+        g.occlusionFbo = createFramebuffer();
+        glNamedFramebufferTexture(g.occlusionFbo.id(), GL_COLOR_ATTACHMENT0, occlusion, 0);
+        g.attachedOcclusion = occlusion;
     }
-    if (attachedHdr_ != hdrColor) {
-        hdrFbo_ = createFramebuffer();
-        glNamedFramebufferTexture(hdrFbo_.id(), GL_COLOR_ATTACHMENT0, hdrColor, 0);
-        attachedHdr_ = hdrColor;
+    if (g.attachedHdr != hdrColor) {
+        g.hdrFbo = createFramebuffer();
+        glNamedFramebufferTexture(g.hdrFbo.id(), GL_COLOR_ATTACHMENT0, hdrColor, 0);
+        g.attachedHdr = hdrColor;
     }
 }
 
 void SunRaysPass::render(const FrameContext& frame, GLuint depth, GLuint hdrColor, GLuint occlusion,
                          const scene::Light& sun) {
     ensureTargets(occlusion, hdrColor);
+    Gpu& g = *gpu_;
     const glm::vec3 towardSun = -glm::normalize(sun.direction);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-    glBindVertexArray(emptyVao_.id());
+    glBindVertexArray(g.emptyVao.id());
 
     // 1. Occlusion at half resolution.
-    const GLuint op = occlusionProgram_.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, occlusionFbo_.id());
+    const GLuint op = g.occlusionProgram.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, g.occlusionFbo.id());
     glViewport(0, 0, std::max(frame.width / 2, 1), std::max(frame.height / 2, 1));
     glDisable(GL_BLEND);
     glUseProgram(op);
@@ -85,8 +112,8 @@ void SunRaysPass::render(const FrameContext& frame, GLuint depth, GLuint hdrColo
     // 2. Radial blur towards the sun, added to the HDR colour.
     const glm::vec4 clip = frame.projection * glm::mat4(glm::mat3(frame.view)) * glm::vec4(towardSun, 1.0f);
     const glm::vec2 sunUv = glm::vec2(clip) / clip.w * 0.5f + 0.5f;
-    const GLuint rp = raysProgram_.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo_.id());
+    const GLuint rp = g.raysProgram.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, g.hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
