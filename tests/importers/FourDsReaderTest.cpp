@@ -4,6 +4,7 @@
 // code and byte offset; none crashes, none allocates for a count the file
 // cannot hold).
 #include "lpv/importers/FourDsReader.h"
+#include "TestFiles.h"
 
 #include "TestPaths.h"
 
@@ -30,6 +31,8 @@ inline void PrintTo(ErrorCode code, std::ostream* os) {
 
 namespace {
 
+using lpv::test::contains;
+
 namespace fs = std::filesystem;
 using lpv::importers::ImportOptions;
 using lpv::importers::ImportResult;
@@ -49,10 +52,6 @@ lpv::scene::Expected<ImportResult> readModel(const std::string& name, const Impo
     const Bytes bytes = readFile(file);
     EXPECT_FALSE(bytes.empty()) << file;
     return readFourDs(bytes, file, options);
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 std::size_t countWarnings(const ImportResult& r, const std::string& part) {

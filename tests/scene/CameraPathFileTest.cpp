@@ -2,6 +2,7 @@
 // input fails with its own error naming the field, and the CSV has one row
 // per frame.
 #include "ProjectTestSupport.h"
+#include "TestFiles.h"
 
 #include "lpv/scene/CameraPathFile.h"
 
@@ -16,10 +17,6 @@ using namespace lpv::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 CameraPath examplePath() {
     CameraPath p;

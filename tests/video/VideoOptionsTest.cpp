@@ -1,6 +1,7 @@
 // What renderVideo decides before it renders anything: output kind and
 // names, frame counts, and the option checks with their errors.
 #include "VideoTestSupport.h"
+#include "TestFiles.h"
 
 #include "lpv/video/VideoExport.h"
 
@@ -15,9 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using lpv::test::contains;
 
 VideoOptions smallOptions() {
     VideoOptions o;
