@@ -84,12 +84,7 @@ void CameraProperties::setCameraIndex(int index) {
 }
 
 void CameraProperties::edit(const QString& text, const std::function<void(scene::Camera&)>& change) {
-    const auto& cameras = doc_->scene().cameras;
-    if (index_ < 0 || std::size_t(index_) >= cameras.size())
-        return;
-    scene::Camera camera = cameras[std::size_t(index_)];
-    change(camera);
-    doc_->setCamera(index_, camera, text);
+    editElement(doc_, &scene::Scene::cameras, &Document::setCamera, index_, text, change);
 }
 
 void CameraProperties::refresh() {

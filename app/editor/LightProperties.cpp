@@ -177,12 +177,7 @@ void LightProperties::setLightIndex(int index) {
 }
 
 void LightProperties::edit(const QString& text, const std::function<void(scene::Light&)>& change) {
-    const auto& lights = doc_->scene().lights;
-    if (index_ < 0 || std::size_t(index_) >= lights.size())
-        return;
-    scene::Light light = lights[std::size_t(index_)];
-    change(light);
-    doc_->setLight(index_, light, text);
+    editElement(doc_, &scene::Scene::lights, &Document::setLight, index_, text, change);
 }
 
 void LightProperties::applyColor(const QColor& color) {

@@ -144,12 +144,7 @@ void MaterialProperties::setMaterialIndex(int index) {
 }
 
 void MaterialProperties::edit(const QString& text, const std::function<void(scene::Material&)>& change) {
-    const auto& materials = doc_->scene().materials;
-    if (index_ < 0 || std::size_t(index_) >= materials.size())
-        return;
-    scene::Material material = materials[std::size_t(index_)];
-    change(material);
-    doc_->setMaterial(index_, material, text);
+    editElement(doc_, &scene::Scene::materials, &Document::setMaterial, index_, text, change);
 }
 
 void MaterialProperties::applyDiffuseColor(const QColor& color) {

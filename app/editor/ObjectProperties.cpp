@@ -99,12 +99,7 @@ int ObjectProperties::chosenMaterial() const {
 }
 
 void ObjectProperties::edit(const QString& text, const std::function<void(scene::Object&)>& change) {
-    const auto& objects = doc_->scene().objects;
-    if (index_ < 0 || std::size_t(index_) >= objects.size())
-        return;
-    scene::Object object = objects[std::size_t(index_)];
-    change(object);
-    doc_->setObject(index_, object, text);
+    editElement(doc_, &scene::Scene::objects, &Document::setObject, index_, text, change);
 }
 
 void ObjectProperties::editRotation(int axis, double degrees) {

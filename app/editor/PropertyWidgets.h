@@ -6,13 +6,16 @@
 #include <QPushButton>
 #include <QWidget>
 
+#include "lpv/scene/Scene.h"
 #include "lpv/scene/SceneField.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <array>
+#include <functional>
 #include <utility>
+#include <vector>
 
 class QDoubleSpinBox;
 class QLineEdit;
@@ -51,6 +54,20 @@ QDoubleSpinBox* makeFieldSpinBox(const scene::Field<S, T>& field, int decimals, 
     return makeFieldSpinBox(field.name, field.widgetRange(), decimals, step, suffix, parent, shown);
 }
 void showText(QLineEdit* edit, const QString& text);
+
+// One edit of the selected element of a scene list (`doc->scene().*list`):
+// a copy changed by `change` and handed to the Document's setter, which makes
+// it one undo step; nothing when `index` selects no element.
+template <class Doc, class T>
+void editElement(Doc* doc, std::vector<T> scene::Scene::*list, void (Doc::*set)(int, const T&, const QString&),
+                 int index, const QString& text, const std::function<void(T&)>& change) {
+    const std::vector<T>& elements = doc->scene().*list;
+    if (index < 0 || std::size_t(index) >= elements.size())
+        return;
+    T element = elements[std::size_t(index)];
+    change(element);
+    (doc->*set)(index, element, text);
+}
 
 // Three spin boxes in a row (x, y, z) for positions, rotations and scales.
 class Vec3Edit : public QWidget {

@@ -63,19 +63,6 @@ std::optional<ValueProblem> checkFieldRules(const Camera& c) {
     return checkCamera(c);
 }
 
-std::optional<ValueProblem> checkFieldRules(const Material& m) {
-    return checkMaterial(m);
-}
-std::optional<ValueProblem> checkFieldRules(const Object& o) {
-    return checkObject(o);
-}
-std::optional<ValueProblem> checkFieldRules(const Sky& s) {
-    return checkSky(s);
-}
-std::optional<ValueProblem> checkFieldRules(const CameraKeyframe& k) {
-    return checkKeyframe(k);
-}
-
 // Playback interpolates between neighbours, which needs them in time order.
 std::optional<ValueProblem> checkFieldRules(const CameraPath& p) {
     for (std::size_t i = 1; i < p.keyframes.size(); ++i)

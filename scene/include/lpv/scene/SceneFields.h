@@ -304,16 +304,23 @@ template <> struct FieldTable<Sky> {
 // --- rules between fields ---------------------------------------------------
 
 // The rules that tie a struct's fields together, then its product checks
-// (ValueChecks.h): the first one broken. `field` names the JSON field.
+// (ValueChecks.h): the first one broken. `field` names the JSON field. The
+// structs without such rules have their product checks alone.
 std::optional<ValueProblem> checkFieldRules(const Light& light);
 std::optional<ValueProblem> checkFieldRules(const Camera& camera);
-std::optional<ValueProblem> checkFieldRules(const Material& material);
-std::optional<ValueProblem> checkFieldRules(const Object& object);
-std::optional<ValueProblem> checkFieldRules(const Sky& sky);
-std::optional<ValueProblem> checkFieldRules(const CameraKeyframe& key);
 std::optional<ValueProblem> checkFieldRules(const CameraPath& path);
-inline std::optional<ValueProblem> checkFieldRules(const LodLevel&) {
-    return std::nullopt;
+template <class S>
+std::optional<ValueProblem> checkFieldRules(const S& s) {
+    if constexpr (std::is_same_v<S, Material>)
+        return checkMaterial(s);
+    else if constexpr (std::is_same_v<S, Object>)
+        return checkObject(s);
+    else if constexpr (std::is_same_v<S, Sky>)
+        return checkSky(s);
+    else if constexpr (std::is_same_v<S, CameraKeyframe>)
+        return checkKeyframe(s);
+    else
+        return std::nullopt;
 }
 
 // What a field may take given the struct's other fields (the inner cone
