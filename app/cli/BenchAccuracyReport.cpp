@@ -124,26 +124,6 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
-std::string describeReference(const fs::path& file) {
-    auto ref = bench::readReferenceExr(file);
-    if (!ref)
-        return "unreadable";
-    return std::to_string(ref->image.width) + "x" + std::to_string(ref->image.height) + ", " +
-           std::to_string(ref->image.samplesPerPixel) + " spp in " + fixed(ref->image.seconds, 1) + " s";
-}
-
-// A patch size that meshes the scene into at most 150,000 patches: the
-// default 0.05 m^2 makes a million of Sibenik's (radiosity.maxPatches), and
-// coarse patches darken it (4 m^2: 0.58x the reference's light at residual
-// 0.1%, 1 m^2: 1.06x), so the finest size within the bound (0.8 m^2 on
-// Sibenik and Sponza).
-float reportPatchArea(const scene::Project& p) {
-    float area = p.parameters.getFloat("radiosity.maxPatchArea");
-    while (radiosity::countPatches(p.scene, {area}) > 150000 && area < 100.0f)
-        area *= 4.0f;
-    return area;
-}
-
 // Radiosity as a GI method beside the LPV (issue #27 item 5): the project's
 // own lights shoot, the solve runs to doubling wall times, and after each the
 // frame's indirect light (gi.method = radiosity) is measured like for like
@@ -175,7 +155,7 @@ void measureRadiosity(SceneReport& report, const fs::path& sceneDir, int width, 
         return;
     }
     report.radiosityNote = "the project's lights shoot, " + areaSet + ", ray-cast form factors; indirect light "
-                           "against an 8-bounce reference without sky, " + describeReference(ref);
+                           "against an 8-bounce reference without sky, " + bench::describeReferenceFile(ref);
     double solved = 0.0;
     bool restart = true;
     for (double target = 5.0; solved < maxSeconds - 1e-6; target = std::min(2.0 * target, maxSeconds)) {
@@ -322,7 +302,7 @@ int runWholeReport(const ReportOptions& o) {
             status = kFailure;
             continue;
         }
-        report.referenceNote = describeReference(plan->references[0].file) + ", " +
+        report.referenceNote = bench::describeReferenceFile(plan->references[0].file) + ", " +
                                std::to_string(plan->projectBounces) + " bounce" +
                                (plan->projectBounces == 1 ? "" : "s");
         for (const PlannedSweep& sweep : plan->sweeps) {

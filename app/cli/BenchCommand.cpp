@@ -105,18 +105,30 @@ struct ImportFigures {
     double importMs = 0, saveMs = 0, loadMs = 0;
 };
 
-scene::Expected<ImportFigures> benchOne(const fs::path& file, int repeat, const fs::path& scratch) {
-    ImportFigures f;
-    std::vector<double> imports, loads;
-    scene::Project project;
+// `repeat` runs of `step`, each timed in ms; the first error stops them.
+template <typename Step> scene::Expected<std::vector<double>> timedRuns(int repeat, Step step) {
+    std::vector<double> ms;
     for (int i = 0; i < repeat; ++i) {
         const auto start = Clock::now();
+        if (auto done = step(); !done)
+            return std::unexpected(done.error());
+        ms.push_back(msSince(start));
+    }
+    return ms;
+}
+
+scene::Expected<ImportFigures> benchOne(const fs::path& file, int repeat, const fs::path& scratch) {
+    ImportFigures f;
+    scene::Project project;
+    const auto imports = timedRuns(repeat, [&]() -> scene::Expected<void> {
         auto imported = importers::importScene(file);
         if (!imported)
             return std::unexpected(imported.error());
-        imports.push_back(msSince(start));
         project.scene = std::move(imported->scene);
-    }
+        return {};
+    });
+    if (!imports)
+        return std::unexpected(imports.error());
     f.triangles = project.scene.triangleCount();
     project.name = file.stem().string();
     const fs::path projectFile = scratch / (file.stem().string() + ".lpvproj");
@@ -126,15 +138,16 @@ scene::Expected<ImportFigures> benchOne(const fs::path& file, int repeat, const 
     if (auto saved = scene::saveProject(project, projectFile); !saved)
         return std::unexpected(saved.error());
     f.saveMs = msSince(saveStart);
-    for (int i = 0; i < repeat; ++i) {
-        const auto start = Clock::now();
+    const auto loads = timedRuns(repeat, [&]() -> scene::Expected<void> {
         auto loaded = scene::loadProject(projectFile);
         if (!loaded)
             return std::unexpected(loaded.error());
-        loads.push_back(msSince(start));
-    }
-    f.importMs = median(imports);
-    f.loadMs = median(loads);
+        return {};
+    });
+    if (!loads)
+        return std::unexpected(loads.error());
+    f.importMs = median(*imports);
+    f.loadMs = median(*loads);
     return f;
 }
 

@@ -103,9 +103,7 @@ with median, q1, q3, min, max, rounds and frames. Round options:
 }
 
 int benchLpv(Args args) {
-    RenderRequest request;
-    request.cameraName = args.option("--camera");
-    request.sets = args.options("--set");
+    RenderRequest request = renderRequestOptions(args);
     const auto csvFile = args.option("--csv");
     const auto markdownFile = args.option("--markdown");
     const int width = args.integer("--width", 1024, {1});

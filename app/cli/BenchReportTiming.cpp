@@ -21,23 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The scene's settings, each once: (the combination, every override it resolves to).
-std::vector<std::pair<std::vector<Setting>, scene::ParameterSet>> distinctSettings(const ScenePlan& plan,
-                                                                                const scene::ParameterSet& base) {
-    std::vector<std::pair<std::vector<Setting>, scene::ParameterSet>> out;
-    for (const PlannedSweep& sweep : plan.sweeps) {
-        const std::string key = sweep.sweep.substr(0, sweep.sweep.find('='));
-        for (const std::string& value : splitValues(sweep.sweep)) {
-            scene::ParameterSet p = base;
-            (void)p.setFromText(key, value, "report");
-            const bool seen = std::ranges::any_of(out, [&](const auto& s) { return bench::sameValues(s.second, p); });
-            if (!seen)
-                out.emplace_back(std::vector<Setting>{{key, value}}, p);
-        }
-    }
-    return out;
-}
-
 std::string timingCommand(const ScenePlan& plan, const ReportOptions& o) {
     return "lpv bench report (timing " + plan.project.string() + " --width " + std::to_string(o.width) +
            " --height " + std::to_string(o.height) + " --frames " + std::to_string(o.frames) + " --warmup " +

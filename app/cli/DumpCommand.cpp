@@ -85,9 +85,7 @@ int runDump(Args args) {
     const int height = args.integer("--height", 720, {1});
     const int frames = args.integer("--frames", 2, {1});
     const bool grey = args.flag("--grey");
-    RenderRequest request;
-    request.cameraName = args.option("--camera");
-    request.sets = args.options("--set");
+    RenderRequest request = renderRequestOptions(args);
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "dump");

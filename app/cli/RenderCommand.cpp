@@ -95,9 +95,7 @@ int runRender(Args args) {
     const auto dumpText = args.option("--dump");
     const bool explain = args.flag("--explain");
     const bool printGraph = args.flag("--graph");
-    RenderRequest request;
-    request.cameraName = args.option("--camera");
-    request.sets = args.options("--set");
+    RenderRequest request = renderRequestOptions(args);
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "render");

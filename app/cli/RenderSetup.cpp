@@ -111,6 +111,13 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
     return setup;
 }
 
+RenderRequest renderRequestOptions(Args& args) {
+    RenderRequest request;
+    request.cameraName = args.option("--camera");
+    request.sets = args.options("--set");
+    return request;
+}
+
 bool sweepShowsBakedRadiosity(const std::vector<std::vector<bench::Setting>>& combinations) {
     for (const auto& combination : combinations)
         for (const auto& [key, value] : combination)

@@ -2,6 +2,8 @@
 // What `lpv render` and `lpv bench render` share: load a project, apply
 // --set overrides, pick the camera, open a headless GL context and create
 // the renderer with the scene uploaded.
+#include "Args.h"
+
 #include "lpv/bench/Settings.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlContext.h"
@@ -28,6 +30,9 @@ struct RenderRequest {
     // `sets`) is not radiosity: a swept --set shows it in some images.
     bool bakedRadiosity = false;
 };
+
+// --camera NAME and every --set KEY=VALUE, the options every rendering command takes.
+RenderRequest renderRequestOptions(Args& args);
 
 // Whether some combination of a sweep sets gi.method = radiosity.
 bool sweepShowsBakedRadiosity(const std::vector<std::vector<bench::Setting>>& combinations);

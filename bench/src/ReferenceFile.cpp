@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 
 namespace lpv::bench {
 
@@ -69,6 +70,16 @@ scene::Expected<LoadedReference> readReferenceExr(const std::filesystem::path& f
 
 std::optional<int> LoadedReference::bounces() const {
     return headerNumber<int>(attributes, "lpv:bounces");
+}
+
+std::string describeReferenceFile(const std::filesystem::path& file) {
+    const auto ref = readReferenceExr(file);
+    if (!ref)
+        return "unreadable";
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f", ref->image.seconds);
+    return std::to_string(ref->image.width) + "x" + std::to_string(ref->image.height) + ", " +
+           std::to_string(ref->image.samplesPerPixel) + " spp in " + seconds + " s";
 }
 
 scene::Expected<RgbImage> readRgbExr(const std::filesystem::path& file) {

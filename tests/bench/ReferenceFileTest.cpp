@@ -55,6 +55,8 @@ TEST(ReferenceFile, WrittenAndReadBackIsTheSameImageWithItsHeaderNumbers) {
     EXPECT_EQ(loaded->image.indirectMulti, image.indirectMulti);
     EXPECT_EQ(loaded->image.indirectMultiVariance, image.indirectMultiVariance);
     EXPECT_EQ(loaded->image.coverage, image.coverage);
+    EXPECT_EQ(bench::describeReferenceFile(file), "3x2, 64 spp in 2.5 s");
+    EXPECT_EQ(bench::describeReferenceFile(file.parent_path() / "missing.exr"), "unreadable");
 }
 
 TEST(ReferenceFile, HeaderNumbersThatAreNotNumbersReadAsAbsent) {

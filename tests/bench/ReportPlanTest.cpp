@@ -6,6 +6,8 @@
 #include "lpv/bench/ReportPlan.h"
 #include "lpv/bench/ReferenceFile.h"
 #include "lpv/bench/ReportShards.h"
+#include "lpv/bench/SavedSweep.h"
+#include "lpv/scene/CornellBox.h"
 
 #include "TestPaths.h"
 
@@ -120,6 +122,33 @@ TEST(ReportPlan, QuickAndChosenQuestionsPlanOnlyThoseSweeps) {
     ASSERT_EQ(plan->sweeps.size(), 1u);
     EXPECT_EQ(plan->sweeps[0].sweep, "lpv.propagationSteps=0,4,16");
     EXPECT_EQ(plan->references.size(), 1u);
+}
+
+TEST(ReportPlan, EverySweptSettingIsTimedOnce) {
+    ReportOptions o = withCornellProject("distinct");
+    o.questions = {"steps", "occlusion"};
+    const auto plan = planScene(cornell(), o);
+    ASSERT_TRUE(plan) << plan.error().describe();
+    const auto settings = distinctSettings(*plan, plan->current);
+    // steps 0,1,2,4,8,...,64 and occlusion false,true: where both sweeps hold
+    // the project's own value, the project's setting is one, not two.
+    const auto steps = splitValues(plan->sweeps[0].sweep);
+    const bool projectStepsSwept =
+        std::ranges::find(steps, std::to_string(plan->current.getInt("lpv.propagationSteps"))) != steps.end();
+    EXPECT_EQ(settings.size(), steps.size() + 2 - (projectStepsSwept ? 1 : 0));
+    for (std::size_t i = 0; i < settings.size(); ++i)
+        for (std::size_t j = i + 1; j < settings.size(); ++j)
+            EXPECT_FALSE(bench::sameValues(settings[i].second, settings[j].second)) << i << " and " << j;
+}
+
+TEST(ReportPlan, RadiosityPatchesAreCoarsenedOnlyForALargeScene) {
+    scene::Project cornellBox = scene::makeCornellBoxProject();
+    const float area = cornellBox.parameters.getFloat("radiosity.maxPatchArea");
+    EXPECT_FLOAT_EQ(reportPatchArea(cornellBox), area) << "the Cornell box meshes finely at its own size";
+    // The same box 100x larger: 10^4 times the patches at the project's size.
+    for (scene::Object& object : cornellBox.scene.objects)
+        object.transform.scale *= 100.0f;
+    EXPECT_GT(reportPatchArea(cornellBox), area);
 }
 
 TEST(ReportPlan, AScenesPlanNeedsItsProject) {

@@ -8,6 +8,8 @@
 #include "lpv/radiosity/SolveLoop.h"
 #include "lpv/scene/CornellBox.h"
 
+#include "TestFiles.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,7 @@
 #include <sstream>
 
 using namespace lpv;
+using lpv::test::freshTempDir;
 namespace fs = std::filesystem;
 
 namespace {
@@ -156,9 +159,7 @@ TEST(SweepGL, TheFilesOfASweepNameEveryRun) {
     spec.combinations = {{{"lpv.occlusion", "false"}}, {{"lpv.occlusion", "true"}}};
     auto result = bench::runSweep(spec, c.reference);
     ASSERT_TRUE(result.has_value()) << result.error().describe();
-    const fs::path dir = fs::temp_directory_path() / ("lpv-bench-files-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("bench-files");
     auto written = bench::writeSweepOutputs(dir, result->runs, kWidth, kHeight, "test", "machine", c.reference);
     ASSERT_TRUE(written.has_value()) << written.error().describe();
     for (const char* name : {"sweep.csv", "sweep.json", "sweep.md", "error-time.png", "error-memory.png", "crops.png",

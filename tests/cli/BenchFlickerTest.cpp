@@ -32,9 +32,7 @@ std::vector<double> flickerColumn(const std::string& csv) {
 class BenchFlicker : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("lpv-bench-flicker-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = freshTempDir("bench-flicker");
         project_ = dir_ / "box.lpvproj";
         const RunResult imported =
             runLpv("import '" + (fs::path(kSharedScenesDir) / "gltf-small/Box/glTF/Box.gltf").string() +

@@ -23,9 +23,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 TEST(BenchLpv, WritesTheThesisTablesForEveryVariant) {
-    const fs::path dir = fs::temp_directory_path() / ("lpv-bench-lpv-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("bench-lpv");
     const fs::path project = dir / "box.lpvproj";
     const RunResult imported =
         runLpv("import '" + (fs::path(kSharedScenesDir) / "gltf-small/Box/glTF/Box.gltf").string() + "' -o '" +

@@ -18,13 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-concurrent" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 // One triangle in an object named `name`, at height `z`.
 fs::path writeTriangle(const fs::path& dir, const std::string& name, int z) {
     const fs::path file = dir / (name + ".obj");
@@ -48,7 +41,7 @@ const std::string kLost = "was written by another process while this import ran;
 // to the first's project) or one finds the project changed and says it
 // lost; never a project that does not load, never a silent loss.
 TEST(ConcurrentImport, TwoImportsToOneProjectEndWithOneCompleteProject) {
-    const fs::path dir = freshDir("two-imports");
+    const fs::path dir = freshBuildDir("cli-concurrent", "two-imports");
     const fs::path a = writeTriangle(dir, "alpha", 0);
     const fs::path b = writeTriangle(dir, "beta", 5);
     for (int round = 0; round < 5; ++round) {

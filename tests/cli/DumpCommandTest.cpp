@@ -21,9 +21,7 @@ namespace {
 class DumpCommand : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
-        dir_ = fs::temp_directory_path() / ("lpv-dump-viz-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = freshTempDir("dump-viz");
         lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
         lpv::scene::Light sun;
         sun.name = "sun";

@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-full-disk" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 // Runs `command` with a one-page tmpfs on `disk`, filled to the last byte
 // by the file `fill`; prints "rc=N" and then every path left on the disk.
 std::optional<std::string> onFullDisk(const fs::path& disk, const std::string& command) {
@@ -52,7 +45,7 @@ const std::string kSkip = "no small tmpfs here (needs `unshare -rm` and tmpfs mo
 } // namespace
 
 TEST(FullDiskOutput, RenderFailsAndLeavesNoImage) {
-    const fs::path disk = freshDir("render") / "disk";
+    const fs::path disk = freshBuildDir("cli-full-disk", "render") / "disk";
     const auto out = onFullDisk(disk, std::string(kLpvExecutable) + " render " + cornellProject() + " -o " +
                                           quoted(disk / "out.png") + " --width 32 --height 32 --frames 1");
     if (!out)
@@ -61,7 +54,7 @@ TEST(FullDiskOutput, RenderFailsAndLeavesNoImage) {
 }
 
 TEST(FullDiskOutput, CompareFailsAndLeavesNoFlipMap) {
-    const fs::path dir = freshDir("compare");
+    const fs::path dir = freshBuildDir("cli-full-disk", "compare");
     const RunResult made = runLpv("render " + cornellProject() + " -o " + quoted(dir / "a.png") +
                                   " --width 32 --height 32 --frames 1");
     ASSERT_EQ(made.exitCode, 0) << made.output;
@@ -74,7 +67,7 @@ TEST(FullDiskOutput, CompareFailsAndLeavesNoFlipMap) {
 }
 
 TEST(FullDiskOutput, PathExportFailsAndLeavesNoFile) {
-    const fs::path dir = freshDir("path-export");
+    const fs::path dir = freshBuildDir("cli-full-disk", "path-export");
     lpv::scene::Project project;
     project.name = "p";
     project.scene.cameraPaths.push_back({"orbit", {{0.0f, {0, 0, 5}}, {2.0f, {5, 0, 0}}}, false, false});
@@ -90,7 +83,7 @@ TEST(FullDiskOutput, PathExportFailsAndLeavesNoFile) {
 }
 
 TEST(FullDiskOutput, VideoFailsAndLeavesNoMovieNorFrames) {
-    const fs::path dir = freshDir("video");
+    const fs::path dir = freshBuildDir("cli-full-disk", "video");
     auto project = lpv::scene::loadProject(cornellProject());
     ASSERT_TRUE(project) << project.error().describe();
     project->scene.cameraPaths.push_back(

@@ -188,9 +188,7 @@ TEST(HardValuesImport, AssimpCameraAnimationModelsImportWithASun) {
     if (!fs::exists(models / "CameraRollAnim.3ds"))
         GTEST_SKIP() << "assimp-testmodels is not installed (" << models.string()
                      << "): apt-get install assimp-testmodels";
-    const fs::path dir = fs::temp_directory_path() / ("lpv-cli-3ds-cameras-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = freshTempDir("cli-3ds-cameras");
     for (const char* name : {"CameraRollAnim", "TargetCameraAnim", "CameraRollAnimWithChildObject"}) {
         const fs::path out = dir / (std::string(name) + ".lpvproj");
         const auto start = std::chrono::steady_clock::now();

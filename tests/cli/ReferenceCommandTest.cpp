@@ -31,9 +31,7 @@ double jsonNumber(const std::string& json, const std::string& key) {
 class ReferenceCommand : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
-        dir_ = fs::temp_directory_path() / ("lpv-reference-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        dir_ = freshTempDir("reference");
         // The built-in box has only its ceiling spot; the LPV injects sunlight,
         // so a sun shines in through the open front, down onto the floor.
         auto project = lpv::scene::loadProject(cornellProject());

@@ -27,13 +27,6 @@ std::set<std::string> listAll(const fs::path& root) {
 }
 
 // A fresh folder for one test.
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-save-cleanup" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 // One textured triangle: quad.obj, quad.mtl and an 8 KiB tex.png (a 1x1 PNG
 // padded after its end, exactly two pages of a tmpfs).
 fs::path writeTexturedObj(const fs::path& dir) {
@@ -74,7 +67,7 @@ const std::string kCoarse = " --set radiosity.maxPatchArea=0.5 --residual 0.3 --
 // A file where the mesh folder must go: the textures were copied, then the
 // save failed; the copies go again (they were left behind).
 TEST(SaveCleanupCommand, AnImportWhoseSaveFailsTakesBackTheTexturesItCopied) {
-    const fs::path dir = freshDir("import-structural");
+    const fs::path dir = freshBuildDir("cli-save-cleanup", "import-structural");
     const fs::path obj = writeTexturedObj(dir);
     fs::create_directories(dir / "out" / "p.assets");
     std::ofstream(dir / "out" / "p.assets" / "meshes") << "in the way";
@@ -88,7 +81,7 @@ TEST(SaveCleanupCommand, AnImportWhoseSaveFailsTakesBackTheTexturesItCopied) {
 
 // A real full disk: room for the texture copy (two pages), none for the mesh.
 TEST(SaveCleanupCommand, AnImportOnAFullDiskLeavesNothing) {
-    const fs::path dir = freshDir("import-full");
+    const fs::path dir = freshBuildDir("cli-save-cleanup", "import-full");
     const fs::path obj = writeTexturedObj(dir);
     const fs::path disk = dir / "disk";
     const auto out = onSmallDisk(disk, "8k",
@@ -105,7 +98,7 @@ TEST(SaveCleanupCommand, AnImportOnAFullDiskLeavesNothing) {
 // failure writing it leaves no project (the project used to be written
 // first and stay without its solution).
 TEST(SaveCleanupCommand, RadiosityWritesTheSolutionBeforeTheProject) {
-    const fs::path dir = freshDir("radiosity-solution-fails");
+    const fs::path dir = freshBuildDir("cli-save-cleanup", "radiosity-solution-fails");
     fs::create_directories(dir / "q.assets" / "radiosity.lpvrad" / "in the way");
     const RunResult r =
         runLpv("radiosity " + cornellProject() + kCoarse + " -o " + quoted(dir / "q.lpvproj"));
@@ -118,7 +111,7 @@ TEST(SaveCleanupCommand, RadiosityWritesTheSolutionBeforeTheProject) {
 // The project cannot be written (a folder has its name): the solution
 // written before it goes again, with the folders made for it.
 TEST(SaveCleanupCommand, RadiosityTakesBackTheSolutionWhenTheProjectCannotBeSaved) {
-    const fs::path dir = freshDir("radiosity-project-fails");
+    const fs::path dir = freshBuildDir("cli-save-cleanup", "radiosity-project-fails");
     fs::create_directories(dir / "q.lpvproj" / "in the way");
     const RunResult r =
         runLpv("radiosity " + cornellProject() + kCoarse + " -o " + quoted(dir / "q.lpvproj"));
@@ -131,7 +124,7 @@ TEST(SaveCleanupCommand, RadiosityTakesBackTheSolutionWhenTheProjectCannotBeSave
 // its meshes after it do not. Before, the project and meshes (about 12 KB)
 // were written, the solution failed, and the project stayed without it.
 TEST(SaveCleanupCommand, RadiosityOnAFullDiskLeavesNothing) {
-    const fs::path dir = freshDir("radiosity-full");
+    const fs::path dir = freshBuildDir("cli-save-cleanup", "radiosity-full");
     const fs::path disk = dir / "disk";
     const auto out = onSmallDisk(disk, "56k",
                                  std::string(kLpvExecutable) + " radiosity " + cornellProject() + kCoarse +

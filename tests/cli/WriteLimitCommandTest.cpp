@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::path(kBinaryDir) / "tests" / "cli-write-limits" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 // An OBJ of one triangle whose library defines `materials` materials.
 fs::path writeObjWithMaterials(const fs::path& dir, int materials) {
     std::ofstream mtl(dir / "many.mtl");
@@ -34,7 +27,7 @@ fs::path writeObjWithMaterials(const fs::path& dir, int materials) {
 } // namespace
 
 TEST(WriteLimitCommand, AnImportOfMoreMaterialsThanAProjectHoldsIsRefused) {
-    const fs::path dir = freshDir("materials");
+    const fs::path dir = freshBuildDir("cli-write-limits", "materials");
     // With the default material Assimp adds, one more than a project holds.
     const fs::path obj = writeObjWithMaterials(dir, 16384);
     const RunResult r = runLpv("import " + quoted(obj) + " --no-sun -o " + quoted(dir / "out" / "p.lpvproj"));
@@ -48,7 +41,7 @@ TEST(WriteLimitCommand, AnImportOfMoreMaterialsThanAProjectHoldsIsRefused) {
 }
 
 TEST(WriteLimitCommand, AnImportOfAsManyMaterialsAsAProjectHoldsImportsAndLoads) {
-    const fs::path dir = freshDir("materials-at-limit");
+    const fs::path dir = freshBuildDir("cli-write-limits", "materials-at-limit");
     const fs::path obj = writeObjWithMaterials(dir, 16383);
     const fs::path project = dir / "p.lpvproj";
     const RunResult r = runLpv("import " + quoted(obj) + " --no-sun -o " + quoted(project));

@@ -49,11 +49,12 @@ inline std::string readText(const std::filesystem::path& file) {
     return text.str();
 }
 
-// An empty folder of the system's temporary ones, named for the test and
-// this process so that parallel runs never share one.
-inline std::filesystem::path freshTempDir(const std::string& prefix, const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("lpv-" + prefix + "-" + name + "-" + std::to_string(::getpid()));
+// An empty folder of the system's temporary ones, lpv-PREFIX[-NAME]-PID:
+// named for the test and this process, so that parallel runs never share one.
+inline std::filesystem::path freshTempDir(const std::string& prefix, const std::string& name = "") {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() /
+        ("lpv-" + prefix + (name.empty() ? "" : "-" + name) + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -34,6 +34,9 @@ struct LoadedReference {
 };
 scene::Expected<LoadedReference> readReferenceExr(const std::filesystem::path& file);
 
+// "320x180, 4096 spp in 61.2 s", or "unreadable": a reference as a report names it.
+std::string describeReferenceFile(const std::filesystem::path& file);
+
 // An RGB float image (the first three channels R, G, B of any EXR), plus the
 // header's "lpv:outputView" when `lpv render` wrote it.
 struct RgbImage {

@@ -7,13 +7,16 @@
 // cluster as shards and a coordinator (docs/cluster.md).
 #include "lpv/bench/Questions.h"
 #include "lpv/bench/ReferenceFile.h"
+#include "lpv/bench/Settings.h"
 #include "lpv/bench/Timing.h"
 #include "lpv/scene/Error.h"
 #include "lpv/scene/ParameterRegistry.h"
+#include "lpv/scene/Project.h"
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lpv::bench::report {
@@ -79,6 +82,17 @@ std::filesystem::path timingFileOf(const ScenePlan& plan);
 
 // "lpv.bounces=1,2,3" -> {"1", "2", "3"}.
 std::vector<std::string> splitValues(const std::string& sweep);
+
+// Every setting the scene's sweeps render, each once, on top of `base` (the
+// project's parameters): the swept value and every override it resolves to.
+// The report times these together, once, for all its questions.
+std::vector<std::pair<std::vector<Setting>, scene::ParameterSet>> distinctSettings(const ScenePlan& plan,
+                                                                                const scene::ParameterSet& base);
+
+// The radiosity patch size the report solves with: the project's
+// radiosity.maxPatchArea, coarsened (x4 at a time) until the scene meshes
+// into at most 150,000 patches.
+float reportPatchArea(const scene::Project& project);
 
 // A reference traced earlier with the same size and bounce count (0: any)
 // and at least `spp` samples is reused.
