@@ -152,7 +152,8 @@ std::string ForwardRenderer::lpvNote() const {
 const LpvFit& ForwardRenderer::lpvFit() const { return impl_->lpvFit; }
 const LpvDelivery& ForwardRenderer::lpvDelivery() const { return impl_->lpvDelivery; }
 std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
-    return impl_->subsurface ? impl_->subsurface->allocatedBytes() : 0;
+    const LpvSubsurfacePass* volume = impl_->subsurface->volume();
+    return volume ? volume->allocatedBytes() : 0;
 }
 GpuMemory ForwardRenderer::gpuMemory() const {
     const Impl& m = *impl_;
@@ -176,12 +177,11 @@ GpuMemory ForwardRenderer::gpuMemory() const {
     }
     if (m.lpv)
         m.lpv->addGpuMemory(ledger);
-    if (m.subsurface)
-        m.subsurface->addGpuMemory(ledger);
-    if (m.exposure)
-        m.exposure->addGpuMemory(ledger);
+    // The passes of the table that own GL objects (subsurface, radiosityIndirect).
     for (const std::unique_ptr<FramePass>& pass : m.passes)
         pass->addGpuMemory(ledger);
+    if (m.exposure)
+        m.exposure->addGpuMemory(ledger);
     ledger.addBuffer("shading.ltcTable", m.ltcTable.id());
     // Then every resource the frame graph declared: its own targets and what the passes imported.
     for (const std::string& name : m.graph.resourceNames())
@@ -257,7 +257,8 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
                          .radiosity = d.plan.radiosity,
                          .baked = d.baked.get(),
                          .bakedGeneration = d.bakedGeneration,
-                         .lpv = d.lpvStageInputs(frame)};
+                         .lpv = d.lpvStageInputs(frame),
+                         .subsurface = d.plan.sss};
         for (const std::unique_ptr<FramePass>& pass : d.passes)
             pass->addTo(state);
         if (auto ok = d.graph.compile(d.frameParams, params.getBool("lpv.reuse")); !ok)

@@ -6,7 +6,7 @@
 // executes the graph. Passes in their own files (FramePass.h) read the
 // frame's FrameState; the others are still declared here (FramePasses.cpp:
 // shadows, depth pre-pass, shading, exposure, tonemap;
-// IndirectPasses.cpp: RSMs, VPLs, sky height, subsurface).
+// IndirectPasses.cpp: RSMs, VPLs, sky height).
 #include "passes/direct/AutoExposurePass.h"
 #include "passes/lpv/EmissiveVplBuffer.h"
 #include "frame/FrameContext.h"
@@ -15,7 +15,7 @@
 #include "frame/FrameResources.h"
 #include "passes/lpv/LocalRsmPass.h"
 #include "passes/lpv/LpvPass.h"
-#include "passes/lpv/LpvSubsurfacePass.h"
+#include "passes/lpv/SubsurfaceFramePass.h"
 #include "scenegpu/MaterialGpu.h"
 #include "gl/ProgramCache.h"
 #include "scenegpu/RenderSpace.h"
@@ -66,7 +66,7 @@ struct ForwardRenderer::Impl {
     std::optional<AutoExposurePass> exposure; // its result stays on the GPU
     std::optional<SkyHeightPass> skyHeight;
     std::optional<LpvSkyInput> skyInput; // the height map skyHeight last rendered
-    std::optional<LpvSubsurfacePass> subsurface;
+    const SubsurfaceFramePass* subsurface = nullptr; // in `passes`: shading samples its volume
     std::optional<LocalRsmPass> localRsm;
     std::optional<EmissiveVplBuffer> emissiveVpls;
     // gi.method = radiosity: the solution given (setBakedRadiosity), and a
@@ -160,7 +160,6 @@ struct ForwardRenderer::Impl {
     // The plan as the LPV's stages read it.
     LpvStageInputs lpvStageInputs(const FrameContext& frame);
     void declareLightSources(const FrameContext& frame);
-    void declareSubsurface(const FrameState& state);
     // Passes the graph culled free what they hold.
     void releaseCulled();
     LpvRsmInput rsmInput(const FrameContext& frame) const;

@@ -296,7 +296,7 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
     // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
     const bool radiosity = plan.radiosity.runs();
     const CachedProgram& shader =
-        forwardVariant(frame, afterPrepass, glossyRuns, subsurface && lpv->active(), radiosity);
+        forwardVariant(frame, afterPrepass, glossyRuns, subsurface->volume() && lpv->active(), radiosity);
     const GLuint fp = shader.id();
     glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
     glViewport(0, 0, frame.width, frame.height);
@@ -324,8 +324,8 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
     const UnitAllocator nextUnit = [&ctx] { return ctx.allocateUnit(); };
     shadows->bindForShading(shader, frame, nextUnit);
     lpv->bindForShading(shader, frame.params, nextUnit);
-    if (subsurface && lpv->active())
-        subsurface->bindForShading(shader, ctx.allocateUnit());
+    if (subsurface->volume() && lpv->active())
+        subsurface->volume()->bindForShading(shader, ctx.allocateUnit());
     else if (subsurfaceSampler)
         LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
     bindGlossyReflections(shader, frame.params, glossyRuns);

@@ -30,8 +30,9 @@ struct FrameState {
     EffectDecision radiosity;
     const radiosity::BakedSolution* baked = nullptr;
     std::uint64_t bakedGeneration = 0;
-    // The LPV's stages (LpvStages.h).
+    // The LPV's stages (LpvStages.h), and the subsurface LPV's decision.
     LpvStageInputs lpv;
+    EffectDecision subsurface;
 };
 
 } // namespace lpv::renderer

@@ -1,9 +1,9 @@
 // The indirect light: planIndirect() decides what the scene calls for (each
 // decision with its reason) and lpvStageInputs() hands that plan to the
-// LPV's stages (passes/lpv/LpvStages.h). The passes not yet in their own
-// files are declared here: the sun's RSM, the local lights' RSMs, the
-// emissive VPLs, the sky's height map (declareLightSources) and the
-// subsurface LPV (declareSubsurface).
+// LPV's stages (passes/lpv/LpvStages.h) and the subsurface LPV
+// (SubsurfaceFramePass). The passes not yet in their own files are declared
+// here: the sun's RSM, the local lights' RSMs, the emissive VPLs and the
+// sky's height map (declareLightSources).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -263,32 +263,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
     }
 }
 
-void ForwardRenderer::Impl::declareSubsurface(const FrameState& state) {
-    const bool lpvRuns = plan.lpvRuns;
-    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
-    // --- The subsurface LPV, fed by the sun's RSM (its translucent texels) ---
-    importTexture(graph, resources::SubsurfaceAccumulator, [this] { return subsurface ? subsurface->accumulatorTexture() : 0u; });
-    {
-        graph::PassSpec p;
-        p.id = Pass::Subsurface;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.sss;
-        p.reads = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux, resources::LpvVolumes};
-        p.writes = {resources::SubsurfaceAccumulator};
-        p.inputsKey = state.lpv.key;
-        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
-            if (!subsurface) {
-                auto created = LpvSubsurfacePass::create();
-                if (!created)
-                    return std::unexpected(created.error());
-                subsurface.emplace(std::move(*created));
-            }
-            subsurface->run(LpvSubsurfaceSettings::fromParameters(ctx.frame.params), *lpv, rsmInput(ctx.frame));
-            return {};
-        };
-        graph.addPass(std::move(p));
-    }
-}
-
 void ForwardRenderer::Impl::releaseCulled() {
     if (!graph.produced(Pass::Rsm))
         rsm->release();
@@ -300,8 +274,6 @@ void ForwardRenderer::Impl::releaseCulled() {
         skyHeight.reset();
         skyInput.reset();
     }
-    if (!graph.produced(Pass::Subsurface))
-        subsurface.reset();
     for (const std::unique_ptr<FramePass>& pass : passes)
         pass->releaseIfCulled(graph);
     if (!plan.lpvRuns)

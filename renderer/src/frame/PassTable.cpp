@@ -8,6 +8,7 @@
 
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/LpvStages.h"
+#include "passes/lpv/SubsurfaceFramePass.h"
 #include "passes/radiosity/RadiosityIndirectPass.h"
 
 namespace lpv::renderer {
@@ -24,6 +25,13 @@ class DeclaredByRenderer final : public FramePass {
     std::function<void(FrameState&)> declare_;
 };
 
+// Adds `pass` to the table and returns it, for the renderer to keep a typed view of.
+template <typename Pass> Pass& add(std::vector<std::unique_ptr<FramePass>>& table, std::unique_ptr<Pass> pass) {
+    Pass& added = *pass;
+    table.push_back(std::move(pass));
+    return added;
+}
+
 std::unique_ptr<FramePass> declaredByRenderer(std::function<void(FrameState&)> declare) {
     return std::make_unique<DeclaredByRenderer>(std::move(declare));
 }
@@ -35,7 +43,7 @@ void ForwardRenderer::Impl::buildPassTable() {
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
         passes.push_back(std::move(stage));
-    passes.push_back(declaredByRenderer([this](FrameState& s) { declareSubsurface(s); }));
+    subsurface = &add(passes, std::make_unique<SubsurfaceFramePass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareDepthPrepass(s); }));
     passes.push_back(std::make_unique<RadiosityIndirectPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));

@@ -1,0 +1,33 @@
+#include "passes/lpv/SubsurfaceFramePass.h"
+
+#include "frame/FrameResources.h"
+#include "frame/FrameState.h"
+
+namespace lpv::renderer {
+
+void SubsurfaceFramePass::setup(graph::PassSpec& pass, FrameState& state) {
+    importTexture(state.graph, resources::SubsurfaceAccumulator,
+                  [this] { return gpu_ ? gpu_->accumulatorTexture() : 0u; });
+    pass.decision = !state.lpv.runs ? state.lpv.off() : state.subsurface;
+    pass.reads = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux, resources::LpvVolumes};
+    pass.writes = {resources::SubsurfaceAccumulator};
+    pass.inputsKey = state.lpv.key;
+}
+
+scene::Expected<void> SubsurfaceFramePass::execute(graph::PassContext& ctx, FrameState& state) {
+    if (!gpu_) {
+        auto created = LpvSubsurfacePass::create();
+        if (!created)
+            return std::unexpected(created.error());
+        gpu_.emplace(std::move(*created));
+    }
+    gpu_->run(LpvSubsurfaceSettings::fromParameters(ctx.frame.params), *state.lpv.lpv, state.lpv.rsm());
+    return {};
+}
+
+void SubsurfaceFramePass::addGpuMemory(GpuMemoryLedger& ledger) const {
+    if (gpu_)
+        gpu_->addGpuMemory(ledger);
+}
+
+} // namespace lpv::renderer
