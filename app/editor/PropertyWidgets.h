@@ -59,8 +59,9 @@ void showText(QLineEdit* edit, const QString& text);
 // a copy changed by `change` and handed to the Document's setter, which makes
 // it one undo step; nothing when `index` selects no element.
 template <class Doc, class T>
-void editElement(Doc* doc, std::vector<T> scene::Scene::*list, void (Doc::*set)(int, const T&, const QString&),
-                 int index, const QString& text, const std::function<void(T&)>& change) {
+void editElement(Doc* doc, std::vector<T> scene::Scene::*list,
+                 void (Doc::*set)(int, const T&, const QString&), int index, const QString& text,
+                 const std::function<void(T&)>& change) {
     const std::vector<T>& elements = doc->scene().*list;
     if (index < 0 || std::size_t(index) >= elements.size())
         return;

@@ -309,8 +309,7 @@ template <> struct FieldTable<Sky> {
 std::optional<ValueProblem> checkFieldRules(const Light& light);
 std::optional<ValueProblem> checkFieldRules(const Camera& camera);
 std::optional<ValueProblem> checkFieldRules(const CameraPath& path);
-template <class S>
-std::optional<ValueProblem> checkFieldRules(const S& s) {
+template <class S> std::optional<ValueProblem> checkFieldRules(const S& s) {
     if constexpr (std::is_same_v<S, Material>)
         return checkMaterial(s);
     else if constexpr (std::is_same_v<S, Object>)
