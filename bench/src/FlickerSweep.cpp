@@ -1,6 +1,7 @@
 #include "lpv/bench/FlickerSweep.h"
 
 #include "Pixels.h"
+#include "SceneRenderer.h"
 
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/reference/Flicker.h"
@@ -62,18 +63,12 @@ scene::Expected<FlickerResult> runFlicker(const FlickerSpec& spec, const referen
             return l.type == scene::LightType::Directional;
         }))
         return invalid("turning the sun needs a directional light");
-    auto context = renderer::HeadlessContext::create();
-    if (!context)
-        return std::unexpected(context.error());
-    auto forward = renderer::ForwardRenderer::create();
-    if (!forward)
-        return std::unexpected(forward.error());
-    const auto textures = importers::loadSceneTextures(spec.project.scene, spec.projectDir);
-    for (const std::string& w : textures.warnings)
-        if (callbacks.warning)
-            callbacks.warning(w);
-    scene::Scene scene = spec.project.scene;
-    forward->setScene(scene, textures.images);
+    scene::Scene scene = spec.project.scene; // the sun turns in this copy
+    auto opened = openSceneRenderer(scene, spec.projectDir, callbacks.warning);
+    if (!opened)
+        return std::unexpected(opened.error());
+    renderer::HeadlessContext* context = &(*opened)->context;
+    renderer::ForwardRenderer* forward = &(*opened)->renderer;
     std::optional<scene::CameraSpline> spline;
     if (spec.path)
         spline.emplace(*spec.path);

@@ -1,6 +1,7 @@
 #include "lpv/bench/Sweep.h"
 
 #include "Pixels.h"
+#include "SceneRenderer.h"
 
 #include "lpv/importers/SceneTextures.h"
 #include "lpv/radiosity/BakedSolution.h"
@@ -16,19 +17,18 @@ namespace lpv::bench {
 
 namespace {
 
-// One sweep's GL state: the context, the renderer with the scene uploaded.
-struct SweepRenderer {
-    renderer::HeadlessContext context;
-    renderer::ForwardRenderer renderer;
+// One sweep's GL state: the context, the renderer with the scene uploaded (SceneRenderer.h).
+using SweepRenderer = SceneRenderer;
 
-    scene::Expected<void> frames(const SweepSpec& spec, const scene::ParameterSet& parameters, int count) {
-        for (int f = 0; f < count; ++f)
-            if (auto ok = renderer.render(spec.project.scene, parameters, spec.camera, spec.width, spec.height); !ok)
-                return std::unexpected(ok.error());
-        renderer.timer().resolveAll();
-        return {};
-    }
-};
+// `count` frames of the sweep's view with `parameters`, their GPU times resolved.
+scene::Expected<void> renderFrames(SweepRenderer& gl, const SweepSpec& spec, const scene::ParameterSet& parameters,
+                                   int count) {
+    for (int f = 0; f < count; ++f)
+        if (auto ok = gl.renderer.render(spec.project.scene, parameters, spec.camera, spec.width, spec.height); !ok)
+            return std::unexpected(ok.error());
+    gl.renderer.timer().resolveAll();
+    return {};
+}
 
 } // namespace
 
@@ -74,18 +74,11 @@ scene::ParameterSet finalParameters(const SweepSpec& spec, const std::vector<Set
 // radiosity solution where a combination shows one.
 scene::Expected<std::unique_ptr<SweepRenderer>> openSweep(const SweepSpec& spec, const SweepCallbacks& callbacks,
                                                           std::shared_ptr<const radiosity::BakedSolution>& baked) {
-    auto context = renderer::HeadlessContext::create();
-    if (!context)
-        return std::unexpected(context.error());
-    auto forward = renderer::ForwardRenderer::create();
-    if (!forward)
-        return std::unexpected(forward.error());
-    auto gl = std::make_unique<SweepRenderer>(SweepRenderer{std::move(*context), std::move(*forward)});
-    const auto textures = importers::loadSceneTextures(spec.project.scene, spec.projectDir);
-    for (const std::string& w : textures.warnings)
-        if (callbacks.warning)
-            callbacks.warning(w);
-    gl->renderer.setScene(spec.project.scene, textures.images);
+    auto opened = openSceneRenderer(spec.project.scene, spec.projectDir, callbacks.warning);
+    if (!opened)
+        return std::unexpected(opened.error());
+    std::unique_ptr<SweepRenderer> gl = std::move(*opened);
+    const importers::SceneTextures& textures = gl->textures;
     // Radiosity is a GI method beside the LPV settings (issue #27 item 5):
     // its solution is read once, before any run, and must fit the scene.
     for (const auto& combination : combinationsOf(spec)) {
@@ -110,10 +103,10 @@ scene::Expected<void> timeRounds(SweepRenderer& gl, const SweepSpec& spec, const
     RoundCallbacks rounds;
     rounds.timeOnce = [&](int index) -> scene::Expected<std::vector<renderer::PassTiming>> {
         const scene::ParameterSet parameters = finalParameters(spec, combinations[std::size_t(index)]);
-        if (auto ok = gl.frames(spec, parameters, 1); !ok)
+        if (auto ok = renderFrames(gl, spec, parameters, 1); !ok)
             return std::unexpected(ok.error());
         gl.renderer.timer().clearHistory();
-        if (auto ok = gl.frames(spec, parameters, spec.frames); !ok)
+        if (auto ok = renderFrames(gl, spec, parameters, spec.frames); !ok)
             return std::unexpected(ok.error());
         return gl.renderer.timer().table();
     };
@@ -155,7 +148,7 @@ scene::Expected<SweepResult> timeSettings(const SweepSpec& spec, const SweepCall
     for (const auto& combination : combinations) {
         SweepRun run;
         run.settings = combination;
-        if (auto ok = (*gl)->frames(spec, finalParameters(spec, combination), std::max(spec.warmup, 1)); !ok)
+        if (auto ok = renderFrames(**gl, spec, finalParameters(spec, combination), std::max(spec.warmup, 1)); !ok)
             return std::unexpected(ok.error());
         const renderer::GpuMemory memory = (*gl)->renderer.gpuMemory();
         run.gpuBytes = memory.totalBytes;
@@ -206,7 +199,7 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
         // camera's geometry volume reads the previous frame's G-buffer, so
         // the first frame of a combination depends on what ran before it
         // (in a shard, another combination than in one process).
-        if (auto ok = gl.frames(spec, parameters, std::max(spec.warmup, 1)); !ok)
+        if (auto ok = renderFrames(gl, spec, parameters, std::max(spec.warmup, 1)); !ok)
             return std::unexpected(ok.error());
         const auto image = rgbOf(gl.renderer.readHdr());
         const renderer::GpuMemory memory = gl.renderer.gpuMemory();
@@ -214,7 +207,7 @@ scene::Expected<SweepResult> runSweep(const SweepSpec& spec, const reference::Re
         run.lpvBytes = memory.bytesOf("lpv.");
         // The indirect view: the LPV irradiance at the same pixels, no albedo, no tonemap.
         (void)parameters.setFromText("output.view", "indirect", "sweep");
-        if (auto ok = gl.frames(spec, parameters, 1); !ok)
+        if (auto ok = renderFrames(gl, spec, parameters, 1); !ok)
             return std::unexpected(ok.error());
         run.indirectPixels = rgbOf(gl.renderer.readHdr());
         auto measure = [&](const std::vector<glm::vec3>& test, const std::vector<glm::vec3>& r,
