@@ -230,25 +230,40 @@ std::optional<std::string> Args::unknownOption() const {
     return std::nullopt;
 }
 
-std::optional<std::string> Args::error() const {
+std::optional<std::string> Args::optionProblem() const {
     if (!badValue_.empty())
         return badValue_;
     if (!missingValue_.empty())
         return missingValue_ + " needs a value";
     if (auto unknown = unknownOption())
         return "unknown option '" + *unknown + "'";
-    if (!badPositionals_.empty())
-        return badPositionals_;
     return std::nullopt;
 }
 
+std::optional<std::string> Args::error() const {
+    if (auto problem = optionProblem())
+        return problem;
+    if (!badPositionals_.empty())
+        return badPositionals_;
+    if (!missingRequired_.empty())
+        return missingRequired_;
+    return std::nullopt;
+}
+
+void Args::require(bool given, const std::string& missing) {
+    if (!given && missingRequired_.empty())
+        missingRequired_ = missing;
+}
+
 std::vector<std::string> Args::expectPositionals(std::size_t count, const std::string& expected, std::size_t skip) {
-    if (error())
+    if (optionProblem())
         return {};
     if (args_.size() < skip || args_.size() - skip != count) {
         badPositionals_ = expected;
         return {};
     }
+    if (!missingRequired_.empty())
+        return {};
     return {args_.begin() + std::ptrdiff_t(skip), args_.end()};
 }
 

@@ -72,9 +72,13 @@ class Args {
 
     // What is left once options are taken; anything starting with "--" is an unknown option.
     std::vector<std::string> positionals() const { return args_; }
+    // An option the command cannot run without: unless `given`, `missing`
+    // is a problem, said after those of the options and the positionals.
+    void require(bool given, const std::string& missing);
     // Read after every option: the positionals after `skip` leading words (a
     // subcommand such as "lpv"), when the command line is sound and they are
-    // exactly `count`; else empty, and error() says why (`expected` for a wrong count).
+    // exactly `count`; else empty, and error() says why (`expected` for a
+    // wrong count, then the first required option missing).
     std::vector<std::string> expectPositionals(std::size_t count, const std::string& expected,
                                                std::size_t skip = 0);
     std::optional<std::string> unknownOption() const;
@@ -94,6 +98,9 @@ class Args {
     std::string missingValue_;
     std::string badValue_;
     std::string badPositionals_;
+    std::string missingRequired_;
+
+    std::optional<std::string> optionProblem() const; // a bad, valueless or unknown option
 };
 
 } // namespace lpv::cli

@@ -86,13 +86,11 @@ int runDump(Args args) {
     const int frames = args.integer("--frames", 2, {1});
     const bool grey = args.flag("--grey");
     RenderRequest request = renderRequestOptions(args);
+    args.require(output.has_value(), "missing -o OUT.png");
+    args.require(what.has_value(), "missing --what lpv|gv|leak|backside|rsm|shadow");
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "dump");
-    if (!output)
-        return usageError("missing -o OUT.png", "dump");
-    if (!what)
-        return usageError("missing --what lpv|gv|leak|backside|rsm|shadow", "dump");
     const std::string view = *what;
     const bool isSlice = view == "lpv" || view == "gv" || view == "leak" || view == "backside";
 

@@ -65,13 +65,11 @@ int exportPath(Args& args) {
     const auto output = args.option("--output", "-o");
     const auto name = args.option("--path");
     const auto givenFps = args.optionalReal("--fps", RealRange::above(0.0));
+    args.require(name.has_value(), "missing --path NAME");
+    args.require(output.has_value(), "missing -o FILE.json or FILE.csv");
     const auto pos = args.expectPositionals(2, "expected one project file after 'export'");
     if (pos.empty())
         return usageError(*args.error(), "path");
-    if (!name)
-        return usageError("missing --path NAME", "path");
-    if (!output)
-        return usageError("missing -o FILE.json or FILE.csv", "path");
     const std::string extension = lowerExtension(*output);
     if (extension != ".json" && extension != ".csv")
         return usageError("-o must end in .json or .csv, got '" + *output + "'", "path");

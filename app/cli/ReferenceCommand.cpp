@@ -106,11 +106,10 @@ int runReference(Args args) {
     c.shard = args.shard("--shard").value_or(reference::ShardSpec{});
     c.preview = args.flag("--preview");
     c.sets = args.options("--set");
+    args.require(output.has_value(), "missing -o REF.exr");
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "reference");
-    if (!output)
-        return usageError("missing -o REF.exr", "reference");
     if (std::filesystem::path(*output).extension() != ".exr")
         return usageError("the reference is written as EXR: -o must end in .exr", "reference");
     c.projectFile = pos.front();

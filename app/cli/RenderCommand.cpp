@@ -96,11 +96,10 @@ int runRender(Args args) {
     const bool explain = args.flag("--explain");
     const bool printGraph = args.flag("--graph");
     RenderRequest request = renderRequestOptions(args);
+    args.require(output.has_value(), "missing -o OUT.png");
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "render");
-    if (!output)
-        return usageError("missing -o OUT.png", "render");
     const std::vector<std::string> dumps = dumpText ? splitCommas(*dumpText) : std::vector<std::string>{};
     const std::vector<std::string>& known = renderer::frameGraphNames();
     for (const std::string& d : dumps)

@@ -106,13 +106,11 @@ int runVideo(Args args) {
     const auto labelB = args.option("--label-b");
     const auto sets = args.options("--set");
     const auto compareSets = args.options("--compare-set");
+    args.require(pathName.has_value(), "missing --path NAME");
+    args.require(output.has_value(), "missing -o OUT.mp4 (or a folder, or NAME-%05d.png)");
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
     if (pos.empty())
         return usageError(*args.error(), "video");
-    if (!pathName)
-        return usageError("missing --path NAME", "video");
-    if (!output)
-        return usageError("missing -o OUT.mp4 (or a folder, or NAME-%05d.png)", "video");
 
     options.pathName = *pathName;
     options.output = *output;

@@ -99,6 +99,32 @@ TEST(Args, BadValuesComeBeforeMissingValuesAndUnknownOptions) {
     EXPECT_FALSE(sound.error());
 }
 
+TEST(Args, PositionalsAreCheckedAfterTheOptionsAndBeforeRequiredOptions) {
+    Args sound = argsOf({"lpv", "PROJECT", "-o", "out.png"});
+    const auto output = sound.option("--output", "-o");
+    sound.require(output.has_value(), "missing -o OUT.png");
+    EXPECT_EQ(sound.expectPositionals(1, "expected exactly one project file", 1),
+              (std::vector<std::string>{"PROJECT"}))
+        << "after the subcommand";
+    EXPECT_FALSE(sound.error());
+
+    Args twoFiles = argsOf({"A", "B"});
+    twoFiles.require(false, "missing -o OUT.png");
+    EXPECT_TRUE(twoFiles.expectPositionals(1, "expected exactly one project file").empty());
+    EXPECT_EQ(twoFiles.error(), "expected exactly one project file") << "the files first";
+
+    Args noOutput = argsOf({"A"});
+    noOutput.require(false, "missing -o OUT.png");
+    noOutput.require(false, "missing --what VIEW");
+    EXPECT_TRUE(noOutput.expectPositionals(1, "expected exactly one project file").empty());
+    EXPECT_EQ(noOutput.error(), "missing -o OUT.png") << "the first required option missing";
+
+    Args badValue = argsOf({"A", "B", "--width", "0"});
+    EXPECT_EQ(badValue.integer("--width", 1, {1}), 1);
+    EXPECT_TRUE(badValue.expectPositionals(1, "expected exactly one project file").empty());
+    EXPECT_EQ(badValue.error(), "--width: '0' is not a whole number of 1 or more") << "the options first";
+}
+
 TEST(Args, TheShortFormWinsAndARejectedValueIsSaidTheSameWay) {
     Args a = argsOf({"-o", "short.png", "--output", "long.png"});
     EXPECT_EQ(a.option("--output", "-o"), "short.png");
