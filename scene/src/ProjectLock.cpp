@@ -3,20 +3,13 @@
 #include "lpv/scene/ProjectLock.h"
 
 #include "FileText.h"
+#include "WindowsHeaders.h"
 
 #include <system_error>
 #include <thread>
 #include <utility>
 
-#ifdef _WIN32
-#ifndef NOMINMAX
-#define NOMINMAX
-#endif
-#ifndef WIN32_LEAN_AND_MEAN
-#define WIN32_LEAN_AND_MEAN
-#endif
-#include <windows.h>
-#else
+#ifndef _WIN32
 #include <cerrno>
 #include <fcntl.h>
 #include <sys/file.h>

@@ -3,6 +3,7 @@
 #include "lpv/scene/SaveCleanup.h"
 
 #include "FileText.h"
+#include "WindowsHeaders.h"
 #include "lpv/scene/ProcessId.h"
 #include "lpv/scene/ProjectTextures.h"
 
@@ -12,15 +13,7 @@
 #include <climits>
 #include <system_error>
 
-#ifdef _WIN32
-#ifndef NOMINMAX
-#define NOMINMAX
-#endif
-#ifndef WIN32_LEAN_AND_MEAN
-#define WIN32_LEAN_AND_MEAN
-#endif
-#include <windows.h>
-#else
+#ifndef _WIN32
 #include <cerrno>
 #include <csignal>
 #include <sys/stat.h>

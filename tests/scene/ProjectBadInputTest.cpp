@@ -93,14 +93,7 @@ Project goodProject() {
     wall.diffuseColor = {0.25f, 0.125f, 0.375f};
     p.scene.materials = {wall};
 
-    Mesh quad;
-    quad.name = "quad";
-    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    quad.normals.assign(4, {0, 0, 1});
-    quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    quad.submeshes = {{0, 6, 0}};
-    p.scene.meshes = {quad};
+    p.scene.meshes = {unitQuadMesh()};
 
     p.scene.objects = {Object{"base", 0, -1, {}, true, {}}, Object{"child", -1, 0, {}, true, {}}};
     Light sun;

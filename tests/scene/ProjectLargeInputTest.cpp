@@ -22,17 +22,6 @@ namespace {
 
 constexpr auto kBound = std::chrono::seconds(5);
 
-Mesh unitQuad() {
-    Mesh quad;
-    quad.name = "quad";
-    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    quad.normals.assign(4, {0, 0, 1});
-    quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    quad.submeshes = {{0, 6, 0}};
-    return quad;
-}
-
 // Object i is object i-1's child, one unit further along x, and shows the quad.
 Project parentChain(std::size_t n) {
     Project p;
@@ -40,7 +29,7 @@ Project parentChain(std::size_t n) {
     Material m;
     m.name = "m";
     p.scene.materials = {m};
-    p.scene.meshes = {unitQuad()};
+    p.scene.meshes = {unitQuadMesh()};
     p.scene.objects.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         Object& o = p.scene.objects[i];

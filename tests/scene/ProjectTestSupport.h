@@ -41,6 +41,18 @@ inline void writeFile(const std::filesystem::path& path, const std::string& byte
     out << bytes;
 }
 
+// A unit square in z = 0 facing +z: four vertices, two triangles, one submesh of material 0.
+inline scene::Mesh unitQuadMesh() {
+    scene::Mesh quad;
+    quad.name = "quad";
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quad.normals.assign(4, {0, 0, 1});
+    quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    quad.submeshes = {{0, 6, 0}};
+    return quad;
+}
+
 // Every file under `root`, relative, sorted.
 inline std::set<std::string> listFiles(const std::filesystem::path& root) {
     std::set<std::string> out;
