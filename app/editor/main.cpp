@@ -1,6 +1,8 @@
 // lpvstudio: the LPV Studio editor. Opens the project given on the command
 // line, or the built-in Cornell box template as an untitled copy.
+#include "AccuracyPanel.h"
 #include "MainWindow.h"
+#include "SweepPanel.h"
 #include "Viewport.h"
 #include "VisualizerPanel.h"
 
@@ -11,14 +13,142 @@
 #include <QComboBox>
 #include <QCommandLineParser>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QIcon>
 #include <QSpinBox>
 #include <QPainter>
 #include <QPixmap>
 #include <QTimer>
 
+#include <algorithm>
 #include <cstdio>
+#include <expected>
+#include <functional>
 #include <memory>
+#include <optional>
+
+namespace {
+
+using lpv::editor::MainWindow;
+
+// What a screenshot with --dock waits for: the dock's results, and a line
+// saying what it shows (printed with the shot, or as the reason on timeout).
+struct DockWait {
+    QDockWidget* dock = nullptr; // must be visible (raised) when the shot is taken
+    std::function<bool()> ready;     // the wait is over (results, or a failure)
+    std::function<bool()> succeeded; // once ready: the dock shows results
+    std::function<QString()> summary;
+};
+
+// Shows `dock` raised as a tab of the bottom area, given a large share of
+// the window's height so that its results can be read in the shot.
+void showDockForShot(MainWindow& window, const QString& name, double heightShare) {
+    QDockWidget* dock = window.dock(name);
+    dock->show();
+    // Raised once the window is up: restoring the layout raises another tab.
+    QTimer::singleShot(0, &window, [&window, dock, heightShare] {
+        dock->raise();
+        window.resizeDocks({dock}, {int(heightShare * window.height())}, Qt::Vertical);
+    });
+}
+
+// --dock accuracy: trace the reference of the view and wait for a frame
+// measured against at least `spp` samples; `overlay` is heatmap, split or none.
+std::expected<DockWait, QString> accuracyDockForShot(MainWindow& window, int spp, const QString& overlay) {
+    auto* panel = window.accuracy();
+    if (!panel)
+        return std::unexpected(QString("this editor has no Accuracy dock"));
+    if (overlay != "none" && overlay != "heatmap" && overlay != "split")
+        return std::unexpected(QString("--accuracy-overlay must be one of none, heatmap, split"));
+    showDockForShot(window, "accuracy", 0.32);
+    auto measuredSpp = std::make_shared<int>(0);
+    QObject::connect(panel->monitor(), &lpv::editor::AccuracyMonitor::measured, &window,
+                     [measuredSpp](std::shared_ptr<const lpv::editor::AccuracySample> sample) {
+                         *measuredSpp = std::max(*measuredSpp, sample->samplesPerPixel);
+                     });
+    panel->traceBox()->setChecked(true);
+    panel->heatMapBox()->setChecked(overlay == "heatmap");
+    panel->splitBox()->setChecked(overlay == "split");
+    return DockWait{window.dock("accuracy"), [measuredSpp, spp] { return *measuredSpp >= spp; }, [] { return true; },
+                    [panel, measuredSpp] {
+                        return QString("Accuracy dock: MARE %1, FLIP %2 against a %3 spp reference (%4)")
+                            .arg(panel->figureText("MARE", false), panel->figureText("FLIP", false))
+                            .arg(*measuredSpp)
+                            .arg(panel->statusText());
+                    }};
+}
+
+// The run on the sweep's front with the smallest symmetric error, or -1.
+int mostAccurateOnFront(const lpv::editor::SweepPanel& panel) {
+    const std::vector<bool> front = panel.front();
+    int best = -1;
+    for (std::size_t i = 0; i < front.size(); ++i)
+        if (front[i] && (best < 0 || panel.sweep()->runs[i].indirect.symmetricError() <
+                                         panel.sweep()->runs[std::size_t(best)].indirect.symmetricError()))
+            best = int(i);
+    return best;
+}
+
+// --dock sweeps: the project's saved sweep, else a sweep of the dock's rows
+// run now (at the dock's default size; saved beside a project that has a
+// file, as the dock does), then the front's most accurate point hovered.
+std::expected<DockWait, QString> sweepsDockForShot(MainWindow& window) {
+    auto* panel = window.sweeps();
+    if (!panel)
+        return std::unexpected(QString("this editor has no Sweeps dock"));
+    showDockForShot(window, "sweeps", 0.5);
+    auto done = std::make_shared<bool>(panel->sweep() != nullptr);
+    auto hover = [panel, done] {
+        *done = true;
+        if (panel->sweep())
+            panel->showRun(mostAccurateOnFront(*panel));
+    };
+    if (*done)
+        QTimer::singleShot(0, panel, hover);
+    else {
+        QObject::connect(panel, &lpv::editor::SweepPanel::sweepFinished, panel, hover);
+        // After the first frames: the sweep measures the viewport's camera.
+        QTimer::singleShot(0, panel, [panel, done] {
+            panel->startSweep();
+            *done = !panel->sweepRunning(); // not started: its status says why
+        });
+    }
+    return DockWait{window.dock("sweeps"), [done] { return *done; }, [panel] { return panel->sweep() != nullptr; },
+                    [panel] {
+                        if (!panel->sweep())
+                            return QString("Sweeps dock: no sweep (%1)").arg(panel->statusText());
+                        return QString("Sweeps dock: %1 settings, hovering run %2 (%3)")
+                            .arg(panel->sweep()->runs.size())
+                            .arg(mostAccurateOnFront(*panel))
+                            .arg(panel->statusText());
+                    }};
+}
+
+// Where the wait for the dock stands: nullopt while it goes on, then an
+// empty string when the dock shows results, else why it does not.
+std::optional<QString> dockWaitOver(const DockWait& wait, qint64 elapsedMs, double timeoutS) {
+    if (!wait.ready())
+        return elapsedMs <= 1000.0 * timeoutS
+                   ? std::nullopt
+                   : std::optional(QString("the dock showed no results within %1 s: %2").arg(timeoutS).arg(wait.summary()));
+    return wait.succeeded() ? QString() : wait.summary();
+}
+
+// Checked before the project opens, so a misspelt name fails at once.
+std::expected<void, QString> checkShotDock(const QString& name) {
+    if (name == "accuracy" || name == "sweeps")
+        return {};
+    return std::unexpected(QString("--dock must be one of accuracy, sweeps (not \"%1\")").arg(name));
+}
+
+std::expected<DockWait, QString> dockForShot(MainWindow& window, const QString& name, int spp,
+                                             const QString& overlay) {
+    if (auto known = checkShotDock(name); !known)
+        return std::unexpected(known.error());
+    return name == "accuracy" ? accuracyDockForShot(window, spp, overlay) : sweepsDockForShot(window);
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
@@ -61,6 +191,27 @@ int main(int argc, char** argv) {
         "quit-after", "Quit after MS milliseconds, with exit code 1 if the viewport reported an error.",
         "MS");
     parser.addOption(quitAfter);
+    // Docs images of docks with results in them (issue #46), made the same way each time.
+    const QCommandLineOption dockOption(
+        "dock",
+        "With --screenshot: raise DOCK and wait until it shows results before the shot. accuracy: trace "
+        "the reference of the view and wait for a frame measured against it (--reference-spp); sweeps: "
+        "the project's saved sweep, else run the dock's default sweep now (saved beside the project as "
+        "the dock does), then hover the Pareto front's most accurate point.",
+        "DOCK");
+    const QCommandLineOption referenceSpp(
+        "reference-spp", "With --dock accuracy: wait for a measurement against at least N samples per pixel.",
+        "N", "2");
+    const QCommandLineOption accuracyOverlay("accuracy-overlay",
+                                             "With --dock accuracy: none, heatmap (the FLIP heat map over "
+                                             "the view) or split (LPV | reference).",
+                                             "OVERLAY", "none");
+    const QCommandLineOption dockTimeout(
+        "dock-timeout", "With --dock: give up after S seconds, with a message and exit code 1.", "S", "600");
+    parser.addOption(dockOption);
+    parser.addOption(referenceSpp);
+    parser.addOption(accuracyOverlay);
+    parser.addOption(dockTimeout);
     parser.process(app);
     int quitAfterMs = -1;
     if (parser.isSet(quitAfter)) {
@@ -72,6 +223,21 @@ int main(int argc, char** argv) {
         }
     }
 
+    // The --dock options are checked before the project opens, so a mistake fails at once.
+    bool sppOk = false, timeoutOk = false;
+    const int spp = parser.value(referenceSpp).toInt(&sppOk);
+    const double timeoutS = parser.value(dockTimeout).toDouble(&timeoutOk);
+    if (parser.isSet(dockOption)) {
+        if (!parser.isSet(screenshot) || !sppOk || spp < 1 || !timeoutOk || timeoutS <= 0) {
+            fprintf(stderr, "lpvstudio: --dock needs --screenshot, --reference-spp a count of at least 1 "
+                            "and --dock-timeout seconds\n");
+            return 2;
+        }
+        if (auto known = checkShotDock(parser.value(dockOption)); !known) {
+            fprintf(stderr, "lpvstudio: %s\n", qPrintable(known.error()));
+            return 2;
+        }
+    }
     lpv::editor::MainWindow window;
     const QStringList args = parser.positionalArguments();
     QString path = args.isEmpty() ? QString() : args.front();
@@ -114,10 +280,20 @@ int main(int argc, char** argv) {
             window.visualizers()->findChild<QComboBox*>("vizScale")->setCurrentIndex(1);
         window.resizeDocks({window.dock("visualizers")}, {480}, Qt::Horizontal);
     }
+    DockWait dockWait{nullptr, [] { return true; }, [] { return true; }, [] { return QString(); }};
+    if (parser.isSet(dockOption)) {
+        auto wait = dockForShot(window, parser.value(dockOption), spp, parser.value(accuracyOverlay));
+        if (!wait) {
+            fprintf(stderr, "lpvstudio: %s\n", qPrintable(wait.error()));
+            return 2;
+        }
+        dockWait = *wait;
+    }
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');
-        window.resize(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
-                      wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
+        const QSize asked(wh.value(0).toInt() > 0 ? wh.value(0).toInt() : 1600,
+                          wh.value(1).toInt() > 0 ? wh.value(1).toInt() : 1000);
+        window.resize(asked);
         window.show();
         const QString file = parser.value(screenshot);
         // Poll: textures decode in the background; then two more frames so the LPV and timings settle.
@@ -131,13 +307,29 @@ int main(int argc, char** argv) {
                              for (const auto& t : table)
                                  *lastMs += t.lastMs;
                          });
-        QObject::connect(poll, &QTimer::timeout, &window, [&window, file, frames, lastMs] {
+        auto waited = std::make_shared<QElapsedTimer>();
+        waited->start();
+        QObject::connect(poll, &QTimer::timeout, &window, [&window, file, asked, frames, lastMs, dockWait,
+                                                           waited, timeoutS] {
             auto* view = window.viewport();
+            const std::optional<QString> dockError = dockWaitOver(dockWait, waited->elapsed(), timeoutS);
+            if (!dockError)
+                return;
+            if (!dockError->isEmpty()) {
+                fprintf(stderr, "lpvstudio: %s\n", qPrintable(*dockError));
+                QApplication::exit(1);
+                return;
+            }
             if (view->texturesPending() || !view->frameUpToDate() || *frames < 3) {
                 if (!view->texturesPending() && view->frameUpToDate())
                     view->renderAgain(); // the same state once more: the LPV and timings settle
                 else
                     view->update();
+                return;
+            }
+            if (dockWait.dock && !dockWait.dock->isVisible()) { // another tab raised over it
+                fprintf(stderr, "lpvstudio: the %s dock is not visible\n", qPrintable(dockWait.dock->objectName()));
+                QApplication::exit(1);
                 return;
             }
             // QWidget::grab() leaves out what the viewport paints over its GL image with QPainter
@@ -148,11 +340,16 @@ int main(int argc, char** argv) {
                 painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)),
                                   window.viewport()->grabFramebuffer());
             }
+            if (shot.size() != asked) // the docks' minimum sizes win over --size: say so
+                fprintf(stderr, "lpvstudio: the window could not be %dx%d; the shot is %dx%d\n", asked.width(),
+                        asked.height(), shot.width(), shot.height());
             const bool saved = shot.save(file);
             // The viewport's size and GPU time, so a screenshot run doubles as a measurement.
             const auto* vp = window.viewport();
             printf("lpvstudio: viewport %dx%d rendered at %.0f%%, last frame %.1f ms GPU (sum of passes)\n",
                    vp->width(), vp->height(), 100.0 * vp->resolutionScale(), *lastMs);
+            if (const QString shown = dockWait.summary(); !shown.isEmpty())
+                printf("lpvstudio: %s\n", qPrintable(shown));
             fprintf(saved ? stdout : stderr, saved ? "lpvstudio: saved %s\n" : "lpvstudio: cannot write %s\n",
                     qPrintable(file));
             QApplication::exit(saved ? 0 : 1);
