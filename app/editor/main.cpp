@@ -117,9 +117,9 @@ std::expected<DockWait, QString> sweepsDockForShot(MainWindow& window) {
                     [panel] {
                         if (!panel->sweep())
                             return QString("Sweeps dock: no sweep (%1)").arg(panel->statusText());
-                        return QString("Sweeps dock: %1 settings, hovering run %2 (%3)")
+                        return QString("Sweeps dock: %1 settings, hovering the table's row %2 (%3)")
                             .arg(panel->sweep()->runs.size())
-                            .arg(mostAccurateOnFront(*panel))
+                            .arg(mostAccurateOnFront(*panel) + 1)
                             .arg(panel->statusText());
                     }};
 }
@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
                                   "Open the project, wait until its textures are loaded and a frame is drawn, save "
                                   "the main window to FILE (PNG) and quit (docs, smoke tests).",
                                   "FILE");
-    QCommandLineOption size("size", "Window size for --screenshot, e.g. 1600x1000.", "WxH", "1600x1000");
+    QCommandLineOption size("size", "Window size for --screenshot, e.g. 1600x1000 (enlarged to the docks' minimum).", "WxH", "1600x1000");
     parser.addOption(screenshot);
     parser.addOption(size);
     const QCommandLineOption visualizer(
@@ -200,14 +200,16 @@ int main(int argc, char** argv) {
         "the dock does), then hover the Pareto front's most accurate point.",
         "DOCK");
     const QCommandLineOption referenceSpp(
-        "reference-spp", "With --dock accuracy: wait for a measurement against at least N samples per pixel.",
+        "reference-spp", "With --dock accuracy: wait for a measurement against at least N samples per pixel "
+        "(default 2).",
         "N", "2");
     const QCommandLineOption accuracyOverlay("accuracy-overlay",
                                              "With --dock accuracy: none, heatmap (the FLIP heat map over "
-                                             "the view) or split (LPV | reference).",
+                                             "the view) or split (LPV | reference); default none.",
                                              "OVERLAY", "none");
     const QCommandLineOption dockTimeout(
-        "dock-timeout", "With --dock: give up after S seconds, with a message and exit code 1.", "S", "600");
+        "dock-timeout", "With --dock: give up after S seconds (default 600), with a message and exit code 1.",
+        "S", "600");
     parser.addOption(dockOption);
     parser.addOption(referenceSpp);
     parser.addOption(accuracyOverlay);
