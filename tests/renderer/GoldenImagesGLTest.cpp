@@ -74,10 +74,20 @@ struct SavedProject {
     scene::Camera camera;
 };
 
+// The folders this process saved projects into, removed when its tests end.
+std::vector<fs::path>& savedFolders() {
+    static std::vector<fs::path> folders;
+    return folders;
+}
+
 SavedProject savedImport(const std::string& relative, const std::string& name) {
     test::OpeningView view = test::importedScene(relative);
-    const fs::path dir = fs::path(test::kBinaryDir) / "golden-scenes" / name;
+    // One folder per test that imports: ctest runs each test in its own
+    // process, two at a time, and two must not save into one folder.
+    const fs::path dir = fs::path(test::kBinaryDir) / "golden-scenes" /
+                         (name + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir);
+    savedFolders().push_back(dir);
     fs::create_directories(dir);
     SavedProject s{dir / (name + ".lpvproj"), {}, {}};
     view.project.name = name;
@@ -129,6 +139,8 @@ protected:
             for (const auto& [name, hashes] : produced_)
                 out << name << " " << hashes << "\n";
         }
+        for (const fs::path& dir : savedFolders())
+            fs::remove_all(dir);
         GlTest::TearDownTestSuite();
     }
 

@@ -252,6 +252,8 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
         FrameState state{.frame = frame,
                          .graph = d.graph,
                          .effects = d.frameEffects,
+                         .sceneGpu = d.sceneGpu.get(),
+                         .materialGpu = d.materialGpu.get(),
                          .sceneGeneration = d.sceneGeneration,
                          .depthPrepass = frame.params.getBool("output.depthPrepass"),
                          .radiosity = d.plan.radiosity,

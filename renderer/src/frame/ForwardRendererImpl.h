@@ -6,7 +6,7 @@
 // executes the graph. Passes in their own files (FramePass.h) read the
 // frame's FrameState; the others are still declared here (FramePasses.cpp:
 // shadows, depth pre-pass, shading, exposure, tonemap;
-// IndirectPasses.cpp: RSMs, VPLs, sky height).
+// IndirectPasses.cpp: RSMs, VPLs).
 #include "passes/direct/AutoExposurePass.h"
 #include "passes/lpv/EmissiveVplBuffer.h"
 #include "frame/FrameContext.h"
@@ -21,7 +21,7 @@
 #include "scenegpu/RenderSpace.h"
 #include "passes/lpv/RsmPass.h"
 #include "passes/direct/ShadowPass.h"
-#include "passes/lpv/SkyHeightPass.h"
+#include "passes/lpv/SkyHeightFramePass.h"
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/ForwardRenderer.h"
@@ -64,8 +64,7 @@ struct ForwardRenderer::Impl {
     // Passes that run only when the scene calls for them are created on
     // their first frame and dropped when culled: they hold no GPU memory then.
     std::optional<AutoExposurePass> exposure; // its result stays on the GPU
-    std::optional<SkyHeightPass> skyHeight;
-    std::optional<LpvSkyInput> skyInput; // the height map skyHeight last rendered
+    const SkyHeightFramePass* skyHeight = nullptr; // in `passes`: the sky injection reads its map
     const SubsurfaceFramePass* subsurface = nullptr; // in `passes`: shading samples its volume
     std::optional<LocalRsmPass> localRsm;
     std::optional<EmissiveVplBuffer> emissiveVpls;

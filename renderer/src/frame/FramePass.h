@@ -13,6 +13,7 @@
 #include "lpv/scene/ParameterRegistry.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace lpv::renderer {
@@ -37,6 +38,18 @@ inline EffectDecision skippedBecause(std::string why) {
 void importTexture(graph::FrameGraph& graph, graph::ResourceHandle name, std::function<GLuint()> id);
 
 struct FrameState;
+
+// Creates a pass's GL objects on its first run, so a pass that never runs
+// holds no GPU memory; release() drops them again.
+template <typename Gpu, typename Create> scene::Expected<void> createOnFirstRun(std::optional<Gpu>& gpu, Create create) {
+    if (gpu)
+        return {};
+    auto created = create();
+    if (!created)
+        return std::unexpected(created.error());
+    gpu.emplace(std::move(*created));
+    return {};
+}
 
 // One entry of the frame's pass table.
 class FramePass {

@@ -6,7 +6,9 @@
 #include "frame/FrameContext.h"
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/SceneAnalysis.h"
+#include "lpv/renderer/SceneGpu.h"
 #include "passes/lpv/LpvStages.h"
+#include "scenegpu/MaterialGpu.h"
 
 #include <cstdint>
 #include <vector>
@@ -22,6 +24,9 @@ struct FrameState {
     graph::FrameGraph& graph;
     // The frame's effect decisions with their reasons, as the editor and the CLI show them.
     std::vector<EffectDecision>& effects;
+    // The scene on the GPU, as the passes draw it.
+    const SceneGpu* sceneGpu = nullptr;
+    MaterialGpu* materialGpu = nullptr;
     // Bumped on every scene change: part of every reuse key.
     std::uint64_t sceneGeneration = 0;
     // output.depthPrepass: the camera's depth is drawn before shading.

@@ -1,9 +1,9 @@
 // The indirect light: planIndirect() decides what the scene calls for (each
 // decision with its reason) and lpvStageInputs() hands that plan to the
-// LPV's stages (passes/lpv/LpvStages.h) and the subsurface LPV
-// (SubsurfaceFramePass). The passes not yet in their own files are declared
-// here: the sun's RSM, the local lights' RSMs, the emissive VPLs and the
-// sky's height map (declareLightSources).
+// LPV's stages (passes/lpv/LpvStages.h), the sky's height map
+// (SkyHeightFramePass) and the subsurface LPV (SubsurfaceFramePass). The
+// passes not yet in their own files are declared here: the sun's RSM, the
+// local lights' RSMs and the emissive VPLs (declareLightSources).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -150,6 +150,7 @@ LpvStageInputs ForwardRenderer::Impl::lpvStageInputs(const FrameContext& frame) 
     in.local = plan.lpvRuns && plan.local.runs();
     in.emissive = plan.lpvRuns && plan.emissive.runs();
     in.sky = plan.sky;
+    in.cascades = plan.cascades;
     graph::ContentHash base; // what every LPV pass is computed within: the scene, its lights, the volumes
     base.add(sceneGeneration).add(lpv->volumesGeneration()).add(plan.cascades);
     addLights(base, frame.scene.lights);
@@ -160,7 +161,9 @@ LpvStageInputs ForwardRenderer::Impl::lpvStageInputs(const FrameContext& frame) 
     in.rsm = [this, &frame] { return rsmInput(frame); };
     in.localInputs = [this] { return localInputs(); };
     in.skyInput = [this, &frame] {
-        LpvSkyInput input = *skyInput;
+        // The stage runs only after skyHeight (it reads its output), so the map is there.
+        const LpvSkyInput* map = skyHeight->input();
+        LpvSkyInput input = map ? *map : LpvSkyInput{};
         input.radiance = frame.scene.sky.color * frame.scene.sky.intensity;
         return input;
     };
@@ -236,31 +239,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
         };
         graph.addPass(std::move(p));
     }
-    // --- The sky's height map ---
-    importTexture(graph, resources::SkyHeight, [this] { return skyInput ? skyInput->depth : 0u; });
-    {
-        graph::PassSpec p;
-        p.id = Pass::SkyHeight;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.sky;
-        p.writes = {resources::SkyHeight};
-        p.inputsKey = graph::ContentHash().add(sceneGeneration).add(plan.cascades).value();
-        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
-            if (!skyHeight) {
-                auto created = SkyHeightPass::create();
-                if (!created)
-                    return std::unexpected(created.error());
-                skyHeight.emplace(std::move(*created));
-            }
-            auto rendered = skyHeight->render(ctx.frame, *sceneGpu, *materialGpu, plan.cascades.back(),
-                                              SkyHeightPass::resolutionFor(plan.settings.gridSize,
-                                                                           int(plan.cascades.size())));
-            if (!rendered)
-                return std::unexpected(rendered.error());
-            skyInput = *rendered;
-            return {};
-        };
-        graph.addPass(std::move(p));
-    }
 }
 
 void ForwardRenderer::Impl::releaseCulled() {
@@ -270,10 +248,6 @@ void ForwardRenderer::Impl::releaseCulled() {
         localRsm.reset();
     if (!graph.produced(Pass::EmissiveVpls))
         emissiveVpls.reset();
-    if (!graph.produced(Pass::SkyHeight)) {
-        skyHeight.reset();
-        skyInput.reset();
-    }
     for (const std::unique_ptr<FramePass>& pass : passes)
         pass->releaseIfCulled(graph);
     if (!plan.lpvRuns)

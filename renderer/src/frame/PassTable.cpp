@@ -8,6 +8,7 @@
 
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/LpvStages.h"
+#include "passes/lpv/SkyHeightFramePass.h"
 #include "passes/lpv/SubsurfaceFramePass.h"
 #include "passes/radiosity/RadiosityIndirectPass.h"
 
@@ -41,6 +42,7 @@ std::unique_ptr<FramePass> declaredByRenderer(std::function<void(FrameState&)> d
 void ForwardRenderer::Impl::buildPassTable() {
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShadows(s.frame); }));
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
+    skyHeight = &add(passes, std::make_unique<SkyHeightFramePass>());
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
         passes.push_back(std::move(stage));
     subsurface = &add(passes, std::make_unique<SubsurfaceFramePass>());

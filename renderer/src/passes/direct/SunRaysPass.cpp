@@ -51,12 +51,8 @@ void SunRaysPass::setup(graph::PassSpec& pass, FrameState& state) {
 }
 
 scene::Expected<void> SunRaysPass::execute(graph::PassContext& ctx, FrameState&) {
-    if (!gpu_) {
-        auto created = createGpu();
-        if (!created)
-            return std::unexpected(created.error());
-        gpu_.emplace(std::move(*created));
-    }
+    if (auto created = createOnFirstRun(gpu_, &createGpu); !created)
+        return created;
     render(ctx.frame, ctx.id(resources::CameraDepth), ctx.id(resources::CameraHdr), ctx.id(resources::SunRaysOcclusion),
            *sunOf(ctx.frame.scene));
     return {};

@@ -29,6 +29,7 @@ struct LpvStageInputs {
     // Where the VPLs come from: the sun's RSM, spot and point lights' RSMs, emissive surfaces.
     bool sun = false, local = false, emissive = false;
     EffectDecision sky; // sky injection
+    std::vector<LpvCascade> cascades; // the LPV's, finest first
     // What every stage's output is computed within (the scene, its lights,
     // the volumes); nullopt for propagation and bounces while a visualizer
     // watches the computation (no reuse then).

@@ -15,12 +15,8 @@ void SubsurfaceFramePass::setup(graph::PassSpec& pass, FrameState& state) {
 }
 
 scene::Expected<void> SubsurfaceFramePass::execute(graph::PassContext& ctx, FrameState& state) {
-    if (!gpu_) {
-        auto created = LpvSubsurfacePass::create();
-        if (!created)
-            return std::unexpected(created.error());
-        gpu_.emplace(std::move(*created));
-    }
+    if (auto created = createOnFirstRun(gpu_, &LpvSubsurfacePass::create); !created)
+        return created;
     gpu_->run(LpvSubsurfaceSettings::fromParameters(ctx.frame.params), *state.lpv.lpv, state.lpv.rsm());
     return {};
 }
