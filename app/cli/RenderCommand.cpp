@@ -58,6 +58,8 @@ one row per frame, then median/min/max over the frames rendered.
   --graph               After the frames, print the last frame's graph: its
                         passes in order, what each read and wrote, and
                         whether it ran, was reused (and why) or was culled
+  --markdown            With --graph: print it as the Markdown table of
+                        docs/renderer.md (pass, reads, writes) instead
 )";
 }
 
@@ -95,6 +97,8 @@ int runRender(Args args) {
     const auto dumpText = args.option("--dump");
     const bool explain = args.flag("--explain");
     const bool printGraph = args.flag("--graph");
+    const bool graphAsMarkdown = args.flag("--markdown");
+    args.require(!graphAsMarkdown || printGraph, "--markdown goes with --graph");
     RenderRequest request = renderRequestOptions(args);
     args.require(output.has_value(), "missing -o OUT.png");
     const auto pos = args.expectPositionals(1, "expected exactly one project file");
@@ -197,7 +201,9 @@ int runRender(Args args) {
         totals.emplace_back(out.filename().string(), total);
         std::printf("wrote %s\n", out.string().c_str());
         const renderer::FrameGraphReport& graph = setup->renderer->graphReport();
-        if (printGraph)
+        if (printGraph && graphAsMarkdown)
+            std::printf("%s", renderer::formatGraphMarkdown(graph).c_str());
+        else if (printGraph)
             std::printf("frame graph of the last frame:\n%s", renderer::formatGraph(graph).c_str());
         for (const std::string& what : dumps) {
             const auto images = setup->renderer->debugImages(what);

@@ -74,7 +74,7 @@ std::vector<ParameterInfo> declareParameters() {
                 "outside the scene, and a camera outside the scene (a Cornell box) gets the finest cells on it",
                 kLpvAll | P::Rsm),
         // auto (issue #41): fitted to the scene's mean free path and the
-        // view (renderer/src/LpvFit.cpp); a number forces it. The range
+        // view (renderer/src/analysis/LpvFit.cpp); a number forces it. The range
         // allows a scene in millimetres or kilometres.
         withWords(real("lpv.cellSize", 0.0, 1e-6, 1e6, "m", "LPV",
                        "Cell size of the finest cascade; auto fits it, the cascade count and the steps to the "

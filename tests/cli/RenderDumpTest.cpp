@@ -57,6 +57,24 @@ TEST(RenderDump, ShadowMapsAreWrittenAsExrAndPngBesideTheImage) {
     fs::remove_all(dir);
 }
 
+// `--graph --markdown` prints docs/renderer.md's pass table (issue #44): the
+// passes that ran, each with what it read and wrote, as table rows.
+TEST(RenderDump, GraphAsMarkdownIsThePassTable) {
+    const fs::path dir = freshTempDir("dump", "graph-markdown");
+    const RunResult r = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
+                               " --width 64 --height 48 --frames 1 --graph --markdown");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("| pass | reads | writes |\n|---|---|---|\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("| `shading` |"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("`camera.depth`"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("frame graph of the last frame"), std::string::npos) << "the text form as well";
+    const RunResult alone = runLpv("render " + cornellProject() + " -o " + (dir / "cb.png").string() +
+                                   " --width 64 --height 48 --frames 1 --markdown");
+    EXPECT_EQ(alone.exitCode, 2) << alone.output;
+    EXPECT_NE(alone.output.find("--markdown goes with --graph"), std::string::npos) << alone.output;
+    fs::remove_all(dir);
+}
+
 TEST(RenderDump, UnknownImageSetIsAUsageError) {
     const RunResult r = runLpv("render " + cornellProject() + " -o /tmp/never.png --dump shadows");
     EXPECT_EQ(r.exitCode, 2);
