@@ -58,8 +58,6 @@ std::expected<DockWait, QString> accuracyDockForShot(MainWindow& window, int spp
     auto* panel = window.accuracy();
     if (!panel)
         return std::unexpected(QString("this editor has no Accuracy dock"));
-    if (overlay != "none" && overlay != "heatmap" && overlay != "split")
-        return std::unexpected(QString("--accuracy-overlay must be one of none, heatmap, split"));
     showDockForShot(window, "accuracy", 0.32);
     auto measuredSpp = std::make_shared<int>(0);
     QObject::connect(panel->monitor(), &lpv::editor::AccuracyMonitor::measured, &window,
@@ -135,7 +133,9 @@ std::optional<QString> dockWaitOver(const DockWait& wait, qint64 elapsedMs, doub
 }
 
 // Checked before the project opens, so a misspelt name fails at once.
-std::expected<void, QString> checkShotDock(const QString& name) {
+std::expected<void, QString> checkShotDock(const QString& name, const QString& overlay) {
+    if (overlay != "none" && overlay != "heatmap" && overlay != "split")
+        return std::unexpected(QString("--accuracy-overlay must be one of none, heatmap, split"));
     if (name == "accuracy" || name == "sweeps")
         return {};
     return std::unexpected(QString("--dock must be one of accuracy, sweeps (not \"%1\")").arg(name));
@@ -143,7 +143,7 @@ std::expected<void, QString> checkShotDock(const QString& name) {
 
 std::expected<DockWait, QString> dockForShot(MainWindow& window, const QString& name, int spp,
                                              const QString& overlay) {
-    if (auto known = checkShotDock(name); !known)
+    if (auto known = checkShotDock(name, overlay); !known)
         return std::unexpected(known.error());
     return name == "accuracy" ? accuracyDockForShot(window, spp, overlay) : sweepsDockForShot(window);
 }
@@ -235,7 +235,7 @@ int main(int argc, char** argv) {
                             "and --dock-timeout seconds\n");
             return 2;
         }
-        if (auto known = checkShotDock(parser.value(dockOption)); !known) {
+        if (auto known = checkShotDock(parser.value(dockOption), parser.value(accuracyOverlay)); !known) {
             fprintf(stderr, "lpvstudio: %s\n", qPrintable(known.error()));
             return 2;
         }
