@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180; // the golden set's size (/work/golden-before/render-all.sh)
+constexpr int kWidth = 320, kHeight = 180; // the golden set's size (tools/golden/golden-renders.sh)
 constexpr int kFrames = 2;
 
 fs::path hashesFile() { return fs::path(test::kSourceDir) / "tests/renderer/golden/hashes.txt"; }
@@ -148,7 +148,7 @@ protected:
         ASSERT_FALSE(s.project.scene.objects.empty());
         if (!regenerating() && goldenGl_ != glRendererLine())
             GTEST_SKIP() << "golden hashes were made on '" << goldenGl_ << "'; this context is '" << glRendererLine()
-                         << "', whose rounding differs: compare images with /work/golden-before/render-all.sh instead";
+                         << "', whose rounding differs: compare two binaries with tools/golden/golden-renders.sh instead";
         scene::Project project = s.project;
         for (const auto& [key, value] : c.sets)
             ASSERT_TRUE(project.parameters.setFromText(key, value).has_value()) << key;
