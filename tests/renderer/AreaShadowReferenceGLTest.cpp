@@ -59,16 +59,27 @@ struct PixelPair {
     bool covered = false;
 };
 
+// The Cornell template with its lamp made a disc of the same area, centre,
+// orientation and power: the disc's shadows, which no test looked at.
+scene::Project cornellWithDiscLamp() {
+    scene::Project project = scene::makeCornellBoxProject();
+    for (scene::Light& l : project.scene.lights)
+        if (l.type == scene::LightType::Area) {
+            l.radius = std::sqrt(l.size.x * l.size.y / 3.14159265f);
+            l.shape = scene::AreaShape::Disc;
+        }
+    return project;
+}
+
 class AreaShadowReference : public GlTest {
   protected:
     static void SetUpTestSuite() {
         GlTest::SetUpTestSuite();
-        pixels_ = measure();
+        pixels_ = measure(scene::makeCornellBoxProject());
     }
 
-    // Renders and traces the template once for every test of the suite.
-    static std::vector<PixelPair> measure() {
-        const scene::Project project = scene::makeCornellBoxProject();
+    // Renders and traces the project's first view once for every test of the suite.
+    static std::vector<PixelPair> measure(const scene::Project& project) {
         const scene::Scene& scene = project.scene;
         const scene::Camera& camera = scene.cameras.front();
 
@@ -145,6 +156,18 @@ class AreaShadowReference : public GlTest {
     static inline std::vector<PixelPair> pixels_;
 };
 
+class DiscAreaShadowReference : public AreaShadowReference {
+  protected:
+    static void SetUpTestSuite() {
+        GlTest::SetUpTestSuite();
+        pixels_ = measure(cornellWithDiscLamp());
+    }
+    static void TearDownTestSuite() {
+        pixels_.clear();
+        AreaShadowReference::TearDownTestSuite();
+    }
+};
+
 // The red wall (x = 5.56 m) below the top of the tall block (3.3 m): the
 // block's penumbra falls across it.
 bool redWallBehindTallBlock(const glm::vec3& p) {
@@ -216,4 +239,21 @@ TEST_F(AreaShadowReference, TheBlocksSoftShadowsOnTheRedWallAndTheFloorFollowThe
     EXPECT_LT(w.rms, kWallBound) << "the tall block's penumbra on the red wall";
     EXPECT_LT(f.rms, kFloorBound) << "the short block's soft shadow on the floor";
     EXPECT_LT(t.rms, kFaceBound) << "the tall block's front face, which sees part of the lamp";
+}
+
+// The same regions under a disc lamp (issue #46: disc area lights were not
+// checked with an occluder). The disc's light is sampled and its shadow maps
+// placed as the rectangle's, so the same bounds hold.
+TEST_F(DiscAreaShadowReference, ADiscLampsSoftShadowsFollowTheReferenceToo) {
+    const std::vector<PixelPair> wall = region(redWallBehindTallBlock);
+    const std::vector<PixelPair> floor = region(floorAroundShortBlock);
+    ASSERT_GT(wall.size(), 500u) << "the regions must lie in view";
+    ASSERT_GT(floor.size(), 500u) << "the regions must lie in view";
+    const RegionError w = regionError(wall), f = regionError(floor);
+    report("disc.wall.rms", w.rms);
+    report("disc.wall.referenceNoise", w.noise);
+    report("disc.floor.rms", f.rms);
+    report("disc.floor.referenceNoise", f.noise);
+    EXPECT_LT(w.rms, kWallBound) << "the tall block's penumbra on the red wall";
+    EXPECT_LT(f.rms, kFloorBound) << "the short block's soft shadow on the floor";
 }
