@@ -215,29 +215,54 @@ template <class Sink, class T> void fieldBytes(Sink& sink, const T& v) {
     }
 }
 
+namespace detail {
+
+// Feeds `sink` the bytes of field I of S's table, if it is hashed.
+template <class S, std::size_t I, class Sink> void hashFieldAt(const S& s, Sink& sink) {
+    const auto& f = std::get<I>(FieldTable<S>::fields);
+    using T = typename std::decay_t<decltype(f)>::Type;
+    if constexpr (kHasFieldBytes<T>)
+        if (f.hashed)
+            fieldBytes(sink, f.of(s));
+}
+
+// hashFieldAt of every field of S's table in the struct's member order,
+// worked out once (member offsets are the same in every S): hashing a
+// light for a reuse key every frame allocates nothing.
+template <class S, class Sink> const std::vector<void (*)(const S&, Sink&)>& hashStepsInMemberOrder() {
+    using Step = void (*)(const S&, Sink&);
+    static const std::vector<Step> steps = [] {
+        constexpr std::size_t count = std::tuple_size_v<std::decay_t<decltype(FieldTable<S>::fields)>>;
+        const S probe{};
+        const auto offset = [&](const auto& f) {
+            return reinterpret_cast<const char*>(&f.of(probe)) - reinterpret_cast<const char*>(&probe);
+        };
+        std::vector<std::pair<std::ptrdiff_t, Step>> at;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (at.emplace_back(offset(std::get<I>(FieldTable<S>::fields)), &hashFieldAt<S, I, Sink>), ...);
+        }(std::make_index_sequence<count>{});
+        std::stable_sort(at.begin(), at.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::vector<Step> ordered;
+        for (const auto& [where, step] : at)
+            ordered.push_back(step);
+        return ordered;
+    }();
+    return steps;
+}
+
+} // namespace detail
+
 // Feeds sink(const void*, std::size_t) every hashed field of `s`, whether it
 // applies to this light type or not (a field the editor keeps across a type
 // switch still counts): a field added to the table is in every hash without
 // anyone remembering it. In the struct's member order, not the file's: the
 // order radiosity's stored scene signatures were made in, so solutions baked
-// before the tables still match.
+// before the tables still match. Every sink is a byte stream (a hash, an
+// append), so how the bytes are split between calls does not matter.
 template <class S, class Sink> void hashFields(const S& s, Sink&& sink) {
-    std::vector<std::pair<std::ptrdiff_t, std::string>> parts;
-    forEachField<S>([&](const auto& f) {
-        using T = typename std::decay_t<decltype(f)>::Type;
-        if constexpr (kHasFieldBytes<T>) {
-            if (!f.hashed)
-                return;
-            std::string bytes;
-            auto append = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
-            fieldBytes(append, f.of(s));
-            const auto offset = reinterpret_cast<const char*>(&f.of(s)) - reinterpret_cast<const char*>(&s);
-            parts.emplace_back(offset, std::move(bytes));
-        }
-    });
-    std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [offset, bytes] : parts)
-        sink(bytes.data(), bytes.size());
+    using Target = std::remove_reference_t<Sink>;
+    for (const auto step : detail::hashStepsInMemberOrder<S, Target>())
+        step(s, sink);
 }
 
 } // namespace lpv::scene
