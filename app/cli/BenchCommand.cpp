@@ -22,14 +22,16 @@ void printBenchLpvHelp();
 void printBenchSweepHelp();
 void printBenchAccuracyReportHelp();
 void printBenchFlickerHelp();
+void printBenchPackHelp();
 
 void printBenchHelp() {
     std::cout << R"(Usage: lpv bench import FILE... [--repeat N]
-       lpv bench render PROJECT [--width N --height N --frames N --warmup N
+       lpv bench pack PROJECT -o FILE.lpvpack
+       lpv bench render PROJECT|PACK [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
                                  --thesis-settings --turn DEG --csv FILE --markdown FILE
                                  --rounds N --time-budget S --spread-target P]
-       lpv bench lpv PROJECT [--tiles LIST --steps LIST ... see below]
+       lpv bench lpv PROJECT|PACK [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
        lpv bench merge OUT_DIR SHARD_DIR... [--reference REF.exr]
        lpv bench report [--out DIR --scenes DIR --scene NAME --quick ... see below]
@@ -71,6 +73,7 @@ Round options of bench render (it only times: --rounds at least 1):
 )";
     std::cout << kRoundOptionsHelp << "\n";
     printBenchLpvHelp();
+    printBenchPackHelp();
     printBenchSweepHelp();
     printBenchMergeHelp();
     printBenchAccuracyReportHelp();
@@ -203,7 +206,9 @@ int runBench(Args args) {
         return benchMerge(std::move(args));
     if (pos.front() == "import")
         return benchImport(args);
-    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report, merge)", "bench");
+    if (pos.front() == "pack")
+        return benchPack(std::move(args));
+    return usageError("unknown benchmark '" + pos.front() + "' (import, render, lpv, report, merge, pack)", "bench");
 }
 
 } // namespace lpv::cli

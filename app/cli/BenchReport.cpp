@@ -2,7 +2,7 @@
 #include "Cli.h"
 
 
-#include "lpv/bench/SweepOutput.h"
+#include "lpv/bench/SweepOutput.h" // bench::SweepTimingInfo
 #include "lpv/scene/Project.h"
 
 #include <algorithm>
@@ -237,20 +237,6 @@ bool writeReportFiles(const std::vector<std::pair<std::optional<std::string>, st
         }
         std::printf("wrote %s\n", file->c_str());
     }
-    return true;
-}
-
-bool writeSweepFiles(const std::filesystem::path& outDir, const std::vector<SweepRun>& runs, int width, int height,
-                     const std::string& command, const std::string& machine, const reference::ReferenceImage& ref,
-                     const std::string& note, const bench::SweepTimingInfo& timing,
-                     const scene::ParameterSet& display) {
-    auto written = bench::writeSweepOutputs(outDir, runs, width, height, command, machine, ref, note, timing, display);
-    if (!written) {
-        std::cerr << "lpv: " << written.error().describe() << "\n";
-        return false;
-    }
-    for (const auto& file : *written)
-        std::printf("wrote %s\n", file.string().c_str());
     return true;
 }
 

@@ -48,6 +48,7 @@ int runMerge(Args args);     // `lpv merge`, in MergeCommand.cpp
 int runDump(Args args); // `lpv dump`, in DumpCommand.cpp
 int benchRender(Args args); // `lpv bench render`, in BenchRenderCommand.cpp
 int benchLpv(Args args);    // `lpv bench lpv`, in BenchLpvCommand.cpp
+int benchPack(Args args);   // `lpv bench pack`, in BenchPackCommand.cpp
 int benchSweep(Args args);  // `lpv bench PROJECT --sweep`, in BenchSweepCommand.cpp
 int benchAccuracyReport(Args args); // `lpv bench report`, in BenchAccuracyReport.cpp
 int benchCompareTimes(Args args);   // `lpv bench compare-times`, in BenchCompareTimes.cpp

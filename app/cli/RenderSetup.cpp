@@ -1,10 +1,8 @@
 #include "RenderSetup.h"
 
 #include "Cli.h"
+#include "RenderInputs.h"
 
-#include "lpv/importers/SceneTextures.h"
-#include "lpv/radiosity/BakedSolution.h"
-#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/FramingCamera.h"
 
 #include <filesystem>
@@ -47,29 +45,37 @@ std::optional<scene::Project> loadProjectWithSets(const std::string& projectFile
         return std::nullopt;
     }
     printLoadWarnings(projectFile, project->loadWarnings);
-    for (const std::string& kv : sets) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos) {
-            exitCode = usageError("--set expects KEY=VALUE, got '" + kv + "'", command);
-            return std::nullopt;
-        }
-        if (auto ok = project->parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok) {
-            exitCode = usageError(ok.error().describe(), command);
-            return std::nullopt;
-        }
-    }
+    if (!applySets(project->parameters, sets, command, exitCode))
+        return std::nullopt;
     exitCode = kOk;
     return std::move(*project);
 }
 
+bool applySets(scene::ParameterSet& parameters, const std::vector<std::string>& sets, const std::string& command,
+               int& exitCode) {
+    for (const std::string& kv : sets) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos) {
+            exitCode = usageError("--set expects KEY=VALUE, got '" + kv + "'", command);
+            return false;
+        }
+        if (auto ok = parameters.setFromText(kv.substr(0, eq), kv.substr(eq + 1), "--set"); !ok) {
+            exitCode = usageError(ok.error().describe(), command);
+            return false;
+        }
+    }
+    return true;
+}
+
 std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std::string& command, int& exitCode) {
-    auto project = loadProjectWithSets(request.projectFile, request.sets, command, exitCode);
-    if (!project)
+    // A project or a bench pack (RenderInputs.h: each program links its own reader).
+    auto inputs = loadRenderInputs(request, command, exitCode);
+    if (!inputs)
         return std::nullopt;
     exitCode = kFailure;
 
     RenderSetup setup;
-    auto camera = pickCamera(project->scene, request.cameraName, request.projectFile);
+    auto camera = pickCamera(inputs->project.scene, request.cameraName, request.projectFile);
     if (!camera)
         return std::nullopt;
     setup.camera = *camera;
@@ -87,26 +93,12 @@ std::optional<RenderSetup> prepareRender(const RenderRequest& request, const std
         std::cerr << "lpv: " << renderer.error().describe() << "\n";
         return std::nullopt;
     }
-    setup.project = std::move(*project);
+    setup.project = std::move(inputs->project);
     setup.context.emplace(std::move(*context));
     setup.renderer.emplace(std::move(*renderer));
-    // Texture paths are relative to the project file's folder; a missing one
-    // draws as the placeholder and is named here.
-    const auto textures = importers::loadSceneTextures(
-        setup.project.scene, std::filesystem::absolute(request.projectFile).parent_path());
-    for (const std::string& w : textures.warnings)
-        std::cerr << "lpv: warning: " << w << "\n";
-    setup.renderer->setScene(setup.project.scene, textures.images);
-    if (request.bakedRadiosity || renderer::showsBakedRadiosity(setup.project.parameters)) {
-        auto solution = radiosity::loadBakedSolution(setup.project.scene, textures.images, request.projectFile);
-        if (!solution) {
-            std::cerr << "lpv: " << solution.error().describe() << "\n";
-            return std::nullopt;
-        }
-        std::printf("radiosity: %s: %zu patches, residual %.4g, %llu shots\n", solution->file.string().c_str(),
-                    solution->mesh.size(), solution->residual, static_cast<unsigned long long>(solution->shots));
-        setup.renderer->setBakedRadiosity(std::make_shared<const radiosity::BakedSolution>(std::move(*solution)));
-    }
+    setup.renderer->setScene(setup.project.scene, inputs->textures);
+    if (inputs->bakedRadiosity)
+        setup.renderer->setBakedRadiosity(std::move(inputs->bakedRadiosity));
     exitCode = kOk;
     return setup;
 }
