@@ -81,6 +81,13 @@ std::vector<ParameterInfo> declareParameters() {
                        "scene and the view",
                        kLpvAll | P::Rsm),
                   "auto"),
+        // The convergence question (issue #47): refinement r on top of the
+        // fitted (or forced) LPV, renderer/src/analysis/LpvFit.cpp.
+        integer("lpv.refinement", 1, 1, 4, "x", "LPV",
+                "Refines the LPV: cells 1/r the size of lpv.cellSize (fitted or forced), r times lpv.gridSize "
+                "cells along each axis and r times lpv.propagationSteps, so every cascade covers the same space "
+                "and light travels as far in finer steps (r^3 the cells, r^4 the propagation work)",
+                kLpvAll | P::Rsm),
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
                 "Propagation iterations per cascade; light travels one cell per step",
                P::LpvPropagation | P::LpvBounces | P::Shading),

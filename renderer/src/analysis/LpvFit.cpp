@@ -41,9 +41,8 @@ double largestSide(const scene::Bounds& b) {
     return double(std::max({size.x, size.y, size.z}));
 }
 
-} // namespace
-
-LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
+// The fit before lpv.refinement.
+LpvFit fitUnrefined(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
     LpvFit fit;
     const int gridSize = params.getInt("lpv.gridSize");
     fit.cascades = std::min(params.getInt("lpv.cascades"), params.getInt("rsm.cascades"));
@@ -85,13 +84,53 @@ LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBound
     return fit;
 }
 
+} // namespace
+
+int refinedGridSize(int gridSize, int refinement) {
+    return std::min(gridSize * std::max(refinement, 1), std::max(gridSize, kMaxRefinedGridSize));
+}
+
+namespace {
+
+// lpv.refinement on top of the fit (LpvFit.h): finer cells, as many more of
+// them and steps, so the cascades' extent and light's reach stay the same.
+LpvFit refined(LpvFit fit, int gridSize) {
+    if (fit.refinement <= 1)
+        return fit;
+    const int r = fit.refinement;
+    fit.cellSize /= double(r);
+    fit.gridSize = refinedGridSize(gridSize, r);
+    const int steps = std::min(fit.steps * r, std::max(fit.steps, kMaxRefinedSteps));
+    fit.reason += ", refined x" + std::to_string(r) + ": cell " + length(fit.cellSize) + ", " +
+                  std::to_string(fit.gridSize) + "^3 cells, " + std::to_string(steps) + " steps";
+    if (fit.gridSize < gridSize * r || steps < fit.steps * r)
+        fit.reason += " (capped at lpv.gridSize " + std::to_string(kMaxRefinedGridSize) +
+                      " and lpv.propagationSteps " + std::to_string(kMaxRefinedSteps) + ")";
+    fit.steps = steps;
+    return fit;
+}
+
+} // namespace
+
+LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
+    LpvFit fit = fitUnrefined(params, sceneBounds, camera);
+    fit.refinement = params.getInt("lpv.refinement");
+    fit.gridSize = params.getInt("lpv.gridSize");
+    return refined(std::move(fit), params.getInt("lpv.gridSize"));
+}
+
 scene::ParameterSet withFit(const scene::ParameterSet& params, const LpvFit& fit) {
-    if (!fit.fitted)
+    const bool refinedFit = fit.refinement > 1;
+    if (!fit.fitted && !refinedFit)
         return params;
     scene::ParameterSet out = params;
     // The registry's range holds every fit (1e-6 .. 1e6 m); a scene beyond
     // it is refused at load (ValueChecks' kMaxLength bounds every length).
     (void)out.set("lpv.cellSize", std::clamp(fit.cellSize, 1e-6, 1e6));
+    if (refinedFit) {
+        (void)out.set("lpv.gridSize", fit.gridSize);
+        (void)out.set("lpv.propagationSteps", fit.steps);
+    }
     return out;
 }
 
@@ -101,7 +140,7 @@ LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sc
         return {};
     const glm::dvec3 eye = glm::dvec3(camera);
     const double coarsestCell = std::ldexp(fit.cellSize, fit.cascades - 1);
-    const double served = servedReach(coarsestCell, gridSize);
+    const double served = servedReach(coarsestCell, refinedGridSize(gridSize, fit.refinement));
     const double nearest = nearestAxisDistance(sceneBounds, eye);
     if (nearest > served)
         return {Problem::OutsideCascades, "the scene lies outside every cascade: the coarsest reaches " +
@@ -124,7 +163,9 @@ LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sc
 }
 
 std::string fitNote(const LpvFit& fit, const LpvDelivery& delivery) {
-    std::string note = fit.fitted ? "; fitted: " + fit.reason : std::string();
+    std::string note = fit.fitted           ? "; fitted: " + fit.reason
+                       : fit.refinement > 1 ? "; " + fit.reason
+                                            : std::string();
     if (delivery.problem != LpvDelivery::Problem::None && !delivery.skipsLpv())
         note += "; warning: almost no indirect light: " + delivery.reason;
     return note;

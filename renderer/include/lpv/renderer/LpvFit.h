@@ -30,11 +30,22 @@ namespace lpv::renderer {
 // Finest cells per scene side (the scene's largest bounds side).
 inline constexpr int kFinestCellsPerScene = 160;
 
+// lpv.refinement r (issue #47's convergence question): on top of the fit
+// (or a forced size) the cells are 1/r the size, r times as many along each
+// axis (lpv.gridSize, at most its registry maximum) and the steps r times
+// lpv.propagationSteps (at most its maximum), so each cascade covers the
+// same space and light travels the same distance in finer steps.
+inline constexpr int kMaxRefinedGridSize = 128;   // lpv.gridSize's maximum
+inline constexpr int kMaxRefinedSteps = 64;       // lpv.propagationSteps' maximum
+int refinedGridSize(int gridSize, int refinement);
+
 struct LpvFit {
     bool fitted = false;   // lpv.cellSize = auto (else the numbers below are the parameters')
-    double cellSize = 0.0; // of the finest cascade, world units
+    double cellSize = 0.0; // of the finest cascade, world units (refined)
     int cascades = 1;      // lpv.cascades, as far as rsm.cascades has tiles
-    int steps = 0;         // lpv.propagationSteps
+    int steps = 0;         // lpv.propagationSteps (refined)
+    int refinement = 1;    // lpv.refinement
+    int gridSize = 0;      // lpv.gridSize (refined)
     // One line for `lpv render`'s LPV line, --explain and the Effects dock:
     // "cell 5.08 cm (1/160 of the 2.03 m scene, x4 to reach it from the camera), 4 cascades up to 40.6 cm, 8 steps".
     std::string reason;
@@ -45,8 +56,9 @@ struct LpvFit {
 // `sceneBounds` in the same space as `camera`.
 LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera);
 
-// `params` with the fitted lpv.cellSize written in: what every pass of
-// the frame reads. Unchanged when the fit is not fitted.
+// `params` with the fitted lpv.cellSize written in (and, refined, the
+// refined lpv.cellSize, lpv.gridSize and lpv.propagationSteps): what every
+// pass of the frame reads. Unchanged when neither fitted nor refined.
 scene::ParameterSet withFit(const scene::ParameterSet& params, const LpvFit& fit);
 
 // Whether an LPV with these cascades delivers light to the view; when it
@@ -54,7 +66,9 @@ scene::ParameterSet withFit(const scene::ParameterSet& params, const LpvFit& fit
 // analysis then skips the LPV: its passes would add nothing), no step
 // propagates, or even the coarsest cascade carries light less than 1/8 of
 // the way across the scene.
-// The cascades are cubes of `gridSize` cells of cellSize * 2^k around `camera`.
+// The cascades are cubes of `gridSize` cells of cellSize * 2^k around
+// `camera`; `gridSize` is lpv.gridSize as the parameters give it, which the
+// fit's refinement multiplies (refinedGridSize).
 struct LpvDelivery {
     enum class Problem { None, OutsideCascades, NoSteps, ShortReach };
     Problem problem = Problem::None;

@@ -1,0 +1,76 @@
+// The report's convergence question (issue #47) without GL: on the imported
+// Cornell box seen by its framing camera (as `lpv import` and `lpv bench
+// report` see it), each of its settings refines the scene-fitted LPV to
+// cells h, h/2, h/4 with steps n, 2n, 4n and as many more cells per axis, so
+// every run's cascades cover the same space and carry light as far.
+#include "TestPaths.h"
+
+#include "lpv/bench/Questions.h"
+#include "lpv/bench/Settings.h"
+#include "lpv/importers/Importer.h"
+#include "lpv/renderer/LpvFit.h"
+#include "lpv/scene/FramingCamera.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+using namespace lpv;
+
+namespace {
+
+const bench::Question& convergence() {
+    const auto& questions = bench::reportQuestions();
+    const auto it = std::ranges::find(questions, std::string("convergence"), &bench::Question::name);
+    if (it == questions.end())
+        throw std::runtime_error("no convergence question");
+    return *it;
+}
+
+std::vector<std::vector<bench::Setting>> combinationsOf(const std::string& sweep) {
+    std::string error;
+    const bench::SetPlan plan = bench::planSettings({sweep}, error);
+    EXPECT_TRUE(error.empty()) << error;
+    return plan.combinations;
+}
+
+} // namespace
+
+TEST(ConvergenceQuestion, RefinesTheFittedCellsAndScalesStepsAndCellCountOnTheImportedCornellBox) {
+    auto imported =
+        importers::importScene(std::filesystem::path(test::kSharedScenesDir) / "cornell/CornellBox-Original.obj");
+    ASSERT_TRUE(imported) << imported.error().describe();
+    const scene::Bounds bounds = imported->scene.worldBounds();
+    const glm::vec3 eye = scene::framingCamera(imported->scene).position;
+    const scene::ParameterSet defaults;
+
+    const auto combinations = combinationsOf(convergence().sweep);
+    ASSERT_EQ(combinations.size(), 3u);
+    ASSERT_TRUE(bench::checkCombinations({{}, combinations}, defaults, "--sweep") == std::nullopt);
+    double h = 0.0; // the fitted finest cell of the first (unrefined) run
+    const int n = defaults.getInt("lpv.propagationSteps"), cells = defaults.getInt("lpv.gridSize");
+    for (std::size_t i = 0; i < combinations.size(); ++i) {
+        scene::ParameterSet p = defaults;
+        for (const auto& [key, value] : combinations[i])
+            ASSERT_TRUE(p.setFromText(key, value, "--sweep").has_value());
+        const renderer::LpvFit fit = renderer::fitLpv(p, bounds, eye);
+        const scene::ParameterSet frame = renderer::withFit(p, fit);
+        const int r = 1 << i; // 1, 2, 4
+        SCOPED_TRACE(fit.reason);
+        if (i == 0)
+            h = frame.getFloat("lpv.cellSize");
+        EXPECT_TRUE(fit.fitted);
+        EXPECT_NEAR(frame.getFloat("lpv.cellSize"), h / r, 1e-6 * h);
+        EXPECT_EQ(frame.getInt("lpv.propagationSteps"), n * r);
+        EXPECT_EQ(frame.getInt("lpv.gridSize"), cells * r);
+        EXPECT_EQ(renderer::lpvDelivery(fit, cells, bounds, eye).problem, renderer::LpvDelivery::Problem::None);
+    }
+    // The 2 m box framed from outside: the fit's cells are larger than 1/160 of it.
+    EXPECT_GT(h, 2.0 / 160.0);
+    // --quick asks the first two.
+    const auto quick = combinationsOf(convergence().quickSweep);
+    ASSERT_EQ(quick.size(), 2u);
+    EXPECT_EQ(quick[0], combinations[0]);
+    EXPECT_EQ(quick[1], combinations[1]);
+}
