@@ -30,8 +30,6 @@ ForwardRenderer::~ForwardRenderer() = default;
 
 Expected<ForwardRenderer> ForwardRenderer::create() {
     ForwardRenderer r;
-    auto shadows = ShadowPass::create();
-    if (!shadows) return std::unexpected(shadows.error());
     GLint fragmentUnits = 0;
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
     r.impl_->subsurfaceSampler = fragmentUnits >= kSamplersWithSubsurface;
@@ -66,13 +64,13 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
-    r.impl_->shadows.emplace(std::move(*shadows));
     r.impl_->rsm.emplace(std::move(*rsm));
     r.impl_->depthPrepassProgram = *prepass;
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();
     r.impl_->graph.reserveUnits(MaterialGpu::kBaseColorUnit, 15); // MaterialGpu binds these per draw
-    r.impl_->buildPassTable();
+    if (auto table = r.impl_->buildPassTable(); !table)
+        return std::unexpected(table.error());
     return r;
 }
 
@@ -141,9 +139,9 @@ int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
 DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
 int ForwardRenderer::shadowCascadesDrawn() const {
-    return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->cascadesDrawn() : 0;
+    return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->maps().cascadesDrawn() : 0;
 }
-int ForwardRenderer::shadowCascadesStale() const { return impl_->shadows->staleCascades(); }
+int ForwardRenderer::shadowCascadesStale() const { return impl_->shadows->maps().staleCascades(); }
 std::string ForwardRenderer::lpvNote() const {
     // The LPV's line, then how its size was chosen, then why it delivers
     // (almost) nothing when it does not: a silent zero is a bug to a user.

@@ -20,7 +20,7 @@
 #include "gl/ProgramCache.h"
 #include "scenegpu/RenderSpace.h"
 #include "passes/lpv/RsmPass.h"
-#include "passes/direct/ShadowPass.h"
+#include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
@@ -34,14 +34,6 @@
 #include <vector>
 
 namespace lpv::renderer {
-
-// What lighting a pass reads: every field the light's table hashes (all but
-// its name, SceneFields.h), so a field added there is in every reuse key.
-inline void addLights(graph::ContentHash& h, const std::vector<scene::Light>& lights) {
-    h.add(lights.size());
-    for (const scene::Light& l : lights)
-        scene::hashFields(l, [&](const void* p, std::size_t n) { h.bytes(p, n); });
-}
 
 struct ForwardRenderer::Impl {
     // The forward and tonemap programs, built at create(); their uniform locations looked up once.
@@ -58,7 +50,7 @@ struct ForwardRenderer::Impl {
     const CachedProgram* depthPrepassProgram = nullptr;       // cuts alpha-masked holes
     const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
     const CachedProgram* tonemapProgram = nullptr;
-    std::optional<ShadowPass> shadows;
+    const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
     std::optional<RsmPass> rsm;
     std::optional<LpvPass> lpv;
     // Passes that run only when the scene calls for them are created on
@@ -139,12 +131,11 @@ struct ForwardRenderer::Impl {
     // The frame's passes in declaration order (PassTable.cpp): each adds
     // itself to the graph every frame.
     std::vector<std::unique_ptr<FramePass>> passes;
-    void buildPassTable();
+    scene::Expected<void> buildPassTable();
 
     // FramePasses.cpp
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
-    void declareShadows(const FrameContext& frame);
     void declareDepthPrepass(const FrameState& state);
     void declareShading(const FrameState& state);
     void declarePost(const FrameContext& frame);
@@ -152,7 +143,6 @@ struct ForwardRenderer::Impl {
     void renderForward(graph::PassContext& ctx, bool afterPrepass);
     void renderTonemap(graph::PassContext& ctx, bool autoExposure);
     void attachCameraTargets();
-    std::uint64_t cameraKey(const FrameContext& frame) const;
 
     // IndirectPasses.cpp
     scene::Expected<void> planIndirect(const FrameContext& frame);

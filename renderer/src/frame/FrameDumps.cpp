@@ -77,7 +77,7 @@ std::vector<DebugImage> ForwardRenderer::Impl::dump(const std::string& name) con
 std::vector<DebugImage> ForwardRenderer::Impl::dumpResource(const std::string& name) const {
     // Outputs whose pass draws them better than the raw texels.
     if (name == resources::ShadowMaps.name())
-        return shadows->debugImages();
+        return shadows->maps().debugImages();
     if (name == resources::RsmPosition.name() || name == resources::RsmNormal.name() || name == resources::RsmFlux.name())
         return rsm->active() ? keepSuffix(rsm->debugImages(), "-" + name.substr(4)) : std::vector<DebugImage>{};
     if (name == resources::LocalRsmPosition.name() || name == resources::LocalRsmNormal.name() ||

@@ -1,7 +1,6 @@
-// The frame's direct-light passes the renderer still declares itself: shadow
-// maps, the depth pre-pass, shading (the forward pass that also writes the
+// The frame's direct-light passes the renderer still declares itself: the depth pre-pass, shading (the forward pass that also writes the
 // camera G-buffer), exposure and tonemapping, and the camera targets they
-// share. Sun rays declare themselves (passes/direct/SunRaysPass.cpp).
+// share. Shadow maps and sun rays declare themselves (passes/direct/).
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/lpv/GlossyReflections.h"
@@ -115,13 +114,6 @@ scene::Expected<void> ForwardRenderer::Impl::checkSize(int w, int h) const {
     return {};
 }
 
-std::uint64_t ForwardRenderer::Impl::cameraKey(const FrameContext& frame) const {
-    graph::ContentHash h;
-    h.add(sceneGeneration).add(frame.viewProj).add(frame.camera.position).add(frame.width).add(frame.height);
-    addLights(h, frame.scene.lights);
-    return h.value();
-}
-
 void ForwardRenderer::Impl::declareCameraTargets(const FrameContext& frame) {
     const int w = frame.width, h = frame.height;
     if (w != width || h != height)
@@ -157,38 +149,6 @@ void ForwardRenderer::Impl::attachCameraTargets() {
         glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display, 0);
         displayFboColor = display;
     }
-}
-
-void ForwardRenderer::Impl::declareShadows(const FrameContext& frame) {
-    graph.importResource(resources::ShadowMaps, [this] {
-        const GLuint id = shadows->primaryMap();
-        return graph::ImportedView{id, graph::queryTexture(id)};
-    });
-    graph::PassSpec p;
-    p.id = Pass::ShadowMaps;
-    p.decision = runsBecause("direct light is shadowed");
-    p.writes = {resources::ShadowMaps};
-    // What the maps are drawn from besides the cascades' matrices: a cascade
-    // whose snapped matrix did not move keeps its layer (ShadowPass).
-    graph::ContentHash content;
-    content.add(sceneGeneration);
-    addLights(content, frame.scene.lights);
-    for (const char* key : {"shadow.mapSize", "shadow.cascades", "shadow.stabilize", "shadow.cascadeDraws",
-                            "shadow.farCascadeInterval"})
-        content.add(frame.params.get(key));
-    // The sun's cascades follow the camera; stale far cascades
-    // (shadow.farCascadeInterval) still have to be redrawn when it stops.
-    // Spot and point maps do not depend on the camera: without a shadowed
-    // sun, turning the camera keeps them.
-    p.inputsKey = selectShadowLights(frame.scene).sun >= 0
-                      ? graph::ContentHash().add(cameraKey(frame)).add(shadows->refreshKey()).value()
-                      : content.value();
-    // lpv.reuse = false (the benchmarks) draws every cascade every frame.
-    const std::uint64_t layersKey = frame.params.getBool("lpv.reuse") ? content.value() : 0;
-    p.execute = [this, key = layersKey](graph::PassContext& ctx) {
-        return shadows->render(ctx.frame, *sceneGpu, *materialGpu, key);
-    };
-    graph.addPass(std::move(p));
 }
 
 void ForwardRenderer::Impl::declareDepthPrepass(const FrameState& state) {
@@ -272,7 +232,7 @@ const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& f
     ProgramVariant variant{{"forward.vert", "forward.frag"}, forwardDefines};
     if (std::ranges::any_of(frame.scene.lights, [](const scene::Light& l) { return l.type == scene::LightType::Area; }))
         variant.defines.push_back("LPV_AREA_LIGHTS 1");
-    if (!shadows->hasLocalShadows())
+    if (!shadows->maps().hasLocalShadows())
         variant.defines.push_back("LPV_NO_LOCAL_SHADOWS 1");
     if (!lpv->visibilityBound())
         variant.defines.push_back("LPV_NO_VISIBILITY 1");
@@ -322,7 +282,7 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLtcTableBinding, ltcTable.id());
     // Texture units come from the graph, around the units MaterialGpu binds per draw.
     const UnitAllocator nextUnit = [&ctx] { return ctx.allocateUnit(); };
-    shadows->bindForShading(shader, frame, nextUnit);
+    shadows->maps().bindForShading(shader, frame, nextUnit);
     lpv->bindForShading(shader, frame.params, nextUnit);
     if (subsurface->volume() && lpv->active())
         subsurface->volume()->bindForShading(shader, ctx.allocateUnit());

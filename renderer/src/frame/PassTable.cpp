@@ -6,6 +6,7 @@
 // IndirectPasses.cpp) and take their place through declaredByRenderer.
 #include "frame/ForwardRendererImpl.h"
 
+#include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/lpv/SkyHeightFramePass.h"
@@ -39,8 +40,11 @@ std::unique_ptr<FramePass> declaredByRenderer(std::function<void(FrameState&)> d
 
 } // namespace
 
-void ForwardRenderer::Impl::buildPassTable() {
-    passes.push_back(declaredByRenderer([this](FrameState& s) { declareShadows(s.frame); }));
+scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
+    auto shadowMaps = ShadowMapsFramePass::create();
+    if (!shadowMaps)
+        return std::unexpected(shadowMaps.error());
+    shadows = &add(passes, std::move(*shadowMaps));
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
     skyHeight = &add(passes, std::make_unique<SkyHeightFramePass>());
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
@@ -51,6 +55,7 @@ void ForwardRenderer::Impl::buildPassTable() {
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));
     passes.push_back(std::make_unique<SunRaysPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declarePost(s.frame); }));
+    return {};
 }
 
 } // namespace lpv::renderer
