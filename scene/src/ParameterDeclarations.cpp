@@ -83,11 +83,12 @@ std::vector<ParameterInfo> declareParameters() {
                   "auto"),
         // The convergence question (issue #47): refinement r on top of the
         // fitted (or forced) LPV, renderer/src/analysis/LpvFit.cpp.
-        integer("lpv.refinement", 1, 1, 4, "x", "LPV",
-                "Refines the LPV: cells 1/r the size of lpv.cellSize (fitted or forced), r times lpv.gridSize "
-                "cells along each axis and r times lpv.propagationSteps, so every cascade covers the same space "
-                "and light travels as far in finer steps (r^3 the cells, r^4 the propagation work)",
-                kLpvAll | P::Rsm),
+        real("lpv.refinement", 1.0, 0.25, 4.0, "x", "LPV",
+             "Refines (above 1) or coarsens (below 1) the LPV by r: cells 1/r the size of lpv.cellSize (fitted or "
+             "forced), r times lpv.gridSize cells along each axis and r times lpv.propagationSteps (rounded; at "
+             "most 128 and 64), so every cascade covers the same space and light travels as far in finer steps "
+             "(r^3 the cells, r^4 the propagation work; powers of two keep the extent exact)",
+             kLpvAll | P::Rsm),
         integer("lpv.propagationSteps", 8, 0, 64, "steps", "LPV",
                 "Propagation iterations per cascade; light travels one cell per step",
                P::LpvPropagation | P::LpvBounces | P::Shading),

@@ -1,8 +1,9 @@
 // The report's convergence question (issue #47) without GL: on the imported
 // Cornell box seen by its framing camera (as `lpv import` and `lpv bench
-// report` see it), each of its settings refines the scene-fitted LPV to
-// cells h, h/2, h/4 with steps n, 2n, 4n and as many more cells per axis, so
-// every run's cascades cover the same space and carry light as far.
+// report` see it), each of its settings refines the scene-fitted LPV (cell
+// h, n steps, N cells per axis) to cells 2h, h, h/2 with steps n/2, n, 2n and
+// N/2, N, 2N cells per axis, so every run's cascades cover the same space and
+// carry light as far.
 #include "TestPaths.h"
 
 #include "lpv/bench/Questions.h"
@@ -48,27 +49,29 @@ TEST(ConvergenceQuestion, RefinesTheFittedCellsAndScalesStepsAndCellCountOnTheIm
     const auto combinations = combinationsOf(convergence().sweep);
     ASSERT_EQ(combinations.size(), 3u);
     ASSERT_TRUE(bench::checkCombinations({{}, combinations}, defaults, "--sweep") == std::nullopt);
-    double h = 0.0; // the fitted finest cell of the first (unrefined) run
     const int n = defaults.getInt("lpv.propagationSteps"), cells = defaults.getInt("lpv.gridSize");
+    const double h = renderer::fitLpv(defaults, bounds, eye).cellSize; // the fitted finest cell
+    const double refinements[] = {0.5, 1.0, 2.0};
     for (std::size_t i = 0; i < combinations.size(); ++i) {
         scene::ParameterSet p = defaults;
         for (const auto& [key, value] : combinations[i])
             ASSERT_TRUE(p.setFromText(key, value, "--sweep").has_value());
         const renderer::LpvFit fit = renderer::fitLpv(p, bounds, eye);
         const scene::ParameterSet frame = renderer::withFit(p, fit);
-        const int r = 1 << i; // 1, 2, 4
+        const double r = refinements[i];
         SCOPED_TRACE(fit.reason);
-        if (i == 0)
-            h = frame.getFloat("lpv.cellSize");
         EXPECT_TRUE(fit.fitted);
         EXPECT_NEAR(frame.getFloat("lpv.cellSize"), h / r, 1e-6 * h);
-        EXPECT_EQ(frame.getInt("lpv.propagationSteps"), n * r);
-        EXPECT_EQ(frame.getInt("lpv.gridSize"), cells * r);
+        EXPECT_EQ(frame.getInt("lpv.propagationSteps"), int(n * r));
+        EXPECT_EQ(frame.getInt("lpv.gridSize"), int(cells * r));
+        // The coarsest cascade's extent and light's reach in it do not change.
+        EXPECT_NEAR(frame.getFloat("lpv.cellSize") * frame.getInt("lpv.gridSize"), h * cells, 1e-5 * h * cells);
+        EXPECT_NEAR(frame.getFloat("lpv.cellSize") * frame.getInt("lpv.propagationSteps"), h * n, 1e-5 * h * n);
         EXPECT_EQ(renderer::lpvDelivery(fit, cells, bounds, eye).problem, renderer::LpvDelivery::Problem::None);
     }
     // The 2 m box framed from outside: the fit's cells are larger than 1/160 of it.
     EXPECT_GT(h, 2.0 / 160.0);
-    // --quick asks the first two.
+    // --quick asks the coarser two.
     const auto quick = combinationsOf(convergence().quickSweep);
     ASSERT_EQ(quick.size(), 2u);
     EXPECT_EQ(quick[0], combinations[0]);

@@ -80,30 +80,30 @@ TEST(LpvFit, ANumberForcesTheCellSizeAndTheDeliveryIsJudged) {
 
 // lpv.refinement (issue #47's convergence question): on top of the fit, cells
 // 1/r the size, r times as many along each axis and r times the steps, so the
-// cascades cover the same space and light travels as far.
+// cascades cover the same space and light travels as far (r < 1 coarsens).
 TEST(LpvFit, RefinementDividesTheCellsAndMultipliesTheirCountAndTheSteps) {
     const scene::Bounds b = box(5.6f);
     const glm::vec3 camera(2.8f, 1.4f, -8.0f); // outside: the fit doubles the cells
     const scene::ParameterSet defaults;
     const renderer::LpvFit base = renderer::fitLpv(defaults, b, camera);
-    for (int r : {1, 2, 4}) {
+    for (double r : {0.5, 1.0, 2.0, 4.0}) {
         SCOPED_TRACE(r);
         scene::ParameterSet p;
         ASSERT_TRUE(p.set("lpv.refinement", r).has_value());
         const renderer::LpvFit fit = renderer::fitLpv(p, b, camera);
         EXPECT_TRUE(fit.fitted);
         EXPECT_NEAR(fit.cellSize, base.cellSize / r, 1e-9);
-        EXPECT_EQ(fit.gridSize, 32 * r);
-        EXPECT_EQ(fit.steps, 8 * r);
+        EXPECT_EQ(fit.gridSize, int(32 * r));
+        EXPECT_EQ(fit.steps, int(8 * r));
         const scene::ParameterSet frame = renderer::withFit(p, fit);
         EXPECT_EQ(frame.getFloat("lpv.cellSize"), float(fit.cellSize));
-        EXPECT_EQ(frame.getInt("lpv.gridSize"), 32 * r);
-        EXPECT_EQ(frame.getInt("lpv.propagationSteps"), 8 * r);
+        EXPECT_EQ(frame.getInt("lpv.gridSize"), int(32 * r));
+        EXPECT_EQ(frame.getInt("lpv.propagationSteps"), int(8 * r));
         // The same extent and reach as unrefined; the delivery judged on the refined grid.
         EXPECT_NEAR(fit.cellSize * fit.gridSize, base.cellSize * 32, 1e-9);
         EXPECT_NEAR(fit.cellSize * fit.steps, base.cellSize * 8, 1e-9);
         EXPECT_EQ(renderer::lpvDelivery(fit, 32, b, camera).problem, LpvDelivery::Problem::None);
-        EXPECT_EQ(fit.reason.find("refined") != std::string::npos, r > 1) << fit.reason;
+        EXPECT_EQ(fit.reason.find("refinement x") != std::string::npos, r != 1.0) << fit.reason;
     }
 }
 
@@ -112,18 +112,18 @@ TEST(LpvFit, RefinementRefinesAForcedSizeAndIsCappedAtTheRegistrysMaximum) {
     ASSERT_TRUE(p.set("lpv.cellSize", 0.2).has_value());
     ASSERT_TRUE(p.set("lpv.gridSize", 64).has_value());
     ASSERT_TRUE(p.set("lpv.propagationSteps", 32).has_value());
-    ASSERT_TRUE(p.set("lpv.refinement", 4).has_value());
+    ASSERT_TRUE(p.set("lpv.refinement", 4.0).has_value());
     const renderer::LpvFit fit = renderer::fitLpv(p, box(5.6f), glm::vec3(2.8f, 1.4f, 2.2f));
     EXPECT_FALSE(fit.fitted);
     EXPECT_NEAR(fit.cellSize, 0.05, 1e-7);
     EXPECT_EQ(fit.gridSize, 128);
     EXPECT_EQ(fit.steps, 64);
-    EXPECT_NE(fit.reason.find("capped"), std::string::npos) << fit.reason;
+    EXPECT_NE(fit.reason.find("capped at lpv.gridSize 8-128"), std::string::npos) << fit.reason;
     const scene::ParameterSet frame = renderer::withFit(p, fit);
     EXPECT_EQ(frame.getInt("lpv.gridSize"), 128);
     EXPECT_EQ(frame.getInt("lpv.propagationSteps"), 64);
-    EXPECT_NE(renderer::fitNote(fit, {}).find("refined x4"), std::string::npos);
+    EXPECT_NE(renderer::fitNote(fit, {}).find("refinement x4"), std::string::npos);
     // Unrefined, a forced size leaves the parameters as they are.
-    ASSERT_TRUE(p.set("lpv.refinement", 1).has_value());
+    ASSERT_TRUE(p.set("lpv.refinement", 1.0).has_value());
     EXPECT_EQ(renderer::withFit(p, renderer::fitLpv(p, box(5.6f), glm::vec3(2.8f, 1.4f, 2.2f))), p);
 }

@@ -86,26 +86,36 @@ LpvFit fitUnrefined(const scene::ParameterSet& params, const scene::Bounds& scen
 
 } // namespace
 
-int refinedGridSize(int gridSize, int refinement) {
-    return std::min(gridSize * std::max(refinement, 1), std::max(gridSize, kMaxRefinedGridSize));
+int refinedGridSize(int gridSize, double refinement) {
+    const long cells = std::lround(double(gridSize) * refinement);
+    return int(std::clamp<long>(cells, std::min(gridSize, kMinRefinedGridSize), std::max(gridSize, kMaxRefinedGridSize)));
+}
+
+int refinedSteps(int steps, double refinement) {
+    const long refined = std::lround(double(steps) * refinement);
+    return int(std::clamp<long>(refined, steps > 0 ? 1 : 0, std::max(steps, kMaxRefinedSteps)));
 }
 
 namespace {
 
-// lpv.refinement on top of the fit (LpvFit.h): finer cells, as many more of
-// them and steps, so the cascades' extent and light's reach stay the same.
+// lpv.refinement on top of the fit (LpvFit.h): finer (or coarser) cells, as
+// many more (fewer) of them and steps, so the cascades' extent and light's
+// reach stay the same.
 LpvFit refined(LpvFit fit, int gridSize) {
-    if (fit.refinement <= 1)
+    fit.gridSize = refinedGridSize(gridSize, fit.refinement);
+    if (fit.refinement == 1.0)
         return fit;
-    const int r = fit.refinement;
-    fit.cellSize /= double(r);
-    fit.gridSize = refinedGridSize(gridSize, r);
-    const int steps = std::min(fit.steps * r, std::max(fit.steps, kMaxRefinedSteps));
-    fit.reason += ", refined x" + std::to_string(r) + ": cell " + length(fit.cellSize) + ", " +
+    const double r = fit.refinement;
+    fit.cellSize /= r;
+    const int steps = refinedSteps(fit.steps, r);
+    char factor[32];
+    std::snprintf(factor, sizeof factor, "%g", r);
+    fit.reason += std::string(", refinement x") + factor + ": cell " + length(fit.cellSize) + ", " +
                   std::to_string(fit.gridSize) + "^3 cells, " + std::to_string(steps) + " steps";
-    if (fit.gridSize < gridSize * r || steps < fit.steps * r)
-        fit.reason += " (capped at lpv.gridSize " + std::to_string(kMaxRefinedGridSize) +
-                      " and lpv.propagationSteps " + std::to_string(kMaxRefinedSteps) + ")";
+    if (double(fit.gridSize) != double(gridSize) * r || double(steps) != double(fit.steps) * r)
+        fit.reason += " (rounded, or capped at lpv.gridSize " + std::to_string(kMinRefinedGridSize) + "-" +
+                      std::to_string(kMaxRefinedGridSize) + " and lpv.propagationSteps " +
+                      std::to_string(kMaxRefinedSteps) + ")";
     fit.steps = steps;
     return fit;
 }
@@ -114,13 +124,12 @@ LpvFit refined(LpvFit fit, int gridSize) {
 
 LpvFit fitLpv(const scene::ParameterSet& params, const scene::Bounds& sceneBounds, const glm::vec3& camera) {
     LpvFit fit = fitUnrefined(params, sceneBounds, camera);
-    fit.refinement = params.getInt("lpv.refinement");
-    fit.gridSize = params.getInt("lpv.gridSize");
+    fit.refinement = double(params.getFloat("lpv.refinement"));
     return refined(std::move(fit), params.getInt("lpv.gridSize"));
 }
 
 scene::ParameterSet withFit(const scene::ParameterSet& params, const LpvFit& fit) {
-    const bool refinedFit = fit.refinement > 1;
+    const bool refinedFit = fit.refinement != 1.0;
     if (!fit.fitted && !refinedFit)
         return params;
     scene::ParameterSet out = params;
@@ -164,7 +173,7 @@ LpvDelivery lpvDelivery(const LpvFit& fit, int gridSize, const scene::Bounds& sc
 
 std::string fitNote(const LpvFit& fit, const LpvDelivery& delivery) {
     std::string note = fit.fitted           ? "; fitted: " + fit.reason
-                       : fit.refinement > 1 ? "; " + fit.reason
+                       : fit.refinement != 1.0 ? "; " + fit.reason
                                             : std::string();
     if (delivery.problem != LpvDelivery::Problem::None && !delivery.skipsLpv())
         note += "; warning: almost no indirect light: " + delivery.reason;

@@ -32,19 +32,22 @@ inline constexpr int kFinestCellsPerScene = 160;
 
 // lpv.refinement r (issue #47's convergence question): on top of the fit
 // (or a forced size) the cells are 1/r the size, r times as many along each
-// axis (lpv.gridSize, at most its registry maximum) and the steps r times
-// lpv.propagationSteps (at most its maximum), so each cascade covers the
-// same space and light travels the same distance in finer steps.
-inline constexpr int kMaxRefinedGridSize = 128;   // lpv.gridSize's maximum
-inline constexpr int kMaxRefinedSteps = 64;       // lpv.propagationSteps' maximum
-int refinedGridSize(int gridSize, int refinement);
+// axis (lpv.gridSize, rounded, 8 to 128) and the steps r times
+// lpv.propagationSteps (rounded, at most 64), so each cascade covers the
+// same space and light travels the same distance in finer (r > 1) or
+// coarser (r < 1) steps.
+inline constexpr int kMinRefinedGridSize = 8;   // lpv.gridSize's minimum
+inline constexpr int kMaxRefinedGridSize = 128; // lpv.gridSize's maximum
+inline constexpr int kMaxRefinedSteps = 64;     // lpv.propagationSteps' maximum
+int refinedGridSize(int gridSize, double refinement);
+int refinedSteps(int steps, double refinement);
 
 struct LpvFit {
     bool fitted = false;   // lpv.cellSize = auto (else the numbers below are the parameters')
     double cellSize = 0.0; // of the finest cascade, world units (refined)
     int cascades = 1;      // lpv.cascades, as far as rsm.cascades has tiles
     int steps = 0;         // lpv.propagationSteps (refined)
-    int refinement = 1;    // lpv.refinement
+    double refinement = 1.0; // lpv.refinement
     int gridSize = 0;      // lpv.gridSize (refined)
     // One line for `lpv render`'s LPV line, --explain and the Effects dock:
     // "cell 5.08 cm (1/160 of the 2.03 m scene, x4 to reach it from the camera), 4 cascades up to 40.6 cm, 8 steps".
