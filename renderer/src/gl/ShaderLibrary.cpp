@@ -2,6 +2,11 @@
 
 #include "gl/EmbeddedShaders.h"
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
 #include <regex>
 #include <sstream>
 
@@ -10,7 +15,35 @@ namespace lpv::renderer {
 using scene::ErrorCode;
 using scene::makeError;
 
+namespace {
+
+// LPV_SHADER_DIR=<folder>: shaders read from that folder (the source tree's
+// shaders/) in place of the embedded copies, so a shader edit shows without a
+// rebuild. A developer's switch: each file is read once per process and kept
+// (callers hold string_views); a file missing there falls back to the
+// embedded one.
+std::optional<std::string_view> shaderFromOverrideDir(std::string_view name) {
+    static const char* dir = std::getenv("LPV_SHADER_DIR");
+    if (dir == nullptr || *dir == '\0')
+        return std::nullopt;
+    static std::mutex mutex;
+    static std::map<std::string, std::string, std::less<>> cache;
+    std::lock_guard lock(mutex);
+    if (auto it = cache.find(name); it != cache.end())
+        return std::string_view(it->second);
+    std::ifstream in(std::filesystem::path(dir) / std::string(name), std::ios::binary);
+    if (!in)
+        return std::nullopt;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return std::string_view(cache.emplace(std::string(name), text.str()).first->second);
+}
+
+} // namespace
+
 std::optional<std::string_view> embeddedShader(std::string_view name) {
+    if (auto overridden = shaderFromOverrideDir(name))
+        return overridden;
     for (const EmbeddedShader& s : embeddedShaders())
         if (s.name == name)
             return s.source;

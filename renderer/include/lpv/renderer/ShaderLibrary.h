@@ -17,7 +17,8 @@ struct ShaderStageSource {
     std::string source;
 };
 
-// The embedded source of `shaders/<name>`, or nullopt.
+// The embedded source of `shaders/<name>`, or nullopt. With LPV_SHADER_DIR set,
+// the file of that name in that folder wins (shader iteration without a rebuild).
 std::optional<std::string_view> embeddedShader(std::string_view name);
 std::vector<std::string> embeddedShaderNames();
 
