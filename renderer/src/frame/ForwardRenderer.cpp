@@ -53,8 +53,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     r.impl_->depthPrepassOpaqueProgram = *prepassOpaque;
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
     if (!tonemap) return std::unexpected(tonemap.error());
-    auto rsm = RsmPass::create();
-    if (!rsm) return std::unexpected(rsm.error());
     auto exposure = AutoExposurePass::create();
     if (!exposure) return std::unexpected(exposure.error());
     r.impl_->exposure.emplace(std::move(*exposure));
@@ -64,7 +62,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
-    r.impl_->rsm.emplace(std::move(*rsm));
     r.impl_->depthPrepassProgram = *prepass;
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();
@@ -160,12 +157,8 @@ GpuMemory ForwardRenderer::gpuMemory() const {
     // of a set (lpv.volumes is the first of six textures) counts under the set's name.
     if (m.shadows)
         m.shadows->addGpuMemory(ledger);
-    if (m.rsm) {
-        ledger.addTexture(resources::RsmPosition.name(), m.rsm->positionArray());
-        ledger.addTexture(resources::RsmNormal.name(), m.rsm->normalArray());
-        ledger.addTexture(resources::RsmFlux.name(), m.rsm->fluxArray());
-        ledger.addTexture("rsm.depth", m.rsm->depthArray());
-    }
+    if (m.rsm)
+        m.rsm->addGpuMemory(ledger);
     if (m.localRsm)
         m.localRsm->addGpuMemory(ledger);
     if (m.emissiveVpls) {
@@ -258,7 +251,10 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
                          .baked = d.baked.get(),
                          .bakedGeneration = d.bakedGeneration,
                          .lpv = d.lpvStageInputs(frame),
-                         .subsurface = d.plan.sss};
+                         .subsurface = d.plan.sss,
+                         .localLights = d.plan.local,
+                         .emissive = d.plan.emissive,
+                         .rsmCascades = d.plan.rsmCascades};
         for (const std::unique_ptr<FramePass>& pass : d.passes)
             pass->addTo(state);
         if (auto ok = d.graph.compile(d.frameParams, params.getBool("lpv.reuse")); !ok)

@@ -19,7 +19,7 @@
 #include "scenegpu/MaterialGpu.h"
 #include "gl/ProgramCache.h"
 #include "scenegpu/RenderSpace.h"
-#include "passes/lpv/RsmPass.h"
+#include "passes/lpv/RsmFramePass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
 #include "graph/ContentHash.h"
@@ -51,7 +51,7 @@ struct ForwardRenderer::Impl {
     const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
     const CachedProgram* tonemapProgram = nullptr;
     const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
-    std::optional<RsmPass> rsm;
+    const RsmFramePass* rsm = nullptr; // in `passes`: the LPV injects its tiles
     std::optional<LpvPass> lpv;
     // Passes that run only when the scene calls for them are created on
     // their first frame and dropped when culled: they hold no GPU memory then.

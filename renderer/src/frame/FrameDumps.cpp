@@ -62,7 +62,7 @@ std::vector<DebugImage> ForwardRenderer::Impl::dump(const std::string& name) con
                 return all;
             // RSMs in their pass's own order: position, normal, flux per tile.
             if (name == "rsm")
-                return rsm->active() ? rsm->debugImages() : all;
+                return rsm->maps().active() ? rsm->maps().debugImages() : all;
             if (name == "localRsm")
                 return localRsm && localRsm->active() ? localRsm->debugImages() : all;
             for (const GraphResourceUse& w : pass.writes) {
@@ -79,7 +79,7 @@ std::vector<DebugImage> ForwardRenderer::Impl::dumpResource(const std::string& n
     if (name == resources::ShadowMaps.name())
         return shadows->maps().debugImages();
     if (name == resources::RsmPosition.name() || name == resources::RsmNormal.name() || name == resources::RsmFlux.name())
-        return rsm->active() ? keepSuffix(rsm->debugImages(), "-" + name.substr(4)) : std::vector<DebugImage>{};
+        return rsm->maps().active() ? keepSuffix(rsm->maps().debugImages(), "-" + name.substr(4)) : std::vector<DebugImage>{};
     if (name == resources::LocalRsmPosition.name() || name == resources::LocalRsmNormal.name() ||
         name == resources::LocalRsmFlux.name())
         return localRsm && localRsm->active() ? keepSuffix(localRsm->debugImages(), "-" + name.substr(9))

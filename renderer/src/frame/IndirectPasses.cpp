@@ -2,8 +2,8 @@
 // decision with its reason) and lpvStageInputs() hands that plan to the
 // LPV's stages (passes/lpv/LpvStages.h), the sky's height map
 // (SkyHeightFramePass) and the subsurface LPV (SubsurfaceFramePass). The
-// passes not yet in their own files are declared here: the sun's RSM, the
-// local lights' RSMs and the emissive VPLs (declareLightSources).
+// passes not yet in their own files are declared here: the local lights'
+// RSMs and the emissive VPLs (declareLightSources).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -88,14 +88,14 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
 LpvRsmInput ForwardRenderer::Impl::rsmInput(const FrameContext& frame) const {
     LpvRsmInput input;
     input.cascades = lpv->cascades();
-    if (rsm->active()) {
-        for (std::size_t k = 0; k < input.cascades.size() && k < rsm->tiles().size(); ++k)
-            input.texelArea.push_back(rsm->tiles()[k].texelArea);
-        input.tileSize = rsm->tileSize();
-        input.position = rsm->positionArray();
-        input.normal = rsm->normalArray();
-        input.flux = rsm->fluxArray();
-        input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(rsm->sunIndex())].direction);
+    if (const RsmPass& maps = rsm->maps(); maps.active()) {
+        for (std::size_t k = 0; k < input.cascades.size() && k < maps.tiles().size(); ++k)
+            input.texelArea.push_back(maps.tiles()[k].texelArea);
+        input.tileSize = maps.tileSize();
+        input.position = maps.positionArray();
+        input.normal = maps.normalArray();
+        input.flux = maps.fluxArray();
+        input.towardSun = -glm::normalize(frame.scene.lights[std::size_t(maps.sunIndex())].direction);
     }
     return input;
 }
@@ -178,25 +178,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
     const bool lpvRuns = plan.lpvRuns;
     const std::string off = "the LPV does not run: " + plan.lpvOffReason;
 
-    // --- The sun's RSM ---
-    importTexture(graph, resources::RsmPosition, [this] { return rsm->positionArray(); });
-    importTexture(graph, resources::RsmNormal, [this] { return rsm->normalArray(); });
-    importTexture(graph, resources::RsmFlux, [this] { return rsm->fluxArray(); });
-    {
-        graph::PassSpec p;
-        p.id = Pass::Rsm;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.sun ? runsBecause("the sun lights the scene") : skippedBecause("no directional light");
-        p.writes = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux};
-        graph::ContentHash h;
-        // The tiles follow the cascades (the camera's position, its view with lpv.viewShift).
-        h.add(sceneGeneration).add(plan.rsmCascades);
-        addLights(h, frame.scene.lights);
-        p.inputsKey = h.value();
-        p.execute = [this](graph::PassContext& ctx) {
-            return rsm->render(ctx.frame, *sceneGpu, *materialGpu, plan.rsmCascades);
-        };
-        graph.addPass(std::move(p));
-    }
     // --- Spot and point lights' RSMs ---
     importTexture(graph, resources::LocalRsmPosition, [this] { return localRsm ? localRsm->positionArray() : 0u; });
     importTexture(graph, resources::LocalRsmNormal, [this] { return localRsm ? localRsm->normalArray() : 0u; });
@@ -242,8 +223,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
 }
 
 void ForwardRenderer::Impl::releaseCulled() {
-    if (!graph.produced(Pass::Rsm))
-        rsm->release();
     if (!graph.produced(Pass::LocalRsm))
         localRsm.reset();
     if (!graph.produced(Pass::EmissiveVpls))

@@ -9,6 +9,7 @@
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/LpvStages.h"
+#include "passes/lpv/RsmFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
 #include "passes/lpv/SubsurfaceFramePass.h"
 #include "passes/radiosity/RadiosityIndirectPass.h"
@@ -45,6 +46,10 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     if (!shadowMaps)
         return std::unexpected(shadowMaps.error());
     shadows = &add(passes, std::move(*shadowMaps));
+    auto sunRsm = RsmFramePass::create();
+    if (!sunRsm)
+        return std::unexpected(sunRsm.error());
+    rsm = &add(passes, std::move(*sunRsm));
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
     skyHeight = &add(passes, std::make_unique<SkyHeightFramePass>());
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
