@@ -159,8 +159,7 @@ GpuMemory ForwardRenderer::gpuMemory() const {
         m.shadows->addGpuMemory(ledger);
     if (m.rsm)
         m.rsm->addGpuMemory(ledger);
-    if (m.localRsm)
-        m.localRsm->addGpuMemory(ledger);
+    m.localRsm->addGpuMemory(ledger);
     if (m.emissiveVpls) {
         const LpvLocalInput vpls = m.emissiveVpls->input();
         for (GLuint t : {vpls.position, vpls.normal, vpls.flux})

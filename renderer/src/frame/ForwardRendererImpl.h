@@ -13,7 +13,7 @@
 #include "frame/FramePass.h"
 #include "frame/FrameState.h"
 #include "frame/FrameResources.h"
-#include "passes/lpv/LocalRsmPass.h"
+#include "passes/lpv/LocalRsmFramePass.h"
 #include "passes/lpv/LpvPass.h"
 #include "passes/lpv/SubsurfaceFramePass.h"
 #include "scenegpu/MaterialGpu.h"
@@ -58,7 +58,7 @@ struct ForwardRenderer::Impl {
     std::optional<AutoExposurePass> exposure; // its result stays on the GPU
     const SkyHeightFramePass* skyHeight = nullptr; // in `passes`: the sky injection reads its map
     const SubsurfaceFramePass* subsurface = nullptr; // in `passes`: shading samples its volume
-    std::optional<LocalRsmPass> localRsm;
+    const LocalRsmFramePass* localRsm = nullptr; // in `passes`: the LPV injects its faces
     std::optional<EmissiveVplBuffer> emissiveVpls;
     // gi.method = radiosity: the solution given (setBakedRadiosity), and a
     // number that changes with it (part of the pass's reuse key).

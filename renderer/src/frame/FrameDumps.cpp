@@ -64,7 +64,7 @@ std::vector<DebugImage> ForwardRenderer::Impl::dump(const std::string& name) con
             if (name == "rsm")
                 return rsm->maps().active() ? rsm->maps().debugImages() : all;
             if (name == "localRsm")
-                return localRsm && localRsm->active() ? localRsm->debugImages() : all;
+                return localRsm->maps() ? localRsm->maps()->debugImages() : all;
             for (const GraphResourceUse& w : pass.writes) {
                 auto images = dumpResource(w.name.substr(0, w.name.find(' ')));
                 all.insert(all.end(), std::make_move_iterator(images.begin()), std::make_move_iterator(images.end()));
@@ -82,7 +82,7 @@ std::vector<DebugImage> ForwardRenderer::Impl::dumpResource(const std::string& n
         return rsm->maps().active() ? keepSuffix(rsm->maps().debugImages(), "-" + name.substr(4)) : std::vector<DebugImage>{};
     if (name == resources::LocalRsmPosition.name() || name == resources::LocalRsmNormal.name() ||
         name == resources::LocalRsmFlux.name())
-        return localRsm && localRsm->active() ? keepSuffix(localRsm->debugImages(), "-" + name.substr(9))
+        return localRsm->maps() ? keepSuffix(localRsm->maps()->debugImages(), "-" + name.substr(9))
                                               : std::vector<DebugImage>{};
     if (name == resources::LpvAccumulator.name())
         return lpv->active() ? keepSuffix(lpv->debugImages(), "-accum") : std::vector<DebugImage>{};

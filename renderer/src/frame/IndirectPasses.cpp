@@ -2,8 +2,8 @@
 // decision with its reason) and lpvStageInputs() hands that plan to the
 // LPV's stages (passes/lpv/LpvStages.h), the sky's height map
 // (SkyHeightFramePass) and the subsurface LPV (SubsurfaceFramePass). The
-// passes not yet in their own files are declared here: the local lights'
-// RSMs and the emissive VPLs (declareLightSources).
+// passes not yet in their own files are declared here: the emissive VPLs
+// (declareLightSources).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -130,11 +130,10 @@ const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameConte
 
 std::vector<LpvLocalInput> ForwardRenderer::Impl::localInputs() const {
     std::vector<LpvLocalInput> local;
-    if (localRsm && localRsm->active())
-        local.push_back({localRsm->positionArray(), localRsm->normalArray(), localRsm->fluxArray(), localRsm->size(),
-                         localRsm->layers(),
-                         std::to_string(localRsm->layers()) + " local-light RSM face" +
-                             (localRsm->layers() == 1 ? "" : "s")});
+    if (const LocalRsmPass* faces = localRsm->maps())
+        local.push_back({faces->positionArray(), faces->normalArray(), faces->fluxArray(), faces->size(),
+                         faces->layers(),
+                         std::to_string(faces->layers()) + " local-light RSM face" + (faces->layers() == 1 ? "" : "s")});
     if (emissiveVpls && !emissiveVpls->empty())
         local.push_back(emissiveVpls->input());
     return local;
@@ -178,30 +177,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
     const bool lpvRuns = plan.lpvRuns;
     const std::string off = "the LPV does not run: " + plan.lpvOffReason;
 
-    // --- Spot and point lights' RSMs ---
-    importTexture(graph, resources::LocalRsmPosition, [this] { return localRsm ? localRsm->positionArray() : 0u; });
-    importTexture(graph, resources::LocalRsmNormal, [this] { return localRsm ? localRsm->normalArray() : 0u; });
-    importTexture(graph, resources::LocalRsmFlux, [this] { return localRsm ? localRsm->fluxArray() : 0u; });
-    {
-        graph::PassSpec p;
-        p.id = Pass::LocalRsm;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.local;
-        p.writes = {resources::LocalRsmPosition, resources::LocalRsmNormal, resources::LocalRsmFlux};
-        graph::ContentHash h;
-        h.add(sceneGeneration);
-        addLights(h, frame.scene.lights);
-        p.inputsKey = h.value();
-        p.execute = [this](graph::PassContext& ctx) -> scene::Expected<void> {
-            if (!localRsm) {
-                auto created = LocalRsmPass::create();
-                if (!created)
-                    return std::unexpected(created.error());
-                localRsm.emplace(std::move(*created));
-            }
-            return localRsm->render(ctx.frame, *sceneGpu, *materialGpu, ctx.frame.params.getInt("lpv.localRsmSize"));
-        };
-        graph.addPass(std::move(p));
-    }
     // --- Emissive surfaces' VPLs (sampled on the CPU, uploaded once per scene and cell size) ---
     importTexture(graph, resources::EmissiveVpls, [this] { return emissiveVpls ? emissiveVpls->input().position : 0u; });
     {
@@ -223,8 +198,6 @@ void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
 }
 
 void ForwardRenderer::Impl::releaseCulled() {
-    if (!graph.produced(Pass::LocalRsm))
-        localRsm.reset();
     if (!graph.produced(Pass::EmissiveVpls))
         emissiveVpls.reset();
     for (const std::unique_ptr<FramePass>& pass : passes)

@@ -8,6 +8,7 @@
 
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
+#include "passes/lpv/LocalRsmFramePass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/lpv/RsmFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
@@ -50,6 +51,7 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     if (!sunRsm)
         return std::unexpected(sunRsm.error());
     rsm = &add(passes, std::move(*sunRsm));
+    localRsm = &add(passes, std::make_unique<LocalRsmFramePass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
     skyHeight = &add(passes, std::make_unique<SkyHeightFramePass>());
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
