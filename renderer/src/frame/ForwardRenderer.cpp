@@ -160,11 +160,7 @@ GpuMemory ForwardRenderer::gpuMemory() const {
     if (m.rsm)
         m.rsm->addGpuMemory(ledger);
     m.localRsm->addGpuMemory(ledger);
-    if (m.emissiveVpls) {
-        const LpvLocalInput vpls = m.emissiveVpls->input();
-        for (GLuint t : {vpls.position, vpls.normal, vpls.flux})
-            ledger.addTexture(resources::EmissiveVpls.name(), t);
-    }
+    m.emissiveVpls->addGpuMemory(ledger);
     if (m.lpv)
         m.lpv->addGpuMemory(ledger);
     // The passes of the table that own GL objects (subsurface, radiosityIndirect).

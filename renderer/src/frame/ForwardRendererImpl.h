@@ -8,7 +8,7 @@
 // shadows, depth pre-pass, shading, exposure, tonemap;
 // IndirectPasses.cpp: RSMs, VPLs).
 #include "passes/direct/AutoExposurePass.h"
-#include "passes/lpv/EmissiveVplBuffer.h"
+#include "passes/lpv/EmissiveVplsFramePass.h"
 #include "frame/FrameContext.h"
 #include "frame/FramePass.h"
 #include "frame/FrameState.h"
@@ -59,7 +59,7 @@ struct ForwardRenderer::Impl {
     const SkyHeightFramePass* skyHeight = nullptr; // in `passes`: the sky injection reads its map
     const SubsurfaceFramePass* subsurface = nullptr; // in `passes`: shading samples its volume
     const LocalRsmFramePass* localRsm = nullptr; // in `passes`: the LPV injects its faces
-    std::optional<EmissiveVplBuffer> emissiveVpls;
+    const EmissiveVplsFramePass* emissiveVpls = nullptr; // in `passes`: the LPV injects its VPLs
     // gi.method = radiosity: the solution given (setBakedRadiosity), and a
     // number that changes with it (part of the pass's reuse key).
     std::shared_ptr<const radiosity::BakedSolution> baked;
@@ -148,7 +148,6 @@ struct ForwardRenderer::Impl {
     scene::Expected<void> planIndirect(const FrameContext& frame);
     // The plan as the LPV's stages read it.
     LpvStageInputs lpvStageInputs(const FrameContext& frame);
-    void declareLightSources(const FrameContext& frame);
     // Passes the graph culled free what they hold.
     void releaseCulled();
     LpvRsmInput rsmInput(const FrameContext& frame) const;

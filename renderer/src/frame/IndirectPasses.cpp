@@ -1,14 +1,12 @@
 // The indirect light: planIndirect() decides what the scene calls for (each
 // decision with its reason) and lpvStageInputs() hands that plan to the
 // LPV's stages (passes/lpv/LpvStages.h), the sky's height map
-// (SkyHeightFramePass) and the subsurface LPV (SubsurfaceFramePass). The
-// passes not yet in their own files are declared here: the emissive VPLs
-// (declareLightSources).
+// (SkyHeightFramePass), the subsurface LPV (SubsurfaceFramePass) and the
+// VPLs' sources (RsmFramePass, LocalRsmFramePass, EmissiveVplsFramePass).
 #include "frame/ForwardRendererImpl.h"
 
 #include "lpv/radiosity/BakedSolution.h"
 #include "lpv/renderer/LocalLightAnalysis.h"
-#include "lpv/renderer/lpv/EmissiveVpls.h"
 
 #include <algorithm>
 
@@ -134,8 +132,8 @@ std::vector<LpvLocalInput> ForwardRenderer::Impl::localInputs() const {
         local.push_back({faces->positionArray(), faces->normalArray(), faces->fluxArray(), faces->size(),
                          faces->layers(),
                          std::to_string(faces->layers()) + " local-light RSM face" + (faces->layers() == 1 ? "" : "s")});
-    if (emissiveVpls && !emissiveVpls->empty())
-        local.push_back(emissiveVpls->input());
+    if (const EmissiveVplBuffer* vpls = emissiveVpls->vpls())
+        local.push_back(vpls->input());
     return local;
 }
 
@@ -173,33 +171,7 @@ LpvStageInputs ForwardRenderer::Impl::lpvStageInputs(const FrameContext& frame) 
     return in;
 }
 
-void ForwardRenderer::Impl::declareLightSources(const FrameContext& frame) {
-    const bool lpvRuns = plan.lpvRuns;
-    const std::string off = "the LPV does not run: " + plan.lpvOffReason;
-
-    // --- Emissive surfaces' VPLs (sampled on the CPU, uploaded once per scene and cell size) ---
-    importTexture(graph, resources::EmissiveVpls, [this] { return emissiveVpls ? emissiveVpls->input().position : 0u; });
-    {
-        graph::PassSpec p;
-        p.id = Pass::EmissiveVpls;
-        p.decision = !lpvRuns ? skippedBecause(off) : plan.emissive;
-        p.writes = {resources::EmissiveVpls};
-        p.inputsKey = graph::ContentHash().add(sceneGeneration).value();
-        p.execute = [this](graph::PassContext& ctx) {
-            // Two VPLs per finest cell along an emitter, at most 256^2.
-            emissiveVpls.emplace();
-            emissiveVpls->upload(lpvref::sampleEmissiveVpls(
-                ctx.frame.scene, float(ctx.frame.params.getFloat("lpv.cellSize")) * 0.5f, 65536,
-                ctx.frame.worldMagnitude()));
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
-}
-
 void ForwardRenderer::Impl::releaseCulled() {
-    if (!graph.produced(Pass::EmissiveVpls))
-        emissiveVpls.reset();
     for (const std::unique_ptr<FramePass>& pass : passes)
         pass->releaseIfCulled(graph);
     if (!plan.lpvRuns)

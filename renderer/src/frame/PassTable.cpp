@@ -8,6 +8,7 @@
 
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
+#include "passes/lpv/EmissiveVplsFramePass.h"
 #include "passes/lpv/LocalRsmFramePass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/lpv/RsmFramePass.h"
@@ -52,7 +53,7 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
         return std::unexpected(sunRsm.error());
     rsm = &add(passes, std::move(*sunRsm));
     localRsm = &add(passes, std::make_unique<LocalRsmFramePass>());
-    passes.push_back(declaredByRenderer([this](FrameState& s) { declareLightSources(s.frame); }));
+    emissiveVpls = &add(passes, std::make_unique<EmissiveVplsFramePass>());
     skyHeight = &add(passes, std::make_unique<SkyHeightFramePass>());
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
         passes.push_back(std::move(stage));
