@@ -234,3 +234,64 @@ TEST(LpvBands, ThreeBandOcclusionBlocksLightHittingAWallsFrontMoreSharply) {
     // Light leaving the wall's back (travelling -x) passes with either.
     EXPECT_NEAR(bands::transmittance<3>(gv3, g, {-1, 0, 0}), 1.0f, 0.1f);
 }
+
+// The convergence question on the CPU twin (issue #47): a VPL facing +x lights
+// a wall 2 m ahead (facing back at it) and a floor 2 m below (facing up); the
+// exact irradiance is Phi/pi cos(emit) cos(receive) / d^2. Cells h = 1, 0.5
+// and 0.25 m with 4, 8 and 16 steps (light reaches 4 m each time), 8 m
+// cascades, no occlusion. Refining does not converge: the light that reaches
+// a point d away has been re-emitted d / h times, and every re-emission
+// spreads part of it sideways (the 30 faces' lobes), so the finer the cells
+// the less of it arrives ahead: the wall's centre gets a smaller fraction of
+// its exact irradiance at every refinement, with two bands and with three.
+TEST(LpvBands, RefiningTheCellsAndStepsTogetherDarkensTheLightAVplSendsAhead) {
+    const glm::vec3 source(0.0f);
+    const Vpl vpl{source, glm::vec3(1, 0, 0), glm::vec3(1.0f)};
+    auto exact = [&](const glm::vec3& x, const glm::vec3& n) {
+        const glm::vec3 d = x - source;
+        const float r = glm::length(d);
+        return std::max(0.0f, glm::dot(vpl.normal, d / r)) * std::max(0.0f, glm::dot(n, -d / r)) / float(kPi) /
+               (r * r);
+    };
+    struct Probe {
+        glm::vec3 x, n;
+    };
+    std::vector<Probe> probes;
+    for (float t : {-1.5f, -1.0f, -0.5f, 0.0f, 0.5f, 1.0f, 1.5f}) {
+        probes.push_back({glm::vec3(2.0f, t, 0.3f * t), glm::vec3(-1, 0, 0)});               // the wall ahead
+        probes.push_back({glm::vec3(1.0f + 0.5f * t, -2.0f, 0.3f * t), glm::vec3(0, 1, 0)}); // the floor
+    }
+    struct Result {
+        double centre = 0.0; // the wall's centre: LPV over exact
+        double error = 0.0;  // the report's symmetric error over the probes
+    };
+    auto measure = [&]<int B>(float h) {
+        const int n = int(std::lround(8.0f / h));
+        const GridFrame frame{glm::vec3(-4.0f), h, n};
+        const auto v0 = bands::injectVpls<B>(frame, std::span(&vpl, 1), 0.5f);
+        const auto acc = bands::propagateAndAccumulate<B>(v0, nullptr, int(std::lround(4.0f / h)));
+        Result r;
+        double sum = 0.0;
+        for (const Probe& p : probes) {
+            const double e = bands::irradianceAt<B>(acc, frame, p.x, p.n).x, ex = exact(p.x, p.n);
+            sum += std::abs(std::log((e + 1e-4) / (ex + 1e-4)));
+            if (p.x == glm::vec3(2.0f, 0.0f, 0.0f))
+                r.centre = e / ex;
+        }
+        r.error = std::exp(sum / double(probes.size())) - 1.0;
+        return r;
+    };
+    const float cells[] = {1.0f, 0.5f, 0.25f};
+    Result two[3], three[3];
+    for (int i = 0; i < 3; ++i) {
+        two[i] = measure.template operator()<2>(cells[i]);
+        three[i] = measure.template operator()<3>(cells[i]);
+        std::cout << "[measured] h = " << cells[i] << " m: wall centre LPV/exact two bands " << two[i].centre
+                  << ", three " << three[i].centre << "; symmetric error two bands " << two[i].error << ", three "
+                  << three[i].error << "\n";
+    }
+    for (int i = 1; i < 3; ++i) {
+        EXPECT_LT(two[i].centre, two[i - 1].centre) << cells[i];
+        EXPECT_LT(three[i].centre, three[i - 1].centre) << cells[i];
+    }
+}
