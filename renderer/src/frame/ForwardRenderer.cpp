@@ -46,11 +46,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
         if (!program) return std::unexpected(program.error());
         r.impl_->forwardFull[afterPrepass] = *program;
     }
-    auto prepass = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {}});
-    if (!prepass) return std::unexpected(prepass.error());
-    auto prepassOpaque = r.impl_->programs.get({{"forward.vert", "depth_prepass.frag"}, {"PREPASS_OPAQUE 1"}});
-    if (!prepassOpaque) return std::unexpected(prepassOpaque.error());
-    r.impl_->depthPrepassOpaqueProgram = *prepassOpaque;
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
     if (!tonemap) return std::unexpected(tonemap.error());
     auto exposure = AutoExposurePass::create();
@@ -62,7 +57,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
-    r.impl_->depthPrepassProgram = *prepass;
     r.impl_->tonemapProgram = *tonemap;
     r.impl_->emptyVao = createVertexArray();
     r.impl_->graph.reserveUnits(MaterialGpu::kBaseColorUnit, 15); // MaterialGpu binds these per draw

@@ -47,8 +47,6 @@ struct ForwardRenderer::Impl {
     std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
     const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup,
                                         bool radiosity);
-    const CachedProgram* depthPrepassProgram = nullptr;       // cuts alpha-masked holes
-    const CachedProgram* depthPrepassOpaqueProgram = nullptr; // PREPASS_OPAQUE: never discards
     const CachedProgram* tonemapProgram = nullptr;
     const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
     const RsmFramePass* rsm = nullptr; // in `passes`: the LPV injects its tiles
@@ -136,10 +134,8 @@ struct ForwardRenderer::Impl {
     // FramePasses.cpp
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
-    void declareDepthPrepass(const FrameState& state);
     void declareShading(const FrameState& state);
     void declarePost(const FrameContext& frame);
-    void renderDepthPrepass(graph::PassContext& ctx);
     void renderForward(graph::PassContext& ctx, bool afterPrepass);
     void renderTonemap(graph::PassContext& ctx, bool autoExposure);
     void attachCameraTargets();

@@ -1,6 +1,7 @@
-// The frame's direct-light passes the renderer still declares itself: the depth pre-pass, shading (the forward pass that also writes the
-// camera G-buffer), exposure and tonemapping, and the camera targets they
-// share. Shadow maps and sun rays declare themselves (passes/direct/).
+// The frame's direct-light passes the renderer still declares itself:
+// shading (the forward pass that also writes the camera G-buffer), exposure
+// and tonemapping, and the camera targets they share. Shadow maps, the depth
+// pre-pass and sun rays declare themselves (passes/direct/).
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/lpv/GlossyReflections.h"
@@ -151,20 +152,6 @@ void ForwardRenderer::Impl::attachCameraTargets() {
     }
 }
 
-void ForwardRenderer::Impl::declareDepthPrepass(const FrameState& state) {
-    graph::PassSpec p;
-    p.id = Pass::DepthPrepass;
-    p.decision = state.depthPrepass ? runsBecause("output.depthPrepass is on: shading lights each visible pixel once")
-                                    : skippedBecause("output.depthPrepass is off");
-    p.writes = {resources::CameraDepth};
-    p.execute = [this](graph::PassContext& ctx) {
-        attachCameraTargets();
-        renderDepthPrepass(ctx);
-        return scene::Expected<void>{};
-    };
-    graph.addPass(std::move(p));
-}
-
 void ForwardRenderer::Impl::declareShading(const FrameState& state) {
     const FrameContext& frame = state.frame;
     const bool prepass = state.depthPrepass;
@@ -196,35 +183,6 @@ void ForwardRenderer::Impl::declareShading(const FrameState& state) {
         return scene::Expected<void>{};
     };
     graph.addPass(std::move(p));
-}
-
-void ForwardRenderer::Impl::renderDepthPrepass(graph::PassContext& ctx) {
-    const FrameContext& frame = ctx.frame;
-    glBindFramebuffer(GL_FRAMEBUFFER, hdrFbo.id());
-    glViewport(0, 0, frame.width, frame.height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    // Opaque and masked surfaces only: blended ones neither hide nor write
-    // depth. Opaque ones through the program that never discards, so their
-    // depth is tested early (on llvmpipe a discard defers it).
-    const auto items = buildDrawList(sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    std::vector<const DrawItem*> opaque, masked;
-    for (const DrawItem* d : items)
-        if (d->bucket != DrawBucket::Blended)
-            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
-    for (const auto& [shader, list] : {std::pair{depthPrepassOpaqueProgram, &opaque}, std::pair{depthPrepassProgram, &masked}}) {
-        if (list->empty())
-            continue;
-        const GLuint program = shader->id();
-        glUseProgram(program);
-        glProgramUniformMatrix4fv(program, shader->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-        sceneGpu->draw(program, *list, [&](std::uint32_t m) { materialGpu->bind(program, m, MaterialBindMode::Coverage); });
-    }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 const CachedProgram& ForwardRenderer::Impl::forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy,

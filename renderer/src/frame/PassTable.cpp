@@ -6,6 +6,7 @@
 // IndirectPasses.cpp) and take their place through declaredByRenderer.
 #include "frame/ForwardRendererImpl.h"
 
+#include "passes/direct/DepthPrepassPass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/EmissiveVplsFramePass.h"
@@ -58,7 +59,10 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
         passes.push_back(std::move(stage));
     subsurface = &add(passes, std::make_unique<SubsurfaceFramePass>());
-    passes.push_back(declaredByRenderer([this](FrameState& s) { declareDepthPrepass(s); }));
+    auto depthPrepass = DepthPrepassPass::create();
+    if (!depthPrepass)
+        return std::unexpected(depthPrepass.error());
+    passes.push_back(std::move(*depthPrepass));
     passes.push_back(std::make_unique<RadiosityIndirectPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));
     passes.push_back(std::make_unique<SunRaysPass>());
