@@ -65,8 +65,9 @@ median over the rounds). Use it on Sibenik imported from sibenik.4ds.
 draws it while the user looks around: the camera yaws by +DEG and back on
 alternate frames about the up axis, the frame graph's reuse stays on (what
 does not depend on the view direction is kept), and it prints, per pass,
-the median over the frames it ran in and in how many, and the median of
-the per-frame totals (every pass that ran in that frame). --turn times
+the median over the frames it ran in and in how many, the passes the frame
+graph reused instead (in how many frames, and why), and the median of the
+per-frame totals (every pass that ran in that frame). --turn times
 frame by frame, each setting once, not in rounds (the passes that run
 differ from frame to frame): it takes no round options, --csv or --markdown.
 Round options of bench render (it only times: --rounds at least 1):

@@ -1,6 +1,8 @@
 #include "BenchTurn.h"
 #include "BenchReport.h"
 
+#include "lpv/renderer/FrameGraphReport.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -49,6 +51,16 @@ bool renderTurnFrames(RenderSetup& setup, int width, int height, int warmup, int
             it->second.push_back(row.lastMs);
         }
         out.frameTotalsMs.push_back(total);
+        for (const renderer::GraphPassReport& pass : setup.renderer->graphReport().passes) {
+            if (pass.status != renderer::PassStatus::Reused)
+                continue;
+            auto it = std::find_if(out.reused.begin(), out.reused.end(),
+                                   [&](const TurnFrames::Reused& r) { return r.pass == pass.name; });
+            if (it == out.reused.end())
+                it = out.reused.insert(out.reused.end(), {pass.name, 0, {}});
+            ++it->frames;
+            it->reason = pass.reason;
+        }
     }
     setup.camera = start;
     return true;
@@ -66,6 +78,14 @@ std::string formatTurnFrames(const TurnFrames& turn, float degrees) {
         std::snprintf(line, sizeof line, "%-24s %10.3f %10.3f %4zu of %zu\n", pass.c_str(), median(ms),
                       *std::max_element(ms.begin(), ms.end()), ms.size(), turn.frameTotalsMs.size());
         text << line;
+    }
+    // What the frame graph kept: a pass listed here did not run in those frames.
+    std::snprintf(line, sizeof line, "reused by the frame graph (its output kept):%s\n",
+                  turn.reused.empty() ? " none" : "");
+    text << line;
+    for (const TurnFrames::Reused& r : turn.reused) {
+        std::snprintf(line, sizeof line, "  %-22s %4d of %zu  ", r.pass.c_str(), r.frames, turn.frameTotalsMs.size());
+        text << line << r.reason << "\n";
     }
     const auto [lo, hi] = std::minmax_element(turn.frameTotalsMs.begin(), turn.frameTotalsMs.end());
     std::snprintf(line, sizeof line, "whole frame (per frame, every pass that ran): median %.3f ms, min %.3f, max %.3f\n",

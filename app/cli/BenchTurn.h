@@ -3,9 +3,11 @@
 // turned. The camera yaws by +DEG and -DEG about the world's up axis on
 // alternate frames, with the frame graph's reuse on as in the editor, so
 // what does not depend on the view direction (the LPV's cascades follow the
-// camera's position, the RSM tiles follow the cascades) is kept and what does
-// (shadow cascades fitted to the view, the camera's G-buffer and the
-// geometry volume made from it, shading) is redrawn.
+// camera's position, the RSM tiles follow the cascades: the whole LPV, issue
+// #48) is kept and what does (shadow cascades fitted to the view, the
+// camera's G-buffer, shading; the geometry volume too with
+// lpv.geometrySource=views, and the LPV with lpv.viewShift > 0) is redrawn.
+// The table lists the passes that ran and those the graph reused.
 #include "RenderSetup.h"
 
 #include <string>
@@ -20,6 +22,14 @@ struct TurnFrames {
     std::vector<double> frameTotalsMs; // per timed frame: every pass that ran, summed
     // Per pass: its times over the frames it ran in (reused passes have none).
     std::vector<std::pair<std::string, std::vector<double>>> passMs;
+    // Per pass the frame graph kept (its report's status Reused): in how many
+    // timed frames, and the reason of the last one (issue #48: what a turn reuses).
+    struct Reused {
+        std::string pass;
+        int frames = 0;
+        std::string reason;
+    };
+    std::vector<Reused> reused;
 };
 
 // Renders `warmup` then `frames` frames turning by +-degrees, one frame at a
@@ -28,8 +38,9 @@ struct TurnFrames {
 bool renderTurnFrames(RenderSetup& setup, int width, int height, int warmup, int frames, float degrees,
                       TurnFrames& out);
 
-// The per-pass table (median over the frames a pass ran, how many it ran in)
-// and the median whole frame.
+// The per-pass table (median over the frames a pass ran, how many it ran in),
+// the passes the frame graph reused and in how many frames, and the median
+// whole frame.
 std::string formatTurnFrames(const TurnFrames& turn, float degrees);
 
 } // namespace lpv::cli
