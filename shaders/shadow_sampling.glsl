@@ -265,6 +265,12 @@ const vec2 AREA_SHADOW_TAP_POINTS[AREA_SHADOW_TAPS] = vec2[](
     vec2(0.402739, 0.785796),
     vec2(0.748104, 0.918814));
 
+// Quarter offsets of a tap's stratum (6 x 4 strata on [-1, 1]^2: 1/3 wide,
+// 1/2 high), rotated a little so no two land on one row or column.
+const vec2 AREA_SHADOW_STRATUM_OFFSETS[4] = vec2[](
+    vec2(-1.0 / 12.0, -1.0 / 16.0), vec2(1.0 / 24.0, -1.0 / 8.0),
+    vec2(1.0 / 12.0, 1.0 / 16.0), vec2(-1.0 / 24.0, 1.0 / 8.0));
+
 // A tap point on the light: the rectangle's, or for a disc (shape 1) the
 // square mapped onto the disc by Shirley and Chiu's concentric map, which
 // keeps each quarter in its quarter and the strata even.
@@ -392,9 +398,23 @@ float areaLightVisibility(int firstCube, vec3 worldPos, vec3 n, vec3 center, vec
         float meanBlocker = quarterSum[quarter] / quarterWeight[quarter];
         float blocker = max(mix(meanBlocker, blockerDepth[i], blockedShare[i]), LOCAL_SHADOW_NEAR_FRACTION * far);
         float d = distance(p, c);
-        vec3 u = normalize(areaShadowTap(p, q, c, (p - c) / d, d, blocker));
-        float reference = (areaShadowPlaneDistance(p, n, c, u, d) - bias) / far;
-        lit += w * texture(uPointCompare, vec4(u, float(cube)), reference);
+        vec3 dir = (p - c) / d;
+        // The point stands for its stratum of the light (a sixth of the
+        // width, a quarter of the height): four points at the stratum's
+        // quarter offsets, tested at the same blocker depth, so each tap's
+        // edge is a ramp as wide as the stratum's own penumbra in four
+        // steps, not one hard line (the faint lines of issue #46).
+        vec2 s = AREA_SHADOW_TAP_POINTS[i];
+        float seen = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            vec2 o = AREA_SHADOW_STRATUM_OFFSETS[k];
+            vec2 a = areaShadowPoint(clamp(s + o, vec2(-1.0), vec2(1.0)), shape);
+            vec3 qk = center + halfU * a.x + halfV * a.y;
+            vec3 u = normalize(areaShadowTap(p, qk, c, dir, d, blocker));
+            float reference = (areaShadowPlaneDistance(p, n, c, u, d) - bias) / far;
+            seen += texture(uPointCompare, vec4(u, float(cube)), reference);
+        }
+        lit += w * 0.25 * seen;
     }
     return weight > 0.0 ? lit / weight : 1.0;
 }

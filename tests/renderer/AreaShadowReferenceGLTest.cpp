@@ -32,11 +32,15 @@ constexpr int kSize = 160;
 // takes about 8 s of CPU.
 constexpr int kSamples = 1024;
 // The bounds, RMS error relative to the region's mean: above what the
-// quartered maps give (3.1%, 4.2% and 0% on llvmpipe), below what the single
-// map with PCSS gave (7.3%, 14.3% and 40%).
-constexpr double kWallBound = 0.05;
+// quartered maps with four points per tap's stratum give (2.3%, 3.8% and 0%
+// on llvmpipe), below what one point per tap gave on the wall (3.1%: the
+// taps' edges as fine lines across the penumbra) and what the single map
+// with PCSS gave (7.3%, 14.3% and 40%).
+constexpr double kWallBound = 0.027;
 constexpr double kFloorBound = 0.07;
 constexpr double kFaceBound = 0.02;
+// The disc lamp: 2.0% and 3.9% now; 2.5% and 4.4% with one point per tap.
+constexpr double kDiscWallBound = 0.024;
 
 float luminance(const glm::vec3& c) {
     return glm::dot(c, glm::vec3(0.2126f, 0.7152f, 0.0722f));
@@ -243,7 +247,7 @@ TEST_F(AreaShadowReference, TheBlocksSoftShadowsOnTheRedWallAndTheFloorFollowThe
 
 // The same regions under a disc lamp (issue #46: disc area lights were not
 // checked with an occluder). The disc's light is sampled and its shadow maps
-// placed as the rectangle's, so the same bounds hold.
+// placed as the rectangle's, so the floor's bound holds; the wall has its own.
 TEST_F(DiscAreaShadowReference, ADiscLampsSoftShadowsFollowTheReferenceToo) {
     const std::vector<PixelPair> wall = region(redWallBehindTallBlock);
     const std::vector<PixelPair> floor = region(floorAroundShortBlock);
@@ -254,6 +258,6 @@ TEST_F(DiscAreaShadowReference, ADiscLampsSoftShadowsFollowTheReferenceToo) {
     report("disc.wall.referenceNoise", w.noise);
     report("disc.floor.rms", f.rms);
     report("disc.floor.referenceNoise", f.noise);
-    EXPECT_LT(w.rms, kWallBound) << "the tall block's penumbra on the red wall";
+    EXPECT_LT(w.rms, kDiscWallBound) << "the tall block's penumbra on the red wall";
     EXPECT_LT(f.rms, kFloorBound) << "the short block's soft shadow on the floor";
 }
