@@ -15,6 +15,8 @@ int runVersion() {
     auto context = renderer::HeadlessContext::create();
     report.openGl =
         context ? app::describeOpenGl(context->info()) : "unavailable: " + context.error().describe();
+    if (context)
+        report.gl = context->info();
     std::cout << app::formatVersionReport(report);
     return kOk;
 }

@@ -30,6 +30,7 @@ std::string viewportOpenGl(const std::optional<renderer::GlInfo>& info) {
 QString aboutReport(const std::optional<renderer::GlInfo>& renderer) {
     app::VersionReport report = app::collectVersionReport("LPV Studio");
     report.openGl = viewportOpenGl(renderer);
+    report.gl = renderer; // GPU, driver and EGL platform on lines of their own
     // Qt first: the editor's own toolkit. The loaded library can be newer than the headers.
     const std::string qtNote = std::string(qVersion()) == QT_VERSION_STR
                                    ? "loaded"

@@ -74,7 +74,7 @@ TEST(VersionReport, NamesVersionRevisionAndEveryLayersLibraries) {
 
 TEST(VersionReport, FormatsOneFieldPerLineAndAlignsLibraries) {
     lpv::app::VersionReport report{
-        "lpv", {"1.2.3", "abc1234-dirty", "Release", "GNU 12.2.0", "Linux x86_64"}, "", {}};
+        "lpv", {"1.2.3", "abc1234-dirty", "Release", "GNU 12.2.0", "Linux x86_64"}, "", {}, {}};
     report.openGl = lpv::app::describeOpenGl(
         {"Mesa", "llvmpipe (LLVM 15.0.6, 256 bits)", "4.5 (Core Profile)", "surfaceless"});
     report.libraries = {{"glm", "0.9.9.8", "header-only"}, {"OpenImageIO", "2.4.7", ""}};
@@ -87,6 +87,18 @@ TEST(VersionReport, FormatsOneFieldPerLineAndAlignsLibraries) {
         "libraries:\n"
         "  glm          0.9.9.8 (header-only)\n"
         "  OpenImageIO  2.4.7\n");
+}
+
+TEST(VersionReport, NamesTheGpuDriverAndPlatformOfAContext) {
+    lpv::app::VersionReport report{"lpv", {"1.2.3", "abc1234", "Release", "GNU 12.2.0", "Linux x86_64"}, "", {}, {}};
+    report.gl = lpv::renderer::GlInfo{"NVIDIA Corporation", "NVIDIA H200/PCIe/SSE2", "4.6.0 NVIDIA 550.54.15", "device"};
+    report.openGl = lpv::app::describeOpenGl(*report.gl);
+    const std::string text = lpv::app::formatVersionReport(report);
+    EXPECT_NE(text.find("\nGPU:       NVIDIA H200/PCIe/SSE2 (NVIDIA Corporation)\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\ndriver:    OpenGL 4.6.0 NVIDIA 550.54.15\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\nplatform:  EGL device\n"), std::string::npos) << text;
+    report.gl->eglPlatform.clear(); // a context that did not come from our EGL code (Qt's GLX)
+    EXPECT_NE(lpv::app::formatVersionReport(report).find("\nplatform:  not EGL\n"), std::string::npos);
 }
 
 TEST(VersionReport, DescribesAContextWithMissingStrings) {

@@ -47,6 +47,12 @@ TEST(CliVersion, PrintsVersionRevisionOpenGlAndLibraries) {
     ASSERT_TRUE(gl) << r.output;
     EXPECT_EQ(gl->find("unavailable"), std::string::npos) << *gl;
     EXPECT_NE(gl->find("OpenGL 4."), std::string::npos) << *gl;
+    // Issue #45: the GPU (GL_RENDERER), the driver (GL_VERSION) and the EGL platform, a line each.
+    const auto gpu = field(r.output, "GPU"), driver = field(r.output, "driver"), platform = field(r.output, "platform");
+    ASSERT_TRUE(gpu && driver && platform) << r.output;
+    EXPECT_NE(gl->find(gpu->substr(0, gpu->find(" ("))), std::string::npos) << *gpu << " | " << *gl;
+    EXPECT_EQ(driver->rfind("OpenGL 4.", 0), 0u) << *driver;
+    EXPECT_TRUE(std::regex_match(*platform, std::regex("EGL (device|surfaceless|default)"))) << *platform;
 
     for (const char* lib :
          {"Assimp", "OpenImageIO", "glm", "nlohmann_json", "tinygltf", "OpenMesh", "libepoxy"})
@@ -66,5 +72,6 @@ TEST(CliVersion, WithoutOpenGlSaysWhyAndStillSucceeds) {
     EXPECT_EQ(gl->rfind("unavailable: ", 0), 0u) << *gl;
     EXPECT_NE(gl->find("LPV_EGL_PLATFORM=none"), std::string::npos) << "the error names the cause: " << *gl;
     EXPECT_TRUE(field(r.output, "revision")) << "the rest is still printed";
+    EXPECT_FALSE(field(r.output, "GPU")) << "no context, no GPU line: " << r.output;
     EXPECT_NE(r.output.find("\n  Assimp "), std::string::npos) << r.output;
 }

@@ -60,6 +60,14 @@ TEST(AboutDialog, ShowsVersionRevisionQtAndTheViewportsDriver) {
     EXPECT_FALSE(info->renderer.empty());
     EXPECT_TRUE(text.contains(QString("OpenGL:    ") + QString::fromStdString(info->renderer))) << text.toStdString();
     EXPECT_TRUE(text.contains("Qt platform xcb")) << text.toStdString();
+    // Issue #45: the GPU, the driver and the platform, each on its own line.
+    EXPECT_TRUE(text.contains(QString("\nGPU:       ") + QString::fromStdString(info->renderer))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QString("\ndriver:    OpenGL ") + QString::fromStdString(info->version)))
+        << text.toStdString();
+    EXPECT_TRUE(text.contains(QString("\nplatform:  ") +
+                              (info->eglPlatform.empty() ? QString("not EGL")
+                                                         : "EGL " + QString::fromStdString(info->eglPlatform))))
+        << text.toStdString();
 }
 
 TEST(AboutDialog, WithoutAViewportContextSaysSo) {

@@ -13,7 +13,7 @@ BuildInfo buildInfo() {
 }
 
 VersionReport collectVersionReport(std::string program) {
-    VersionReport report{std::move(program), buildInfo(), "", {}};
+    VersionReport report{std::move(program), buildInfo(), "", {}, {}};
     for (auto list :
          {scene::dependencyVersions(), importers::dependencyVersions(), renderer::dependencyVersions()})
         report.libraries.insert(report.libraries.end(), list.begin(), list.end());
@@ -35,6 +35,13 @@ std::string formatVersionReport(const VersionReport& report) {
     out += "revision:  " + b.revision + "\n";
     out += "build:     " + b.buildType + ", " + b.compiler + ", " + b.system + "\n";
     out += "OpenGL:    " + report.openGl + "\n";
+    if (report.gl) {
+        const renderer::GlInfo& gl = *report.gl;
+        out += "GPU:       " + (gl.renderer.empty() ? "unknown" : gl.renderer) + " (" +
+               (gl.vendor.empty() ? "unknown vendor" : gl.vendor) + ")\n";
+        out += "driver:    OpenGL " + (gl.version.empty() ? "unknown" : gl.version) + "\n";
+        out += "platform:  " + (gl.eglPlatform.empty() ? std::string("not EGL") : "EGL " + gl.eglPlatform) + "\n";
+    }
     out += "libraries:\n";
     std::size_t width = 0;
     for (const auto& lib : report.libraries)

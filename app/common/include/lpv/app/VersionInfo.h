@@ -5,6 +5,7 @@
 #include "lpv/renderer/GlContext.h"
 #include "lpv/scene/DependencyVersions.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,10 @@ struct VersionReport {
     BuildInfo build;
     std::string openGl; // describeOpenGl(...), or "unavailable: <why>"
     std::vector<scene::DependencyVersion> libraries;
+    // The context behind `openGl`, when there is one: its GPU (GL_RENDERER),
+    // driver (GL_VERSION) and EGL platform get a line each (issue #45), so a
+    // report from a GPU machine says which card and driver its figures are from.
+    std::optional<renderer::GlInfo> gl;
 };
 
 // Everything but OpenGL, which needs a context: the CLI makes a headless one,
@@ -36,7 +41,9 @@ VersionReport collectVersionReport(std::string program);
 std::string describeOpenGl(const renderer::GlInfo& info);
 
 // The plain-text block `lpv --version` prints: "PROGRAM VERSION" on the first
-// line, then "revision:", "build:", "OpenGL:" and one line per library.
+// line, then "revision:", "build:", "OpenGL:", with a context "GPU:",
+// "driver:" and "platform:" (EGL device, surfaceless or default; "not EGL"
+// for a context that came from elsewhere), and one line per library.
 std::string formatVersionReport(const VersionReport& report);
 
 } // namespace lpv::app
