@@ -26,6 +26,8 @@ PACKAGES=(
   desktop-file-utils appstream shared-mime-info
   # the cluster test (tests/cluster, docs/cluster.md) runs a private Slurm on localhost
   munge slurmctld slurmd slurm-client
+  # the GPU bench bundle (packaging/gl-bench-bundle.sh, issue #45): $ORIGIN RPATHs
+  patchelf
   # data only: Assimp's own test models, which the corpus test imports (issue #42)
   assimp-testmodels
 )
