@@ -78,7 +78,7 @@ step() {
 }
 
 : >"$out/summary.txt"
-echo "gpu-check.sh on $(hostname) at $(date -u +%FT%TZ), LPV_EGL_PLATFORM=$platform, bundle $bundle" | tee -a "$out/summary.txt"
+echo "gpu-check.sh on $(uname -n) at $(date -u +%FT%TZ), LPV_EGL_PLATFORM=$platform, bundle $bundle" | tee -a "$out/summary.txt"
 command -v nvidia-smi >/dev/null && nvidia-smi -q >"$out/nvidia-smi.txt" 2>&1
 step version "$bench" --version
 
