@@ -81,6 +81,12 @@ std::vector<ParameterInfo> declareParameters() {
                        "scene and the view",
                        kLpvAll | P::Rsm),
                   "auto"),
+        // Issue #47: three bands have their CPU twin (renderer/src/lpvref/LpvBands.cpp);
+        // no GPU variant runs them yet, and the LPV pass refuses 3 naming the variant.
+        integer("lpv.shBands", 2, 2, 3, "bands", "LPV",
+                "Spherical-harmonic bands of the LPV's light and geometry volume: 2 (4 coefficients per colour "
+                "channel) or 3 (9; not yet on the GPU: rendering refuses it)",
+                kLpvAll),
         // The convergence question (issue #47): refinement r on top of the
         // fitted (or forced) LPV, renderer/src/analysis/LpvFit.cpp.
         real("lpv.refinement", 1.0, 0.25, 4.0, "x", "LPV",

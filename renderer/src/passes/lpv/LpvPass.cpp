@@ -50,6 +50,7 @@ const char* lpvVariantName(LpvVariant variant) { return kVariantNames[int(varian
 LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     LpvSettings s;
     s.gridSize = params.getInt("lpv.gridSize");
+    s.shBands = params.getInt("lpv.shBands");
     s.propagationSteps = params.getInt("lpv.propagationSteps");
     s.stepsByCellSize = params.getEnum("lpv.cascadeSteps") == "byCellSize";
     s.injectionOffset = float(params.getFloat("lpv.injectionOffset"));
@@ -203,6 +204,14 @@ std::vector<LpvLocalInput> nonEmpty(const std::vector<LpvLocalInput>& all) {
 } // namespace
 
 scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::vector<LpvCascade>& requested) {
+    if (settings.shBands != 2) {
+        disable("lpv.shBands is not 2");
+        return scene::makeError(scene::ErrorCode::OutOfRange, "render", "parameters.lpv.shBands",
+                                "lpv.shBands = " + std::to_string(settings.shBands) + ": the " +
+                                    lpvVariantName(settings.variant) +
+                                    " LPV runs two bands only; three bands exist as the CPU twin "
+                                    "(lpvref::bands, docs/lpv.md) and no GPU variant runs them yet (issue #47)");
+    }
     if (auto built = buildKernelsFor(settings); !built)
         return built;
     const int cascades = std::min<int>(int(requested.size()), 6);

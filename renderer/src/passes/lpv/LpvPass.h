@@ -36,6 +36,8 @@ const char* lpvVariantName(LpvVariant variant);
 
 struct LpvSettings {
     int gridSize = 32;
+    // lpv.shBands: only 2 runs on the GPU; prepare() refuses 3 (issue #47).
+    int shBands = 2;
     int propagationSteps = 8;
     // lpv.cascadeSteps = byCellSize: cascade k runs propagationSteps >> k steps
     // (at least 1): cells twice as large carry light twice as far per step.
