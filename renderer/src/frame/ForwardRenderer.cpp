@@ -48,9 +48,6 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
     }
     auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
     if (!tonemap) return std::unexpected(tonemap.error());
-    auto exposure = AutoExposurePass::create();
-    if (!exposure) return std::unexpected(exposure.error());
-    r.impl_->exposure.emplace(std::move(*exposure));
     r.impl_->ltcTable = createBuffer();
     const std::span<const float> ltc = scene::ltcGgxTable();
     glNamedBufferStorage(r.impl_->ltcTable.id(), GLsizeiptr(ltc.size_bytes()), ltc.data(), 0);
@@ -81,7 +78,7 @@ const scene::Scene& ForwardRenderer::Impl::enterRenderSpace(const scene::Scene& 
 
 void ForwardRenderer::setScene(const scene::Scene& scene, const scene::TextureImages& textures) {
     impl_->traits.reset();
-    impl_->exposure->reset();
+    impl_->exposure->meter().reset();
     ++impl_->sceneGeneration;
     impl_->sceneGvCache.clear(); // another scene's meshes
     impl_->space.setScene(scene);
@@ -117,11 +114,11 @@ void ForwardRenderer::setBakedRadiosity(std::shared_ptr<const radiosity::BakedSo
 
 const radiosity::BakedSolution* ForwardRenderer::bakedRadiosity() const { return impl_->baked.get(); }
 
-void ForwardRenderer::setExposureTimeStep(std::optional<double> seconds) { impl_->exposureTimeStep = seconds; }
-void ForwardRenderer::resetExposure() { impl_->exposure->reset(); }
+void ForwardRenderer::setExposureTimeStep(std::optional<double> seconds) { impl_->exposure->setTimeStep(seconds); }
+void ForwardRenderer::resetExposure() { impl_->exposure->meter().reset(); }
 double ForwardRenderer::displayExposure(const scene::ParameterSet& params) const {
     const double compensation = std::exp2(params.getFloat("output.exposure"));
-    return params.getEnum("output.exposureMode") == "auto" ? compensation * impl_->exposure->readExposure()
+    return params.getEnum("output.exposureMode") == "auto" ? compensation * impl_->exposure->meter().readExposure()
                                                            : compensation;
 }
 

@@ -7,7 +7,7 @@
 // frame's FrameState; the others are still declared here (FramePasses.cpp:
 // shadows, depth pre-pass, shading, exposure, tonemap;
 // IndirectPasses.cpp: RSMs, VPLs).
-#include "passes/direct/AutoExposurePass.h"
+#include "passes/direct/ExposureFramePass.h"
 #include "passes/lpv/EmissiveVplsFramePass.h"
 #include "frame/FrameContext.h"
 #include "frame/FramePass.h"
@@ -53,7 +53,7 @@ struct ForwardRenderer::Impl {
     std::optional<LpvPass> lpv;
     // Passes that run only when the scene calls for them are created on
     // their first frame and dropped when culled: they hold no GPU memory then.
-    std::optional<AutoExposurePass> exposure; // its result stays on the GPU
+    ExposureFramePass* exposure = nullptr; // in `passes`: its result stays on the GPU
     const SkyHeightFramePass* skyHeight = nullptr; // in `passes`: the sky injection reads its map
     const SubsurfaceFramePass* subsurface = nullptr; // in `passes`: shading samples its volume
     const LocalRsmFramePass* localRsm = nullptr; // in `passes`: the LPV injects its faces
@@ -65,9 +65,6 @@ struct ForwardRenderer::Impl {
     bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
     // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
     Buffer ltcTable;
-    // Seconds between this frame and the last, for the exposure's adaptation
-    // (nullopt: each frame is metered on its own, as `lpv render` does).
-    std::optional<double> exposureTimeStep;
     // What the scene's geometry says (open sky...): rays are cast once per scene change.
     std::optional<SceneTraits> traits;
     // Bumped on every scene change: part of every reuse key.

@@ -1,7 +1,7 @@
 // The frame's direct-light passes the renderer still declares itself:
-// shading (the forward pass that also writes the camera G-buffer), exposure
-// and tonemapping, and the camera targets they share. Shadow maps, the depth
-// pre-pass and sun rays declare themselves (passes/direct/).
+// shading (the forward pass that also writes the camera G-buffer) and
+// tonemapping, and the camera targets they share. Shadow maps, the depth
+// pre-pass, sun rays and exposure declare themselves (passes/direct/).
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/lpv/GlossyReflections.h"
@@ -277,28 +277,6 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
 
 void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
     const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
-    if (!autoExposure)
-        exposure->reset(); // back on auto, the exposure starts from its target
-    graph.importResource(resources::Exposure, [this] {
-        const GLuint id = exposure->exposureBuffer();
-        return graph::ImportedView{id, graph::queryBuffer(id)};
-    });
-    {
-        graph::PassSpec p;
-        p.id = Pass::Exposure;
-        p.decision = autoExposure ? runsBecause("output.exposureMode is auto")
-                                  : skippedBecause("output.exposureMode is manual");
-        p.reads = {resources::CameraHdr};
-        p.writes = {resources::Exposure};
-        p.execute = [this](graph::PassContext& ctx) {
-            const FrameContext& f = ctx.frame;
-            const double blend =
-                exposureTimeStep ? adaptationBlend(*exposureTimeStep, f.params.getFloat("output.exposureAdaptation")) : 1.0;
-            exposure->meter(ctx.id(resources::CameraHdr), f.width, f.height, meterTargetOf(f.params), float(blend));
-            return scene::Expected<void>{};
-        };
-        graph.addPass(std::move(p));
-    }
     graph::PassSpec p;
     p.id = Pass::Tonemap;
     p.decision = runsBecause("the display image");
@@ -323,7 +301,7 @@ void ForwardRenderer::Impl::renderTonemap(graph::PassContext& ctx, bool autoExpo
     glViewport(0, 0, frame.width, frame.height);
     glDisable(GL_DEPTH_TEST);
     glUseProgram(tp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure->exposureBuffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure->meter().exposureBuffer());
     glProgramUniform1i(tp, shader.uniform("uAutoExposure"), autoExposure ? 1 : 0);
     glProgramUniform1f(tp, shader.uniform("uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
     glProgramUniform1i(tp, shader.uniform("uOperator"), tonemapperIndex(frame.params));

@@ -7,6 +7,7 @@
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/direct/DepthPrepassPass.h"
+#include "passes/direct/ExposureFramePass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
 #include "passes/lpv/EmissiveVplsFramePass.h"
@@ -66,6 +67,10 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     passes.push_back(std::make_unique<RadiosityIndirectPass>());
     passes.push_back(declaredByRenderer([this](FrameState& s) { declareShading(s); }));
     passes.push_back(std::make_unique<SunRaysPass>());
+    auto meter = ExposureFramePass::create();
+    if (!meter)
+        return std::unexpected(meter.error());
+    exposure = &add(passes, std::move(*meter));
     passes.push_back(declaredByRenderer([this](FrameState& s) { declarePost(s.frame); }));
     return {};
 }
