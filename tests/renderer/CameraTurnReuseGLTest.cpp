@@ -106,4 +106,27 @@ TEST_F(CameraTurnReuseGLTest, TurningOnSibenikKeepsTheCascadesAndReusesTheLpv) {
     EXPECT_LE(difference, 1e-6 * total) << "the reused frame differs from a fresh render of the same view";
 }
 
+// The counter-case (docs/lpv.md, Grids): with lpv.viewShift = 1 the cascades
+// sit ahead of the camera, so a 5 degree turn moves the finest one (by about
+// 1.2 of its cells) and the LPV reruns.
+TEST_F(CameraTurnReuseGLTest, WithTheCascadesShiftedAlongTheViewATurnMovesThemAndRerunsTheLpv) {
+    test::OpeningView view = test::importedScene("4ds/sibenik.4ds");
+    ASSERT_FALSE(view.project.scene.meshes.empty());
+    ASSERT_TRUE(view.project.parameters.set("lpv.viewShift", 1.0).has_value());
+    auto r = renderer::ForwardRenderer::create();
+    ASSERT_TRUE(r.has_value()) << r.error().describe();
+    r->setScene(view.project.scene);
+    auto render = [&](const scene::Camera& camera) {
+        auto ok = r->render(view.project.scene, view.project.parameters, camera, kWidth, kHeight);
+        ASSERT_TRUE(ok.has_value()) << ok.error().describe();
+    };
+    render(view.camera);
+    const std::vector<renderer::LpvGridFrame> placed = r->lpvCascadeFrames();
+    ASSERT_FALSE(placed.empty());
+    render(yawed(view.camera, 5.0f));
+    EXPECT_NE(r->lpvCascadeFrames().front().origin, placed.front().origin) << "the finest cascade should move";
+    for (const Pass p : {Pass::Rsm, Pass::LpvInjection, Pass::LpvPropagation})
+        EXPECT_EQ(status(*r, p), PassStatus::Ran) << scene::passName(p) << ": " << reason(*r, p);
+}
+
 } // namespace
