@@ -46,16 +46,12 @@ Expected<ForwardRenderer> ForwardRenderer::create() {
         if (!program) return std::unexpected(program.error());
         r.impl_->forwardFull[afterPrepass] = *program;
     }
-    auto tonemap = r.impl_->programs.get({{"fullscreen.vert", "tonemap.frag"}, {}});
-    if (!tonemap) return std::unexpected(tonemap.error());
     r.impl_->ltcTable = createBuffer();
     const std::span<const float> ltc = scene::ltcGgxTable();
     glNamedBufferStorage(r.impl_->ltcTable.id(), GLsizeiptr(ltc.size_bytes()), ltc.data(), 0);
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
-    r.impl_->tonemapProgram = *tonemap;
-    r.impl_->emptyVao = createVertexArray();
     r.impl_->graph.reserveUnits(MaterialGpu::kBaseColorUnit, 15); // MaterialGpu binds these per draw
     if (auto table = r.impl_->buildPassTable(); !table)
         return std::unexpected(table.error());
@@ -272,13 +268,13 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
 const FrameGraphReport& ForwardRenderer::graphReport() const { return impl_->graph.report(); }
 
 void ForwardRenderer::blitTo(GLuint framebuffer, int width, int height) const {
-    glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, 0, 0, impl_->width, impl_->height, 0, 0, width, height,
+    glBlitNamedFramebuffer(impl_->tonemap->framebuffer(), framebuffer, 0, 0, impl_->width, impl_->height, 0, 0, width, height,
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 void ForwardRenderer::blitRegionTo(GLuint framebuffer, int srcX0, int srcY0, int srcX1, int srcY1, int dstX0, int dstY0,
                                    int dstX1, int dstY1) const {
-    glBlitNamedFramebuffer(impl_->displayFbo.id(), framebuffer, srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1,
+    glBlitNamedFramebuffer(impl_->tonemap->framebuffer(), framebuffer, srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1,
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 

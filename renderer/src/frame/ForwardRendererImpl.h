@@ -21,6 +21,7 @@
 #include "scenegpu/RenderSpace.h"
 #include "passes/lpv/RsmFramePass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
+#include "passes/direct/TonemapPass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
@@ -36,7 +37,7 @@
 namespace lpv::renderer {
 
 struct ForwardRenderer::Impl {
-    // The forward and tonemap programs, built at create(); their uniform locations looked up once.
+    // The forward programs, built at create(); their uniform locations looked up once.
     ProgramCache programs;
     // forward.frag with every feature, with and without the depth pre-pass:
     // built at create() so a renderer that exists can shade. Frames use the
@@ -47,7 +48,7 @@ struct ForwardRenderer::Impl {
     std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
     const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup,
                                         bool radiosity);
-    const CachedProgram* tonemapProgram = nullptr;
+    const TonemapPass* tonemap = nullptr; // in `passes`: blitTo shows its display image
     const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
     const RsmFramePass* rsm = nullptr; // in `passes`: the LPV injects its tiles
     std::optional<LpvPass> lpv;
@@ -93,7 +94,6 @@ struct ForwardRenderer::Impl {
     GpuTimer timer;
     graph::FrameGraph graph;
     bool shadowCascadeTint = false; // the visualizers' view of the sun's shadow cascades
-    VertexArray emptyVao;
     DrawListStats cameraStats;
     // The camera G-buffer as the last frame left it: the geometry volume
     // reads it before this frame's shading overwrites it.
@@ -107,8 +107,8 @@ struct ForwardRenderer::Impl {
     LpvSceneGeometry sceneGeometry;
     int width = 0, height = 0;
     // Framebuffers around the graph's camera targets, rebuilt when it hands out others.
-    Framebuffer hdrFbo, displayFbo;
-    GLuint hdrFboDepth = 0, displayFboColor = 0;
+    Framebuffer hdrFbo;
+    GLuint hdrFboDepth = 0;
 
     // The indirect light this frame calls for, decided before the graph is built.
     struct IndirectPlan {
@@ -132,9 +132,7 @@ struct ForwardRenderer::Impl {
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
     void declareShading(const FrameState& state);
-    void declarePost(const FrameContext& frame);
     void renderForward(graph::PassContext& ctx, bool afterPrepass);
-    void renderTonemap(graph::PassContext& ctx, bool autoExposure);
     void attachCameraTargets();
 
     // IndirectPasses.cpp

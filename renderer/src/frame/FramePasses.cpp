@@ -1,7 +1,7 @@
-// The frame's direct-light passes the renderer still declares itself:
-// shading (the forward pass that also writes the camera G-buffer) and
-// tonemapping, and the camera targets they share. Shadow maps, the depth
-// pre-pass, sun rays and exposure declare themselves (passes/direct/).
+// The frame's pass the renderer still declares itself: shading (the forward
+// pass that also writes the camera G-buffer), and the camera targets.
+// Shadow maps, the depth pre-pass, sun rays, exposure and tonemapping
+// declare themselves (passes/direct/).
 #include "frame/ForwardRendererImpl.h"
 
 #include "passes/lpv/GlossyReflections.h"
@@ -45,10 +45,6 @@ int enumIndex(const scene::ParameterSet& params, const char* key, std::initializ
 // output.view as forward.frag's uOutputView.
 int outputViewIndex(const scene::ParameterSet& params) {
     return enumIndex(params, "output.view", {"final", "indirect", "direct"});
-}
-
-int tonemapperIndex(const scene::ParameterSet& params) {
-    return enumIndex(params, "output.tonemapper", {"aces", "reinhard", "uncharted2", "linear", "neutral"});
 }
 
 // Uniform names of light i, built once (not per frame).
@@ -143,12 +139,6 @@ void ForwardRenderer::Impl::attachCameraTargets() {
         const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
         glNamedFramebufferDrawBuffers(hdrFbo.id(), 3, buffers);
         hdrFboDepth = depth;
-    }
-    const GLuint display = graph.resourceId(resources::Display);
-    if (display != displayFboColor) {
-        displayFbo = createFramebuffer();
-        glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display, 0);
-        displayFboColor = display;
     }
 }
 
@@ -273,41 +263,6 @@ void ForwardRenderer::Impl::renderForward(graph::PassContext& ctx, bool afterPre
     }
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
-}
-
-void ForwardRenderer::Impl::declarePost(const FrameContext& frame) {
-    const bool autoExposure = frame.params.getEnum("output.exposureMode") == "auto";
-    graph::PassSpec p;
-    p.id = Pass::Tonemap;
-    p.decision = runsBecause("the display image");
-    p.final = true;
-    p.reads = {resources::CameraHdr};
-    if (autoExposure)
-        p.reads.push_back(resources::Exposure);
-    p.writes = {resources::Display};
-    p.execute = [this, autoExposure](graph::PassContext& ctx) {
-        attachCameraTargets();
-        renderTonemap(ctx, autoExposure);
-        return scene::Expected<void>{};
-    };
-    graph.addPass(std::move(p));
-}
-
-void ForwardRenderer::Impl::renderTonemap(graph::PassContext& ctx, bool autoExposure) {
-    const FrameContext& frame = ctx.frame;
-    const CachedProgram& shader = *tonemapProgram;
-    const GLuint tp = shader.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, displayFbo.id());
-    glViewport(0, 0, frame.width, frame.height);
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(tp);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, exposure->meter().exposureBuffer());
-    glProgramUniform1i(tp, shader.uniform("uAutoExposure"), autoExposure ? 1 : 0);
-    glProgramUniform1f(tp, shader.uniform("uExposure"), std::exp2(frame.params.getFloat("output.exposure")));
-    glProgramUniform1i(tp, shader.uniform("uOperator"), tonemapperIndex(frame.params));
-    ctx.bindTexture(tp, shader.uniform("uHdr"), resources::CameraHdr);
-    glBindVertexArray(emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 } // namespace lpv::renderer

@@ -10,6 +10,7 @@
 #include "passes/direct/ExposureFramePass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/SunRaysPass.h"
+#include "passes/direct/TonemapPass.h"
 #include "passes/lpv/EmissiveVplsFramePass.h"
 #include "passes/lpv/LocalRsmFramePass.h"
 #include "passes/lpv/LpvStages.h"
@@ -71,7 +72,10 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     if (!meter)
         return std::unexpected(meter.error());
     exposure = &add(passes, std::move(*meter));
-    passes.push_back(declaredByRenderer([this](FrameState& s) { declarePost(s.frame); }));
+    auto display = TonemapPass::create();
+    if (!display)
+        return std::unexpected(display.error());
+    tonemap = &add(passes, std::move(*display));
     return {};
 }
 
