@@ -21,6 +21,9 @@ Commands:
   bench import FILE...        Time importing scene files against loading the projects they become
   bench render PROJECT        Per-pass GPU times over many frames (default 1280x720, 60 frames)
   bench lpv PROJECT           The thesis' LPV measurements: RSM tile sizes, steps x variants x occlusion
+  bench pack PROJECT -o FILE.lpvpack
+                              One file with what a frame needs, for render, bench render|lpv
+                              and lpv-gl-bench (the GPU bench without image libraries)
   bench PROJECT --sweep KEY=V1,V2 ...
                               Sweep parameters: per-pass GPU time and error against a reference,
                               CSV/JSON/Markdown report and PNG plots (--reference REF.exr)
