@@ -32,7 +32,7 @@ holds no radiosity solution (gi.method=radiosity is refused from a pack).
 
 int benchPack(Args args) {
     const auto outputText = args.option("--output", "-o");
-    args.require(outputText.has_value(), "-o FILE.lpvpack");
+    args.require(outputText.has_value(), "missing -o FILE.lpvpack");
     const auto output = outputText ? std::optional<std::filesystem::path>(*outputText) : std::nullopt;
     const auto pos = args.expectPositionals(1, "bench pack expects exactly one project file", 1); // after "pack"
     if (pos.empty())

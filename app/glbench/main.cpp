@@ -62,7 +62,7 @@ int printVersion() {
 int runImage(Args args) {
     RenderRequest request = renderRequestOptions(args);
     const auto output = args.option("--output", "-o");
-    args.require(output.has_value(), "-o OUT.ppm|OUT.pfm");
+    args.require(output.has_value(), "missing -o OUT.ppm or OUT.pfm");
     const int width = args.integer("--width", 1280, {1});
     const int height = args.integer("--height", 720, {1});
     const int frames = args.integer("--frames", 3, {1});
