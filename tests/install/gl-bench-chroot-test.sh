@@ -3,7 +3,9 @@
 # new `debootstrap --variant=minbase bookworm` chroot gets only the Mesa
 # EGL/GL runtime (libegl1, libegl-mesa0, libgl1-mesa-dri, libopengl0, no
 # Recommends), the bundle made by packaging/gl-bench-bundle.sh is copied in,
-# and its run.sh --quick must print every table on llvmpipe there.
+# and its run.sh --quick must print every table on llvmpipe there; then its
+# gpu-check.sh --quick (the NVIDIA run's script, at a tiny size) must finish
+# with every step exit 0 there too.
 #
 #   tests/install/gl-bench-chroot-test.sh BUILD_DIR [CHROOT]
 #
@@ -30,7 +32,12 @@ bundle=$(mktemp -d)
 
 # A new chroot every time: what is in it is exactly what this script put there.
 umount -R "$ROOT"/{proc,sys,dev} 2>/dev/null || true
-rm -rf "$ROOT"
+# Never delete through a mount that is still there (a bound /dev is the host's).
+if grep -q " $ROOT/" /proc/mounts; then
+  echo "FAILED: something is still mounted under $ROOT; not deleting it" >&2
+  exit 1
+fi
+rm -rf --one-file-system "$ROOT"
 SUITE=bookworm
 source "$repo/packaging/chroot-common.sh"
 chroot_bootstrap
@@ -72,5 +79,12 @@ expect "thesis application's phases" 1 "the thesis phases table"
 expect '^=== bench lpv sponza' 1 "the bench lpv run"
 expect 'lpvPropagation' 2 "the propagation rows"
 rm -f "$log"
+
+# The GPU run's script, on llvmpipe and with the tools a minimal system has.
+if ! in_chroot /opt/lpv-gl-bench/gpu-check.sh --quick --size 64x36 /tmp/gpu-check; then
+  echo "FAILED: gpu-check.sh --quick" >&2
+  fail=1
+fi
+in_chroot ls /tmp/gpu-check
 echo "chroot test: $(($(date +%s) - start)) s"
 exit $fail
