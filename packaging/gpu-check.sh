@@ -21,8 +21,10 @@
 # Each run's table is in NAME.txt (stdout and stderr), with NAME.md and
 # NAME.csv beside it. --platform (default device: EGL_EXT_platform_device,
 # the NVIDIA path) is LPV_EGL_PLATFORM; --quick is a tiny size, one round and
-# short lists, to check the script itself on llvmpipe. A step that fails is
-# recorded and the next one runs; the exit code is the number of failures.
+# short lists, to check the script itself on llvmpipe. Without --quick a
+# software rasteriser (llvmpipe) where the GPU should be stops the run at
+# once. A step that fails is recorded and the next one runs; the exit code
+# is the number of failures.
 set -uo pipefail
 
 bundle=$(cd "$(dirname "$0")" && pwd)
@@ -37,7 +39,7 @@ while [ $# -gt 0 ]; do
     --size) size=${2:?--size needs WxH}; thesisSize=$2; shift 2 ;;
     --quick) quick=1; shift ;;
     --platform) platform=${2:?--platform needs device, surfaceless or default}; shift 2 ;;
-    -h | --help) sed -n '2,27p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,29p' "$0"; exit 0 ;;
     -*) echo "gpu-check.sh: unknown option $1" >&2; exit 2 ;;
     *) out=$1; shift ;;
   esac
@@ -81,6 +83,14 @@ step() {
 echo "gpu-check.sh on $(uname -n) at $(date -u +%FT%TZ), LPV_EGL_PLATFORM=$platform, bundle $bundle" | tee -a "$out/summary.txt"
 command -v nvidia-smi >/dev/null && nvidia-smi -q >"$out/nvidia-smi.txt" 2>&1
 step version "$bench" --version
+# GPU time is scarce: a software rasteriser where a GPU was meant stops here
+# (--quick, the llvmpipe check of this script, goes on).
+if [ "$quick" = 0 ] && grep -qiE '^GPU: +(llvmpipe|softpipe|swrast)' "$out/version.txt"; then
+  echo "gpu-check.sh: EGL $platform gave a software rasteriser, not a GPU ($(grep '^GPU:' "$out/version.txt"))." \
+       "Is the NVIDIA driver's EGL installed (/usr/share/glvnd/egl_vendor.d/10_nvidia.json)? Stopping." | \
+    tee -a "$out/summary.txt" >&2
+  exit 1
+fi
 
 for scene in sponza sibenik; do
   step "render-$scene" "$bench" render "$packs/$scene.lpvpack" --width "$width" --height "$height" "${rounds[@]}" \
