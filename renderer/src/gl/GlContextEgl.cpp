@@ -100,11 +100,19 @@ std::vector<EGLDisplay> deviceDisplays() {
     EGLint n = 0;
     if (!eglQueryDevicesEXT(16, devices, &n))
         return out;
+    // Hardware first (issue #45): where the NVIDIA driver and Mesa are both
+    // installed, GLVND lists every vendor's devices, Mesa's software
+    // rasteriser among them (EGL_MESA_device_software), in vendor order.
+    const bool canQuery = hasExtension(clientExts, "EGL_EXT_device_query");
+    std::vector<EGLDisplay> software;
     for (EGLint i = 0; i < n; ++i) {
         EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-        if (d != EGL_NO_DISPLAY)
-            out.push_back(d);
+        if (d == EGL_NO_DISPLAY)
+            continue;
+        const char* deviceExts = canQuery ? eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS) : nullptr;
+        (deviceExts && hasExtension(deviceExts, "EGL_MESA_device_software") ? software : out).push_back(d);
     }
+    out.insert(out.end(), software.begin(), software.end());
     return out;
 }
 
