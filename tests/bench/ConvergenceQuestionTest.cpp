@@ -71,9 +71,6 @@ TEST(ConvergenceQuestion, RefinesTheFittedCellsAndScalesStepsAndCellCountOnTheIm
     }
     // The 2 m box framed from outside: the fit's cells are larger than 1/160 of it.
     EXPECT_GT(h, 2.0 / 160.0);
-    // --quick asks the coarser two.
-    const auto quick = combinationsOf(convergence().quickSweep);
-    ASSERT_EQ(quick.size(), 2u);
-    EXPECT_EQ(quick[0], combinations[0]);
-    EXPECT_EQ(quick[1], combinations[1]);
+    // --quick leaves it out (x2 alone costs 13x the fitted frame).
+    EXPECT_TRUE(convergence().quickSweep.empty());
 }
