@@ -4,7 +4,7 @@
 # ours installed (a GPU node with a CUDA image, another distribution, a
 # colleague's workstation).
 #
-#   packaging/gl-bench-bundle.sh OUTDIR [--build DIR] [--scenes DIR] [--with-gl-tests]
+#   packaging/gl-bench-bundle.sh OUTDIR [--build DIR] [--scenes DIR] [--with-gl-tests] [--with-sibenik-4ds]
 #
 #   OUTDIR/bin/lpv-gl-bench     the program, stripped, RUNPATH $ORIGIN/../lib
 #   OUTDIR/lib/                 its libraries that are not glibc's (RUNPATH $ORIGIN):
@@ -19,6 +19,11 @@
 #                               with --with-gl-tests: the renderer's GL tests (they
 #                               link the renderer and the scene only), and the
 #                               libstdc++ and libgcc_s they need
+#   OUTDIR/packs/sibenik-4ds.lpvpack
+#                               with --with-sibenik-4ds: Sibenik from sibenik.4ds, the
+#                               scene the thesis application was measured on (12 MiB
+#                               more: the bundle is then over 48 MiB); gpu-check.sh
+#                               takes it for the thesis-settings and bench lpv runs
 #
 # The GL and EGL libraries are not bundled: libepoxy loads the machine's own
 # (libEGL.so.1 through GLVND, then the vendor driver: NVIDIA's, or Mesa's).
@@ -32,12 +37,14 @@ out=""
 build="$repo/build"
 scenes="$repo/../shared/scenes"
 withTests=0
+with4ds=0
 while [ $# -gt 0 ]; do
   case $1 in
     --build) build=${2:?--build needs a folder}; shift 2 ;;
     --scenes) scenes=${2:?--scenes needs a folder}; shift 2 ;;
     --with-gl-tests) withTests=1; shift ;;
-    -h | --help) sed -n '2,29p' "$0"; exit 0 ;;
+    --with-sibenik-4ds) with4ds=1; shift ;;
+    -h | --help) sed -n '2,34p' "$0"; exit 0 ;;
     -*) echo "gl-bench-bundle.sh: unknown option $1" >&2; exit 2 ;;
     *) [ -z "$out" ] || { echo "gl-bench-bundle.sh: one OUTDIR, not '$out' and '$1'" >&2; exit 2; }
        out=$1; shift ;;
@@ -104,6 +111,11 @@ for s in sibenik sponza; do
     { echo "gl-bench-bundle.sh: lpv import $scenes/$s/$s.obj failed" >&2; "$lpv" import "$scenes/$s/$s.obj" -o "$work/$s.lpvproj"; exit 1; }
   "$lpv" bench pack "$work/$s.lpvproj" -o "$out/packs/$s.lpvpack"
 done
+if [ "$with4ds" = 1 ]; then
+  [ -f "$scenes/4ds/sibenik.4ds" ] || { echo "gl-bench-bundle.sh: no $scenes/4ds/sibenik.4ds" >&2; exit 1; }
+  "$lpv" import "$scenes/4ds/sibenik.4ds" -o "$work/sibenik-4ds.lpvproj" >/dev/null
+  "$lpv" bench pack "$work/sibenik-4ds.lpvproj" -o "$out/packs/sibenik-4ds.lpvpack"
+fi
 
 cat >"$out/run.sh" <<'RUN'
 #!/bin/sh
