@@ -1,11 +1,12 @@
 #version 450 core
-// Variants (ForwardRenderer::Impl::forwardVariant): LPV_AREA_LIGHTS compiles
-// the area-light code in; LPV_NO_LOCAL_SHADOWS, LPV_NO_VISIBILITY,
-// LPV_NO_GLOSSY and LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
+// Variants (ShadingPass::variant): LPV_AREA_LIGHTS compiles the area-light
+// code in; LPV_NO_LOCAL_SHADOWS, LPV_NO_VISIBILITY, LPV_NO_GLOSSY and
+// LPV_NO_SUBSURFACE_LOOKUP leave out what a frame does not run. On llvmpipe
 // code that is compiled in but never taken still slows every pixel.
-// LPV_RADIOSITY (gi.method = radiosity) takes the indirect light from a baked
-// solution drawn at this pixel (radiosity_lookup.glsl) instead of the LPV,
-// whose lookups it leaves out.
+// LPV_SCREEN_INDIRECT (a pass declared an image of the indirect light,
+// frame/IndirectLight.h; gi.method = radiosity draws a baked solution's)
+// takes the indirect light from that image at this pixel
+// (screen_indirect.glsl) instead of the LPV, whose lookups it leaves out.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
@@ -35,8 +36,8 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #ifdef LPV_AREA_LIGHTS
 #include "area_light.glsl"
 #endif
-#ifdef LPV_RADIOSITY
-#include "radiosity_lookup.glsl"
+#ifdef LPV_SCREEN_INDIRECT
+#include "screen_indirect.glsl"
 #else
 #include "sh.glsl"
 #include "lpv_lookup.glsl"
@@ -124,8 +125,8 @@ void main() {
         radiance += surfaceBrdf(s, l, v) * irradianceColor * ndotl * visibility;
     }
     if (uOutputView == 1) {
-#ifdef LPV_RADIOSITY
-        vec3 e = PI * radiosityIncident() * s.occlusion;
+#ifdef LPV_SCREEN_INDIRECT
+        vec3 e = PI * indirectIncident() * s.occlusion;
 #else
         vec3 e = uLpvCascadeCount > 0 ? lpvIrradiance(vWorldPos, n) * s.occlusion : vec3(0.0);
 #endif
@@ -134,12 +135,12 @@ void main() {
         outAlbedo = vec4(s.albedo, 1.0);
         return;
     }
-#ifdef LPV_RADIOSITY
-    // Indirect diffuse light from the baked solution: Lambert's albedo / pi
-    // times the irradiance E, and the solution holds E / pi.
+#ifdef LPV_SCREEN_INDIRECT
+    // Indirect diffuse light from the image: Lambert's albedo / pi times the
+    // irradiance E, and the image holds E / pi.
     if (uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
-        radiance += diffuseAlbedo * radiosityIncident() * s.occlusion;
+        radiance += diffuseAlbedo * indirectIncident() * s.occlusion;
     }
 #else
     // Indirect diffuse light from the LPV; metals have no diffuse part.
@@ -153,7 +154,7 @@ void main() {
 #endif
     }
 #endif
-#if !defined(LPV_NO_GLOSSY) && !defined(LPV_RADIOSITY)
+#if !defined(LPV_NO_GLOSSY) && !defined(LPV_SCREEN_INDIRECT)
     // Glossy reflections: the LPV ray-marched along the reflection vector (lpv_glossy.glsl).
     if (uOutputView == 0 && lpvGlossyRuns(uGlossiness)) {
         vec3 f0 = uShadingModel == 1 ? mix(vec3(0.04), s.albedo, s.metallic) : max(s.specular, vec3(0.04));

@@ -1,6 +1,6 @@
 #version 450 core
 // The light that reached a patch through form factors (irradiance / pi),
-// for shading to read at the same pixel (LPV_RADIOSITY in forward.frag).
+// for shading to read at the same pixel (LPV_SCREEN_INDIRECT in forward.frag).
 in vec3 vWorldPos;
 in vec3 vIncident;
 flat in vec3 vNormal;

@@ -4,7 +4,6 @@
 #include "gl/GpuMemoryLedger.h"
 #include "gl/ImageRows.h"
 #include "lpv/renderer/ShaderLibrary.h"
-#include "lpv/scene/LtcSpecular.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -15,14 +14,6 @@ namespace lpv::renderer {
 using scene::ErrorCode;
 using scene::makeError;
 
-namespace {
-
-// The subsurface LPV's packed accumulator is a 17th fragment sampler, so only
-// where GL_MAX_TEXTURE_IMAGE_UNITS allows it (lpv_subsurface_lookup.glsl).
-constexpr GLint kSamplersWithSubsurface = 17;
-
-} // namespace
-
 ForwardRenderer::ForwardRenderer() : impl_(std::make_unique<Impl>()) {}
 ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
 ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
@@ -30,25 +21,6 @@ ForwardRenderer::~ForwardRenderer() = default;
 
 Expected<ForwardRenderer> ForwardRenderer::create() {
     ForwardRenderer r;
-    GLint fragmentUnits = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
-    r.impl_->subsurfaceSampler = fragmentUnits >= kSamplersWithSubsurface;
-    std::vector<std::string> defines;
-    if (!r.impl_->subsurfaceSampler)
-        defines.push_back("LPV_NO_SUBSURFACE_SAMPLER 1");
-    r.impl_->forwardDefines = defines;
-    for (int afterPrepass = 0; afterPrepass < 2; ++afterPrepass) {
-        std::vector<std::string> full = defines;
-        full.push_back("LPV_AREA_LIGHTS 1");
-        if (afterPrepass)
-            full.push_back("LPV_AFTER_DEPTH_PREPASS 1");
-        auto program = r.impl_->programs.get({{"forward.vert", "forward.frag"}, full});
-        if (!program) return std::unexpected(program.error());
-        r.impl_->forwardFull[afterPrepass] = *program;
-    }
-    r.impl_->ltcTable = createBuffer();
-    const std::span<const float> ltc = scene::ltcGgxTable();
-    glNamedBufferStorage(r.impl_->ltcTable.id(), GLsizeiptr(ltc.size_bytes()), ltc.data(), 0);
     auto lpv = LpvPass::create();
     if (!lpv) return std::unexpected(lpv.error());
     r.impl_->lpv.emplace(std::move(*lpv));
@@ -121,7 +93,7 @@ double ForwardRenderer::displayExposure(const scene::ParameterSet& params) const
 GpuTimer& ForwardRenderer::timer() { return impl_->timer; }
 int ForwardRenderer::width() const { return impl_->width; }
 int ForwardRenderer::height() const { return impl_->height; }
-DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->cameraStats; }
+DrawListStats ForwardRenderer::cameraDrawStats() const { return impl_->shading->cameraStats(); }
 int ForwardRenderer::shadowCascadesDrawn() const {
     return impl_->graph.status(scene::Pass::ShadowMaps) == PassStatus::Ran ? impl_->shadows->maps().cascadesDrawn() : 0;
 }
@@ -140,22 +112,18 @@ std::size_t ForwardRenderer::subsurfaceAllocatedBytes() const {
 GpuMemory ForwardRenderer::gpuMemory() const {
     const Impl& m = *impl_;
     GpuMemoryLedger ledger;
-    // The passes name what they own first, so the graph's one representative
-    // of a set (lpv.volumes is the first of six textures) counts under the set's name.
-    if (m.shadows)
-        m.shadows->addGpuMemory(ledger);
-    if (m.rsm)
-        m.rsm->addGpuMemory(ledger);
-    m.localRsm->addGpuMemory(ledger);
-    m.emissiveVpls->addGpuMemory(ledger);
-    if (m.lpv)
-        m.lpv->addGpuMemory(ledger);
-    // The passes of the table that own GL objects (subsurface, radiosityIndirect).
-    for (const std::unique_ptr<FramePass>& pass : m.passes)
+    // The passes name what they own first, in the table's order, so the
+    // graph's one representative of a set (lpv.volumes is the first of six
+    // textures) counts under the set's name. The LPV's volumes, which its
+    // stages share, count where the stages begin.
+    bool lpvNamed = false;
+    for (const std::unique_ptr<FramePass>& pass : m.passes) {
+        if (!lpvNamed && dynamic_cast<const LpvStage*>(pass.get())) {
+            m.lpv->addGpuMemory(ledger);
+            lpvNamed = true;
+        }
         pass->addGpuMemory(ledger);
-    if (m.exposure)
-        m.exposure->addGpuMemory(ledger);
-    ledger.addBuffer("shading.ltcTable", m.ltcTable.id());
+    }
     // Then every resource the frame graph declared: its own targets and what the passes imported.
     for (const std::string& name : m.graph.resourceNames())
         if (const std::optional<graph::ResourceDesc> desc = m.graph.resourceDesc(name))
@@ -164,7 +132,7 @@ GpuMemory ForwardRenderer::gpuMemory() const {
 }
 const std::vector<EffectDecision>& ForwardRenderer::frameEffects() const { return impl_->frameEffects; }
 
-void ForwardRenderer::setShadowCascadeTint(bool on) { impl_->shadowCascadeTint = on; }
+void ForwardRenderer::setShadowCascadeTint(bool on) { impl_->shading->setShadowCascadeTint(on); }
 
 void ForwardRenderer::setLpvCapture(std::optional<LpvCaptureRequest> request) { impl_->lpv->setCapture(request); }
 
@@ -222,12 +190,15 @@ Expected<void> ForwardRenderer::render(const scene::Scene& worldScene, const sce
         if (auto ok = d.planIndirect(frame); !ok)
             return ok;
         d.declareCameraTargets(frame);
+        if (!d.traits)
+            d.traits = analyseSceneTraits(scene);
         FrameState state{.frame = frame,
                          .graph = d.graph,
                          .effects = d.frameEffects,
                          .sceneGpu = d.sceneGpu.get(),
                          .materialGpu = d.materialGpu.get(),
                          .sceneGeneration = d.sceneGeneration,
+                         .traits = &*d.traits,
                          .depthPrepass = frame.params.getBool("output.depthPrepass"),
                          .radiosity = d.plan.radiosity,
                          .baked = d.baked.get(),

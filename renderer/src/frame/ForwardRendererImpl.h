@@ -20,6 +20,7 @@
 #include "gl/ProgramCache.h"
 #include "scenegpu/RenderSpace.h"
 #include "passes/lpv/RsmFramePass.h"
+#include "passes/direct/ShadingPass.h"
 #include "passes/direct/ShadowMapsFramePass.h"
 #include "passes/direct/TonemapPass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
@@ -37,18 +38,8 @@
 namespace lpv::renderer {
 
 struct ForwardRenderer::Impl {
-    // The forward programs, built at create(); their uniform locations looked up once.
-    ProgramCache programs;
-    // forward.frag with every feature, with and without the depth pre-pass:
-    // built at create() so a renderer that exists can shade. Frames use the
-    // variant with only the features they need (forwardVariant): on llvmpipe
-    // code that is compiled in but not taken still slows every pixel
-    // (docs/renderer.md).
-    const CachedProgram* forwardFull[2] = {};
-    std::vector<std::string> forwardDefines; // what every variant defines (the subsurface sampler's absence)
-    const CachedProgram& forwardVariant(const FrameContext& frame, bool afterPrepass, bool glossy, bool subsurfaceLookup,
-                                        bool radiosity);
     const TonemapPass* tonemap = nullptr; // in `passes`: blitTo shows its display image
+    ShadingPass* shading = nullptr;       // in `passes`: its camera statistics and cascade tint
     const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
     const RsmFramePass* rsm = nullptr; // in `passes`: the LPV injects its tiles
     std::optional<LpvPass> lpv;
@@ -63,9 +54,6 @@ struct ForwardRenderer::Impl {
     // number that changes with it (part of the pass's reuse key).
     std::shared_ptr<const radiosity::BakedSolution> baked;
     std::uint64_t bakedGeneration = 0;
-    bool subsurfaceSampler = true; // forward.frag has the subsurface sampler (enough texture units)
-    // The GGX LTC table for area lights' specular lobe (scene/LtcSpecular.h), uploaded once.
-    Buffer ltcTable;
     // What the scene's geometry says (open sky...): rays are cast once per scene change.
     std::optional<SceneTraits> traits;
     // Bumped on every scene change: part of every reuse key.
@@ -88,13 +76,10 @@ struct ForwardRenderer::Impl {
     scene::ParameterSet frameParams;
     std::uint64_t gBufferSceneGeneration = 0; // the scene the camera G-buffer shows
     std::vector<EffectDecision> frameEffects;
-    bool glossyRuns = false; // this frame's glossy reflections decision, for the forward pass
     std::unique_ptr<SceneGpu> sceneGpu;
     std::unique_ptr<MaterialGpu> materialGpu;
     GpuTimer timer;
     graph::FrameGraph graph;
-    bool shadowCascadeTint = false; // the visualizers' view of the sun's shadow cascades
-    DrawListStats cameraStats;
     // The camera G-buffer as the last frame left it: the geometry volume
     // reads it before this frame's shading overwrites it.
     bool gBufferValid = false;
@@ -106,9 +91,6 @@ struct ForwardRenderer::Impl {
     lpvref::SceneGvCache sceneGvCache;
     LpvSceneGeometry sceneGeometry;
     int width = 0, height = 0;
-    // Framebuffers around the graph's camera targets, rebuilt when it hands out others.
-    Framebuffer hdrFbo;
-    GLuint hdrFboDepth = 0;
 
     // The indirect light this frame calls for, decided before the graph is built.
     struct IndirectPlan {
@@ -131,9 +113,6 @@ struct ForwardRenderer::Impl {
     // FramePasses.cpp
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
-    void declareShading(const FrameState& state);
-    void renderForward(graph::PassContext& ctx, bool afterPrepass);
-    void attachCameraTargets();
 
     // IndirectPasses.cpp
     scene::Expected<void> planIndirect(const FrameContext& frame);

@@ -10,6 +10,7 @@
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/SceneGpu.h"
 #include "lpv/scene/SceneFields.h"
+#include "passes/direct/ShadowPass.h"
 #include "passes/lpv/LpvStages.h"
 #include "scenegpu/MaterialGpu.h"
 
@@ -55,6 +56,8 @@ struct FrameState {
     EffectDecision localLights, emissive;
     // The sun's RSM tiles (rsm.cascades of them; the LPV's are the first).
     std::vector<LpvCascade> rsmCascades;
+    // The shadow maps shading samples: the shadow maps pass's, set in its setup().
+    const ShadowPass* shadowMaps = nullptr;
     // The indirect light shading adds, as the passes that compute it
     // declared it in their setup() (IndirectLight.h); shading reads them all.
     std::vector<IndirectLight> indirectLight;

@@ -66,7 +66,7 @@ scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& fr
         plan.sss.wanted = false;
         plan.sss.reason += "; but it is injected from the sun's RSM and no directional light lights the scene";
     }
-    if (plan.sss.wanted && !subsurfaceSampler) {
+    if (plan.sss.wanted && !shading->hasSubsurfaceSampler()) {
         plan.sss.wanted = false;
         plan.sss.reason += "; but this GL has fewer than 17 fragment texture units for its volume";
     }

@@ -20,6 +20,7 @@ void ShadowMapsFramePass::setup(graph::PassSpec& pass, FrameState& state) {
         return graph::ImportedView{id, graph::queryTexture(id)};
     });
     pass.decision = runsBecause("direct light is shadowed");
+    state.shadowMaps = &maps_; // shading samples them
     pass.writes = {resources::ShadowMaps};
     // What the maps are drawn from besides the cascades' matrices: a cascade
     // whose snapped matrix did not move keeps its layer (ShadowPass).

@@ -53,7 +53,8 @@ struct LpvStageInputs {
 
 // A stage, defined in its own file: its declaration (Falcor's reflect(): the
 // decision, reads, writes and key) and its work, both from LpvStageInputs
-// alone; `resources` (may be null) declares graph resources the frame learns of with it.
+// alone; `resources` (may be null) declares what else the frame learns of
+// with it: graph resources, the indirect light shading reads (IndirectLight.h).
 struct LpvStageDefinition {
     scene::Pass id = scene::Pass::None;
     void (*declare)(graph::PassSpec& pass, const LpvStageInputs& in) = nullptr;

@@ -12,6 +12,17 @@ void SubsurfaceFramePass::setup(graph::PassSpec& pass, FrameState& state) {
     pass.reads = {resources::RsmPosition, resources::RsmNormal, resources::RsmFlux, resources::LpvVolumes};
     pass.writes = {resources::SubsurfaceAccumulator};
     pass.inputsKey = state.lpv.key;
+    // Shading adds the light that crossed translucent materials (frame/IndirectLight.h).
+    if (pass.decision.runs()) {
+        IndirectLight light;
+        light.provider = id();
+        light.lookup = IndirectLight::Lookup::SubsurfaceVolume;
+        light.reads = {resources::SubsurfaceAccumulator};
+        light.bind = [this](const CachedProgram& shader, graph::PassContext& ctx) {
+            gpu_->bindForShading(shader, ctx.allocateUnit());
+        };
+        state.indirectLight.push_back(std::move(light));
+    }
 }
 
 scene::Expected<void> SubsurfaceFramePass::execute(graph::PassContext& ctx, FrameState& state) {

@@ -44,6 +44,9 @@ void RadiosityIndirectPass::setup(graph::PassSpec& pass, FrameState& state) {
     }
     if (state.depthPrepass)
         pass.reads = {resources::CameraDepth};
+    // Shading reads radiosity.incident at its pixel as the indirect light, in place of the LPV's (frame/IndirectLight.h).
+    if (state.radiosity.runs())
+        state.indirectLight.push_back(screenIndirectLight(id(), resources::RadiosityIncident));
     // radiosity.smoothing is declared as invalidating shading (the radiosity
     // view's); here the corner values are uploaded from it, so it is part of
     // what this pass's output is computed from.
