@@ -147,6 +147,39 @@ TEST_F(FrameGraphGLTest, AnOutputIsReusedUntilAParameterThatInvalidatesItChanges
     EXPECT_EQ(report(Pass::LpvPropagation).status, PassStatus::Ran);
 }
 
+TEST_F(FrameGraphGLTest, AParameterAPassDeclaresItReadsIsPartOfItsKey) {
+    // radiosity.smoothing names shading in the registry, not radiosityIndirect:
+    // declared by the pass (issue #44 item 3), it reruns it; undeclared it would not.
+    bool declares = true;
+    auto build = [&] {
+        PassSpec p = pass(Pass::RadiosityIndirect, {}, {kA});
+        if (declares)
+            p.parameters = {"radiosity.smoothing"};
+        graph.addPass(std::move(p));
+        graph.addPass(pass(Pass::Tonemap, {kA}, {}, true, std::nullopt));
+    };
+    EXPECT_EQ(runFrame(build), (Names{"radiosityIndirect", "tonemap"}));
+    EXPECT_EQ(runFrame(build), (Names{"tonemap"}));
+    ASSERT_TRUE(params.set("radiosity.smoothing", false).has_value());
+    EXPECT_EQ(runFrame(build), (Names{"radiosityIndirect", "tonemap"}));
+    EXPECT_EQ(report(Pass::RadiosityIndirect).reason, "radiosity.smoothing changed");
+    EXPECT_EQ(runFrame(build), (Names{"tonemap"}));
+    declares = false;
+    runFrame(build); // its key lost the parameter: it runs once more
+    ASSERT_TRUE(params.set("radiosity.smoothing", true).has_value());
+    EXPECT_EQ(runFrame(build), (Names{"tonemap"})) << "without the declaration the parameter is not in the key";
+
+    // A key the registry does not declare is an error naming it.
+    graph.beginFrame();
+    declareResources();
+    PassSpec wrong = pass(Pass::RadiosityIndirect, {}, {kA});
+    wrong.parameters = {"radiosity.smoothnes"};
+    graph.addPass(std::move(wrong));
+    auto compiled = graph.compile(params, true);
+    ASSERT_FALSE(compiled.has_value());
+    EXPECT_NE(compiled.error().describe().find("'radiosity.smoothnes'"), std::string::npos) << compiled.error().describe();
+}
+
 TEST_F(FrameGraphGLTest, ANewInputsKeyReruns) {
     std::uint64_t key = 1;
     auto build = [&] {

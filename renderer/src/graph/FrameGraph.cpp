@@ -30,6 +30,16 @@ const std::vector<std::string>& invalidatingKeys(scene::Pass pass) {
     return it->second;
 }
 
+// The parameters a pass's output depends on: the keys whose registry entry
+// names the pass, then those it declares reading (PassSpec::parameters).
+std::vector<std::string> parameterKeys(const PassSpec& p) {
+    std::vector<std::string> keys = invalidatingKeys(p.id);
+    for (const std::string& key : p.parameters)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            keys.push_back(key);
+    return keys;
+}
+
 // The handles' names, for the bookkeeping below that keys by name.
 auto names(const std::vector<ResourceHandle>& handles) { return handles | std::views::transform(&ResourceHandle::str); }
 
@@ -111,6 +121,10 @@ scene::Expected<void> FrameGraph::resolveVersions() {
         if (status_[i] == PassStatus::Culled)
             continue;
         const PassSpec& p = passes_[i];
+        for (const std::string& key : p.parameters)
+            if (!scene::ParameterRegistry::instance().find(key))
+                return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                                 "reads parameter '" + key + "', which the registry does not declare");
         for (const auto* list : {&p.readsHistory, &p.reads})
             for (const std::string& name : names(*list)) {
                 const auto w = finalWriter_.find(name);
@@ -287,7 +301,8 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
     for (std::size_t i : order_) {
         const PassSpec& p = passes_[i];
         LastRun& run = pending_[i];
-        for (const std::string& key : invalidatingKeys(p.id))
+        run.parameterKeys = parameterKeys(p);
+        for (const std::string& key : run.parameterKeys)
             run.parameters.push_back(params.get(key));
         for (const Access& a : inputs_[i])
             run.inputVersions[a.resource] = versionOf(a);
@@ -312,9 +327,12 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
             const LastRun& was = last->second;
             if (was.inputsKey != run.inputsKey)
                 why = "the scene, lights or camera changed";
-            for (std::size_t k = 0; why.empty() && k < run.parameters.size() && k < was.parameters.size(); ++k)
-                if (run.parameters[k] != was.parameters[k])
-                    why = invalidatingKeys(p.id)[k] + " changed";
+            for (std::size_t k = 0; why.empty() && k < run.parameters.size(); ++k) {
+                const auto at = std::find(was.parameterKeys.begin(), was.parameterKeys.end(), run.parameterKeys[k]);
+                if (at == was.parameterKeys.end() ||
+                    was.parameters[std::size_t(at - was.parameterKeys.begin())] != run.parameters[k])
+                    why = run.parameterKeys[k] + " changed";
+            }
             for (const auto& [name, v] : run.inputVersions)
                 if (why.empty() && (!was.inputVersions.count(name) || was.inputVersions.at(name) != v))
                     why = "its input " + name + " changed";

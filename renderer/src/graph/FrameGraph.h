@@ -9,7 +9,8 @@
 //
 // Reuse: a pass's key hashes what its output is computed from: its own
 // inputs (scene generation, lights, camera; given by the renderer), the
-// parameters the registry says invalidate it, and the versions of the
+// parameters the registry says invalidate it and those it declares it
+// reads (PassSpec::parameters), and the versions of the
 // resources it reads (a written resource's version is its writer's key).
 // A pass is reused when its key equals the key of its last run. Passes that
 // update a resource in place form a chain: when one of them reruns, all do.
@@ -62,6 +63,11 @@ struct PassSpec {
     // before this one writes them this frame): the LPV's geometry volume
     // reads the last frame's camera G-buffer.
     std::vector<ResourceHandle> readsHistory;
+    // Registry keys (scene/ParameterDeclarations.cpp) this pass reads besides
+    // those whose declaration names the pass: their values join its reuse
+    // key, and a change reruns it with "KEY changed". A key the registry does
+    // not declare is an error of compile().
+    std::vector<std::string> parameters;
     // What the output is computed from besides parameters and inputs (scene
     // generation, lights, camera...). nullopt: never reused, runs every frame.
     std::optional<std::uint64_t> inputsKey;
@@ -143,6 +149,7 @@ class FrameGraph {
     struct LastRun {
         std::uint64_t key = 0;
         std::uint64_t inputsKey = 0;
+        std::vector<std::string> parameterKeys; // the registry's for the pass, then its declared ones
         std::vector<scene::ParameterValue> parameters;
         std::map<std::string, std::uint64_t> inputVersions;
     };

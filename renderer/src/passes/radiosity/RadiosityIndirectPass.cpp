@@ -47,12 +47,11 @@ void RadiosityIndirectPass::setup(graph::PassSpec& pass, FrameState& state) {
     // Shading reads radiosity.incident at its pixel as the indirect light, in place of the LPV's (frame/IndirectLight.h).
     if (state.radiosity.runs())
         state.indirectLight.push_back(screenIndirectLight(id(), resources::RadiosityIncident));
-    // radiosity.smoothing is declared as invalidating shading (the radiosity
-    // view's); here the corner values are uploaded from it, so it is part of
-    // what this pass's output is computed from.
-    const bool smooth = frame.params.getBool("radiosity.smoothing");
+    // The corner values are uploaded smoothed or flat (upload()): the graph
+    // keys this pass's reuse on the parameter it reads.
+    pass.parameters = {"radiosity.smoothing"};
     graph::ContentHash h;
-    h.add(state.sceneGeneration).add(state.bakedGeneration).add(smooth).add(frame.viewProj).add(frame.camera.position)
+    h.add(state.sceneGeneration).add(state.bakedGeneration).add(frame.viewProj).add(frame.camera.position)
         .add(frame.width).add(frame.height);
     pass.inputsKey = h.value();
 }
