@@ -23,6 +23,8 @@
 //                            parent chain, a parent cycle
 //   fuzz_image               small PNG, JPEG, GIF, BMP, TGA and EXR files and
 //                            their header bombs (fuzz/ImageSeeds.cpp)
+//   fuzz_bench_pack          the Cornell box as a bench pack, with a 4x2 RGBA
+//                            and a 3x1 grey texture, and without textures
 //
 //   fuzz_seeds OUT
 #include "ImageSeeds.h"
@@ -30,6 +32,7 @@
 #include "lpv/radiosity/FormFactors.h"
 #include "lpv/radiosity/RadiositySession.h"
 #include "lpv/radiosity/SolutionFile.h"
+#include "lpv/scene/BenchPack.h"
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/Project.h"
 
@@ -318,6 +321,26 @@ void projectSeeds(const fs::path& out, const fs::path& projectDir) {
 
 } // namespace
 
+void benchPackSeeds(const fs::path& out, const lpv::scene::Project& cornell) {
+    lpv::scene::BenchPack pack;
+    pack.project = cornell;
+    pack.project.loadWarnings.clear();
+    pack.projectHash = "0123456789abcdef";
+    auto encode = [&] {
+        auto bytes = lpv::scene::encodeBenchPack(pack, "seed.lpvpack");
+        if (!bytes)
+            fail(bytes.error().describe());
+        return *bytes;
+    };
+    writeSeed(out / "cornell-box.lpvpack", encode());
+    lpv::scene::Image8 rgba{4, 2, 4, std::vector<std::uint8_t>(4 * 2 * 4, 200)};
+    lpv::scene::Image8 grey{3, 1, 1, {0, 128, 255}};
+    pack.project.scene.materials.at(0).diffuseTexture = "t/rgba.png";
+    pack.textures["t/rgba.png"] = rgba;
+    pack.textures["t/grey.png#height-normal"] = grey;
+    writeSeed(out / "cornell-box-textures.lpvpack", encode());
+}
+
 int main(int argc, char** argv) {
     if (argc != 2) {
         std::fprintf(stderr, "usage: fuzz_seeds OUT\n  writes OUT/<target>/ for each fuzz target\n");
@@ -337,6 +360,7 @@ int main(int argc, char** argv) {
     radiositySeeds(out / "fuzz_radiosity_solution", project->scene);
     projectSeeds(out / "fuzz_project_structure", projectDir);
     gWritten += lpv::fuzz::writeImageSeeds(out / "fuzz_image");
+    benchPackSeeds(out / "fuzz_bench_pack", *project);
     std::printf("fuzz_seeds: %zu seeds in %s\n", gWritten, out.string().c_str());
     return 0;
 }

@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET="${1:-600}"
 shift || true
 TARGETS=("$@")
-ALL_TARGETS=(fuzz_4ds fuzz_project fuzz_mesh_asset fuzz_gltf fuzz_obj fuzz_radiosity_solution fuzz_project_structure fuzz_image)
+ALL_TARGETS=(fuzz_4ds fuzz_project fuzz_mesh_asset fuzz_bench_pack fuzz_gltf fuzz_obj fuzz_radiosity_solution fuzz_project_structure fuzz_image)
 [ ${#TARGETS[@]} -gt 0 ] || TARGETS=("${ALL_TARGETS[@]}")
 
 BUILD=build-fuzz
@@ -70,6 +70,7 @@ seeds() {
     fuzz_4ds) ls "$SHARED_SCENES"/4ds/*.4ds ;;
     fuzz_project) ls projects/*/*.lpvproj ;;
     fuzz_mesh_asset) ls projects/*/*.assets/meshes/*.lpvmesh ;;
+    fuzz_bench_pack) ls "$BUILD"/seeds/fuzz_bench_pack/* ;;
     fuzz_gltf) ls "$SHARED_SCENES"/gltf-small/*/glTF/*.gltf "$SHARED_SCENES"/cornell/gltf/*.gltf \
       fuzz/seeds/fuzz_gltf/* "$BUILD"/seeds/fuzz_gltf/* ;;
     fuzz_obj) ls fuzz/seeds/fuzz_obj/* "$BUILD"/seeds/fuzz_obj/* ;;
@@ -87,6 +88,7 @@ seeds() {
 #   execution and mutation far slower without reaching new code.
 #   project: 16 KiB, about three times the Cornell box project file.
 #   mesh asset: 8 KiB, about seven times the largest Cornell box mesh.
+#   bench pack: 16 KiB, the Cornell box pack (10 KiB) whole.
 #   glTF: 64 KiB holds every shared .gltf (the largest, cornellBox.gltf and
 #   AlphaBlendModeTest.gltf, are 32 KB; their .bin files are read from the work
 #   folder, not the input) and the generated .glb and data-uri seeds (up to
@@ -109,6 +111,7 @@ maxLen() {
     fuzz_4ds) echo 131072 ;;
     fuzz_project) echo 16384 ;;
     fuzz_mesh_asset) echo 8192 ;;
+    fuzz_bench_pack) echo 16384 ;;
     fuzz_gltf | fuzz_obj | fuzz_radiosity_solution) echo 65536 ;;
     fuzz_project_structure) echo 262144 ;;
     fuzz_image) echo 65536 ;;
