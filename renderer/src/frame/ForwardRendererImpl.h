@@ -3,32 +3,30 @@
 // passes (graph/FrameGraph.h). Each frame render() plans the indirect light
 // (which effects the scene calls for), lets every pass of the table
 // (PassTable.cpp) declare itself with its resources, then compiles and
-// executes the graph. Passes in their own files (FramePass.h) read the
-// frame's FrameState; the others are still declared here (FramePasses.cpp:
-// shadows, depth pre-pass, shading, exposure, tonemap;
-// IndirectPasses.cpp: RSMs, VPLs).
-#include "passes/direct/ExposureFramePass.h"
-#include "passes/lpv/EmissiveVplsFramePass.h"
+// executes the graph. The passes live in their own files (FramePass.h) and
+// read the frame's FrameState; the renderer keeps typed views of those it
+// asks for read-backs, dumps and counters, and the LPV's volumes, which the
+// plan fits before the graph is built and its stages share.
 #include "frame/FrameContext.h"
 #include "frame/FramePass.h"
-#include "frame/FrameState.h"
 #include "frame/FrameResources.h"
-#include "passes/lpv/LocalRsmFramePass.h"
-#include "passes/lpv/LpvPass.h"
-#include "passes/lpv/SubsurfaceFramePass.h"
-#include "scenegpu/MaterialGpu.h"
-#include "gl/ProgramCache.h"
-#include "scenegpu/RenderSpace.h"
-#include "passes/lpv/RsmFramePass.h"
-#include "passes/direct/ShadingPass.h"
-#include "passes/direct/ShadowMapsFramePass.h"
-#include "passes/direct/TonemapPass.h"
-#include "passes/lpv/SkyHeightFramePass.h"
+#include "frame/FrameState.h"
 #include "graph/ContentHash.h"
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/lpv/SceneGeometryVolume.h"
-#include "lpv/scene/SceneFields.h"
+#include "passes/direct/ExposureFramePass.h"
+#include "passes/direct/ShadingPass.h"
+#include "passes/direct/ShadowMapsFramePass.h"
+#include "passes/direct/TonemapPass.h"
+#include "passes/lpv/EmissiveVplsFramePass.h"
+#include "passes/lpv/LocalRsmFramePass.h"
+#include "passes/lpv/LpvPass.h"
+#include "passes/lpv/RsmFramePass.h"
+#include "passes/lpv/SkyHeightFramePass.h"
+#include "passes/lpv/SubsurfaceFramePass.h"
+#include "scenegpu/MaterialGpu.h"
+#include "scenegpu/RenderSpace.h"
 
 #include <memory>
 #include <optional>
@@ -42,6 +40,8 @@ struct ForwardRenderer::Impl {
     ShadingPass* shading = nullptr;       // in `passes`: its camera statistics and cascade tint
     const ShadowMapsFramePass* shadows = nullptr; // in `passes`: shading samples its maps
     const RsmFramePass* rsm = nullptr; // in `passes`: the LPV injects its tiles
+    // The LPV's volumes and kernels (not a pass: planIndirect fits them before
+    // the graph is built, and its stages, LpvStages.h, share them).
     std::optional<LpvPass> lpv;
     // Passes that run only when the scene calls for them are created on
     // their first frame and dropped when culled: they hold no GPU memory then.
@@ -110,11 +110,11 @@ struct ForwardRenderer::Impl {
     std::vector<std::unique_ptr<FramePass>> passes;
     scene::Expected<void> buildPassTable();
 
-    // FramePasses.cpp
+    // CameraTargets.cpp
     scene::Expected<void> checkSize(int w, int h) const;
     void declareCameraTargets(const FrameContext& frame);
 
-    // IndirectPasses.cpp
+    // IndirectPlan.cpp
     scene::Expected<void> planIndirect(const FrameContext& frame);
     // The plan as the LPV's stages read it.
     LpvStageInputs lpvStageInputs(const FrameContext& frame);

@@ -60,7 +60,7 @@ struct FrameState {
     const ShadowPass* shadowMaps = nullptr;
     // The indirect light shading adds, as the passes that compute it
     // declared it in their setup() (IndirectLight.h); shading reads them all.
-    std::vector<IndirectLight> indirectLight;
+    std::vector<IndirectLight> indirectLight{};
 
     // What a pass seen from the camera is computed from: the scene, its
     // lights, the camera's matrices and position, the target size.

@@ -12,8 +12,6 @@
 
 namespace lpv::renderer {
 
-using scene::Pass;
-
 scene::Expected<void> ForwardRenderer::Impl::planIndirect(const FrameContext& frame) {
     plan = {};
     const scene::ParameterSet& params = frame.params;

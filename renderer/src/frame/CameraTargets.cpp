@@ -3,22 +3,12 @@
 // next frame's geometry volume reads this one's G-buffer.
 #include "frame/ForwardRendererImpl.h"
 
-#include "passes/lpv/GlossyReflections.h"
-#include "lpv/renderer/AutoExposure.h"
-#include "lpv/renderer/DisplayMapping.h"
-#include "lpv/scene/AreaLight.h"
-
-#include <glm/gtc/type_ptr.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <stdexcept>
+#include <string>
 
 namespace lpv::renderer {
 
 using scene::ErrorCode;
 using scene::makeError;
-using scene::Pass;
 
 namespace {
 
