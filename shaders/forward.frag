@@ -7,6 +7,9 @@
 // frame/IndirectLight.h; gi.method = radiosity draws a baked solution's)
 // takes the indirect light from that image at this pixel
 // (screen_indirect.glsl) instead of the LPV, whose lookups it leaves out.
+// LPV_LOOKUP_UPSAMPLE (lpv.lookupResolution = half|quarter) takes the LPV's
+// diffuse light from the lpvLookup pass's low-resolution image, upsampled
+// (lpv_lookup_upsample.glsl), looking up itself only where that fails.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
@@ -43,6 +46,13 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
 #include "lpv_glossy.glsl"
+#ifdef LPV_LOOKUP_UPSAMPLE
+// lpv.lookupResolution = half|quarter: the lpvLookup pass's image, upsampled.
+#include "lpv_lookup_upsample.glsl"
+#define LPV_DIFFUSE_IRRADIANCE(x, n) lpvIrradianceUpsampled(x, n, vNormal, uCameraPos)
+#else
+#define LPV_DIFFUSE_IRRADIANCE(x, n) lpvIrradiance(x, n)
+#endif
 #endif
 
 uniform int uLightCount;
@@ -128,7 +138,7 @@ void main() {
 #ifdef LPV_SCREEN_INDIRECT
         vec3 e = PI * indirectIncident() * s.occlusion;
 #else
-        vec3 e = uLpvCascadeCount > 0 ? lpvIrradiance(vWorldPos, n) * s.occlusion : vec3(0.0);
+        vec3 e = uLpvCascadeCount > 0 ? LPV_DIFFUSE_IRRADIANCE(vWorldPos, n) * s.occlusion : vec3(0.0);
 #endif
         outColor = uAlphaMode == 2 ? vec4(0.0) : vec4(e, 1.0);
         outNormal = vec4(n, 1.0);
@@ -146,7 +156,7 @@ void main() {
     // Indirect diffuse light from the LPV; metals have no diffuse part.
     if (uLpvCascadeCount > 0 && uOutputView == 0) {
         vec3 diffuseAlbedo = uShadingModel == 1 ? s.albedo * (1.0 - s.metallic) : s.albedo;
-        radiance += diffuseAlbedo / PI * lpvIrradiance(vWorldPos, n) * s.occlusion;
+        radiance += diffuseAlbedo / PI * LPV_DIFFUSE_IRRADIANCE(vWorldPos, n) * s.occlusion;
         // Subsurface LPV: light that crossed a translucent material leaves through its other side.
 #ifndef LPV_NO_SUBSURFACE_LOOKUP
         if (uTranslucency > 0.0)

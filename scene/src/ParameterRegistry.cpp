@@ -39,6 +39,7 @@ const std::vector<std::pair<Pass, const char*>>& passTable() {
         {Pass::Subsurface, "subsurface"},
         {Pass::DepthPrepass, "depthPrepass"},
         {Pass::RadiosityIndirect, "radiosityIndirect"},
+        {Pass::LpvLookup, "lpvLookup"},
         {Pass::Shading, "shading"},
         {Pass::GlossyReflections, "glossyReflections"},
         {Pass::SunRays, "sunRays"},

@@ -32,6 +32,11 @@ inline constexpr ResourceHandle LpvVolumes{"lpv.volumes"};
 inline constexpr ResourceHandle LpvAccumulator{"lpv.accumulator"};
 inline constexpr ResourceHandle LpvGeometry{"lpv.geometry"};
 inline constexpr ResourceHandle LpvNormals{"lpv.normals"};
+// lpv.lookupResolution = half|quarter: the LPV's lookup at reduced resolution
+// (rgb irradiance, a distance), the normals it was looked up with, their depth.
+inline constexpr ResourceHandle LpvLookup{"lpv.lookup"};
+inline constexpr ResourceHandle LpvLookupNormal{"lpv.lookupNormal"};
+inline constexpr ResourceHandle LpvLookupDepth{"lpv.lookupDepth"};
 inline constexpr ResourceHandle SubsurfaceAccumulator{"subsurface.accumulator"};
 inline constexpr ResourceHandle RadiosityIncident{"radiosity.incident"};
 inline constexpr ResourceHandle RadiosityDepth{"radiosity.depth"};
@@ -43,7 +48,8 @@ inline constexpr std::array all{CameraHdr,       CameraNormal,     CameraAlbedo,
                                 Display,         ShadowMaps,       RsmPosition,      RsmNormal,
                                 RsmFlux,         LocalRsmPosition, LocalRsmNormal,   LocalRsmFlux,
                                 EmissiveVpls,    SkyHeight,        LpvVolumes,       LpvAccumulator,
-                                LpvGeometry,     LpvNormals,       SubsurfaceAccumulator, RadiosityIncident,
+                                LpvGeometry,     LpvNormals,       LpvLookup,        LpvLookupNormal,
+                                LpvLookupDepth,  SubsurfaceAccumulator, RadiosityIncident,
                                 RadiosityDepth,  SunRaysOcclusion, Exposure};
 
 } // namespace lpv::renderer::resources

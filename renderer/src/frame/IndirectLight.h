@@ -30,6 +30,10 @@ struct IndirectLight {
         // surface seen at that pixel, as irradiance / pi (screen_indirect.glsl);
         // shading multiplies it by the albedo. Replaces the LPV's lookups (at most one per frame).
         ScreenIncident,
+        // The LPV's diffuse lookup drawn at reduced resolution (the lpvLookup pass,
+        // lpv.lookupResolution): shading upsamples it (lpv_lookup_upsample.glsl) in
+        // place of its own per-pixel lookup; LpvVolume still serves the fallback, glossy and subsurface.
+        LpvReducedResolution,
     };
     scene::Pass provider = scene::Pass::None;
     Lookup lookup = Lookup::ScreenIncident;

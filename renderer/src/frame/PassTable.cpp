@@ -13,6 +13,7 @@
 #include "passes/direct/TonemapPass.h"
 #include "passes/lpv/EmissiveVplsFramePass.h"
 #include "passes/lpv/LocalRsmFramePass.h"
+#include "passes/lpv/LpvLookupPass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/lpv/RsmFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
@@ -66,6 +67,7 @@ scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
     subsurface = table.add(std::make_unique<SubsurfaceFramePass>());
     table.add(DepthPrepassPass::create());
     table.add(std::make_unique<RadiosityIndirectPass>());
+    table.add(std::make_unique<LpvLookupPass>());
     shading = table.add(ShadingPass::create());
     table.add(std::make_unique<SunRaysPass>());
     exposure = table.add(ExposureFramePass::create());

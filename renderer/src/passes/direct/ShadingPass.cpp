@@ -243,6 +243,8 @@ scene::Expected<void> ShadingPass::execute(graph::PassContext& ctx, FrameState& 
         lpv->bind(shader, ctx);
     else
         bindNoLpv(shader, ctx);
+    if (const IndirectLight* reduced = find(lights, Lookup::LpvReducedResolution))
+        reduced->bind(shader, ctx);
     if (const IndirectLight* subsurface = find(lights, Lookup::SubsurfaceVolume))
         subsurface->bind(shader, ctx);
     else if (subsurfaceSampler_)

@@ -42,6 +42,7 @@ enum class Pass : std::uint32_t {
     Exposure = 1u << 18,     // auto exposure's meter
     DepthPrepass = 1u << 19, // the camera's depth before shading
     RadiosityIndirect = 1u << 20, // a baked radiosity solution drawn from the camera (gi.method = radiosity)
+    LpvLookup = 1u << 21,         // the LPV's lookup at 1/2 or 1/4 of the view's resolution (lpv.lookupResolution)
 };
 constexpr Pass operator|(Pass a, Pass b) { return Pass(std::uint32_t(a) | std::uint32_t(b)); }
 constexpr bool any(Pass a, Pass b) { return (std::uint32_t(a) & std::uint32_t(b)) != 0; }

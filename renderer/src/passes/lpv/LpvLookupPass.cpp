@@ -1,0 +1,147 @@
+#include "passes/lpv/LpvLookupPass.h"
+
+#include "frame/FrameResources.h"
+#include "frame/FrameState.h"
+#include "lpv/renderer/DrawList.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <stdexcept>
+
+namespace lpv::renderer {
+
+namespace {
+
+// The low-resolution target's size for a view of `full` pixels: every
+// full-resolution pixel has a low-resolution texel over it.
+int reducedSize(int full, int reduction) { return (full + reduction - 1) / reduction; }
+
+// What the lookup reads besides the LPV's volumes: the parameters that shading
+// passes to lpv_lookup.glsl (LpvPass::bindForShading).
+const std::vector<std::string> kLookupParameters{"lpv.intensity",       "lpv.bleedingDamping", "lpv.cascadeBlendLevels",
+                                                 "lpv.lookupOffset",    "lpv.visibilityLookup", "lpv.visibilityBias"};
+
+} // namespace
+
+int LpvLookupPass::reduction(const scene::ParameterSet& params) {
+    const std::string value = params.getEnum("lpv.lookupResolution");
+    if (value == "full")
+        return 1;
+    if (value == "half")
+        return 2;
+    if (value == "quarter")
+        return 4;
+    throw std::logic_error("lpv.lookupResolution = '" + value + "' has no reduction");
+}
+
+void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
+    const FrameContext& frame = state.frame;
+    const int reduction = LpvLookupPass::reduction(frame.params);
+    const std::string setting = "lpv.lookupResolution is " + frame.params.getEnum("lpv.lookupResolution");
+    if (reduction == 1)
+        pass.decision = skippedBecause(setting + ": shading looks the LPV up at every pixel");
+    else if (!state.lpv.runs)
+        pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
+    else
+        pass.decision = runsBecause(setting + ": the LPV's lookup once per " + std::to_string(reduction) + "x" +
+                                    std::to_string(reduction) + " pixels, upsampled by shading");
+    pass.writes = {resources::LpvLookup, resources::LpvLookupNormal, resources::LpvLookupDepth};
+    if (!pass.decision.runs()) {
+        // Named, so the report and --dump can say why they hold nothing; not allocated.
+        for (graph::ResourceHandle name : pass.writes)
+            state.graph.importResource(name, [] { return graph::ImportedView{}; });
+        return;
+    }
+    const int w = reducedSize(frame.width, reduction), h = reducedSize(frame.height, reduction);
+    for (const auto& [name, format] : {std::pair{resources::LpvLookup, GL_RGBA16F},
+                                       std::pair{resources::LpvLookupNormal, GL_RGBA8},
+                                       std::pair{resources::LpvLookupDepth, GL_DEPTH_COMPONENT32F}})
+        state.graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), w, h},
+                                   graph::Lifetime::History);
+    pass.reads = {resources::LpvAccumulator};
+    pass.parameters = kLookupParameters;
+    pass.inputsKey = state.cameraKey();
+    const LpvPass* lpv = state.lpv.lpv;
+    visibility_ = lpv->visibilityBound();
+
+    // Shading upsamples it (lpv_lookup_upsample.glsl) in place of its own diffuse lookup.
+    IndirectLight light;
+    light.provider = id();
+    light.lookup = IndirectLight::Lookup::LpvReducedResolution;
+    light.reads = {resources::LpvLookup, resources::LpvLookupNormal};
+    light.defines = [](std::vector<std::string>& defines) { defines.push_back("LPV_LOOKUP_UPSAMPLE 1"); };
+    const glm::vec2 scale(float(w) / float(frame.width), float(h) / float(frame.height));
+    const float distanceScale = 1.0f / frame.camera.farPlane;
+    light.bind = [scale, distanceScale](const CachedProgram& shader, graph::PassContext& ctx) {
+        const GLuint p = shader.id();
+        ctx.bindTexture(p, shader.uniform("uLpvLowIrradiance"), resources::LpvLookup);
+        ctx.bindTexture(p, shader.uniform("uLpvLowNormal"), resources::LpvLookupNormal);
+        glProgramUniform2f(p, shader.uniform("uLpvLowScale"), scale.x, scale.y);
+        glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), distanceScale);
+    };
+    state.indirectLight.push_back(std::move(light));
+}
+
+scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState& state) {
+    const FrameContext& frame = ctx.frame;
+    const std::array<GLuint, 3> targets{ctx.id(resources::LpvLookup), ctx.id(resources::LpvLookupNormal),
+                                        ctx.id(resources::LpvLookupDepth)};
+    if (targets != attached_) {
+        // Rebuilt when the graph hands out other targets (a resize, another reduction).
+        fbo_ = createFramebuffer();
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, targets[0], 0);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, targets[1], 0);
+        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, targets[2], 0);
+        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
+        attached_ = targets;
+    }
+    const int reduction = LpvLookupPass::reduction(frame.params);
+    // No surface: a negative distance and a zero normal, which no pixel's weights accept.
+    const float noSurface[] = {0.0f, 0.0f, 0.0f, -1.0f};
+    const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, noSurface);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, reducedSize(frame.width, reduction), reducedSize(frame.height, reduction));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    // Opaque and masked surfaces, as the depth pre-pass draws them: blended
+    // ones find no neighbour on their surface in shading and look up there.
+    const auto items = buildDrawList(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    std::vector<const DrawItem*> opaque, masked;
+    for (const DrawItem* d : items)
+        if (d->bucket != DrawBucket::Blended)
+            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    const LpvPass* lpv = state.lpv.lpv;
+    for (const bool cutOut : {false, true}) {
+        const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
+        if (list.empty())
+            continue;
+        ProgramVariant variant{{"forward.vert", "lpv_lookup_reduced.frag"}, {}};
+        if (!cutOut)
+            variant.defines.push_back("LOOKUP_OPAQUE 1");
+        if (!visibility_)
+            variant.defines.push_back("LPV_NO_VISIBILITY 1");
+        auto program = programs_.get(variant);
+        if (!program)
+            return std::unexpected(program.error());
+        const CachedProgram& shader = **program;
+        const GLuint p = shader.id();
+        glUseProgram(p);
+        glProgramUniformMatrix4fv(p, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        glProgramUniform3fv(p, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+        glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), 1.0f / frame.camera.farPlane);
+        lpv->bindForShading(shader, frame.params, [&ctx] { return ctx.allocateUnit(); });
+        state.sceneGpu->draw(p, list,
+                             [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
+    }
+    return {};
+}
+
+} // namespace lpv::renderer

@@ -1,0 +1,59 @@
+// The LPV's diffuse lookup at reduced resolution, upsampled (forward.frag's
+// LPV_LOOKUP_UPSAMPLE variant; the lpvLookup pass, LpvLookupPass.cpp, drew
+// it): a joint bilateral upsample over the 2x2 low-resolution texels around
+// this pixel, each weighted by its bilinear weight, by how well its distance
+// from the camera fits this surface's and by how close its normal is to this
+// pixel's (both the interpolated vertex normal seen from the viewer's side).
+// Where all the weights are tiny (an edge whose neighbours lie on other
+// surfaces, a blended surface over the opaque one they saw), the pixel looks
+// the LPV up itself. Needs lpv_lookup.glsl before it.
+
+uniform sampler2D uLpvLowIrradiance; // rgb E, a distance x uLpvLowDistanceScale (< 0: no surface)
+uniform sampler2D uLpvLowNormal;     // n * 0.5 + 0.5 (0: no surface)
+uniform vec2 uLpvLowScale;           // low-resolution texels per full-resolution pixel, per axis
+uniform float uLpvLowDistanceScale;
+
+// Below this summed weight no neighbour lies on this pixel's surface.
+const float LPV_UPSAMPLE_MIN_WEIGHT = 1e-3;
+// Normal agreement: cos^8 (20 degrees apart: 0.61; 45: 0.06).
+const float LPV_UPSAMPLE_NORMAL_POWER = 8.0;
+
+// Irradiance at x (normal n, after normal mapping, for the fallback lookup);
+// vertexNormal the interpolated normal, turned to the viewer's side here.
+vec3 lpvIrradianceUpsampled(vec3 x, vec3 n, vec3 vertexNormal, vec3 cameraPos) {
+    vec3 toViewer = cameraPos - x;
+    vec3 ng = cross(dFdx(x), dFdy(x));
+    if (dot(ng, toViewer) < 0.0)
+        ng = -ng;
+    vec3 nv = normalize(vertexNormal);
+    if (dot(nv, ng) < 0.0)
+        nv = -nv;
+    float d = length(toViewer) * uLpvLowDistanceScale;
+    // The distance changes this much across one low-resolution texel on this
+    // surface (a plane seen at a grazing angle changes fast); plus 1% for
+    // curvature and the half float's rounding.
+    float perTexel = (abs(dFdx(d)) / uLpvLowScale.x + abs(dFdy(d)) / uLpvLowScale.y);
+    float tolerance = 1.5 * perTexel + 0.01 * d;
+
+    vec2 p = gl_FragCoord.xy * uLpvLowScale - 0.5;
+    ivec2 i0 = ivec2(floor(p));
+    vec2 f = p - vec2(i0);
+    ivec2 last = textureSize(uLpvLowIrradiance, 0) - 1;
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        ivec2 texel = clamp(i0 + o, ivec2(0), last);
+        vec4 low = texelFetch(uLpvLowIrradiance, texel, 0);
+        vec3 lowNormal = texelFetch(uLpvLowNormal, texel, 0).xyz * 2.0 - 1.0;
+        vec2 b = mix(1.0 - f, f, vec2(o));
+        float depthWeight = low.a < 0.0 ? 0.0 : max(0.0, 1.0 - abs(low.a - d) / tolerance);
+        float normalWeight = pow(max(dot(lowNormal, nv), 0.0), LPV_UPSAMPLE_NORMAL_POWER);
+        float w = b.x * b.y * depthWeight * normalWeight;
+        sum += w * low.rgb;
+        weights += w;
+    }
+    if (weights < LPV_UPSAMPLE_MIN_WEIGHT)
+        return lpvIrradiance(x, n);
+    return sum / weights;
+}
