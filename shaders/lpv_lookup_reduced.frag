@@ -3,8 +3,10 @@
 // lookup, lpv_lookup.glsl's lpvIrradiance as shading calls it, at 1/2 or 1/4
 // of the view's resolution, with what shading's upsampling
 // (lpv_lookup_upsample.glsl) weighs its neighbours by. Variants: LOOKUP_OPAQUE
-// never discards (early depth tests); LPV_NO_VISIBILITY leaves out the
+// never discards; LPV_NO_VISIBILITY leaves out the
 // visibility-aware lookup when the frame has no moments, as shading does.
+// The pass drew the depth first: test it before the lookup runs.
+layout(early_fragment_tests) in;
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec4 vTangent;

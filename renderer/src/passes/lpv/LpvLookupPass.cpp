@@ -118,6 +118,29 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
     for (const DrawItem* d : items)
         if (d->bucket != DrawBucket::Blended)
             (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    // Depth first (depth_prepass.frag, as the camera's pre-pass draws it),
+    // then the lookup once per texel with the depth test before the shader:
+    // drawn directly, every fragment nearer than what was drawn before it paid for a lookup.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    for (const bool cutOut : {false, true}) {
+        const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
+        if (list.empty())
+            continue;
+        auto program = programs_.get({{"forward.vert", "depth_prepass.frag"},
+                                      cutOut ? std::vector<std::string>{} : std::vector<std::string>{"PREPASS_OPAQUE 1"}});
+        if (!program) {
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            return std::unexpected(program.error());
+        }
+        const GLuint p = (*program)->id();
+        glUseProgram(p);
+        glProgramUniformMatrix4fv(p, (*program)->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        state.sceneGpu->draw(p, list,
+                             [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
     const LpvPass* lpv = state.lpv.lpv;
     for (const bool cutOut : {false, true}) {
         const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
@@ -141,6 +164,8 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
         state.sceneGpu->draw(p, list,
                              [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
     }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     return {};
 }
 
