@@ -5,9 +5,11 @@
 // what the pass reads and writes (typed handles, FrameResources.h), whether
 // it runs and why (an EffectDecision) and its reuse key; execute() does the
 // work. The parameters it reads are the registry's: each parameter names
-// the passes it invalidates (scene::Pass, ParameterRegistry.h), and the
-// graph keys reuse on their values. A pass joins the frame with one line
-// in PassTable.cpp; the renderer keeps the passes in that table.
+// the passes it invalidates (scene::Pass, ParameterRegistry.h), a pass
+// declares any other it reads (PassSpec::parameters), and the graph keys
+// reuse on their values. Indirect light for shading is declared too
+// (FrameState::indirectLight, IndirectLight.h). A pass joins the frame with
+// one line in PassTable.cpp; the renderer keeps the passes in that table.
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/ParameterRegistry.h"
