@@ -10,6 +10,7 @@
 #include "lpv/scene/BenchPack.h"
 
 #include "FileText.h"
+#include "LittleEndian.h"
 #include "ProjectJson.h"
 #include "lpv/scene/MeshAsset.h"
 #include "lpv/scene/ProjectLimits.h"
@@ -38,41 +39,11 @@ static_assert(kChecksumOffset + 8 == kBenchPackHeaderSize);
 constexpr std::uint64_t kMinMeshRecord = 8 + kMeshAssetHeaderSize;
 constexpr std::uint64_t kMinTextureRecord = 4 + 12;
 
-template <class... Args>
-std::string concat(const Args&... args) {
-    std::ostringstream out;
-    (out << ... << args);
-    return out.str();
-}
-
-std::string atByte(std::uint64_t offset) { return concat("byte offset ", offset); }
-
-template <class T>
-T littleEndian(T v) {
-    if constexpr (std::endian::native == std::endian::big)
-        return std::byteswap(v);
-    else
-        return v;
-}
-
-template <class T>
-void append(std::string& out, T v) {
-    v = littleEndian(v);
-    out.append(reinterpret_cast<const char*>(&v), sizeof v);
-}
-
-template <class T>
-void storeAt(std::string& out, std::size_t at, T v) {
-    v = littleEndian(v);
-    std::memcpy(out.data() + at, &v, sizeof v);
-}
-
-template <class T>
-T loadAt(std::string_view bytes, std::size_t at) {
-    T v{};
-    std::memcpy(&v, bytes.data() + at, sizeof v);
-    return littleEndian(v);
-}
+using binary::append;
+using binary::atByte;
+using binary::concat;
+using binary::loadAt;
+using binary::storeAt;
 
 std::string meshLocation(std::size_t i) { return concat("meshes[", i, "]"); }
 

@@ -5,6 +5,8 @@
 // costs at most a copy of itself and yields an Error, never a crash.
 #include "lpv/scene/MeshAsset.h"
 
+#include "LittleEndian.h"
+
 #include <xxhash.h>
 
 #include <algorithm>
@@ -43,13 +45,12 @@ static_assert(std::is_trivially_copyable_v<glm::vec3> && std::is_trivially_copya
 
 constexpr const char* kComponentNames[] = {"x", "y", "z", "w"};
 
-// GCC 12 has no <format>; messages are built with a stream instead.
-template <class... Args>
-std::string concat(const Args&... args) {
-    std::ostringstream out;
-    (out << ... << args);
-    return out.str();
-}
+// GCC 12 has no <format>; messages are built with a stream (binary::concat).
+using binary::atByte;
+using binary::concat;
+using binary::littleEndian;
+using binary::loadAt;
+using binary::storeAt;
 
 std::string hex64(std::uint64_t v) {
     std::ostringstream out;
@@ -58,31 +59,6 @@ std::string hex64(std::uint64_t v) {
     out.fill('0');
     out << v;
     return out.str();
-}
-
-std::string atByte(std::uint64_t offset) { return concat("byte offset ", offset); }
-
-// --- little-endian primitives (memcpy: the buffer has no alignment guarantee) ---
-
-template <class T>
-T littleEndian(T v) {
-    if constexpr (std::endian::native == std::endian::big)
-        return std::byteswap(v);
-    else
-        return v;
-}
-
-template <class T>
-void storeAt(std::string& out, std::size_t at, T v) {
-    v = littleEndian(v);
-    std::memcpy(out.data() + at, &v, sizeof v);
-}
-
-template <class T>
-T loadAt(std::string_view bytes, std::size_t at) {
-    T v{};
-    std::memcpy(&v, bytes.data() + at, sizeof v);
-    return littleEndian(v);
 }
 
 // Every stream is a run of 32-bit words (f32 or u32); on a big-endian host
