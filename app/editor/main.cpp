@@ -19,10 +19,7 @@
 #include <QPixmap>
 #include <QTimer>
 
-#include <algorithm>
 #include <cstdio>
-#include <expected>
-#include <functional>
 #include <memory>
 #include <optional>
 
