@@ -38,7 +38,6 @@ const std::vector<std::pair<Pass, const char*>>& passTable() {
         {Pass::LpvBounces, "lpvBounces"},
         {Pass::Subsurface, "subsurface"},
         {Pass::DepthPrepass, "depthPrepass"},
-        {Pass::RadiosityIndirect, "radiosityIndirect"},
         {Pass::LpvLookup, "lpvLookup"},
         {Pass::Shading, "shading"},
         {Pass::GlossyReflections, "glossyReflections"},

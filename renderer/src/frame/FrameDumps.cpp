@@ -103,18 +103,4 @@ std::vector<std::string> ForwardRenderer::Impl::dumpNames() const {
     return names;
 }
 
-const std::vector<std::string>& frameGraphNames() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> all;
-        for (graph::ResourceHandle r : resources::all)
-            all.push_back(r.str());
-        for (scene::Pass p : scene::allPasses())
-            if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity && p != scene::Pass::Reference &&
-                std::find(all.begin(), all.end(), scene::passName(p)) == all.end())
-                all.push_back(scene::passName(p));
-        return all;
-    }();
-    return names;
-}
-
 } // namespace lpv::renderer

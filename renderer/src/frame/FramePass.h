@@ -66,11 +66,14 @@ class FramePass {
     virtual void addGpuMemory(GpuMemoryLedger&) const {}
 };
 
-// The form a pass takes in its own file: one graph pass named by `id`.
+// The form a pass takes in its own file: one graph pass named by `id`
+// (graph/PassId.h): a word of its own, GraphPass("myPass"), or a
+// registry pass's scene::Pass.
 class GraphPass : public FramePass {
   public:
-    explicit GraphPass(scene::Pass id) : id_(id) {}
-    scene::Pass id() const { return id_; }
+    explicit GraphPass(graph::PassId id) : id_(std::move(id)) {}
+    explicit GraphPass(std::string_view name) : id_(name) {}
+    const graph::PassId& id() const { return id_; }
 
     void addTo(FrameState& state) final {
         graph::PassSpec spec;
@@ -94,7 +97,7 @@ class GraphPass : public FramePass {
 
   private:
     static void addToGraph(FrameState& state, graph::PassSpec spec);
-    scene::Pass id_;
+    graph::PassId id_;
 };
 
 } // namespace lpv::renderer

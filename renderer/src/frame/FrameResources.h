@@ -1,7 +1,10 @@
 #pragma once
-// Every resource of the frame graph, declared once: passes read, write and
-// look up their GL objects through these handles, and the name in quotes
-// is the one reports, `lpv render --dump` and the GPU memory table print.
+// The frame graph's resources that several passes share, declared once:
+// passes read, write and look up their GL objects through these handles,
+// and the name in quotes is the one reports, `lpv render --dump` and the
+// GPU memory table print. A resource only one pass writes may instead be
+// declared in that pass's header (its kOutputs, frame/PassList.h), as
+// radiosity's are.
 #include "graph/ResourceHandle.h"
 
 #include <array>
@@ -38,18 +41,15 @@ inline constexpr ResourceHandle LpvLookup{"lpv.lookup"};
 inline constexpr ResourceHandle LpvLookupNormal{"lpv.lookupNormal"};
 inline constexpr ResourceHandle LpvLookupDepth{"lpv.lookupDepth"};
 inline constexpr ResourceHandle SubsurfaceAccumulator{"subsurface.accumulator"};
-inline constexpr ResourceHandle RadiosityIncident{"radiosity.incident"};
-inline constexpr ResourceHandle RadiosityDepth{"radiosity.depth"};
 inline constexpr ResourceHandle SunRaysOcclusion{"sunRays.occlusion"};
 inline constexpr ResourceHandle Exposure{"exposure"};
 
-// In the order `lpv render --help` and --dump's error list them.
-inline constexpr std::array all{CameraHdr,       CameraNormal,     CameraAlbedo,     CameraDepth,
+// In the order --dump's error lists them, before those the passes declare (PassTable.cpp).
+inline constexpr std::array shared{CameraHdr,       CameraNormal,     CameraAlbedo,     CameraDepth,
                                 Display,         ShadowMaps,       RsmPosition,      RsmNormal,
                                 RsmFlux,         LocalRsmPosition, LocalRsmNormal,   LocalRsmFlux,
                                 EmissiveVpls,    SkyHeight,        LpvVolumes,       LpvAccumulator,
                                 LpvGeometry,     LpvNormals,       LpvLookup,        LpvLookupNormal,
-                                LpvLookupDepth,  SubsurfaceAccumulator, RadiosityIncident,
-                                RadiosityDepth,  SunRaysOcclusion, Exposure};
+                                LpvLookupDepth,  SubsurfaceAccumulator, SunRaysOcclusion, Exposure};
 
 } // namespace lpv::renderer::resources

@@ -35,7 +35,7 @@ struct IndirectLight {
         // place of its own per-pixel lookup; LpvVolume still serves the fallback, glossy and subsurface.
         LpvReducedResolution,
     };
-    scene::Pass provider = scene::Pass::None;
+    graph::PassId provider;
     Lookup lookup = Lookup::ScreenIncident;
     // What shading reads of it (ScreenIncident: the image, first).
     std::vector<graph::ResourceHandle> reads;
@@ -47,9 +47,9 @@ struct IndirectLight {
 };
 
 // The common form for a new GI pass: a screen-sized image of incident light (Lookup::ScreenIncident).
-inline IndirectLight screenIndirectLight(scene::Pass provider, graph::ResourceHandle incident) {
+inline IndirectLight screenIndirectLight(graph::PassId provider, graph::ResourceHandle incident) {
     IndirectLight light;
-    light.provider = provider;
+    light.provider = std::move(provider);
     light.lookup = IndirectLight::Lookup::ScreenIncident;
     light.reads = {incident};
     return light;

@@ -1,9 +1,12 @@
 // The frame's passes, one line each, in the order they are declared (the
 // graph orders them by what they read and write; among independent passes
 // the earlier line runs first, and `lpv render --graph` lists them so).
-// A pass in its own file (FramePass.h) joins the frame here with one line.
-// The renderer keeps typed views of those it asks for read-backs.
+// A pass in its own file (FramePass.h) joins the frame here with one line
+// (and its include); its name and outputs come from its own header
+// (PassList.h), so `--dump` learns them from this list too.
 #include "frame/ForwardRendererImpl.h"
+#include "frame/PassList.h"
+#include "lpv/renderer/FrameGraphReport.h"
 
 #include "passes/direct/DepthPrepassPass.h"
 #include "passes/direct/ExposureFramePass.h"
@@ -20,59 +23,69 @@
 #include "passes/lpv/SubsurfaceFramePass.h"
 #include "passes/radiosity/RadiosityIndirectPass.h"
 
+#include <algorithm>
+
 namespace lpv::renderer {
 
 namespace {
 
-// Adds passes to the table and returns each, for the renderer to keep a
-// typed view of; a pass that could not be created (a shader error) is
-// remembered, and finish() returns the first such error.
-class TableBuilder {
-  public:
-    explicit TableBuilder(std::vector<std::unique_ptr<FramePass>>& table) : table_(table) {}
-    template <typename Pass> Pass* add(std::unique_ptr<Pass> pass) {
-        Pass* added = pass.get();
-        table_.push_back(std::move(pass));
-        return added;
-    }
-    template <typename Pass> Pass* add(scene::Expected<std::unique_ptr<Pass>> created) {
-        if (created)
-            return add(std::move(*created));
-        if (!error_)
-            error_ = created.error();
-        return nullptr;
-    }
-    scene::Expected<void> finish() const {
-        if (error_)
-            return std::unexpected(*error_);
-        return {};
-    }
-
-  private:
-    std::vector<std::unique_ptr<FramePass>>& table_;
-    std::optional<scene::Error> error_;
+// The LPV's six stages (LpvStages.h), in their order.
+struct LpvStagePasses {
+    static std::vector<std::unique_ptr<LpvStage>> create() { return makeLpvStages(); }
 };
+
+using FramePasses = PassList<
+    ShadowMapsFramePass,
+    RsmFramePass,
+    LocalRsmFramePass,
+    EmissiveVplsFramePass,
+    SkyHeightFramePass,
+    LpvStagePasses,
+    SubsurfaceFramePass,
+    DepthPrepassPass,
+    RadiosityIndirectPass,
+    LpvLookupPass,
+    ShadingPass,
+    SunRaysPass,
+    ExposureFramePass,
+    TonemapPass>;
 
 } // namespace
 
 scene::Expected<void> ForwardRenderer::Impl::buildPassTable() {
-    TableBuilder table(passes);
-    shadows = table.add(ShadowMapsFramePass::create());
-    rsm = table.add(RsmFramePass::create());
-    localRsm = table.add(std::make_unique<LocalRsmFramePass>());
-    emissiveVpls = table.add(std::make_unique<EmissiveVplsFramePass>());
-    skyHeight = table.add(std::make_unique<SkyHeightFramePass>());
-    for (std::unique_ptr<LpvStage>& stage : makeLpvStages())
-        table.add(std::move(stage));
-    subsurface = table.add(std::make_unique<SubsurfaceFramePass>());
-    table.add(DepthPrepassPass::create());
-    table.add(std::make_unique<RadiosityIndirectPass>());
-    table.add(std::make_unique<LpvLookupPass>());
-    shading = table.add(ShadingPass::create());
-    table.add(std::make_unique<SunRaysPass>());
-    exposure = table.add(ExposureFramePass::create());
-    tonemap = table.add(TonemapPass::create());
-    return table.finish();
+    auto built = FramePasses::build(passes);
+    // The typed views the renderer keeps for read-backs and counters.
+    shadows = findPass<ShadowMapsFramePass>(passes);
+    rsm = findPass<RsmFramePass>(passes);
+    localRsm = findPass<LocalRsmFramePass>(passes);
+    emissiveVpls = findPass<EmissiveVplsFramePass>(passes);
+    skyHeight = findPass<SkyHeightFramePass>(passes);
+    subsurface = findPass<SubsurfaceFramePass>(passes);
+    shading = findPass<ShadingPass>(passes);
+    exposure = findPass<ExposureFramePass>(passes);
+    tonemap = findPass<TonemapPass>(passes);
+    return built;
+}
+
+const std::vector<std::string>& frameGraphNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (graph::ResourceHandle r : resources::shared)
+            all.push_back(r.str());
+        FramePasses::addOutputs(all);
+        // Registry passes without a node of their own (glossy reflections are
+        // part of shading; radiosity's solve and the reference are not frame passes).
+        for (scene::Pass p : scene::allPasses())
+            if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity && p != scene::Pass::Reference)
+                all.push_back(scene::passName(p));
+        FramePasses::addNames(all);
+        std::vector<std::string> unique;
+        for (std::string& name : all)
+            if (std::find(unique.begin(), unique.end(), name) == unique.end())
+                unique.push_back(std::move(name));
+        return unique;
+    }();
+    return names;
 }
 
 } // namespace lpv::renderer

@@ -19,13 +19,14 @@ bool contains(const std::vector<ResourceHandle>& handles, std::string_view name)
     return std::ranges::any_of(handles, [name](ResourceHandle h) { return h.name() == name; });
 }
 
-// The registry keys whose change makes this pass's output stale.
-const std::vector<std::string>& invalidatingKeys(scene::Pass pass) {
+// The registry keys whose declaration names this pass's scene::Pass bit
+// (none for a pass named in its own file: it lists what it reads).
+const std::vector<std::string>& invalidatingKeys(const PassId& pass) {
     static std::map<std::uint32_t, std::vector<std::string>> cache;
-    auto [it, inserted] = cache.try_emplace(std::uint32_t(pass));
-    if (inserted)
+    auto [it, inserted] = cache.try_emplace(std::uint32_t(pass.bit()));
+    if (inserted && pass.bit() != scene::Pass::None)
         for (const scene::ParameterInfo& info : scene::ParameterRegistry::instance().all())
-            if (scene::any(info.invalidates, pass))
+            if (scene::any(info.invalidates, pass.bit()))
                 it->second.push_back(info.key);
     return it->second;
 }
@@ -50,7 +51,7 @@ auto names(const std::vector<ResourceHandle>& handles) { return handles | std::v
 GLuint PassContext::id(ResourceHandle resource) const {
     const std::string_view name = resource.name();
     if (!contains(pass_.reads, name) && !contains(pass_.writes, name) && !contains(pass_.readsHistory, name))
-        throw std::logic_error("pass " + scene::passName(pass_.id) + " uses '" + resource.str() +
+        throw std::logic_error("pass " + pass_.id.name() + " uses '" + resource.str() +
                                "', which it did not declare");
     const auto* r = graph_.findResource(name);
     return r ? graph_.viewOf(*r).id : 0;
@@ -123,16 +124,16 @@ scene::Expected<void> FrameGraph::resolveVersions() {
         const PassSpec& p = passes_[i];
         for (const std::string& key : p.parameters)
             if (!scene::ParameterRegistry::instance().find(key))
-                return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                return makeError(ErrorCode::InvalidValue, "frame graph", p.id.name(),
                                  "reads parameter '" + key + "', which the registry does not declare");
         for (const auto* list : {&p.readsHistory, &p.reads})
             for (const std::string& name : names(*list)) {
                 const auto w = finalWriter_.find(name);
                 const int producer = w == finalWriter_.end() ? -1 : w->second;
                 if (list == &p.readsHistory && producer >= 0)
-                    return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                    return makeError(ErrorCode::InvalidValue, "frame graph", p.id.name(),
                                      "reads last frame's '" + name + "', but " +
-                                         scene::passName(passes_[std::size_t(producer)].id) + " writes it earlier");
+                                         passes_[std::size_t(producer)].id.name() + " writes it earlier");
                 inputs_[i].push_back({name, producer});
                 if (producer >= 0)
                     edges_[std::size_t(producer)].insert(i);
@@ -181,7 +182,7 @@ scene::Expected<std::vector<std::size_t>> FrameGraph::order() const {
         std::string stuck;
         for (std::size_t i = 0; i < n; ++i)
             if (status_[i] != PassStatus::Culled && incoming[i] > 0)
-                stuck += (stuck.empty() ? "" : ", ") + scene::passName(passes_[i].id);
+                stuck += (stuck.empty() ? "" : ", ") + passes_[i].id.name();
         return makeError(ErrorCode::InvalidValue, "frame graph", "order",
                          "the passes " + stuck + " depend on each other in a cycle");
     }
@@ -193,20 +194,19 @@ scene::Expected<void> FrameGraph::compile(const scene::ParameterSet& params, boo
     status_.assign(n, PassStatus::Ran);
     reasons_.assign(n, "");
     pending_.assign(n, LastRun{});
-    std::set<std::uint32_t> ids;
+    std::set<std::string, std::less<>> ids;
     for (std::size_t i = 0; i < n; ++i) {
         const PassSpec& p = passes_[i];
-        if (scene::passName(p.id).empty() || !ids.insert(std::uint32_t(p.id)).second)
-            return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
-                             "each pass needs its own name from scene::Pass");
+        if (p.id.empty() || !ids.insert(p.id.name()).second)
+            return makeError(ErrorCode::InvalidValue, "frame graph", p.id.name(), "each pass needs its own name");
         for (const auto* list : {&p.reads, &p.writes, &p.readsHistory})
             for (const std::string& name : names(*list))
                 if (!findResource(name))
-                    return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                    return makeError(ErrorCode::InvalidValue, "frame graph", p.id.name(),
                                      "uses '" + name + "', which no resource of the frame is called");
         for (const std::string& name : names(p.readsHistory))
             if (findResource(name)->lifetime != Lifetime::History)
-                return makeError(ErrorCode::InvalidValue, "frame graph", scene::passName(p.id),
+                return makeError(ErrorCode::InvalidValue, "frame graph", p.id.name(),
                                  "reads '" + name + "' as last frame's, but it is not a history resource");
         if (!p.decision.runs()) {
             status_[i] = PassStatus::Culled;
@@ -245,7 +245,7 @@ scene::Expected<void> FrameGraph::compile(const scene::ParameterSet& params, boo
     order_ = std::move(*ordered);
     for (std::size_t i = 0; i < n; ++i)
         if (status_[i] == PassStatus::Culled)
-            last_.erase(std::uint32_t(passes_[i].id)); // its owner may free what it wrote
+            last_.erase(passes_[i].id.name()); // its owner may free what it wrote
     allocateOwned();
     decideReuse(params, reuse);
     return {};
@@ -308,14 +308,14 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
             run.inputVersions[a.resource] = versionOf(a);
         run.inputsKey = p.inputsKey.value_or(0);
         ContentHash h;
-        h.add(std::uint32_t(p.id)).add(run.inputsKey).add(run.parameters);
+        h.add(std::string_view(p.id.name())).add(run.inputsKey).add(run.parameters);
         for (const auto& [name, v] : run.inputVersions)
             h.add(std::string_view(name)).add(v);
         run.key = h.value();
         for (const std::string& name : names(p.writes))
             written[i][name] = ContentHash().add(run.key).add(std::string_view(name)).value();
 
-        const auto last = last_.find(std::uint32_t(p.id));
+        const auto last = last_.find(p.id.name());
         std::string& why = reasons_[i];
         if (!p.inputsKey) {
             why = "runs every frame";
@@ -372,7 +372,7 @@ void FrameGraph::decideReuse(const scene::ParameterSet& params, bool reuse) {
                 if (!rerun[w]) {
                     rerun[w] = true;
                     changed = true;
-                    reasons_[w] = "reruns with " + scene::passName(passes_[*dirty].id) + " (they share " + resource + ")";
+                    reasons_[w] = "reruns with " + passes_[*dirty].id.name() + " (they share " + resource + ")";
                 }
         }
     }
@@ -390,7 +390,7 @@ scene::Expected<void> FrameGraph::execute(const FrameContext& frame) {
         if (status_[i] != PassStatus::Ran)
             continue;
         const PassSpec& p = passes_[i];
-        const std::string name = scene::passName(p.id);
+        const std::string name = p.id.name();
         PassContext context(frame, *this, p);
         scene::Expected<void> ok;
         frame.timer.begin(name);
@@ -401,10 +401,10 @@ scene::Expected<void> FrameGraph::execute(const FrameContext& frame) {
         }
         frame.timer.end(name);
         if (!ok) {
-            last_.erase(std::uint32_t(p.id));
+            last_.erase(p.id.name());
             return ok;
         }
-        last_[std::uint32_t(p.id)] = pending_[i];
+        last_[p.id.name()] = pending_[i];
     }
     reportStale_ = true; // built when asked for: describing imported targets asks GL
     return {};
@@ -418,7 +418,7 @@ const FrameGraphReport& FrameGraph::report() const {
     // The shapes are the ones owners allocated while running.
     auto entry = [&](std::size_t i) {
         const PassSpec& p = passes_[i];
-        GraphPassReport r{scene::passName(p.id), status_[i], reasons_[i], {}, {}};
+        GraphPassReport r{p.id.name(), status_[i], reasons_[i], {}, {}};
         for (const std::string& name : names(p.readsHistory))
             r.reads.push_back(name + " (last frame's)");
         for (const std::string& name : names(p.reads))
@@ -437,7 +437,7 @@ const FrameGraphReport& FrameGraph::report() const {
     return report_;
 }
 
-std::optional<PassStatus> FrameGraph::status(scene::Pass pass) const {
+std::optional<PassStatus> FrameGraph::status(const PassId& pass) const {
     for (std::size_t i = 0; i < passes_.size() && i < status_.size(); ++i)
         if (passes_[i].id == pass)
             return status_[i];
@@ -463,7 +463,7 @@ std::vector<std::string> FrameGraph::resourceNames() const {
     return names;
 }
 
-bool FrameGraph::produced(scene::Pass pass) const {
+bool FrameGraph::produced(const PassId& pass) const {
     const std::optional<PassStatus> s = status(pass);
     return s && *s != PassStatus::Culled;
 }

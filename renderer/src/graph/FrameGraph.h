@@ -15,6 +15,7 @@
 // A pass is reused when its key equals the key of its last run. Passes that
 // update a resource in place form a chain: when one of them reruns, all do.
 #include "frame/FrameContext.h"
+#include "graph/PassId.h"
 #include "graph/ResourceDesc.h"
 #include "graph/ResourceHandle.h"
 #include "lpv/renderer/FrameGraphReport.h"
@@ -50,7 +51,7 @@ struct ImportedView {
 class PassContext;
 
 struct PassSpec {
-    scene::Pass id = scene::Pass::None; // one name: scene::passName(id)
+    PassId id; // its one name (PassId.h)
     // Culled when !runs(); the reason goes to the report.
     EffectDecision decision;
     // A read sees the resource as the passes added before this one left it
@@ -119,7 +120,7 @@ class FrameGraph {
     // The last frame's passes, reads, writes (with shapes) and reasons; built on first call after execute().
     const FrameGraphReport& report() const;
     // A pass's status in the last compile (nullopt: not declared).
-    std::optional<PassStatus> status(scene::Pass pass) const;
+    std::optional<PassStatus> status(const PassId& pass) const;
     // After execute(): a resource's GL name and shape (0 / empty if the frame did not declare it).
     // By name: what a user asked for (--dump NAME) or a report listed.
     GLuint resourceId(std::string_view name) const;
@@ -127,9 +128,9 @@ class FrameGraph {
     std::optional<ResourceDesc> resourceDesc(std::string_view name) const;
     std::vector<std::string> resourceNames() const;
     // Whether the last frame's pass ran or was reused (its outputs are valid).
-    bool produced(scene::Pass pass) const;
+    bool produced(const PassId& pass) const;
     // Forgets a pass's last key: its next frame runs it (its owner freed its outputs).
-    void forget(scene::Pass pass) { last_.erase(std::uint32_t(pass)); }
+    void forget(const PassId& pass) { last_.erase(pass.name()); }
 
   private:
     friend class PassContext;
@@ -169,7 +170,7 @@ class FrameGraph {
     std::vector<PassStatus> status_;            // per passes_ index
     std::vector<std::string> reasons_;          // per passes_ index
     std::vector<LastRun> pending_;              // per passes_ index: what a run now records
-    std::map<std::uint32_t, LastRun> last_;     // per pass id: its last run
+    std::map<std::string, LastRun, std::less<>> last_; // per pass name: its last run
     std::map<std::string, Texture, std::less<>> owned_;         // History and this frame's Transient targets
     std::map<std::string, ResourceDesc, std::less<>> ownedDesc_;
     std::vector<std::pair<ResourceDesc, Texture>> pool_;        // transient targets free for reuse

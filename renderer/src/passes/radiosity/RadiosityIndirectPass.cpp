@@ -30,23 +30,23 @@ GLint loc(GLuint program, const char* name) {
 void RadiosityIndirectPass::setup(graph::PassSpec& pass, FrameState& state) {
     const FrameContext& frame = state.frame;
     pass.decision = state.radiosity;
-    pass.writes = {resources::RadiosityIncident, resources::RadiosityDepth};
+    pass.writes = {Incident, Depth};
     if (state.radiosity.runs()) {
         // Kept across frames, so a still camera reuses them.
-        for (const auto& [name, format] : {std::pair{resources::RadiosityIncident, GL_RGBA16F},
-                                           std::pair{resources::RadiosityDepth, GL_DEPTH_COMPONENT32F}})
+        for (const auto& [name, format] : {std::pair{Incident, GL_RGBA16F},
+                                           std::pair{Depth, GL_DEPTH_COMPONENT32F}})
             state.graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), frame.width, frame.height},
                                        graph::Lifetime::History);
     } else {
         // Named, so the report and --dump can say why they hold nothing; not allocated.
-        for (graph::ResourceHandle name : {resources::RadiosityIncident, resources::RadiosityDepth})
+        for (graph::ResourceHandle name : {Incident, Depth})
             state.graph.importResource(name, [] { return graph::ImportedView{}; });
     }
     if (state.depthPrepass)
         pass.reads = {resources::CameraDepth};
     // Shading reads radiosity.incident at its pixel as the indirect light, in place of the LPV's (frame/IndirectLight.h).
     if (state.radiosity.runs())
-        state.indirectLight.push_back(screenIndirectLight(id(), resources::RadiosityIncident));
+        state.indirectLight.push_back(screenIndirectLight(id(), Incident));
     // The corner values are uploaded smoothed or flat (upload()): the graph
     // keys this pass's reuse on the parameter it reads.
     pass.parameters = {"radiosity.smoothing"};
@@ -87,7 +87,7 @@ void RadiosityIndirectPass::upload(const radiosity::BakedSolution& solution, std
 void RadiosityIndirectPass::render(graph::PassContext& ctx, bool afterPrepass) {
     const FrameContext& frame = ctx.frame;
     Gpu& g = *gpu_;
-    const GLuint incident = ctx.id(resources::RadiosityIncident), depth = ctx.id(resources::RadiosityDepth);
+    const GLuint incident = ctx.id(Incident), depth = ctx.id(Depth);
     if (g.attachedIncident != incident || g.attachedDepth != depth) {
         // Rebuilt when the graph hands out other targets (a resize).
         g.fbo = createFramebuffer();

@@ -10,6 +10,7 @@
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/scene/Error.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -23,18 +24,26 @@ class GpuMemoryLedger;
 
 // The pass in the frame's table (PassTable.cpp): it declares itself in
 // setup() and draws in execute(); its GL objects exist from its first run
-// until a frame culls it.
+// until a frame culls it. Its name and its outputs are declared here, and
+// nowhere else (frame/PassList.h).
 class RadiosityIndirectPass final : public GraphPass {
   public:
-    RadiosityIndirectPass() : GraphPass(scene::Pass::RadiosityIndirect) {}
+    static constexpr std::string_view kName = "radiosityIndirect";
+    // The incident light (rgb irradiance / pi; a = 1 where a patch is) and
+    // the depth it was drawn with, each the size of the frame.
+    static constexpr graph::ResourceHandle Incident{"radiosity.incident"};
+    static constexpr graph::ResourceHandle Depth{"radiosity.depth"};
+    static constexpr std::array kOutputs{Incident, Depth};
+
+    RadiosityIndirectPass() : GraphPass(kName) {}
 
     std::size_t patchTriangleVertices() const { return gpu_ ? std::size_t(gpu_->draw.vertices) : 0; }
     // Names its GL objects for ForwardRenderer::gpuMemory().
     void addGpuMemory(GpuMemoryLedger& ledger) const override;
 
   protected:
-    // Runs with gi.method = radiosity and a solution; writes radiosity.incident
-    // and radiosity.depth (kept across frames, so a still camera reuses them),
+    // Runs with gi.method = radiosity and a solution; writes Incident and
+    // Depth (kept across frames, so a still camera reuses them),
     // after the depth pre-pass whose camera.depth it reads.
     void setup(graph::PassSpec& pass, FrameState& state) override;
     scene::Expected<void> execute(graph::PassContext& ctx, FrameState& state) override;

@@ -16,9 +16,11 @@ namespace lpv::scene {
 enum class ParameterType { Bool, Int, Float, Enum };
 const char* toString(ParameterType t);
 
-// The passes of a frame (bit flags). One name per pass (passName): the
-// frame graph's node, its GPU timer row, `lpv render --dump` and `--graph`,
-// and the passes a parameter change invalidates.
+// The passes a parameter change invalidates (bit flags), for the passes
+// that had a bit before a pass could name itself in its own file
+// (renderer/src/graph/PassId.h: a new pass needs no bit here; it lists the
+// keys it reads in its PassSpec::parameters). One name per pass (passName):
+// the frame graph's node, its GPU timer row, `lpv render --dump` and `--graph`.
 enum class Pass : std::uint32_t {
     None = 0,
     ShadowMaps = 1u << 0,
@@ -41,7 +43,7 @@ enum class Pass : std::uint32_t {
     LpvBounces = 1u << 17,   // bounces 2.. lpv.bounces
     Exposure = 1u << 18,     // auto exposure's meter
     DepthPrepass = 1u << 19, // the camera's depth before shading
-    RadiosityIndirect = 1u << 20, // a baked radiosity solution drawn from the camera (gi.method = radiosity)
+    // 1u << 20 was radiosityIndirect's: it names itself now (renderer/src/graph/PassId.h).
     LpvLookup = 1u << 21,         // the LPV's lookup at 1/2 or 1/4 of the view's resolution (lpv.lookupResolution)
 };
 constexpr Pass operator|(Pass a, Pass b) { return Pass(std::uint32_t(a) | std::uint32_t(b)); }
