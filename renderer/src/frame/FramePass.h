@@ -1,15 +1,16 @@
 #pragma once
 // A pass of the frame, declared in its own file beside its execute
 // (DESIGN.md "The frame graph"; Falcor's RenderPass::reflect() and
-// execute(), Filament's addPass(setup, execute)). Each frame setup() says
-// what the pass reads and writes (typed handles, FrameResources.h), whether
-// it runs and why (an EffectDecision) and its reuse key; execute() does the
-// work. The parameters it reads are the registry's: each parameter names
-// the passes it invalidates (scene::Pass, ParameterRegistry.h), a pass
-// declares any other it reads (PassSpec::parameters), and the graph keys
-// reuse on their values. Indirect light for shading is declared too
+// execute(), Filament's addPass(setup, execute)). Its header gives its
+// name (kName, graph/PassId.h) and the outputs only it writes (kOutputs);
+// each frame setup() says what the pass reads and writes (typed handles),
+// whether it runs and why (an EffectDecision), the registry parameters it
+// reads (PassSpec::parameters; a pass that had a scene::Pass bit is also
+// invalidated by the parameters whose declaration names it) and its reuse
+// key; execute() does the work. Indirect light for shading is declared too
 // (FrameState::indirectLight, IndirectLight.h). A pass joins the frame with
-// one line in PassTable.cpp; the renderer keeps the passes in that table.
+// one line in PassTable.cpp (PassList.h); the renderer keeps the passes in
+// that table.
 #include "graph/FrameGraph.h"
 #include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/scene/ParameterRegistry.h"
