@@ -7,6 +7,20 @@
 uniform int uGridSize;   // N, cells per axis of one cascade
 uniform int uCascades;   // K
 
+// lpv.shBands (issue #47): 2 unless a kernel's variant defines 3. Three bands
+// need sh3.glsl included before this file; their layouts (docs/lpv.md,
+// "Memory layout"): a cell's 9 coefficients per channel as Sh9 (low, high,
+// last), the fixed-point sums 27 per cell (channel * 9 + coefficient).
+#ifndef LPV_SH_BANDS
+#define LPV_SH_BANDS 2
+#endif
+const int LPV_COEFFS = LPV_SH_BANDS * LPV_SH_BANDS; // per colour channel
+#if LPV_SH_BANDS == 3
+// Coefficient j (0..8) of a three-band SH vector.
+float lpvCoeff(Sh9 f, int j) { return j < 4 ? f.low[j] : j < 8 ? f.high[j - 4] : f.last; }
+Sh9 lpvSh9(float c[9]) { return Sh9(vec4(c[0], c[1], c[2], c[3]), vec4(c[4], c[5], c[6], c[7]), c[8]); }
+#endif
+
 // The 6 directions of travel d, in the order of LpvReference's face table.
 const ivec3 LPV_DIRECTIONS[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0),
                                          ivec3(0, 0, 1), ivec3(0, 0, -1));

@@ -28,6 +28,11 @@ Sh9 sh9At(int base, bool fromGv) {
 Sh9 lpv3Source(ivec3 q, int channel) {
     return sh9At((((q.z * uGridSize3 + q.y) * uGridSize3 + q.x) * 3 + channel) * 3, false);
 }
+void lpv3Sources(ivec3 q, out Sh9 r, out Sh9 g, out Sh9 b) {
+    r = lpv3Source(q, 0);
+    g = lpv3Source(q, 1);
+    b = lpv3Source(q, 2);
+}
 
 // Trilinear over the GV's corner-centred cells, zero outside 0..n.
 Sh9 lpv3Blocking(vec3 g) {
@@ -47,6 +52,9 @@ Sh9 lpv3Blocking(vec3 g) {
     }
     return sum;
 }
+
+// The face between q and q + d: GV coordinate q + 0.5 + 0.5 d.
+Sh9 lpv3BlockingBetween(ivec3 q, ivec3 d) { return lpv3Blocking(vec3(q) + 0.5 + 0.5 * vec3(d)); }
 
 #include "lpv_transfer3.glsl"
 

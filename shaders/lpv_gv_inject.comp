@@ -6,6 +6,7 @@
 // each source into its own half of the buffer; lpv_gv_merge.comp keeps the
 // larger of the two per cell.
 #include "sh.glsl"
+#include "sh3.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -13,7 +14,7 @@ const float GV_FIXED_SCALE = 65536.0;
 
 uniform vec3 uOrigin[6];
 uniform float uCellSize[6];
-layout(std430, binding = 2) buffer GvFixedPoint { int gvSums[]; }; // [source][cascade][cell] * 4
+layout(std430, binding = 2) buffer GvFixedPoint { int gvSums[]; }; // [source][cascade][cell] * B^2
 
 void addSurfel(int source, int k, vec3 p, vec3 n, float area) {
     // floor(x + 0.5), not round(): GLSL leaves the direction of halves to the driver.
@@ -23,8 +24,15 @@ void addSurfel(int source, int k, vec3 p, vec3 n, float area) {
         return;
     ivec3 g = ivec3(gf);
     float s = uCellSize[k];
-    vec4 v = shCosineLobe(n) * (min(area / (s * s), 1.0) * GV_FIXED_SCALE);
     int m = uGridSize + 1;
+#if LPV_SH_BANDS == 3
+    Sh9 v9 = sh9Scale(sh9CosineLobe(n), min(area / (s * s), 1.0) * GV_FIXED_SCALE);
+    int base9 = (source * uCascades * m * m * m + gvCellIndex(k, g)) * 9;
+    for (int j = 0; j < 9; ++j)
+        atomicAdd(gvSums[base9 + j], int(round(lpvCoeff(v9, j))));
+    return;
+#endif
+    vec4 v = shCosineLobe(n) * (min(area / (s * s), 1.0) * GV_FIXED_SCALE);
     int base = (source * uCascades * m * m * m + gvCellIndex(k, g)) * 4;
     for (int j = 0; j < 4; ++j)
         atomicAdd(gvSums[base + j], int(round(v[j])));

@@ -5,6 +5,7 @@
 // point with integer atomics (lpv_resolve.comp turns the sums into floats).
 #define LPV_WITH_FIXED_POINT
 #include "sh.glsl"
+#include "sh3.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -15,7 +16,7 @@ uniform vec3 uOrigin[6];
 uniform float uCellSize[6];
 uniform float uInjectionOffset; // cells
 
-layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; }; // 12 per cell: channel * 4 + coefficient
+layout(std430, binding = 0) buffer LpvFixedPoint { int lpvSums[]; }; // 3 B^2 per cell: channel * B^2 + coefficient
 // Directed propagation: per cell the VPL normals' sum in fixed point and their
 // count (lpv_normals.comp averages them). Scale 2^30 / texels per tile: even
 // every texel of a tile in one cell stays below 2^30.
@@ -51,6 +52,16 @@ void main() {
             atomicAdd(normalSums[nb + j], int(round(n[j] * normalScale)));
         atomicAdd(normalSums[nb + 3], 1);
     }
+#if LPV_SH_BANDS == 3
+    Sh9 lobe9 = sh9Scale(sh9CosineLobe(n), scale / SH_PI);
+    int base = lpvCellIndex(k, cell) * 27;
+    for (int c = 0; c < 3; ++c) {
+        if (flux[c] == 0.0)
+            continue;
+        for (int j = 0; j < 9; ++j)
+            atomicAdd(lpvSums[base + c * 9 + j], int(round(flux[c] * lpvCoeff(lobe9, j))));
+    }
+#else
     int base = lpvCellIndex(k, cell) * 12;
     for (int c = 0; c < 3; ++c) {
         if (flux[c] == 0.0)
@@ -58,4 +69,5 @@ void main() {
         for (int j = 0; j < 4; ++j)
             atomicAdd(lpvSums[base + c * 4 + j], int(round(flux[c] * lobe[j])));
     }
+#endif
 }

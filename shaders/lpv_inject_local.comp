@@ -11,6 +11,7 @@
 // texel count (uTexelsPerTile) then counts the sun's tile and all local texels.
 #define LPV_WITH_FIXED_POINT
 #include "sh.glsl"
+#include "sh3.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -74,6 +75,16 @@ void main() {
                 atomicAdd(normalSums[nb + j], int(round(n[j] * normalScale)));
             atomicAdd(normalSums[nb + 3], 1);
         }
+#if LPV_SH_BANDS == 3
+        Sh9 lobe9 = sh9Scale(sh9CosineLobe(n), lpvFixedScale(k) / SH_PI);
+        int base = lpvCellIndex(k, cell) * 27;
+        for (int c = 0; c < 3; ++c) {
+            if (flux[c] == 0.0)
+                continue;
+            for (int j = 0; j < 9; ++j)
+                atomicAdd(lpvSums[base + c * 9 + j], int(round(flux[c] * lpvCoeff(lobe9, j))));
+        }
+#else
         int base = lpvCellIndex(k, cell) * 12;
         for (int c = 0; c < 3; ++c) {
             if (flux[c] == 0.0)
@@ -81,6 +92,7 @@ void main() {
             for (int j = 0; j < 4; ++j)
                 atomicAdd(lpvSums[base + c * 4 + j], int(round(flux[c] * lobe[j])));
         }
+#endif
     }
 #endif
 }

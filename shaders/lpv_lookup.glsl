@@ -16,6 +16,28 @@ uniform float uLpvLookupOffset; // lpv.lookupOffset: cells along the normal
 uniform sampler3D uLpvAccumR;
 uniform sampler3D uLpvAccumG;
 uniform sampler3D uLpvAccumB;
+#if LPV_SH_BANDS == 3
+// lpv.shBands = 3 (issue #47; the lpvPropagation stage adds the define):
+// band 2 of the accumulator, 4N x N x NK, the planes high R, G, B (Y2-2..Y21)
+// and last rgb (Y22) side by side along x. The coordinate is clamped to
+// [0.5, N - 0.5] like the cascades', so the filter never mixes two planes.
+uniform sampler3D uLpvAccumHigh;
+
+// Band 2 of the irradiance (dot with cosineLobe(-n)'s band 2, pi/4 Y2m(-n)
+// = pi/4 Y2m(n): band 2 is even) at clamped cell coordinate u of cascade k:
+// the clamped cosine's band-2 factor pi/4 (sh3.glsl's SH_A2 and constants).
+vec3 lpvBand2(int k, vec3 u, vec3 n) {
+    float grid = float(uLpvGridSize);
+    vec4 lobeHigh = (SH_PI / 4.0) * vec4(1.092548431 * n.x * n.y, -1.092548431 * n.y * n.z,
+                                               0.315391565 * (3.0 * n.z * n.z - 1.0), -1.092548431 * n.x * n.z);
+    float lobeLast = (SH_PI / 4.0) * 0.546274215 * (n.x * n.x - n.y * n.y);
+    vec3 e = vec3(0.0);
+    float w = (float(k) * grid + u.z) / (grid * float(uLpvCascadeCount));
+    for (int c = 0; c < 3; ++c)
+        e[c] = dot(texture(uLpvAccumHigh, vec3((float(c) * grid + u.x) / (4.0 * grid), u.y / grid, w)), lobeHigh);
+    return e + lobeLast * texture(uLpvAccumHigh, vec3((3.0 * grid + u.x) / (4.0 * grid), u.y / grid, w)).rgb;
+}
+#endif
 // The visibility-aware lookup (docs/lpv.md; lpvref::irradianceVisibleAt is
 // the CPU twin): per cell and axis the distance moments lpv_visibility.comp
 // wrote. An image, not a sampler: the forward pass has no sampler unit left.
@@ -103,6 +125,9 @@ vec3 lpvIrradianceRaw(int k, vec3 x, vec3 n) {
     vec4 lobe = shCosineLobe(-n);
     vec3 e = vec3(dot(texture(uLpvAccumR, uvw), lobe), dot(texture(uLpvAccumG, uvw), lobe),
                   dot(texture(uLpvAccumB, uvw), lobe));
+#if LPV_SH_BANDS == 3
+    e += lpvBand2(k, u, n);
+#endif
     float s = uLpvCellSize[k];
     return max(e, vec3(0.0)) / (s * s);
 }

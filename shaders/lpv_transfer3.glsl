@@ -1,10 +1,25 @@
 // One gather step of the three-band LPV (issue #47), the GLSL twin of
 // lpvref::bands::propagateStep<3> (docs/lpv.md, "Three bands"): the 30
 // face-transfer terms and the occluded transfer into one destination cell.
-// Include sh.glsl and sh3.glsl first. The caller supplies the volume access:
-//   Sh9 lpv3Source(ivec3 q, int channel)  the source cell's SH (inside the grid)
-//   Sh9 lpv3Blocking(vec3 g)              the geometry volume at GV coordinate g
-// (both defined before including this file), and uGridSize3 / uStrength3.
+// Include sh.glsl and sh3.glsl first. The caller supplies the volume access
+// (defined before including this file):
+//   void lpv3Sources(ivec3 q, out Sh9 r, out Sh9 g, out Sh9 b)
+//                                          the source cell's SH (q inside the grid)
+//   Sh9 lpv3BlockingBetween(ivec3 q, ivec3 d)
+//                                          the geometry volume on the face between q and q + d
+// and may define before it (defaults in brackets): LPV3_GRID, cells per axis
+// [uGridSize3]; LPV3_STRENGTH, lpv.occlusionStrength [uStrength3];
+// LPV3_TWO_SIDED, lpv.twoSidedOcclusion [false]; LPV3_DIRECTED, the
+// destination's dilated VPL normal for directed propagation [none].
+#ifndef LPV3_GRID
+#define LPV3_GRID uGridSize3
+#endif
+#ifndef LPV3_STRENGTH
+#define LPV3_STRENGTH uStrength3
+#endif
+#ifndef LPV3_TWO_SIDED
+#define LPV3_TWO_SIDED false
+#endif
 const ivec3 LPV3_AXES[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0),
                                     ivec3(0, 0, 1), ivec3(0, 0, -1));
 const float LPV3_FRONT_SOLID_ANGLE = 0.4006696846;
@@ -18,11 +33,15 @@ Sh9 lpv3GatherTerm(ivec3 d, ivec3 nf) {
 }
 Sh9 lpv3EmitTerm(ivec3 nf) { return sh9Scale(sh9CosineLobe(vec3(nf)), 1.0 / SH_PI); }
 
-bool lpv3Inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(uGridSize3))); }
+bool lpv3Inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(LPV3_GRID))); }
 
-// 1 - clamp(strength B(-travel)) at GV coordinate g.
-float lpv3Transmittance(vec3 g, vec3 travel) {
-    return 1.0 - clamp(uStrength3 * sh9Evaluate(lpv3Blocking(g), -travel), 0.0, 1.0);
+// 1 - clamp(strength B(-travel)) for the blocking potential B on a face
+// (two-sided: the larger of B(-travel) and B(travel)).
+float lpv3Transmittance(Sh9 blocking, vec3 travel) {
+    float blocked = sh9Evaluate(blocking, -travel);
+    if (LPV3_TWO_SIDED)
+        blocked = max(blocked, sh9Evaluate(blocking, travel));
+    return 1.0 - clamp(LPV3_STRENGTH * blocked, 0.0, 1.0);
 }
 
 // The light gathered into cell p, per channel; `occlusion` false: no GV.
@@ -35,13 +54,19 @@ void lpv3Gather(ivec3 p, bool occlusion, out Sh9 outR, out Sh9 outG, out Sh9 out
         ivec3 q = p - d;
         if (!lpv3Inside(q))
             continue;
-        Sh9 r = lpv3Source(q, 0), g = lpv3Source(q, 1), b = lpv3Source(q, 2);
+        Sh9 r, g, b;
+        lpv3Sources(q, r, g, b);
+        // The CPU twin samples the GV at the face's centre, q + 0.5 + 0.5 d, for all 5 faces.
+        Sh9 blocking = occlusion ? lpv3BlockingBetween(q, d) : Sh9(vec4(0.0), vec4(0.0), 0.0);
         for (int f = 0; f < 6; ++f) {
             ivec3 nf = LPV3_AXES[f];
             if (nf == -d)
                 continue; // the face shared with q: light enters there
             vec3 dir = normalize(vec3(d) + 0.5 * vec3(nf));
-            float t = occlusion ? lpv3Transmittance(vec3(q) + 0.5 + 0.5 * vec3(d), dir) : 1.0;
+            float t = occlusion ? lpv3Transmittance(blocking, dir) : 1.0;
+#ifdef LPV3_DIRECTED
+            t *= min(1.0, 1.0 + dot(vec3(nf), LPV3_DIRECTED)); // lpvref::directedWeight
+#endif
             Sh9 gather = lpv3GatherTerm(d, nf), emit = lpv3EmitTerm(nf);
             float fr = max(0.0, sh9Dot(r, gather)) * t;
             float fg = max(0.0, sh9Dot(g, gather)) * t;

@@ -21,10 +21,13 @@ struct LookupPoint {
 // Irradiance (rgb, times s^-2: lpvIrradianceRaw) at each point from cascade
 // `cascade`; `visibility` selects the visibility-aware path (its moments must
 // have been built by the pass), `bias` its normal bias in cells.
-// `lookupOffset`: lpv.lookupOffset in cells.
+// `lookupOffset`: lpv.lookupOffset in cells. A pass of three SH bands
+// (lpv.shBands = 3) is read with lpv_lookup.glsl's three-band lookup.
 inline std::vector<glm::vec3> runLookup(const LpvPass& pass, int cascade, bool visibility, float bias,
                                         const std::vector<LookupPoint>& points, float lookupOffset = 0.0f) {
-    auto program = buildEmbeddedProgram({"lpv_lookup_test.comp"});
+    const bool three = pass.volumes().bands() == 3;
+    auto program = buildEmbeddedProgram({"lpv_lookup_test.comp"},
+                                        three ? std::vector<std::string>{"LPV_SH_BANDS 3"} : std::vector<std::string>{});
     EXPECT_TRUE(program.has_value()) << (program ? "" : program.error().describe());
     if (!program)
         return {};
@@ -46,6 +49,10 @@ inline std::vector<glm::vec3> runLookup(const LpvPass& pass, int cascade, bool v
     for (int c = 0; c < 3; ++c) {
         glProgramUniform1i(p, at(samplers[c]), c);
         glBindTextureUnit(GLuint(c), volumes.accumulator.channel[std::size_t(c)].id());
+    }
+    if (three) {
+        glProgramUniform1i(p, at("uLpvAccumHigh"), 3);
+        glBindTextureUnit(3, volumes.accumulatorHigh.id());
     }
     if (visibility)
         glBindImageTexture(7, volumes.visibility.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);

@@ -87,6 +87,10 @@ EffectDecision decideBounces(const scene::ParameterSet& params, bool lpvRuns) {
                : lpvRuns    ? std::to_string(bounces - 1) + " more bounce" + (bounces > 2 ? "s" : "") +
                                " re-injected at the geometry volume's surfels"
                          : "the LPV does not run";
+    if (d.wanted && params.getInt("lpv.shBands") == 3) { // issue #47: LpvSettings turns them off too
+        d.wanted = false;
+        d.reason += "; but lpv.shBands = 3: bounces re-inject two bands only";
+    }
     return d;
 }
 

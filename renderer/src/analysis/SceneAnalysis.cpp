@@ -189,10 +189,20 @@ EffectDecision decideDirectedPropagation(const scene::ParameterSet& params, bool
     return d;
 }
 
+// lpv.shBands = 3 (issue #47): the effects that read or write two bands only
+// are off, and the effects list says why rather than mixing bands.
+static void offWithThreeBands(EffectDecision& d, const scene::ParameterSet& params, const char* why) {
+    if (d.wanted && params.getInt("lpv.shBands") == 3) {
+        d.wanted = false;
+        d.reason += std::string("; but lpv.shBands = 3: ") + why;
+    }
+}
+
 EffectDecision decideSubsurface(const SceneTraits& t, const scene::ParameterSet& params, bool lpvRuns,
                                 const std::string& lpvReason) {
     EffectDecision d = decide("Subsurface LPV", "effects.subsurface", params, t.hasTranslucentMaterial,
                               "a visible material is translucent", "no visible material is translucent");
+    offWithThreeBands(d, params, "the subsurface LPV is injected and read in two bands only");
     if (d.wanted && !lpvRuns) {
         d.wanted = false; // injected from the LPV's RSM: without an LPV there is nothing to inject
         d.reason += "; but the LPV does not run (" + lpvReason + ")";
@@ -213,6 +223,7 @@ EffectDecision decideSkyInjection(const scene::Scene& s, const SceneTraits& t, c
         d.wanted = false;
         d.reason = "forced on by effects.skyInjection, but the sky's intensity is 0";
     }
+    offWithThreeBands(d, params, "sky injection writes two bands only");
     return d;
 }
 
@@ -233,6 +244,7 @@ EffectDecision decideGlossyReflections(const SceneTraits& t, const scene::Parame
         d.wanted = false; // forced on, but there is no LPV to march through
         d.reason = "forced on by effects.glossyReflections, but the LPV does not run (" + lpvReason + ")";
     }
+    offWithThreeBands(d, params, "the glossy march reads two bands only");
     return d;
 }
 

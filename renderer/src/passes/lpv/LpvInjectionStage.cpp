@@ -11,7 +11,10 @@ namespace {
 // The LPV's volumes are graph resources from here on.
 void importVolumes(FrameState& state) {
     const LpvVolumes& volumes = state.lpv.lpv->volumes();
-    importTexture(state.graph, resources::LpvVolumes, [&volumes] { return volumes.volume[0].channel[0].id(); });
+    // Three bands keep their steps in the interleaved volumes only (LpvVolumes::ensure).
+    importTexture(state.graph, resources::LpvVolumes, [&volumes] {
+        return volumes.bands() == 3 ? volumes.interleaved[0].id() : volumes.volume[0].channel[0].id();
+    });
     importTexture(state.graph, resources::LpvAccumulator, [&volumes] { return volumes.accumulator.channel[0].id(); });
     importTexture(state.graph, resources::LpvGeometry, [&volumes] { return volumes.geometry.id(); });
     importTexture(state.graph, resources::LpvNormals, [&volumes] { return volumes.normals[0].id(); });

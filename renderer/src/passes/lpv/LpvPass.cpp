@@ -75,6 +75,24 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.requestedCascades = params.getInt("lpv.cascades");
     s.rsmCascades = params.getInt("rsm.cascades");
     s.visibility = params.getBool("lpv.visibilityLookup");
+    s.reducedLookup = params.getEnum("lpv.lookupResolution") != "full";
+    if (s.shBands == 3) {
+        // What reads or writes two bands only is off (docs/lpv.md, "Three bands"),
+        // and the note says so; the effects list says it for the sky, the
+        // subsurface LPV, the glossy march and bounces (SceneAnalysis).
+        std::vector<std::string> off;
+        if (s.gvFromScene)
+            off.push_back("the geometry volume from the views: the scene's has two bands");
+        if (s.bounces > 1)
+            off.push_back("one bounce: bounces re-inject two bands");
+        if (s.visibility)
+            off.push_back("no visibility-aware lookup: it reads two bands");
+        s.gvFromScene = false;
+        s.bounces = 1;
+        s.visibility = false;
+        for (const std::string& o : off)
+            s.threeBandsNote += (s.threeBandsNote.empty() ? "" : "; ") + o;
+    }
     return s;
 }
 
@@ -84,7 +102,21 @@ scene::Expected<LpvPass> LpvPass::create() {
     return pass;
 }
 
-ProgramVariant LpvPass::variantOf(LpvKernel kernel) {
+ProgramVariant LpvPass::variantOf(LpvKernel kernel) const {
+    // Three bands: the kernels that hold SH take LPV_SH_BANDS (issue #47).
+    if (bands_ == 3) {
+        switch (kernel) {
+        case LpvKernel::Inject: return {{"lpv_inject.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::Resolve: return {{"lpv_resolve.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::GvFromRsm: return {{"lpv_gv_inject.comp"}, {"GV_FROM_RSM 1", "LPV_SH_BANDS 3"}};
+        case LpvKernel::GvFromCamera: return {{"lpv_gv_inject.comp"}, {"GV_FROM_CAMERA 1", "LPV_SH_BANDS 3"}};
+        case LpvKernel::GvMerge: return {{"lpv_gv_merge.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::FaceBlocking: return {{"lpv_face_blocking.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::LocalInject: return {{"lpv_inject_local.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::ComputeGather: return {{"lpv_gather.comp"}, {"LPV_SH_BANDS 3"}};
+        default: break;
+        }
+    }
     switch (kernel) {
     case LpvKernel::FluxMax: return {{"lpv_flux_max.comp"}, {}};
     case LpvKernel::Inject: return {{"lpv_inject.comp"}, {}};
@@ -154,7 +186,11 @@ scene::Expected<void> LpvPass::buildKernelsFor(const LpvSettings& settings) {
         kernels.push_back(LpvKernel::Visibility);
     switch (settings.variant) {
     case LpvVariant::ComputeGather:
-        kernels.insert(kernels.end(), {LpvKernel::ComputeGather, LpvKernel::ComputeGatherFirst, LpvKernel::Deinterleave});
+        if (settings.shBands == 3) // every step reads the interleaved volumes; no viewer capture
+            kernels.push_back(LpvKernel::ComputeGather);
+        else
+            kernels.insert(kernels.end(),
+                           {LpvKernel::ComputeGather, LpvKernel::ComputeGatherFirst, LpvKernel::Deinterleave});
         break;
     case LpvVariant::ComputeScatter: kernels.push_back(LpvKernel::ComputeScatter); break;
     case LpvVariant::RasterGather: kernels.push_back(LpvKernel::RasterGather); break;
@@ -203,15 +239,38 @@ std::vector<LpvLocalInput> nonEmpty(const std::vector<LpvLocalInput>& all) {
 
 } // namespace
 
-scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::vector<LpvCascade>& requested) {
-    if (settings.shBands != 2) {
-        disable("lpv.shBands is not 2");
+// Three bands run in the compute gather with shading's full-resolution lookup
+// (issue #47); anything else is refused with an error that names what to change.
+scene::Expected<void> LpvPass::refuseBands(const LpvSettings& settings) {
+    auto refuse = [&](const std::string& why) {
         return scene::makeError(scene::ErrorCode::OutOfRange, "render", "parameters.lpv.shBands",
-                                "lpv.shBands = " + std::to_string(settings.shBands) + ": the " +
-                                    lpvVariantName(settings.variant) +
-                                    " LPV runs two bands only; three bands exist as the CPU twin "
-                                    "(lpvref::bands, docs/lpv.md) and no GPU variant runs them yet (issue #47)");
+                                "lpv.shBands = " + std::to_string(settings.shBands) + ": " + why);
+    };
+    if (settings.shBands == 2)
+        return {};
+    if (settings.shBands != 3)
+        return refuse("the LPV runs two or three bands");
+    if (settings.variant != LpvVariant::ComputeGather)
+        return refuse(std::string("the ") + lpvVariantName(settings.variant) +
+                      " LPV runs two bands only; three bands run in the computeGather variant "
+                      "(lpv.variant = computeGather, issue #47)");
+    if (settings.reducedLookup)
+        return refuse("the lookup at reduced resolution (lpv.lookupResolution = half|quarter) reads two bands "
+                      "only; set lpv.lookupResolution = full (issue #47)");
+    GLint units = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+    if (units < 17)
+        return refuse("shading's three-band lookup needs 17 fragment texture units and this GL has " +
+                      std::to_string(units) + "; set lpv.shBands = 2");
+    return {};
+}
+
+scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::vector<LpvCascade>& requested) {
+    if (auto refused = refuseBands(settings); !refused) {
+        disable("lpv.shBands = " + std::to_string(settings.shBands) + " does not run here");
+        return refused;
     }
+    bands_ = settings.shBands;
     if (auto built = buildKernelsFor(settings); !built)
         return built;
     const int cascades = std::min<int>(int(requested.size()), 6);
@@ -219,7 +278,7 @@ scene::Expected<void> LpvPass::prepare(const LpvSettings& settings, const std::v
         disable("no RSM to inject from");
         return {};
     }
-    if (auto ok = volumes_.ensure(settings.gridSize, cascades); !ok) {
+    if (auto ok = volumes_.ensure(settings.gridSize, cascades, settings.shBands); !ok) {
         disable("volumes do not fit");
         if (cascades != settings.requestedCascades)
             ok.error().message += " (lpv.cascades is " + std::to_string(settings.requestedCascades) +
@@ -281,7 +340,9 @@ void LpvPass::finish(const LpvSettings& settings, bool cameraGv, bool sky, const
             (settings.directed ? ", directed (" + std::to_string(settings.directedDilation) + "-cell dilation)" : "") +
             (sky ? ", sky light injected" : "") + localNote(nonEmpty(local)) +
             (settings.bounces > 1 ? ", " + std::to_string(settings.bounces) + " bounces" : "") +
-            (visibilityActive_ ? ", visibility-aware lookup" : "");
+            (visibilityActive_ ? ", visibility-aware lookup" : "") +
+            (settings.shBands == 3 ? ", 3 SH bands" + (settings.threeBandsNote.empty() ? "" : " (" + settings.threeBandsNote + ")")
+                                   : "");
     computedNote_ = note_.substr(5); // without "LPV: "
 }
 
@@ -301,7 +362,9 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     in.settings = settings;
     in.runs = true;
     in.sun = rsm.position && rsm.tileSize > 0;
-    in.sky = withSky ? runsBecause("a sky height map was given") : skippedBecause("no sky height map was given");
+    in.sky = !withSky                  ? skippedBecause("no sky height map was given")
+             : settings.shBands == 3 ? skippedBecause("lpv.shBands = 3: sky injection writes two bands only")
+                                     : runsBecause("a sky height map was given");
     in.rsm = [&rsm] { return rsm; };
     in.localInputs = [&local] { return local; };
     in.skyInput = [sky] { return *sky; };
@@ -390,6 +453,16 @@ void LpvPass::resolveSums(int destination, bool accumulate, int scaleSlot, int r
 }
 
 void LpvPass::bindStepImages(int destination) const {
+    if (volumes_.bands() == 3) {
+        // Three bands: the interleaved volume (7 texels per cell) and band 2 of the accumulator.
+        glBindImageTexture(0, volumes_.interleaved[std::size_t(destination)].id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           GL_RGBA32F);
+        for (int c = 0; c < 3; ++c)
+            glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
+                               GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(6, volumes_.accumulatorHigh.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        return;
+    }
     for (int c = 0; c < 3; ++c) {
         glBindImageTexture(GLuint(c), volumes_.volume[std::size_t(destination)].channel[std::size_t(c)].id(), 0,
                            GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -440,6 +513,8 @@ void LpvPass::injectViews(const LpvRsmInput& rsm, const LpvCameraInput* camera) 
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindImageTexture(0, volumes_.geometry.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    if (volumes_.bands() == 3)
+        glBindImageTexture(1, volumes_.geometryHigh.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const int m = volumes_.gridSize() + 1;
     glDispatchCompute(groups(m, 4), groups(m, 4), groups(m * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
@@ -450,7 +525,8 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     const int m = volumes_.gridSize() + 1;
     const std::size_t cells = std::size_t(m) * std::size_t(m) * std::size_t(m) * std::size_t(volumes_.cascades());
     sceneSurfels_ = 0;
-    if (sceneGeometry && sceneGeometry->windows.size() == cells) {
+    // The scene's GV has two bands: three take the GV from the views (LpvSettings::fromParameters).
+    if (sceneGeometry && sceneGeometry->windows.size() == cells && volumes_.bands() == 2) {
         // The scene's GV, windowed on the CPU: uploaded as the merged volume (the
         // surfel sums stay cleared; nothing is injected or merged).
         glTextureSubImage3D(volumes_.geometry.id(), 0, 0, 0, 0, m, m, m * volumes_.cascades(), GL_RGBA, GL_FLOAT,
@@ -466,6 +542,10 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     glProgramUniform1i(p, loc(p, "uOcclusion"), 1);
     glBindTextureUnit(3, volumes_.geometry.id());
     glBindImageTexture(0, volumes_.faceBlocking.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    if (volumes_.bands() == 3) {
+        glBindTextureUnit(5, volumes_.geometryHigh.id());
+        glBindImageTexture(1, volumes_.faceBlockingHigh.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    }
     const int n = volumes_.gridSize();
     glDispatchCompute(groups(n, 4), groups(n, 4), groups(n * volumes_.cascades(), 4));
     glMemoryBarrier(kComputeResults);
@@ -570,9 +650,12 @@ void LpvPass::deinterleave(int index) {
 
 void LpvPass::propagate(const LpvSettings& settings) {
     const int n = volumes_.gridSize(), k = volumes_.cascades();
-    const GLuint gatherProgram = kernel(LpvKernel::ComputeGather), scatterProgram = kernel(LpvKernel::ComputeScatter);
-    const GLuint rasterProgram =
-        settings.variant == LpvVariant::RasterScatter ? kernel(LpvKernel::RasterScatter) : kernel(LpvKernel::RasterGather);
+    const GLuint gatherProgram = kernel(LpvKernel::ComputeGather);
+    // Two bands build every variant's kernel (as before); three run the compute gather only.
+    const GLuint scatterProgram = bands_ == 3 ? 0 : kernel(LpvKernel::ComputeScatter);
+    const GLuint rasterProgram = bands_ == 3                                  ? 0
+                                 : settings.variant == LpvVariant::RasterScatter ? kernel(LpvKernel::RasterScatter)
+                                                                                 : kernel(LpvKernel::RasterGather);
     const bool raster = settings.variant == LpvVariant::RasterGather || settings.variant == LpvVariant::RasterScatter;
     if (raster) {
         glDisable(GL_DEPTH_TEST);
@@ -596,6 +679,18 @@ void LpvPass::propagate(const LpvSettings& settings) {
         const int active = settings.cascadesAtStep(step, k);
         switch (settings.variant) {
         case LpvVariant::ComputeGather: {
+            if (volumes_.bands() == 3) {
+                // Three bands: every step reads an interleaved volume (injection wrote the first).
+                glUseProgram(gatherProgram);
+                setCascadeUniforms(gatherProgram);
+                bindStepSources(gatherProgram, read, settings.occludesStep(step));
+                glBindTextureUnit(0, volumes_.interleaved[std::size_t(read)].id());
+                glBindTextureUnit(5, volumes_.faceBlockingHigh.id());
+                bindStepImages(write);
+                glDispatchCompute(groups(n, 32), groups(n, 8), GLuint(n * active));
+                glMemoryBarrier(kComputeResults);
+                break;
+            }
             // The first step reads the injected per-channel volume and writes
             // the interleaved one the later steps read: no separate packing pass.
             const GLuint program = step == 0 ? kernel(LpvKernel::ComputeGatherFirst) : gatherProgram;
@@ -677,6 +772,11 @@ void LpvPass::bindForShading(const CachedProgram& shader, const scene::Parameter
         glProgramUniform1i(program, shader.uniform(kSamplers[c]), GLint(unit));
         glBindTextureUnit(unit, count ? volumes_.accumulator.channel[std::size_t(c)].id() : 0);
     }
+    if (count > 0 && volumes_.bands() == 3) { // lpv_lookup.glsl's band 2 (LPV_SH_BANDS 3)
+        const GLuint unit = nextUnit();
+        glProgramUniform1i(program, shader.uniform("uLpvAccumHigh"), GLint(unit));
+        glBindTextureUnit(unit, volumes_.accumulatorHigh.id());
+    }
     if (count == 0)
         return;
     std::array<glm::vec3, 6> origin{};
@@ -705,6 +805,47 @@ std::array<std::vector<glm::vec4>, 3> LpvPass::readAccumulator(int cascade) cons
     return out;
 }
 
+std::array<std::vector<std::array<float, 9>>, 3> LpvPass::readAccumulatorBands(int cascade) const {
+    std::array<std::vector<std::array<float, 9>>, 3> out;
+    if (!active_ || volumes_.bands() != 3 || cascade < 0 || cascade >= volumes_.cascades())
+        return out;
+    const int n = volumes_.gridSize();
+    const std::size_t cells = std::size_t(n) * std::size_t(n) * std::size_t(n);
+    // Band 2's four planes, side by side along x: read the cascade's block whole.
+    std::vector<glm::vec4> high(4 * cells);
+    glGetTextureSubImage(volumes_.accumulatorHigh.id(), 0, 0, 0, cascade * n, 4 * n, n, n, GL_RGBA, GL_FLOAT,
+                         GLsizei(high.size() * sizeof(glm::vec4)), high.data());
+    const auto low = readAccumulator(cascade);
+    for (int c = 0; c < 3; ++c) {
+        out[std::size_t(c)].resize(cells);
+        for (std::size_t i = 0; i < cells; ++i) {
+            const std::size_t x = i % std::size_t(n), row = i / std::size_t(n); // row = y + n z
+            const glm::vec4 l = low[std::size_t(c)][i];
+            const glm::vec4 h = high[row * 4 * std::size_t(n) + std::size_t(c) * std::size_t(n) + x];
+            const float last = high[row * 4 * std::size_t(n) + 3 * std::size_t(n) + x][c];
+            out[std::size_t(c)][i] = {l.x, l.y, l.z, l.w, h.x, h.y, h.z, h.w, last};
+        }
+    }
+    return out;
+}
+
+std::vector<std::array<float, 9>> LpvPass::readGeometryVolumeBands(int cascade) const {
+    if (!active_ || volumes_.bands() != 3 || cascade < 0 || cascade >= volumes_.cascades())
+        return {};
+    const int m = volumes_.gridSize() + 1;
+    const std::size_t cells = std::size_t(m) * std::size_t(m) * std::size_t(m);
+    std::vector<glm::vec4> high(2 * cells);
+    glGetTextureSubImage(volumes_.geometryHigh.id(), 0, 0, 0, cascade * m, 2 * m, m, m, GL_RGBA, GL_FLOAT,
+                         GLsizei(high.size() * sizeof(glm::vec4)), high.data());
+    const std::vector<glm::vec4> low = readGeometryVolume(cascade);
+    std::vector<std::array<float, 9>> out(cells);
+    for (std::size_t i = 0; i < cells; ++i) {
+        const glm::vec4 l = low[i], h = high[2 * i], last = high[2 * i + 1];
+        out[i] = {l.x, l.y, l.z, l.w, h.x, h.y, h.z, h.w, last.x};
+    }
+    return out;
+}
+
 void LpvPass::setCapture(std::optional<LpvCaptureRequest> request) {
     capture_ = request;
     if (!capture_) {
@@ -724,7 +865,8 @@ std::vector<LpvGridFrame> LpvPass::cascadeFrames() const {
 }
 
 void LpvPass::captureIfRequested(int step, int index) {
-    if (!capture_ || !active_ || bouncing_)
+    // Three bands keep no per-channel step volumes: the viewer shows nothing for them yet.
+    if (!capture_ || !active_ || bouncing_ || volumes_.bands() == 3)
         return;
     const int cascade = capture_->cascade;
     if (cascade < 0 || cascade >= volumes_.cascades())

@@ -36,8 +36,14 @@ const char* lpvVariantName(LpvVariant variant);
 
 struct LpvSettings {
     int gridSize = 32;
-    // lpv.shBands: only 2 runs on the GPU; prepare() refuses 3 (issue #47).
+    // lpv.shBands (issue #47): 3 runs in the compute gather only; prepare()
+    // refuses it for the other variants and for a reduced-resolution lookup.
+    // With 3, fromParameters turns off what reads or writes two bands only
+    // (bounces, the visibility-aware lookup, the scene's GV: the GV then
+    // comes from the views) and says so in threeBandsNote.
     int shBands = 2;
+    std::string threeBandsNote;
+    bool reducedLookup = false; // lpv.lookupResolution is not full
     int propagationSteps = 8;
     // lpv.cascadeSteps = byCellSize: cascade k runs propagationSteps >> k steps
     // (at least 1): cells twice as large carry light twice as far per step.
@@ -199,6 +205,10 @@ class LpvPass {
 
     // Read-back for tests and dumps: per channel N^3 SH of cascade k.
     std::array<std::vector<glm::vec4>, 3> readAccumulator(int cascade) const;
+    // Three bands (lpv.shBands = 3): per channel N^3 cells of 9 coefficients
+    // (ShBands.h's order), and the GV's (N+1)^3 cells of 9; empty otherwise.
+    std::array<std::vector<std::array<float, 9>>, 3> readAccumulatorBands(int cascade) const;
+    std::vector<std::array<float, 9>> readGeometryVolumeBands(int cascade) const;
     std::vector<glm::vec4> readGeometryVolume(int cascade) const; // (N+1)^3, x fastest
     // The visibility-aware lookup's moments of cascade k, 3N x N x N (empty when off).
     std::vector<glm::vec4> readVisibilityMoments(int cascade) const;
@@ -263,7 +273,10 @@ class LpvPass {
         ComputeGather, ComputeGatherFirst, // the first step reads per-channel sources (LPV_FIRST_STEP)
         Deinterleave, ComputeScatter, RasterGather, RasterScatter, Visibility,
     };
-    static ProgramVariant variantOf(LpvKernel kernel);
+    // lpv.shBands = 3 where it runs (the compute gather, a full-resolution lookup), else the error.
+    static scene::Expected<void> refuseBands(const LpvSettings& settings);
+    // With three bands the kernels that hold SH get the LPV_SH_BANDS 3 define.
+    ProgramVariant variantOf(LpvKernel kernel) const;
     scene::Expected<void> buildKernel(LpvKernel kernel);
     // The kernels `settings` select, built now so a compile error is prepare()'s error value.
     scene::Expected<void> buildKernelsFor(const LpvSettings& settings);
@@ -277,6 +290,7 @@ class LpvPass {
     LpvVolumes volumes_;
     std::vector<LpvCascade> cascades_;
     bool active_ = false;
+    int bands_ = 2;     // lpv.shBands of this frame (prepare)
     int readIndex_ = 0; // volume holding the last step's result
     int normalsIndex_ = -1; // normals texture the propagation reads; -1: undirected
     int scaleSlot_ = 0; // scale slot of the volume at readIndex_ (compute scatter)

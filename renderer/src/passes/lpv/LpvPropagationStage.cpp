@@ -35,6 +35,8 @@ void declareIndirectLight(FrameState& state) {
     light.defines = [lpv](std::vector<std::string>& defines) {
         if (!lpv->visibilityBound())
             defines.push_back("LPV_NO_VISIBILITY 1");
+        if (lpv->volumes().bands() == 3)
+            defines.push_back("LPV_SH_BANDS 3"); // lpv_lookup.glsl adds band 2 (issue #47)
     };
     light.bind = [lpv](const CachedProgram& shader, graph::PassContext& ctx) {
         lpv->bindForShading(shader, ctx.frame.params, [&ctx] { return ctx.allocateUnit(); });

@@ -44,8 +44,12 @@ std::size_t LpvVolumes::allocatedBytes() const {
         return 0;
     const std::size_t directed = normals[0] ? 2 * n * n * n * k * kTexelBytes + 4 * n * n * n * k * 4 : 0;
     const std::size_t bounces = bounceTotal.channel[0] ? 3 * n * n * n * k * kTexelBytes : 0;
-    const std::size_t interleavedBytes = interleaved[0] ? 6 * n * n * n * k * kTexelBytes : 0;
+    const std::size_t planes = bands_ == 3 ? 7 : 3;
+    const std::size_t interleavedBytes = interleaved[0] ? 2 * planes * n * n * n * k * kTexelBytes : 0;
     const std::size_t visibilityBytes = visibility ? 3 * n * n * n * k * kTexelBytes : 0;
+    if (bands_ == 3) // the accumulator (3 + 4 planes), the face blocking (3 + 6), the GV (1 + 2), the sums
+        return 16 * n * n * n * k * kTexelBytes + 3 * m * m * m * k * kTexelBytes + 27 * n * n * n * k * 4 +
+               18 * m * m * m * k * 4 + 3 * k * 4 + directed + interleavedBytes;
     return 12 * n * n * n * k * kTexelBytes + m * m * m * k * kTexelBytes + 12 * n * n * n * k * 4 +
            8 * m * m * m * k * 4 + 3 * k * 4 + directed + bounces + interleavedBytes +
            visibilityBytes;
@@ -86,8 +90,9 @@ void LpvVolumes::ensureInterleaved(bool wanted) {
     }
     if (interleaved[0])
         return;
+    const int planes = bands_ == 3 ? 7 : 3;
     for (Texture& t : interleaved)
-        t = makeVolume(3 * gridSize_, gridSize_, gridSize_ * cascades_);
+        t = makeVolume(planes * gridSize_, gridSize_, gridSize_ * cascades_);
 }
 
 bool LpvVolumes::ensureVisibility(bool on) {
@@ -122,12 +127,16 @@ void LpvVolumes::release() {
     for (Texture& t : interleaved)
         t.reset();
     visibility.reset();
+    accumulatorHigh.reset();
+    geometryHigh.reset();
+    faceBlockingHigh.reset();
     gridSize_ = cascades_ = 0;
+    bands_ = 2;
     ++generation_;
 }
 
-scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
-    if (gridSize == gridSize_ && cascades == cascades_)
+scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades, int bands) {
+    if (gridSize == gridSize_ && cascades == cascades_ && bands == bands_)
         return {};
     release();
     const std::size_t n = std::size_t(gridSize), k = std::size_t(cascades), m = n + 1;
@@ -135,13 +144,16 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     const std::string layout = std::to_string(cascades) + " cascades of " + std::to_string(gridSize) + "^3";
-    // The tallest texture is the stacked GV, the widest the face blocking (3N).
-    const std::size_t largestSide = std::max(m * k, 3 * n);
+    // The tallest texture is the stacked GV, the widest the face blocking (3N;
+    // three bands: the interleaved volumes, 7N).
+    const bool three = bands == 3;
+    const std::size_t largestSide = std::max(m * k, (three ? 7 : 3) * n);
     if (std::size_t(max3d) < largestSide)
         return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
                          layout + " need " + std::to_string(largestSide) + " texels on a side, over GL_MAX_3D_TEXTURE_SIZE " +
                              std::to_string(max3d) + "; lower lpv.gridSize or lpv.cascades");
-    const std::size_t sumBytes = 12 * n * n * n * k * 4, gvBytes = 8 * m * m * m * k * 4;
+    const std::size_t coeffs = three ? 9 : 4;
+    const std::size_t sumBytes = 3 * coeffs * n * n * n * k * 4, gvBytes = 2 * coeffs * m * m * m * k * 4;
     if (sumBytes > std::size_t(GLuint(maxBlock)) || gvBytes > std::size_t(GLuint(maxBlock)))
         return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.gridSize",
                          layout + " need a " + mib(std::max(sumBytes, gvBytes)) +
@@ -149,9 +161,6 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
                              mib(std::size_t(GLuint(maxBlock))) + "; lower lpv.gridSize or lpv.cascades");
     while (glGetError() != GL_NO_ERROR) {
     } // an earlier error must not be blamed on this allocation
-    for (auto& set : volume)
-        for (Texture& t : set.channel)
-            t = makeVolume(gridSize, gridSize, gridSize * cascades);
     for (Texture& t : accumulator.channel)
         t = makeVolume(gridSize, gridSize, gridSize * cascades);
     geometry = makeVolume(int(m), int(m), int(m * k));
@@ -159,7 +168,16 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     lpvSums = makeZeroBuffer(sumBytes);
     gvSums = makeZeroBuffer(gvBytes);
     scales = makeZeroBuffer(k * 3 * 4);
-    for (int i = 0; i < 2; ++i) {
+    if (three) {
+        accumulatorHigh = makeVolume(4 * gridSize, gridSize, gridSize * cascades);
+        geometryHigh = makeVolume(2 * int(m), int(m), int(m * k));
+        faceBlockingHigh = makeVolume(6 * gridSize, gridSize, gridSize * cascades);
+    } else {
+        for (auto& set : volume)
+            for (Texture& t : set.channel)
+                t = makeVolume(gridSize, gridSize, gridSize * cascades);
+    }
+    for (int i = 0; i < 2 && !three; ++i) {
         rasterTarget[std::size_t(i)] = createFramebuffer();
         const GLuint fbo = rasterTarget[std::size_t(i)].id();
         for (int c = 0; c < 3; ++c) {
@@ -172,6 +190,7 @@ scene::Expected<void> LpvVolumes::ensure(int gridSize, int cascades) {
     }
     gridSize_ = gridSize;
     cascades_ = cascades;
+    bands_ = bands;
     if (glGetError() == GL_OUT_OF_MEMORY) {
         const std::size_t bytes = allocatedBytes();
         release();
@@ -202,6 +221,9 @@ void LpvVolumes::addGpuMemory(GpuMemoryLedger& ledger) const {
     for (const Texture& t : interleaved)
         ledger.addTexture("lpv.interleaved", t.id());
     ledger.addTexture("lpv.visibility", visibility.id());
+    ledger.addTexture("lpv.accumulatorHigh", accumulatorHigh.id());
+    ledger.addTexture("lpv.geometryHigh", geometryHigh.id());
+    ledger.addTexture("lpv.faceBlockingHigh", faceBlockingHigh.id());
 }
 
 } // namespace lpv::renderer

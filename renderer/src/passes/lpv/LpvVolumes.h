@@ -21,9 +21,13 @@ struct LpvVolumeSet {
 
 class LpvVolumes {
   public:
-    // Allocates for N cells per axis and K cascades, or names the parameter
-    // that does not fit the GPU (texture size, buffer size, memory).
-    scene::Expected<void> ensure(int gridSize, int cascades);
+    // Allocates for N cells per axis, K cascades and `bands` SH bands (2 or
+    // 3, lpv.shBands), or names the parameter that does not fit the GPU
+    // (texture size, buffer size, memory). Three bands (the compute gather
+    // only) allocate no per-channel ping-pong volumes and no raster targets:
+    // their steps live in the interleaved volumes, and band 2 in the *High
+    // textures (docs/lpv.md, "Memory layout").
+    scene::Expected<void> ensure(int gridSize, int cascades, int bands = 2);
     // The normals volume of directed propagation, allocated only while it runs.
     void ensureDirected(bool directed);
     // The running total of earlier bounces, allocated only while lpv.bounces > 1.
@@ -36,6 +40,7 @@ class LpvVolumes {
     void release();
 
     int gridSize() const { return gridSize_; }
+    int bands() const { return bands_; }
     // Bumped by every ensure() that allocates and by release().
     std::uint64_t generation() const { return generation_; }
     int cascades() const { return cascades_; }
@@ -62,7 +67,8 @@ class LpvVolumes {
     // Multi-bounce only (ensureBounces): the sum of the bounces propagated so far.
     LpvVolumeSet bounceTotal;
     // Compute gather only (ensureInterleaved): the ping-pong volumes with a
-    // cell's R, G, B side by side, 3N x N x NK. The gather's first step reads
+    // cell's R, G, B side by side, 3N x N x NK (three bands: 7N, a cell's
+    // low R, G, B, high R, G, B and last rgb). The gather's first step reads
     // volume[] (V_0) and writes here; the later steps live here, and
     // lpv_deinterleave.comp unpacks a step the LPV viewer captures.
     std::array<Texture, 2> interleaved;
@@ -70,7 +76,16 @@ class LpvVolumes {
     // and axis a the distance moments (E[d], E[d^2]) toward +a and -a, the
     // three axes side by side like faceBlocking, 3N x N x NK RGBA32F.
     Texture visibility;
+    // Three bands only: band 2 of the accumulator, 4N x N x NK (planes high
+    // R, G, B = Y2-2..Y21 and last rgb = Y22 side by side along x, so the
+    // lookup filters each alone); of the GV, 2(N+1) x (N+1) x (N+1)K (a GV
+    // cell's high and last side by side); and of the face blocking, 6N x N x
+    // NK (face a of cell x at 6x + 2a and 6x + 2a + 1).
+    Texture accumulatorHigh;
+    Texture geometryHigh;
+    Texture faceBlockingHigh;
   private:
+    int bands_ = 2;
     int gridSize_ = 0;
     int cascades_ = 0;
     std::uint64_t generation_ = 0;
