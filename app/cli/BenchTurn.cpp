@@ -3,7 +3,7 @@
 
 #include "lpv/renderer/FrameGraphReport.h"
 
-#include <glm/gtc/matrix_transform.hpp>
+#include "lpv/scene/CameraTurn.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -12,14 +12,6 @@
 
 namespace lpv::cli {
 
-scene::Camera yawCamera(const scene::Camera& camera, float degrees) {
-    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
-    scene::Camera turned = camera;
-    turned.target = camera.position + glm::vec3(rotation * glm::vec4(camera.target - camera.position, 0.0f));
-    turned.up = glm::vec3(rotation * glm::vec4(camera.up, 0.0f));
-    return turned;
-}
-
 bool renderTurnFrames(RenderSetup& setup, int width, int height, int warmup, int frames, float degrees,
                       TurnFrames& out) {
     const scene::Camera start = setup.camera;
@@ -27,7 +19,7 @@ bool renderTurnFrames(RenderSetup& setup, int width, int height, int warmup, int
     // The first frame draws everything; each later one turns away from the
     // last and back, so the view stays near the start.
     for (int f = 0; f < warmup + frames; ++f) {
-        setup.camera = f % 2 ? yawCamera(start, degrees) : start;
+        setup.camera = f % 2 ? scene::yawedAboutUp(start, degrees) : start;
         timer.clearHistory();
         if (auto ok = setup.renderer->render(setup.project.scene, setup.project.parameters, setup.camera, width,
                                              height);

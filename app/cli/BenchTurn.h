@@ -15,9 +15,6 @@
 
 namespace lpv::cli {
 
-// `camera` yawed by `degrees` about the world's up axis (+y) around its position.
-scene::Camera yawCamera(const scene::Camera& camera, float degrees);
-
 struct TurnFrames {
     std::vector<double> frameTotalsMs; // per timed frame: every pass that ran, summed
     // Per pass: its times over the frames it ran in (reused passes have none).

@@ -6,11 +6,12 @@
 // maps (fitted to the view) and shading reran. The turned frame equals a
 // fresh renderer's frame from the same view.
 #include "GlFixture.h"
+#include "GraphReportQueries.h"
 #include "OpeningViews.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/scene/CameraTurn.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,8 @@
 #include <cmath>
 
 using namespace lpv;
+using test::reason;
+using test::status;
 using renderer::PassStatus;
 using scene::Pass;
 
@@ -25,25 +28,8 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 56;
 
-// `camera` yawed about the world's up axis around its position, as `lpv bench render --turn` does.
-scene::Camera yawed(const scene::Camera& camera, float degrees) {
-    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
-    scene::Camera turned = camera;
-    turned.target = camera.position + glm::vec3(rotation * glm::vec4(camera.target - camera.position, 0.0f));
-    turned.up = glm::vec3(rotation * glm::vec4(camera.up, 0.0f));
-    return turned;
-}
-
 class CameraTurnReuseGLTest : public GlTest {
   protected:
-    static PassStatus status(const renderer::ForwardRenderer& r, Pass p) {
-        const auto* report = r.graphReport().find(scene::passName(p));
-        return report ? report->status : PassStatus::Culled;
-    }
-    static std::string reason(const renderer::ForwardRenderer& r, Pass p) {
-        const auto* report = r.graphReport().find(scene::passName(p));
-        return report ? report->reason : "not in the graph";
-    }
 };
 
 TEST_F(CameraTurnReuseGLTest, TurningOnSibenikKeepsTheCascadesAndReusesTheLpv) {
@@ -67,7 +53,7 @@ TEST_F(CameraTurnReuseGLTest, TurningOnSibenikKeepsTheCascadesAndReusesTheLpv) {
     scene::Camera turned = view.camera;
     for (const float degrees : {5.0f, -5.0f, 30.0f, 90.0f, -150.0f}) {
         SCOPED_TRACE(testing::Message() << "yawed " << degrees << " degrees");
-        turned = yawed(view.camera, degrees);
+        turned = scene::yawedAboutUp(view.camera, degrees);
         render(*r, turned);
         const std::vector<renderer::LpvGridFrame> now = r->lpvCascadeFrames();
         ASSERT_EQ(now.size(), placed.size());
@@ -123,7 +109,7 @@ TEST_F(CameraTurnReuseGLTest, WithTheCascadesShiftedAlongTheViewATurnMovesThemAn
     render(view.camera);
     const std::vector<renderer::LpvGridFrame> placed = r->lpvCascadeFrames();
     ASSERT_FALSE(placed.empty());
-    render(yawed(view.camera, 5.0f));
+    render(scene::yawedAboutUp(view.camera, 5.0f));
     EXPECT_NE(r->lpvCascadeFrames().front().origin, placed.front().origin) << "the finest cascade should move";
     for (const Pass p : {Pass::Rsm, Pass::LpvInjection, Pass::LpvPropagation})
         EXPECT_EQ(status(*r, p), PassStatus::Ran) << scene::passName(p) << ": " << reason(*r, p);

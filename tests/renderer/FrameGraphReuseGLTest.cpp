@@ -4,6 +4,7 @@
 // image equals a frame rendered without reuse. The scene is the Cornell box
 // with its ceiling open and a sun shining in, so every LPV pass runs.
 #include "GlFixture.h"
+#include "GraphReportQueries.h"
 #include "OpenCornellBox.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
@@ -15,6 +16,8 @@
 #include <cmath>
 
 using namespace lpv;
+using test::reason;
+using test::status;
 using renderer::PassStatus;
 using scene::Pass;
 
@@ -46,14 +49,6 @@ class FrameGraphReuseGLTest : public GlTest, public ::testing::WithParamInterfac
     void render(renderer::ForwardRenderer& r) {
         auto ok = r.render(project.scene, params, project.scene.cameras.front(), kWidth, kHeight);
         ASSERT_TRUE(ok.has_value()) << ok.error().describe();
-    }
-    static PassStatus status(const renderer::ForwardRenderer& r, Pass p) {
-        const auto* report = r.graphReport().find(scene::passName(p));
-        return report ? report->status : PassStatus::Culled;
-    }
-    static std::string reason(const renderer::ForwardRenderer& r, Pass p) {
-        const auto* report = r.graphReport().find(scene::passName(p));
-        return report ? report->reason : "not in the graph";
     }
     // Whether this frame's timer has a sample of the pass.
     static bool timed(renderer::ForwardRenderer& r, Pass p) {

@@ -1,6 +1,7 @@
 // shaders/lpv_glossy.glsl against its C++ twin LpvGlossy.cpp: the same ray
 // march over the same two-cascade volume (stacked along z as LpvVolumes holds
 // it, sampled by the GL's trilinear filter), on random rays.
+#include "CaseKernel.h"
 #include "GlFixture.h"
 
 #include "lpv/renderer/GlHandle.h"
@@ -98,19 +99,7 @@ TEST_F(LpvGlossyGLTest, MarchMatchesTheCpuTwin) {
         glBindTextureUnit(GLuint(c), volumes[std::size_t(c)].id());
     }
 
-    Buffer in = createBuffer(), out = createBuffer();
-    glNamedBufferStorage(in.id(), GLsizeiptr(inputs.size() * sizeof(glm::vec4)), inputs.data(), 0);
-    std::vector<glm::vec4> gpu(2 * kCases, glm::vec4(-1234.0f));
-    glNamedBufferStorage(out.id(), GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data(), 0);
-    glUseProgram(p);
-    glUniform1ui(at("caseCount"), kCases);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glDispatchCompute((kCases + 63) / 64, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data());
-    glUseProgram(0);
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const std::vector<glm::vec4> gpu = runCaseKernel(p, inputs, kCases, 2);
 
     float peak = 0.0f, worst = 0.0f, worstReflectance = 0.0f;
     int sameCascade = 0, coarseFirst = 0;

@@ -1,6 +1,7 @@
 // shaders/sh3.glsl against its C++ twin ShBands.h (three bands, issue #47): the
 // same functions on 1000 random inputs, by a compute shader (sh3_test.comp)
 // and on the CPU.
+#include "CaseKernel.h"
 #include "GlFixture.h"
 
 #include "lpv/renderer/GlHandle.h"
@@ -37,19 +38,7 @@ TEST_F(Sh3GlslAgreement, EveryFunctionMatchesShBands) {
     }
     auto program = buildEmbeddedProgram({"sh3_test.comp"});
     ASSERT_TRUE(program.has_value()) << program.error().describe();
-    Buffer in = createBuffer(), out = createBuffer();
-    glNamedBufferStorage(in.id(), GLsizeiptr(inputs.size() * sizeof(glm::vec4)), inputs.data(), 0);
-    std::vector<glm::vec4> gpu(9 * kCases, glm::vec4(-1234.0f));
-    glNamedBufferStorage(out.id(), GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data(), 0);
-    glUseProgram(program->id());
-    glUniform1ui(glGetUniformLocation(program->id(), "caseCount"), kCases);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glDispatchCompute((kCases + 63) / 64, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data());
-    glUseProgram(0);
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const std::vector<glm::vec4> gpu = runCaseKernel(program->id(), inputs, kCases, 9);
 
     auto coefficientOf = [&](GLuint at, int k) {
         return k < 4 ? gpu[at][k] : k < 8 ? gpu[at + 1][k - 4] : gpu[at + 2].x;

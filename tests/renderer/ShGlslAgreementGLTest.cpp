@@ -1,5 +1,6 @@
 // shaders/sh.glsl against its C++ twin Sh.h: the same functions on 1000 random
 // inputs, evaluated by a compute shader (shaders/sh_test.comp) and on the CPU.
+#include "CaseKernel.h"
 #include "GlFixture.h"
 
 #include "lpv/renderer/GlHandle.h"
@@ -31,19 +32,7 @@ TEST_F(ShGlslAgreement, EveryFunctionMatchesShH) {
 
     auto program = buildEmbeddedProgram({"sh_test.comp"});
     ASSERT_TRUE(program.has_value()) << program.error().describe();
-    Buffer in = createBuffer(), out = createBuffer();
-    glNamedBufferStorage(in.id(), GLsizeiptr(inputs.size() * sizeof(glm::vec4)), inputs.data(), 0);
-    std::vector<glm::vec4> gpu(4 * kCases, glm::vec4(-1234.0f));
-    glNamedBufferStorage(out.id(), GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data(), 0);
-    glUseProgram(program->id());
-    glUniform1ui(glGetUniformLocation(program->id(), "caseCount"), kCases);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glDispatchCompute((kCases + 63) / 64, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(glm::vec4)), gpu.data());
-    glUseProgram(0);
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const std::vector<glm::vec4> gpu = runCaseKernel(program->id(), inputs, kCases, 4);
 
     const char* names[] = {"basis", "cosineLobe", "vplIntensity", "evaluate", "irradiance"};
     float worst[5] = {};

@@ -16,6 +16,7 @@
 #include "lpv/scene/ParameterRegistry.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -52,6 +53,15 @@ template <typename Gpu, typename Create> scene::Expected<void> createOnFirstRun(
         return std::unexpected(created.error());
     gpu.emplace(std::move(*created));
     return {};
+}
+
+// A pass around an object whose create() builds its shaders (so a shader
+// error shows when the renderer is made): the pass, or that error.
+template <typename Pass, typename Inner>
+scene::Expected<std::unique_ptr<Pass>> createAround(scene::Expected<Inner> inner) {
+    if (!inner)
+        return std::unexpected(inner.error());
+    return std::make_unique<Pass>(std::move(*inner));
 }
 
 // One entry of the frame's pass table.

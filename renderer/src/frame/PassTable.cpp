@@ -34,6 +34,8 @@ struct LpvStagePasses {
     static std::vector<std::unique_ptr<LpvStage>> create() { return makeLpvStages(); }
 };
 
+// One line per pass, as written:
+// clang-format off
 using FramePasses = PassList<
     ShadowMapsFramePass,
     RsmFramePass,
@@ -49,6 +51,7 @@ using FramePasses = PassList<
     SunRaysPass,
     ExposureFramePass,
     TonemapPass>;
+// clang-format on
 
 } // namespace
 
@@ -76,7 +79,8 @@ const std::vector<std::string>& frameGraphNames() {
         // Registry passes without a node of their own (glossy reflections are
         // part of shading; radiosity's solve and the reference are not frame passes).
         for (scene::Pass p : scene::allPasses())
-            if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity && p != scene::Pass::Reference)
+            if (p != scene::Pass::GlossyReflections && p != scene::Pass::Radiosity &&
+                p != scene::Pass::Reference)
                 all.push_back(scene::passName(p));
         FramePasses::addNames(all);
         std::vector<std::string> unique;

@@ -7,13 +7,6 @@
 
 namespace lpv::renderer {
 
-scene::Expected<std::unique_ptr<ExposureFramePass>> ExposureFramePass::create() {
-    auto meter = AutoExposurePass::create();
-    if (!meter)
-        return std::unexpected(meter.error());
-    return std::unique_ptr<ExposureFramePass>(new ExposureFramePass(std::move(*meter)));
-}
-
 void ExposureFramePass::setup(graph::PassSpec& pass, FrameState& state) {
     const bool autoExposure = state.frame.params.getEnum("output.exposureMode") == "auto";
     if (!autoExposure)

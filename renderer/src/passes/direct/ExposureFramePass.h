@@ -12,8 +12,12 @@ namespace lpv::renderer {
 
 class ExposureFramePass final : public GraphPass {
   public:
+    explicit ExposureFramePass(AutoExposurePass meter)
+        : GraphPass(scene::Pass::Exposure), meter_(std::move(meter)) {}
     // Its programs and buffers are made now: the buffer outlives manual frames.
-    static scene::Expected<std::unique_ptr<ExposureFramePass>> create();
+    static scene::Expected<std::unique_ptr<ExposureFramePass>> create() {
+        return createAround<ExposureFramePass>(AutoExposurePass::create());
+    }
 
     AutoExposurePass& meter() { return meter_; }
     const AutoExposurePass& meter() const { return meter_; }
@@ -28,8 +32,6 @@ class ExposureFramePass final : public GraphPass {
     scene::Expected<void> execute(graph::PassContext& ctx, FrameState& state) override;
 
   private:
-    explicit ExposureFramePass(AutoExposurePass meter)
-        : GraphPass(scene::Pass::Exposure), meter_(std::move(meter)) {}
     AutoExposurePass meter_;
     std::optional<double> timeStep_;
 };

@@ -6,13 +6,6 @@
 
 namespace lpv::renderer {
 
-scene::Expected<std::unique_ptr<ShadowMapsFramePass>> ShadowMapsFramePass::create() {
-    auto maps = ShadowPass::create();
-    if (!maps)
-        return std::unexpected(maps.error());
-    return std::unique_ptr<ShadowMapsFramePass>(new ShadowMapsFramePass(std::move(*maps)));
-}
-
 void ShadowMapsFramePass::setup(graph::PassSpec& pass, FrameState& state) {
     const FrameContext& frame = state.frame;
     state.graph.importResource(resources::ShadowMaps, [this] {

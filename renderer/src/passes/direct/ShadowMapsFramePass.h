@@ -9,8 +9,12 @@ namespace lpv::renderer {
 
 class ShadowMapsFramePass final : public GraphPass {
   public:
+    explicit ShadowMapsFramePass(ShadowPass maps)
+        : GraphPass(scene::Pass::ShadowMaps), maps_(std::move(maps)) {}
     // Its programs are built now, so a shader error shows when the renderer is created.
-    static scene::Expected<std::unique_ptr<ShadowMapsFramePass>> create();
+    static scene::Expected<std::unique_ptr<ShadowMapsFramePass>> create() {
+        return createAround<ShadowMapsFramePass>(ShadowPass::create());
+    }
 
     const ShadowPass& maps() const { return maps_; }
     void addGpuMemory(GpuMemoryLedger& ledger) const override { maps_.addGpuMemory(ledger); }
@@ -22,7 +26,6 @@ class ShadowMapsFramePass final : public GraphPass {
     scene::Expected<void> execute(graph::PassContext& ctx, FrameState& state) override;
 
   private:
-    explicit ShadowMapsFramePass(ShadowPass maps) : GraphPass(scene::Pass::ShadowMaps), maps_(std::move(maps)) {}
     ShadowPass maps_;
     // What the sun's cascade layers are drawn from this frame (ShadowPass::render's contentKey).
     std::uint64_t layersKey_ = 0;

@@ -7,13 +7,6 @@
 
 namespace lpv::renderer {
 
-scene::Expected<std::unique_ptr<RsmFramePass>> RsmFramePass::create() {
-    auto rsm = RsmPass::create();
-    if (!rsm)
-        return std::unexpected(rsm.error());
-    return std::unique_ptr<RsmFramePass>(new RsmFramePass(std::move(*rsm)));
-}
-
 void RsmFramePass::setup(graph::PassSpec& pass, FrameState& state) {
     importTexture(state.graph, resources::RsmPosition, [this] { return rsm_.positionArray(); });
     importTexture(state.graph, resources::RsmNormal, [this] { return rsm_.normalArray(); });

@@ -11,8 +11,11 @@ namespace lpv::renderer {
 
 class RsmFramePass final : public GraphPass {
   public:
+    explicit RsmFramePass(RsmPass rsm) : GraphPass(scene::Pass::Rsm), rsm_(std::move(rsm)) {}
     // Built with the renderer, so a shader error shows when it is created.
-    static scene::Expected<std::unique_ptr<RsmFramePass>> create();
+    static scene::Expected<std::unique_ptr<RsmFramePass>> create() {
+        return createAround<RsmFramePass>(RsmPass::create());
+    }
 
     const RsmPass& maps() const { return rsm_; }
     void addGpuMemory(GpuMemoryLedger& ledger) const override;
@@ -25,7 +28,6 @@ class RsmFramePass final : public GraphPass {
     void release() override { rsm_.release(); }
 
   private:
-    explicit RsmFramePass(RsmPass rsm) : GraphPass(scene::Pass::Rsm), rsm_(std::move(rsm)) {}
     RsmPass rsm_;
 };
 
