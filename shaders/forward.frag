@@ -7,9 +7,10 @@
 // frame/IndirectLight.h; gi.method = radiosity draws a baked solution's)
 // takes the indirect light from that image at this pixel
 // (screen_indirect.glsl) instead of the LPV, whose lookups it leaves out.
-// LPV_LOOKUP_UPSAMPLE (lpv.lookupResolution = half|quarter) takes the LPV's
-// diffuse light from the lpvLookup pass's low-resolution image, upsampled
-// (lpv_lookup_upsample.glsl), looking up itself only where that fails.
+// LPV_LOOKUP_RESOLVED (lpv.lookupResolution = half|quarter, opaque and
+// masked surfaces) takes the LPV's diffuse light from the lpvLookupResolve
+// pass's image of the view at this pixel (lpv_lookup_resolved.glsl): no
+// diffuse LPV lookup is compiled in.
 // Direct light: Blinn-Phong or glTF metallic-roughness (material.glsl,
 // brdf.glsl) with normal maps, shadows per light (shadow_sampling.glsl),
 // emissive. Output is linear HDR radiance; blended materials output it
@@ -46,10 +47,10 @@ layout(location = 2) out vec4 outAlbedo; // diffuse reflectance, linear; a = cov
 #include "lpv_lookup.glsl"
 #include "lpv_subsurface_lookup.glsl"
 #include "lpv_glossy.glsl"
-#ifdef LPV_LOOKUP_UPSAMPLE
-// lpv.lookupResolution = half|quarter: the lpvLookup pass's image, upsampled.
-#include "lpv_lookup_upsample.glsl"
-#define LPV_DIFFUSE_IRRADIANCE(x, n) lpvIrradianceUpsampled(x, n, vNormal, uCameraPos)
+#ifdef LPV_LOOKUP_RESOLVED
+// lpv.lookupResolution = half|quarter: the reduced-resolution lookup, resolved to this pixel.
+#include "lpv_lookup_resolved.glsl"
+#define LPV_DIFFUSE_IRRADIANCE(x, n) lpvIrradianceResolved()
 #else
 #define LPV_DIFFUSE_IRRADIANCE(x, n) lpvIrradiance(x, n)
 #endif

@@ -1,12 +1,13 @@
-// The LPV's diffuse lookup at reduced resolution, upsampled (forward.frag's
-// LPV_LOOKUP_UPSAMPLE variant; the lpvLookup pass, LpvLookupPass.cpp, drew
-// it): a joint bilateral upsample over the 2x2 low-resolution texels around
-// this pixel, each weighted by its bilinear weight, by how well its distance
-// from the camera fits this surface's and by how close its normal is to this
-// pixel's (cos^8: 20 degrees apart 0.61, 45 degrees 0.06) (both the interpolated vertex normal seen from the viewer's side).
-// Where all the weights are tiny (an edge whose neighbours lie on other
-// surfaces, a blended surface over the opaque one they saw), the pixel looks
-// the LPV up itself. Needs lpv_lookup.glsl before it.
+// The LPV's diffuse lookup at reduced resolution, upsampled (the
+// lpvLookupResolve pass's lpv_lookup_resolve.frag; the lpvLookup pass,
+// LpvLookupPass.cpp, drew the low-resolution image): a joint bilateral
+// upsample over the 2x2 low-resolution texels around this pixel, each
+// weighted by its bilinear weight, by how well its distance from the camera
+// fits this surface's and by how close its normal is to this pixel's (cos^8:
+// 20 degrees apart 0.61, 45 degrees 0.06) (both the interpolated vertex
+// normal seen from the viewer's side). Where all the weights are tiny (an
+// edge whose neighbours lie on other surfaces) it says so, and the pixel is
+// looked up at full resolution (lpv_lookup_fallback.comp).
 
 uniform sampler2D uLpvLowIrradiance; // rgb E, a distance x uLpvLowDistanceScale (< 0: no surface)
 uniform sampler2D uLpvLowNormal;     // n * 0.5 + 0.5 (0: no surface)
@@ -16,17 +17,20 @@ uniform float uLpvLowDistanceScale;
 // Below this summed weight no neighbour lies on this pixel's surface.
 const float LPV_UPSAMPLE_MIN_WEIGHT = 1e-3;
 
-// Irradiance at x (normal n, after normal mapping, for the fallback lookup);
-// vertexNormal the interpolated normal, turned to the viewer's side here.
-vec3 lpvIrradianceUpsampled(vec3 x, vec3 n, vec3 vertexNormal, vec3 cameraPos) {
-    vec3 toViewer = cameraPos - x;
+// The interpolated normal at x turned to the viewer's side (material.glsl's
+// rule: the geometric normal turned to the viewer decides).
+vec3 lpvViewerSideNormal(vec3 x, vec3 vertexNormal, vec3 cameraPos) {
     vec3 ng = cross(dFdx(x), dFdy(x));
-    if (dot(ng, toViewer) < 0.0)
+    if (dot(ng, cameraPos - x) < 0.0)
         ng = -ng;
     vec3 nv = normalize(vertexNormal);
-    if (dot(nv, ng) < 0.0)
-        nv = -nv;
-    float d = length(toViewer) * uLpvLowDistanceScale;
+    return dot(nv, ng) < 0.0 ? -nv : nv;
+}
+
+// The upsampled irradiance at x into e; false where no low-resolution
+// neighbour lies on this surface. nv: lpvViewerSideNormal's.
+bool lpvIrradianceUpsampled(vec3 x, vec3 nv, vec3 cameraPos, out vec3 e) {
+    float d = length(cameraPos - x) * uLpvLowDistanceScale;
     // The distance changes this much across one low-resolution texel on this
     // surface (a plane seen at a grazing angle changes fast); plus 1% for
     // curvature and the half float's rounding.
@@ -54,7 +58,6 @@ vec3 lpvIrradianceUpsampled(vec3 x, vec3 n, vec3 vertexNormal, vec3 cameraPos) {
         sum += w * low.rgb;
         weights += w;
     }
-    if (weights < LPV_UPSAMPLE_MIN_WEIGHT)
-        return lpvIrradiance(x, n);
-    return sum / weights;
+    e = weights < LPV_UPSAMPLE_MIN_WEIGHT ? vec3(0.0) : sum / weights;
+    return weights >= LPV_UPSAMPLE_MIN_WEIGHT;
 }

@@ -1,6 +1,7 @@
 // The LPV's lookup at reduced resolution (lpv.lookupResolution, issue #48
-// item 1): the lpvLookup pass runs only at half or quarter, and the
-// upsampled indirect light stays close to the full-resolution lookup.
+// item 1): the lpvLookup and lpvLookupResolve passes run only at half or
+// quarter, shading then reads the resolved image, and the upsampled indirect
+// light stays close to the full-resolution lookup.
 #include "GlFixture.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
@@ -27,13 +28,17 @@ struct Frame {
     std::vector<float> hdr; // RGBA
     std::vector<float> depth;
     renderer::PassStatus lookup = renderer::PassStatus::Culled;
+    renderer::PassStatus resolve = renderer::PassStatus::Culled;
+    std::vector<std::string> shadingReads;
 };
 
 // The Cornell template's indirect layer (output.view = indirect: the LPV's
 // irradiance, no albedo) after three frames (the geometry volume reads the
 // previous frame's G-buffer), at `resolution`.
-Frame renderIndirect(const std::string& resolution, scene::Project project = scene::makeCornellBoxProject()) {
+Frame renderIndirect(const std::string& resolution, scene::Project project = scene::makeCornellBoxProject(),
+                     bool depthPrepass = true) {
     EXPECT_TRUE(project.parameters.set("output.view", std::string("indirect")).has_value());
+    EXPECT_TRUE(project.parameters.set("output.depthPrepass", depthPrepass).has_value());
     EXPECT_TRUE(project.parameters.set("lpv.lookupResolution", resolution).has_value());
     Frame frame;
     auto r = renderer::ForwardRenderer::create();
@@ -47,6 +52,10 @@ Frame renderIndirect(const std::string& resolution, scene::Project project = sce
     }
     if (const auto* report = r->graphReport().find("lpvLookup"))
         frame.lookup = report->status;
+    if (const auto* report = r->graphReport().find("lpvLookupResolve"))
+        frame.resolve = report->status;
+    if (const auto* report = r->graphReport().find("shading"))
+        frame.shadingReads = report->reads;
     frame.hdr = r->readHdr();
     frame.depth = r->readDepth();
     return frame;
@@ -88,9 +97,19 @@ TEST_F(LpvLookupResolutionGLTest, HalfAndQuarterStayCloseToTheFullResolutionLook
     const Frame half = renderIndirect("half");
     const Frame quarter = renderIndirect("quarter");
     EXPECT_EQ(full.lookup, renderer::PassStatus::Culled) << "at full resolution shading looks up itself";
+    EXPECT_EQ(full.resolve, renderer::PassStatus::Culled);
     // Ran, then reused by the still camera's later frames.
     EXPECT_NE(half.lookup, renderer::PassStatus::Culled);
     EXPECT_NE(quarter.lookup, renderer::PassStatus::Culled);
+    EXPECT_NE(half.resolve, renderer::PassStatus::Culled);
+    EXPECT_NE(quarter.resolve, renderer::PassStatus::Culled);
+    // Shading reads the resolved image (one texel a pixel), not the low-resolution one.
+    const auto reads = [](const Frame& f, const char* name) {
+        return std::ranges::find(f.shadingReads, std::string(name)) != f.shadingReads.end();
+    };
+    EXPECT_TRUE(reads(quarter, "lpv.resolved"));
+    EXPECT_FALSE(reads(quarter, "lpv.lookup"));
+    EXPECT_FALSE(reads(full, "lpv.resolved"));
     ASSERT_EQ(full.hdr.size(), std::size_t(kSize * kSize * 4));
     ASSERT_EQ(half.hdr.size(), full.hdr.size());
     ASSERT_EQ(quarter.hdr.size(), full.hdr.size());
@@ -158,6 +177,19 @@ TEST_F(LpvLookupResolutionGLTest, APixelWithNoNeighbourOnItsSurfaceLooksUpItself
     EXPECT_GT(contrast, 0.1) << "the walls' light would pass for the pole's: the case tests nothing";
     EXPECT_LT(mean, 0.02); // measured 0.0068 (worst 0.113, at the pole's ends)
     EXPECT_LT(worst, 0.25);
+}
+
+// Without the camera's depth pre-pass the resolve draws its own depth first:
+// the same surfaces, the same image.
+TEST_F(LpvLookupResolutionGLTest, WithoutTheDepthPrepassTheResolveFindsTheSameSurfaces) {
+    const Frame withPrepass = renderIndirect("quarter", cornellWithPole());
+    const Frame without = renderIndirect("quarter", cornellWithPole(), false);
+    EXPECT_NE(without.resolve, renderer::PassStatus::Culled);
+    ASSERT_EQ(without.hdr.size(), withPrepass.hdr.size());
+    const Difference d = difference(without.hdr, withPrepass.hdr);
+    ASSERT_GT(d.pixels, std::size_t(kSize * kSize / 2));
+    std::printf("quarter without vs with the depth pre-pass: mean relative difference %.6f\n", d.meanRelative);
+    EXPECT_LT(d.meanRelative, 1e-3);
 }
 
 } // namespace

@@ -31,8 +31,10 @@ struct IndirectLight {
         // shading multiplies it by the albedo. Replaces the LPV's lookups (at most one per frame).
         ScreenIncident,
         // The LPV's diffuse lookup drawn at reduced resolution (the lpvLookup pass,
-        // lpv.lookupResolution): shading upsamples it (lpv_lookup_upsample.glsl) in
-        // place of its own per-pixel lookup; LpvVolume still serves the fallback, glossy and subsurface.
+        // lpv.lookupResolution) and resolved to an image of the view (lpvLookupResolve):
+        // shading's opaque and masked draws read their pixel of it in place of their own
+        // lookup (lpv_lookup_resolved.glsl); blended draws leave its defines out and look
+        // the LPV up themselves. LpvVolume still serves glossy and subsurface.
         LpvReducedResolution,
     };
     graph::PassId provider;

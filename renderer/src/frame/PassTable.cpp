@@ -17,6 +17,7 @@
 #include "passes/lpv/EmissiveVplsFramePass.h"
 #include "passes/lpv/LocalRsmFramePass.h"
 #include "passes/lpv/LpvLookupPass.h"
+#include "passes/lpv/LpvLookupResolvePass.h"
 #include "passes/lpv/LpvStages.h"
 #include "passes/lpv/RsmFramePass.h"
 #include "passes/lpv/SkyHeightFramePass.h"
@@ -47,6 +48,7 @@ using FramePasses = PassList<
     DepthPrepassPass,
     RadiosityIndirectPass,
     LpvLookupPass,
+    LpvLookupResolvePass,
     ShadingPass,
     SunRaysPass,
     ExposureFramePass,

@@ -206,12 +206,15 @@ scene::Expected<void> ShadingPass::execute(graph::PassContext& ctx, FrameState& 
     // After the pre-pass: depth tested before shading, equal to the nearest surface, not written again.
     const bool afterPrepass = state.depthPrepass;
     const std::vector<IndirectLight>& lights = state.indirectLight;
-    std::vector<std::string> indirectDefines;
+    // An image of the LPV's lookup resolved to each pixel (LpvReducedResolution)
+    // describes the opaque surface there: blended draws over it look up themselves.
+    std::vector<std::string> solidDefines, blendedDefines;
     for (const IndirectLight& light : lights)
-        if (light.defines)
-            light.defines(indirectDefines);
-    const CachedProgram& shader = variant(state, indirectDefines);
-    const GLuint fp = shader.id();
+        if (light.defines) {
+            light.defines(solidDefines);
+            if (light.lookup != Lookup::LpvReducedResolution)
+                light.defines(blendedDefines);
+        }
     attach(ctx);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, frame.width, frame.height);
@@ -229,30 +232,34 @@ scene::Expected<void> ShadingPass::execute(graph::PassContext& ctx, FrameState& 
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, zero);
     if (!afterPrepass)
         glClear(GL_DEPTH_BUFFER_BIT);
-    glUseProgram(fp);
-    glProgramUniformMatrix4fv(fp, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-    glProgramUniform3fv(fp, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
-    glProgramUniform1i(fp, shader.uniform("uOutputView"), view);
-    setLightUniforms(shader, frame.scene);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLtcTableBinding, ltcTable_.id());
-    // Texture units come from the graph, around the units MaterialGpu binds per draw.
-    state.shadowMaps->bindForShading(shader, frame, [&ctx] { return ctx.allocateUnit(); });
-    // The indirect light: each declared lookup bound by its provider, the
-    // others' samplers pointed at nothing (forward.frag still declares them).
-    if (const IndirectLight* lpv = find(lights, Lookup::LpvVolume))
-        lpv->bind(shader, ctx);
-    else
-        bindNoLpv(shader, ctx);
-    if (const IndirectLight* reduced = find(lights, Lookup::LpvReducedResolution))
-        reduced->bind(shader, ctx);
-    if (const IndirectLight* subsurface = find(lights, Lookup::SubsurfaceVolume))
-        subsurface->bind(shader, ctx);
-    else if (subsurfaceSampler_)
-        LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
-    bindGlossyReflections(shader, frame.params, glossyRuns_);
-    if (const IndirectLight* screen = find(lights, Lookup::ScreenIncident))
-        ctx.bindTexture(fp, shader.uniform("uIndirectIncident"), screen->reads.front());
-    glProgramUniform1i(fp, shader.uniform("uShadowCascadeTint"), cascadeTint_ ? 1 : 0);
+    // Sets a variant's uniforms and binds what it samples. Texture units come
+    // from the graph, around the units MaterialGpu binds per draw.
+    auto prepare = [&](const CachedProgram& shader) {
+        const GLuint fp = shader.id();
+        glUseProgram(fp);
+        glProgramUniformMatrix4fv(fp, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
+        glProgramUniform3fv(fp, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+        glProgramUniform1i(fp, shader.uniform("uOutputView"), view);
+        setLightUniforms(shader, frame.scene);
+        state.shadowMaps->bindForShading(shader, frame, [&ctx] { return ctx.allocateUnit(); });
+        // The indirect light: each declared lookup bound by its provider, the
+        // others' samplers pointed at nothing (forward.frag still declares them).
+        if (const IndirectLight* lpv = find(lights, Lookup::LpvVolume))
+            lpv->bind(shader, ctx);
+        else
+            bindNoLpv(shader, ctx);
+        if (const IndirectLight* reduced = find(lights, Lookup::LpvReducedResolution))
+            reduced->bind(shader, ctx);
+        if (const IndirectLight* subsurface = find(lights, Lookup::SubsurfaceVolume))
+            subsurface->bind(shader, ctx);
+        else if (subsurfaceSampler_)
+            LpvSubsurfacePass::bindNone(shader, ctx.allocateUnit());
+        bindGlossyReflections(shader, frame.params, glossyRuns_);
+        if (const IndirectLight* screen = find(lights, Lookup::ScreenIncident))
+            ctx.bindTexture(fp, shader.uniform("uIndirectIncident"), screen->reads.front());
+        glProgramUniform1i(fp, shader.uniform("uShadowCascadeTint"), cascadeTint_ ? 1 : 0);
+    };
     const auto items = buildDrawList(state.sceneGpu->draws(), frame.viewProj, frame.camera.position, &stats_);
     // Opaque and masked items first; blended ones (sorted last, back to
     // front) over them with depth test but no depth write, and without
@@ -261,8 +268,16 @@ scene::Expected<void> ShadingPass::execute(graph::PassContext& ctx, FrameState& 
     const std::vector<const DrawItem*> solid(items.begin(), firstBlended), blended(firstBlended, items.end());
     const SceneGpu& scene = *state.sceneGpu;
     MaterialGpu& materials = *state.materialGpu;
+    const CachedProgram& solidShader = variant(state, solidDefines);
+    prepare(solidShader);
+    GLuint fp = solidShader.id();
     scene.draw(fp, solid, [&](std::uint32_t m) { materials.bind(fp, m, MaterialBindMode::Full); });
     if (!blended.empty()) {
+        const CachedProgram& blendedShader = blendedDefines == solidDefines ? solidShader : variant(state, blendedDefines);
+        if (&blendedShader != &solidShader) {
+            prepare(blendedShader);
+            fp = blendedShader.id();
+        }
         glDepthMask(GL_FALSE);
         glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

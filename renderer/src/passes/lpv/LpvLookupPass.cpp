@@ -44,7 +44,7 @@ void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
         pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
     else
         pass.decision = runsBecause(setting + ": the LPV's lookup once per " + std::to_string(reduction) + "x" +
-                                    std::to_string(reduction) + " pixels, upsampled by shading");
+                                    std::to_string(reduction) + " pixels, upsampled by lpvLookupResolve");
     pass.writes = {resources::LpvLookup, resources::LpvLookupNormal, resources::LpvLookupDepth};
     if (!pass.decision.runs()) {
         // Named, so the report and --dump can say why they hold nothing; not allocated.
@@ -63,23 +63,6 @@ void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
     pass.inputsKey = state.cameraKey();
     const LpvPass* lpv = state.lpv.lpv;
     visibility_ = lpv->visibilityBound();
-
-    // Shading upsamples it (lpv_lookup_upsample.glsl) in place of its own diffuse lookup.
-    IndirectLight light;
-    light.provider = id();
-    light.lookup = IndirectLight::Lookup::LpvReducedResolution;
-    light.reads = {resources::LpvLookup, resources::LpvLookupNormal};
-    light.defines = [](std::vector<std::string>& defines) { defines.push_back("LPV_LOOKUP_UPSAMPLE 1"); };
-    const glm::vec2 scale(float(w) / float(frame.width), float(h) / float(frame.height));
-    const float distanceScale = 1.0f / frame.camera.farPlane;
-    light.bind = [scale, distanceScale](const CachedProgram& shader, graph::PassContext& ctx) {
-        const GLuint p = shader.id();
-        ctx.bindTexture(p, shader.uniform("uLpvLowIrradiance"), resources::LpvLookup);
-        ctx.bindTexture(p, shader.uniform("uLpvLowNormal"), resources::LpvLookupNormal);
-        glProgramUniform2f(p, shader.uniform("uLpvLowScale"), scale.x, scale.y);
-        glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), distanceScale);
-    };
-    state.indirectLight.push_back(std::move(light));
 }
 
 scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState& state) {

@@ -5,11 +5,11 @@
 // It draws the opaque and masked surfaces from the camera into its own small
 // targets: lpv.lookup (RGBA16F: rgb the irradiance, a the distance from the
 // camera over its far plane) and lpv.lookupNormal (the interpolated vertex
-// normal, turned toward the viewer). It declares itself as an indirect light
-// (frame/IndirectLight.h, Lookup::LpvReducedResolution): shading upsamples it
-// with depth- and normal-aware weights over the 2x2 low-resolution
-// neighbours (lpv_lookup_upsample.glsl) and looks up at full resolution where
-// none of them lies on its surface. At full resolution it does not run.
+// normal, turned toward the viewer). The lpvLookupResolve pass
+// (LpvLookupResolvePass.h) upsamples it with depth- and normal-aware weights
+// over the 2x2 low-resolution neighbours (lpv_lookup_upsample.glsl) into an
+// image of the view that shading reads, and looks up at full resolution
+// where none of them lies on its surface. At full resolution it does not run.
 #include "frame/FramePass.h"
 #include "gl/ProgramCache.h"
 #include "lpv/renderer/GlHandle.h"
