@@ -1,6 +1,7 @@
 // One gather step of the three-band LPV (issue #47), the GLSL twin of
 // lpvref::bands::propagateStep<3> (docs/lpv.md, "Three bands"): the 30
-// face-transfer terms and the occluded transfer into one destination cell.
+// face-transfer terms and the occluded transfer into one destination cell,
+// in a per-axis form like lpv_common.glsl's two-band lpvSend.
 // Include sh.glsl and sh3.glsl first. The caller supplies the volume access
 // (defined before including this file):
 //   void lpv3Sources(ivec3 q, out Sh9 r, out Sh9 g, out Sh9 b)
@@ -10,7 +11,7 @@
 // and may define before it (defaults in brackets): LPV3_GRID, cells per axis
 // [uGridSize3]; LPV3_STRENGTH, lpv.occlusionStrength [uStrength3];
 // LPV3_TWO_SIDED, lpv.twoSidedOcclusion [false]; LPV3_DIRECTED, the
-// destination's dilated VPL normal for directed propagation [none].
+// destination's dilated VPL normal for directed propagation [vec3(0): none].
 #ifndef LPV3_GRID
 #define LPV3_GRID uGridSize3
 #endif
@@ -20,60 +21,120 @@
 #ifndef LPV3_TWO_SIDED
 #define LPV3_TWO_SIDED false
 #endif
-const ivec3 LPV3_AXES[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0),
-                                    ivec3(0, 0, 1), ivec3(0, 0, -1));
+#ifndef LPV3_DIRECTED
+#define LPV3_DIRECTED vec3(0.0)
+#endif
 const float LPV3_FRONT_SOLID_ANGLE = 0.4006696846;
 const float LPV3_SIDE_SOLID_ANGLE = 0.4234313544;
+const float LPV3_SIDE_MAIN = 0.894427191; // 1 / sqrt(1.25)
+const float LPV3_SIDE_OFF = 0.447213595;  // 0.5 / sqrt(1.25)
 
-// Face f of travel direction d: from the source's centre towards the face's
-// centre, dir = normalize(d + 0.5 n_f); gather = omega_f Y(dir), emit = cosineLobe(n_f) / pi.
-Sh9 lpv3GatherTerm(ivec3 d, ivec3 nf) {
-    float omega = nf == d ? LPV3_FRONT_SOLID_ANGLE : LPV3_SIDE_SOLID_ANGLE;
-    return sh9Scale(sh9Basis(normalize(vec3(d) + 0.5 * vec3(nf))), omega);
+// The per-axis form. On unit directions an SH vector of three bands is
+// f(w) = dc + v.w + w^T Q w (3z^2 - 1 = 2z^2 - x^2 - y^2 there), with
+// dc = Y00 c0, v = Y1 (-c3, -c1, c2) and Q symmetric and traceless from band 2.
+// For travel sigma e_a (side axes b, c) the 5 face directions are sigma e_a
+// and (sigma e_a +- 0.5 e_b) / sqrt(1.25), ..., so f there is a few
+// multiply-adds of dc, v and Q: the gather term omega_f Y(dir_f) dotted
+// with the source, without the 9 x 30 table.
+void lpv3Quadratic(Sh9 f, out float dc, out vec3 v, out mat3 q) {
+    dc = SH_Y0 * f.low.x;
+    v = SH_Y1 * vec3(-f.low.w, -f.low.y, f.low.z);
+    float xx = -SH_Y20 * f.high.z + SH_Y22 * f.last, yy = -SH_Y20 * f.high.z - SH_Y22 * f.last;
+    float xy = 0.5 * SH_Y2 * f.high.x, yz = -0.5 * SH_Y2 * f.high.y, xz = -0.5 * SH_Y2 * f.high.w;
+    q = mat3(xx, xy, xz, xy, yy, yz, xz, yz, 2.0 * SH_Y20 * f.high.z);
 }
-Sh9 lpv3EmitTerm(ivec3 nf) { return sh9Scale(sh9CosineLobe(vec3(nf)), 1.0 / SH_PI); }
 
-bool lpv3Inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(LPV3_GRID))); }
+// f at the front direction sigma e_a and at the 4 side directions (+b, -b, +c, -c).
+void lpv3AtFaces(int a, float sigma, float dc, vec3 v, mat3 q, out float front, out vec4 sides) {
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    front = dc + sigma * v[a] + q[a][a];
+    float along = dc + sigma * LPV3_SIDE_MAIN * v[a];
+    float towardB = along + 0.8 * (q[a][a] + 0.25 * q[b][b]), towardC = along + 0.8 * (q[a][a] + 0.25 * q[c][c]);
+    float acrossB = LPV3_SIDE_OFF * v[b] + sigma * 0.8 * q[a][b], acrossC = LPV3_SIDE_OFF * v[c] + sigma * 0.8 * q[a][c];
+    sides = vec4(towardB + acrossB, towardB - acrossB, towardC + acrossC, towardC - acrossC);
+}
 
-// 1 - clamp(strength B(-travel)) for the blocking potential B on a face
-// (two-sided: the larger of B(-travel) and B(travel)).
-float lpv3Transmittance(Sh9 blocking, vec3 travel) {
-    float blocked = sh9Evaluate(blocking, -travel);
-    if (LPV3_TWO_SIDED)
-        blocked = max(blocked, sh9Evaluate(blocking, travel));
-    return 1.0 - clamp(LPV3_STRENGTH * blocked, 0.0, 1.0);
+// One channel's flux through the 5 faces, with transmittances t, summed by the
+// face normal's axis: F (all) and S (signed by the normal's direction).
+void lpv3SendChannel(int a, float sigma, Sh9 f, float t0, vec4 tSide, inout vec3 flux, inout vec3 signedFlux) {
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    float dc, front;
+    vec3 v;
+    mat3 q;
+    vec4 sides;
+    lpv3Quadratic(f, dc, v, q);
+    lpv3AtFaces(a, sigma, dc, v, q, front, sides);
+    front = max(0.0, front) * (LPV3_FRONT_SOLID_ANGLE * t0);
+    sides = max(vec4(0.0), sides) * (LPV3_SIDE_SOLID_ANGLE * tSide);
+    flux[a] += front;
+    signedFlux[a] += sigma * front;
+    flux[b] += sides.x + sides.y;
+    signedFlux[b] += sides.x - sides.y;
+    flux[c] += sides.z + sides.w;
+    signedFlux[c] += sides.z - sides.w;
+}
+
+// The re-emitted lobes summed: cosineLobe(n_f) / pi of an axis normal has
+// DC Y00, one band-1 coefficient 2/3 Y1, and of band 2 only Y20 (1/4 Y20
+// (3 n_z^2 - 1)) and Y22 (1/4 Y22 (n_x^2 - n_y^2)).
+Sh9 lpv3Finish(vec3 flux, vec3 signedFlux) {
+    float k1 = (2.0 / 3.0) * SH_Y1;
+    return Sh9(vec4(SH_Y0 * (flux.x + flux.y + flux.z), -k1 * signedFlux.y, k1 * signedFlux.z, -k1 * signedFlux.x),
+               vec4(0.0, 0.0, 0.25 * SH_Y20 * (2.0 * flux.z - flux.x - flux.y), 0.0),
+               0.25 * SH_Y22 * (flux.x - flux.y));
+}
+
+// Light from the neighbour q = p - sigma e_a. No branch: a neighbour outside
+// the grid is read at the clamped cell and weighted by 0 (as lpvGatherFrom).
+void lpv3GatherFrom(int a, float sigma, ivec3 p, bool occlusion, inout vec3 fluxR, inout vec3 signedR,
+                    inout vec3 fluxG, inout vec3 signedG, inout vec3 fluxB, inout vec3 signedB) {
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    ivec3 d = ivec3(0);
+    d[a] = int(sigma);
+    ivec3 q = p - d;
+    float inside = (q[a] >= 0 && q[a] < LPV3_GRID) ? 1.0 : 0.0; // p is inside: only axis a can leave
+    q[a] = clamp(q[a], 0, LPV3_GRID - 1);
+    Sh9 r, g, bl;
+    lpv3Sources(q, r, g, bl);
+    // Transmittance 1 - clamp(strength B(-dir)) per face, the GV at the face's
+    // centre q + 0.5 + 0.5 d (two-sided: the larger of B(-dir) and B(dir)).
+    float t0 = inside;
+    vec4 tSide = vec4(inside);
+    if (occlusion) {
+        float dcB, blockedFront, otherFront;
+        vec3 vB;
+        mat3 qB;
+        vec4 blockedSides, otherSides;
+        lpv3Quadratic(lpv3BlockingBetween(q, d), dcB, vB, qB);
+        lpv3AtFaces(a, sigma, dcB, -vB, qB, blockedFront, blockedSides);
+        if (LPV3_TWO_SIDED) {
+            lpv3AtFaces(a, sigma, dcB, vB, qB, otherFront, otherSides);
+            blockedFront = max(blockedFront, otherFront);
+            blockedSides = max(blockedSides, otherSides);
+        }
+        t0 *= 1.0 - clamp(LPV3_STRENGTH * blockedFront, 0.0, 1.0);
+        tSide *= vec4(1.0) - clamp(LPV3_STRENGTH * blockedSides, 0.0, 1.0);
+    }
+    // Directed propagation: each re-emitted lobe n_f weighted by min(1, 1 + n_f . directed).
+    vec3 directed = LPV3_DIRECTED;
+    t0 *= min(1.0, 1.0 + sigma * directed[a]);
+    tSide *= min(vec4(1.0), vec4(1.0) + vec4(directed[b], -directed[b], directed[c], -directed[c]));
+    lpv3SendChannel(a, sigma, r, t0, tSide, fluxR, signedR);
+    lpv3SendChannel(a, sigma, g, t0, tSide, fluxG, signedG);
+    lpv3SendChannel(a, sigma, bl, t0, tSide, fluxB, signedB);
 }
 
 // The light gathered into cell p, per channel; `occlusion` false: no GV.
 void lpv3Gather(ivec3 p, bool occlusion, out Sh9 outR, out Sh9 outG, out Sh9 outB) {
-    outR = Sh9(vec4(0.0), vec4(0.0), 0.0);
-    outG = outR;
-    outB = outR;
-    for (int a = 0; a < 6; ++a) {
-        ivec3 d = LPV3_AXES[a];
-        ivec3 q = p - d;
-        if (!lpv3Inside(q))
-            continue;
-        Sh9 r, g, b;
-        lpv3Sources(q, r, g, b);
-        // The CPU twin samples the GV at the face's centre, q + 0.5 + 0.5 d, for all 5 faces.
-        Sh9 blocking = occlusion ? lpv3BlockingBetween(q, d) : Sh9(vec4(0.0), vec4(0.0), 0.0);
-        for (int f = 0; f < 6; ++f) {
-            ivec3 nf = LPV3_AXES[f];
-            if (nf == -d)
-                continue; // the face shared with q: light enters there
-            vec3 dir = normalize(vec3(d) + 0.5 * vec3(nf));
-            float t = occlusion ? lpv3Transmittance(blocking, dir) : 1.0;
-#ifdef LPV3_DIRECTED
-            t *= min(1.0, 1.0 + dot(vec3(nf), LPV3_DIRECTED)); // lpvref::directedWeight
-#endif
-            Sh9 gather = lpv3GatherTerm(d, nf), emit = lpv3EmitTerm(nf);
-            float fr = max(0.0, sh9Dot(r, gather)) * t;
-            float fg = max(0.0, sh9Dot(g, gather)) * t;
-            float fb = max(0.0, sh9Dot(b, gather)) * t;
-            outR = Sh9(outR.low + fr * emit.low, outR.high + fr * emit.high, outR.last + fr * emit.last);
-            outG = Sh9(outG.low + fg * emit.low, outG.high + fg * emit.high, outG.last + fg * emit.last);
-            outB = Sh9(outB.low + fb * emit.low, outB.high + fb * emit.high, outB.last + fb * emit.last);
-        }
-    }
+    vec3 fR = vec3(0.0), sR = vec3(0.0), fG = vec3(0.0), sG = vec3(0.0), fB = vec3(0.0), sB = vec3(0.0);
+    // Literal directions, so that the compiler folds every axis index.
+    lpv3GatherFrom(0, 1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    lpv3GatherFrom(0, -1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    lpv3GatherFrom(1, 1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    lpv3GatherFrom(1, -1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    lpv3GatherFrom(2, 1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    lpv3GatherFrom(2, -1.0, p, occlusion, fR, sR, fG, sG, fB, sB);
+    outR = lpv3Finish(fR, sR);
+    outG = lpv3Finish(fG, sG);
+    outB = lpv3Finish(fB, sB);
 }
