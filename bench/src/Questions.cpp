@@ -17,9 +17,8 @@ const std::vector<Question>& reportQuestions() {
         // llvmpipe: the render refuses it. Not in --quick: x2 alone costs
         // 13x the fitted frame.
         {"convergence", "lpv.refinement=0.5,1,2", ""},
-        // Three SH bands against two (issue #47) at the project's settings:
-        // three run in the compute gather and take the geometry volume from
-        // the views (the scene's has two bands; docs/lpv.md, "Three bands").
+        // Three SH bands against two (issue #47) at the project's settings
+        // (three run in the compute gather; docs/lpv.md, "Three bands").
         {"bands", "lpv.shBands=2,3", ""},
         {"rsm", "rsm.tileSize=64,128,256,512,1024", ""},
         {"variant", "lpv.variant=computeGather,computeScatter,rasterGather,rasterScatter", ""},

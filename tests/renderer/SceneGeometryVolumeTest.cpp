@@ -9,6 +9,7 @@
 
 #include "lpv/importers/Importer.h"
 #include "lpv/renderer/lpv/SceneGeometryVolume.h"
+#include "lpv/renderer/lpv/LpvBands.h"
 
 #include <gtest/gtest.h>
 
@@ -105,6 +106,48 @@ TEST(WorldGv, ACascadesWindowIsInjectingTheSameSurfelsIntoIt) {
     }
     std::cout << "[ figures ] window against injection: max difference " << worst << " of peak " << peak << "\n";
     EXPECT_LT(worst, 1e-5 * peak);
+}
+
+// Three SH bands (lpv.shBands = 3, issue #47): the window's bands 0-1 and
+// band 2 together are the CPU twin's three-band GV of the same surfels.
+TEST(WorldGv, AThreeBandWindowIsTheThreeBandTwinsInjection) {
+    const float cell = 0.25f;
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> cellIndex(-12, 12);
+    std::uniform_real_distribution<float> fraction(-0.4f, 0.4f), unit(-1.0f, 1.0f), area(0.001f, 0.1f);
+    std::vector<ref::Surfel> surfels;
+    for (int i = 0; i < 3000; ++i) {
+        ref::Surfel p;
+        for (int a = 0; a < 3; ++a)
+            p.position[a] = (float(cellIndex(rng)) + fraction(rng)) * cell;
+        glm::vec3 n(unit(rng), unit(rng), unit(rng));
+        p.normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
+        p.area = area(rng);
+        surfels.push_back(p);
+    }
+    const ref::WorldGv world = ref::buildWorldGv(surfels, cell, 3);
+    ASSERT_EQ(world.band2.size(), world.cells.size());
+    EXPECT_TRUE(ref::buildWorldGv(surfels, cell).band2.empty()) << "two bands keep no band 2";
+    const ref::GridFrame grid{glm::vec3(-2.0f, -1.0f, 0.5f), cell, 16};
+    const std::size_t m = std::size_t(grid.n) + 1, cells = m * m * m;
+    std::vector<glm::vec4> low(cells), high(2 * cells);
+    ref::windowInto(world, grid, low);
+    ref::windowBand2Into(world, grid, high);
+    const auto twin = ref::bands::injectSurfels<3>(grid, surfels);
+    double worst = 0.0, peak2 = 0.0;
+    for (std::size_t i = 0; i < cells; ++i) {
+        const float window[9] = {low[i].x,      low[i].y,      low[i].z,      low[i].w,         high[2 * i].x,
+                                 high[2 * i].y, high[2 * i].z, high[2 * i].w, high[2 * i + 1].x};
+        for (int j = 0; j < 9; ++j) {
+            worst = std::max(worst, double(std::abs(window[j] - twin.potential[i][j])));
+            if (j >= 4)
+                peak2 = std::max(peak2, double(std::abs(twin.potential[i][j])));
+        }
+    }
+    std::cout << "[ figures ] three-band window against the twin's injection: max difference " << worst
+              << ", band 2 peak " << peak2 << "\n";
+    EXPECT_GT(peak2, 0.05);
+    EXPECT_LT(worst, 1e-5);
 }
 
 TEST(WorldGv, AnUnsnappedCascadeReadsTheNearestWorldCells) {

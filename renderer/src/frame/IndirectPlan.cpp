@@ -102,7 +102,8 @@ const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameConte
     std::vector<float> cellSizes;
     for (const LpvCascade& c : plan.cascades)
         cellSizes.push_back(c.cellSize);
-    sceneGvCache.update(frame.scene, cellSizes, kMaxSurfelsPerLevel);
+    const int bands = plan.settings.shBands; // three: band 2 as well (issue #47)
+    sceneGvCache.update(frame.scene, cellSizes, kMaxSurfelsPerLevel, bands);
     const lpvref::SceneGv& gv = sceneGvCache.gv();
     // One buffer for every cascade's window, kept from frame to frame.
     const std::size_t cascades = std::min(plan.cascades.size(), gv.levels.size());
@@ -112,12 +113,16 @@ const LpvSceneGeometry& ForwardRenderer::Impl::sceneGeometryFor(const FrameConte
         offset += m * m * m;
     }
     sceneGeometry.windows.resize(offset);
+    sceneGeometry.windowsHigh.resize(bands == 3 ? 2 * offset : 0);
     offset = 0;
     for (std::size_t k = 0; k < cascades; ++k) {
         const LpvCascade& c = plan.cascades[k];
         const std::size_t m = std::size_t(c.gridSize) + 1;
         lpvref::windowInto(gv.levels[k], {c.origin, c.cellSize, c.gridSize},
                            std::span<glm::vec4>(sceneGeometry.windows).subspan(offset, m * m * m));
+        if (bands == 3)
+            lpvref::windowBand2Into(gv.levels[k], {c.origin, c.cellSize, c.gridSize},
+                                    std::span<glm::vec4>(sceneGeometry.windowsHigh).subspan(2 * offset, 2 * m * m * m));
         offset += m * m * m;
     }
     sceneGeometry.surfels = gv.surfels.empty() ? 0 : gv.surfels.front();

@@ -1,4 +1,5 @@
 #include "lpv/renderer/lpv/SceneGeometryVolume.h"
+#include "lpv/renderer/lpv/ShBands.h"
 #include "lpvref/SceneTriangles.h"
 
 #include <algorithm>
@@ -64,7 +65,7 @@ std::uint64_t placementKey(const scene::Object& object, const glm::mat4& world) 
 // fall into the cell before, so the last cell is kept at hand.
 class WorldGvBuilder {
   public:
-    explicit WorldGvBuilder(float cellSize) : cellSize_(cellSize) {}
+    explicit WorldGvBuilder(float cellSize, int bands = 2) : cellSize_(cellSize), bands_(bands) {}
     void add(const Surfel& s) {
         const glm::vec3 g = glm::floor(s.position / cellSize_ + 0.5f);
         if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z) ||
@@ -75,21 +76,44 @@ class WorldGvBuilder {
             last_ = &sums_[k];
             lastKey_ = k;
         }
-        *last_ += std::min(s.area / (cellSize_ * cellSize_), 1.0f) * sh::cosineLobe(s.normal);
+        const float coverage = std::min(s.area / (cellSize_ * cellSize_), 1.0f);
+        last_->low += coverage * sh::cosineLobe(s.normal);
+        if (bands_ == 3) {
+            const sh::Coeffs<3> lobe = sh::cosineLobeOf<3>(s.normal);
+            for (std::size_t j = 0; j < 5; ++j)
+                last_->band2[j] += coverage * lobe[int(j) + 4];
+        }
     }
-    void add(std::uint64_t key, const glm::vec4& value) { sums_[key] += value; }
+    void add(std::uint64_t key, const glm::vec4& value, const GvBand2* band2) {
+        Cell& cell = sums_[key];
+        cell.low += value;
+        if (band2)
+            for (std::size_t j = 0; j < 5; ++j)
+                cell.band2[j] += (*band2)[j];
+    }
     WorldGv finish() {
+        std::vector<std::pair<std::uint64_t, Cell>> sorted(sums_.begin(), sums_.end());
+        std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         WorldGv out;
         out.cellSize = cellSize_;
-        out.cells.assign(sums_.begin(), sums_.end());
-        std::sort(out.cells.begin(), out.cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        out.cells.reserve(sorted.size());
+        for (const auto& [key, cell] : sorted) {
+            out.cells.emplace_back(key, cell.low);
+            if (bands_ == 3)
+                out.band2.push_back(cell.band2);
+        }
         return out;
     }
 
   private:
+    struct Cell {
+        glm::vec4 low{0.0f};
+        GvBand2 band2{}; // three bands only
+    };
     float cellSize_;
-    std::unordered_map<std::uint64_t, glm::vec4> sums_;
-    glm::vec4* last_ = nullptr; // stable: unordered_map never moves its elements
+    int bands_;
+    std::unordered_map<std::uint64_t, Cell> sums_;
+    Cell* last_ = nullptr; // stable: unordered_map never moves its elements
     std::uint64_t lastKey_ = 0;
 };
 
@@ -130,16 +154,17 @@ glm::vec4 WorldGv::at(const glm::ivec3& c) const {
     return it != cells.end() && it->first == k ? it->second : glm::vec4(0.0f);
 }
 
-WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize) {
-    WorldGvBuilder builder(cellSize);
+WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize, int bands) {
+    WorldGvBuilder builder(cellSize, bands);
     for (const Surfel& s : surfels)
         builder.add(s);
     return builder.finish();
 }
 
-SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel) {
+SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel,
+                     int bands) {
     SceneGvCache cache;
-    cache.update(scene, cellSizes, maxSurfelsPerLevel);
+    cache.update(scene, cellSizes, maxSurfelsPerLevel, bands);
     return cache.gv();
 }
 
@@ -149,11 +174,13 @@ void SceneGvCache::clear() {
     gv_ = {};
 }
 
-int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel) {
+int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel,
+                         int bands) {
     const std::vector<glm::mat4> worlds = scene::worldMatrices(scene);
     if (!std::equal(cellSizes.begin(), cellSizes.end(), cellSizes_.begin(), cellSizes_.end()) ||
-        maxSurfelsPerLevel != maxSurfels_)
+        maxSurfelsPerLevel != maxSurfels_ || bands != bands_)
         clear();
+    bands_ = bands;
     if (gv_.spacing.empty()) {
         // Two surfels per cell along an edge, coarser until the level fits its budget
         // (each triangle keeps at least one surfel).
@@ -182,9 +209,9 @@ int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellS
         const std::uint64_t placement = placementKey(object, worlds[std::size_t(o)]);
         if (cells.sampled && cells.placement == placement)
             continue;
-        cells = ObjectCells{true, placement, {}, {}};
+        cells = ObjectCells{true, placement, {}, {}, {}};
         for (std::size_t k = 0; k < levels; ++k) {
-            WorldGvBuilder builder(cellSizes_[k]);
+            WorldGvBuilder builder(cellSizes_[k], bands_);
             std::size_t count = 0;
             if (object.visible)
                 detail::forEachObjectTriangle(scene, o, worlds[std::size_t(o)], everyMaterial(),
@@ -194,7 +221,9 @@ int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellS
                                                       ++count;
                                                   });
                                               });
-            cells.levels.push_back(std::move(builder.finish().cells));
+            WorldGv level = builder.finish();
+            cells.levels.push_back(std::move(level.cells));
+            cells.band2.push_back(std::move(level.band2));
             cells.surfels.push_back(count);
         }
         ++sampled;
@@ -205,10 +234,11 @@ int SceneGvCache::update(const scene::Scene& scene, std::span<const float> cellS
     gv_.levels.clear();
     gv_.surfels.assign(levels, 0);
     for (std::size_t k = 0; k < levels; ++k) {
-        WorldGvBuilder sum(cellSizes_[k]);
+        WorldGvBuilder sum(cellSizes_[k], bands_);
         for (const ObjectCells& cells : objects_) {
-            for (const auto& [key, value] : cells.levels[k])
-                sum.add(key, value);
+            const std::vector<GvBand2>& band2 = cells.band2[k];
+            for (std::size_t i = 0; i < cells.levels[k].size(); ++i)
+                sum.add(cells.levels[k][i].first, cells.levels[k][i].second, band2.empty() ? nullptr : &band2[i]);
             gv_.surfels[k] += cells.surfels[k];
         }
         gv_.levels.push_back(sum.finish());
@@ -240,6 +270,31 @@ void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4
             const std::size_t row = std::size_t(m) * (std::size_t(y) + std::size_t(m) * std::size_t(z));
             for (; it != world.cells.end() && it->first <= hi; ++it)
                 out[row + std::size_t(it->first - lo)] = it->second;
+        }
+}
+
+void windowBand2Into(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
+    const int m = grid.n + 1;
+    std::fill(out.begin(), out.end(), glm::vec4(0.0f));
+    if (out.size() != 2 * std::size_t(m) * std::size_t(m) * std::size_t(m) || world.band2.size() != world.cells.size())
+        return;
+    const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
+    for (int z = 0; z < m; ++z)
+        for (int y = 0; y < m; ++y) {
+            const glm::ivec3 first = base + glm::ivec3(0, y, z), last = base + glm::ivec3(grid.n, y, z);
+            if (!WorldGv::representable(first) || !WorldGv::representable(last))
+                continue;
+            // As windowInto: a row of the window is a run of consecutive keys.
+            const std::uint64_t lo = WorldGv::key(first), hi = WorldGv::key(last);
+            auto it = std::lower_bound(world.cells.begin(), world.cells.end(), lo,
+                                       [](const auto& e, std::uint64_t v) { return e.first < v; });
+            const std::size_t row = std::size_t(m) * (std::size_t(y) + std::size_t(m) * std::size_t(z));
+            for (; it != world.cells.end() && it->first <= hi; ++it) {
+                const GvBand2& b = world.band2[std::size_t(it - world.cells.begin())];
+                const std::size_t cell = row + std::size_t(it->first - lo);
+                out[2 * cell] = glm::vec4(b[0], b[1], b[2], b[3]);
+                out[2 * cell + 1] = glm::vec4(b[4], 0.0f, 0.0f, 0.0f);
+            }
         }
 }
 

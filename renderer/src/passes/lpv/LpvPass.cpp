@@ -81,13 +81,10 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
         // and the note says so; the effects list says it for the sky, the
         // subsurface LPV, the glossy march and bounces (SceneAnalysis).
         std::vector<std::string> off;
-        if (s.gvFromScene)
-            off.push_back("the geometry volume from the views: the scene's has two bands");
         if (s.bounces > 1)
             off.push_back("one bounce: bounces re-inject two bands");
         if (s.visibility)
             off.push_back("no visibility-aware lookup: it reads two bands");
-        s.gvFromScene = false;
         s.bounces = 1;
         s.visibility = false;
         for (const std::string& o : off)
@@ -525,12 +522,16 @@ void LpvPass::injectGeometry(const LpvRsmInput& rsm, const LpvCameraInput* camer
     const int m = volumes_.gridSize() + 1;
     const std::size_t cells = std::size_t(m) * std::size_t(m) * std::size_t(m) * std::size_t(volumes_.cascades());
     sceneSurfels_ = 0;
-    // The scene's GV has two bands: three take the GV from the views (LpvSettings::fromParameters).
-    if (sceneGeometry && sceneGeometry->windows.size() == cells && volumes_.bands() == 2) {
+    const bool three = volumes_.bands() == 3;
+    if (sceneGeometry && sceneGeometry->windows.size() == cells &&
+        (!three || sceneGeometry->windowsHigh.size() == 2 * cells)) {
         // The scene's GV, windowed on the CPU: uploaded as the merged volume (the
         // surfel sums stay cleared; nothing is injected or merged).
         glTextureSubImage3D(volumes_.geometry.id(), 0, 0, 0, 0, m, m, m * volumes_.cascades(), GL_RGBA, GL_FLOAT,
                             sceneGeometry->windows.data());
+        if (three) // band 2, a GV cell's two texels side by side
+            glTextureSubImage3D(volumes_.geometryHigh.id(), 0, 0, 0, 0, 2 * m, m, m * volumes_.cascades(), GL_RGBA,
+                                GL_FLOAT, sceneGeometry->windowsHigh.data());
         sceneSurfels_ = std::max<std::size_t>(sceneGeometry->surfels, 1);
     } else {
         injectViews(rsm, camera);

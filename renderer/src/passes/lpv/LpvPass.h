@@ -39,8 +39,7 @@ struct LpvSettings {
     // lpv.shBands (issue #47): 3 runs in the compute gather only; prepare()
     // refuses it for the other variants and for a reduced-resolution lookup.
     // With 3, fromParameters turns off what reads or writes two bands only
-    // (bounces, the visibility-aware lookup, the scene's GV: the GV then
-    // comes from the views) and says so in threeBandsNote.
+    // (bounces, the visibility-aware lookup) and says so in threeBandsNote.
     int shBands = 2;
     std::string threeBandsNote;
     bool reducedLookup = false; // lpv.lookupResolution is not full
@@ -128,6 +127,8 @@ struct LpvCameraInput {
 // per cascade, in order, its (N+1)^3 GV cells (lpvref::windowOf), x fastest.
 struct LpvSceneGeometry {
     std::vector<glm::vec4> windows;
+    // Three bands: band 2 of the same cells, 2 per cell (lpvref::windowBand2Into); empty for two.
+    std::vector<glm::vec4> windowsHigh;
     std::size_t surfels = 0; // sampled for the finest level (the note says it)
 };
 

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -31,16 +32,21 @@ std::size_t countSceneSurfels(const scene::Scene& scene, float spacing);
 // it (floor(p / cellSize + 0.5)), min(A / cellSize^2, 1) cosineLobe(n), as
 // injectSurfels does for one cascade. Sparse: only cells a surfel reached,
 // sorted by z, then y, then x. Cells beyond 2^20 from the origin are dropped.
+// With three SH bands (lpv.shBands = 3, issue #47) each cell also sums band 2
+// of the lobes (coefficients 4-8 of ShBands.h), in `band2`, parallel to
+// `cells`; it is empty for two bands.
+using GvBand2 = std::array<float, 5>;
 struct WorldGv {
     float cellSize = 1.0f;
     std::vector<std::pair<std::uint64_t, glm::vec4>> cells;
+    std::vector<GvBand2> band2;
 
     static constexpr int kCoordinateBias = 1 << 20;
     static bool representable(const glm::ivec3& c);
     static std::uint64_t key(const glm::ivec3& c); // c must be representable
     glm::vec4 at(const glm::ivec3& c) const;       // zero where no surfel reached
 };
-WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize);
+WorldGv buildWorldGv(std::span<const Surfel> surfels, float cellSize, int bands = 2);
 
 // One world GV per cascade level, level k sampled at spacing cellSizes[k] / 2
 // (wider where the scene's objects, hidden ones too, would give more than
@@ -50,7 +56,8 @@ struct SceneGv {
     std::vector<float> spacing;        // per level, as sampled
     std::vector<std::size_t> surfels;  // per level
 };
-SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel);
+SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel,
+                     int bands = 2);
 
 // The scene's GV kept per object, so that an edit samples again only the
 // objects it moved, hid, showed or added (the editor drags one object at a
@@ -59,8 +66,10 @@ SceneGv buildSceneGv(const scene::Scene& scene, std::span<const float> cellSizes
 // give the same sums. The spacing is chosen when the cache is (re)filled.
 class SceneGvCache {
   public:
-    // Brings gv() up to date with `scene`; returns how many objects were sampled.
-    int update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel);
+    // Brings gv() up to date with `scene`; returns how many objects were
+    // sampled. `bands` 3 sums band 2 as well (a change of bands samples again).
+    int update(const scene::Scene& scene, std::span<const float> cellSizes, std::size_t maxSurfelsPerLevel,
+               int bands = 2);
     // The meshes changed (another scene): the next update samples every object.
     void clear();
     const SceneGv& gv() const { return gv_; }
@@ -70,11 +79,13 @@ class SceneGvCache {
         bool sampled = false;
         std::uint64_t placement = 0; // mesh, visibility and world matrix it was sampled with
         std::vector<std::vector<std::pair<std::uint64_t, glm::vec4>>> levels;
+        std::vector<std::vector<GvBand2>> band2; // per level, parallel to levels (three bands)
         std::vector<std::size_t> surfels;
     };
     std::vector<ObjectCells> objects_;
     std::vector<float> cellSizes_;
     std::size_t maxSurfels_ = 0;
+    int bands_ = 2;
     SceneGv gv_;
 };
 
@@ -88,5 +99,9 @@ GvGrid windowOf(const WorldGv& world, const GridFrame& grid);
 // The same into `out`, (grid.n + 1)^3 cells (x fastest), which it overwrites
 // (the renderer cuts every cascade's window into one buffer each frame).
 void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out);
+// Band 2 of the same window (a world GV built with three bands) into `out`,
+// 2 (grid.n + 1)^3 values: per GV cell (Y2-2, Y2-1, Y20, Y21) and (Y22, 0,
+// 0, 0), the layout of LpvVolumes::geometryHigh.
+void windowBand2Into(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out);
 
 } // namespace lpv::renderer::lpvref
