@@ -9,6 +9,7 @@
 // vertex/triangle counts checked against the JSON) all run. The mesh decoder
 // on its own is fuzz_mesh_asset; JSON-level mutations of the same project are
 // fuzz_project_structure.
+#include "ProjectInput.h"
 #include "SceneChecks.h"
 #include "WorkFolder.h"
 
@@ -30,11 +31,6 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    lpv::fuzz::writeInput(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
-    const auto project = lpv::scene::loadProject(gProjectFile);
-    if (project) {
-        lpv::fuzz::checkScene(project->scene, gProjectFile.string());
-        lpv::fuzz::checkProjectRenderFinite(*project);
-    }
+    lpv::fuzz::loadAndCheckProject(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
     return 0;
 }

@@ -32,6 +32,7 @@
 // seeds with 100,000 unknown keys and a 10,000-object chain (1.1 and 1.4 MB)
 // are run whole once by scripts/fuzz.sh before fuzzing.
 #include "FloatExtremes.h"
+#include "ProjectInput.h"
 #include "SceneChecks.h"
 #include "WorkFolder.h"
 
@@ -809,12 +810,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    lpv::fuzz::writeInput(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
-    const auto project = lpv::scene::loadProject(gProjectFile);
-    if (project) {
-        lpv::fuzz::checkScene(project->scene, gProjectFile.string());
-        lpv::fuzz::checkProjectRenderFinite(*project);
-    }
+    lpv::fuzz::loadAndCheckProject(gProjectFile, std::string_view(reinterpret_cast<const char*>(data), size));
     return 0;
 }
 

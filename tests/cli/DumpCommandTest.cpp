@@ -1,6 +1,7 @@
 // `lpv dump`, run as a user would: the slice, geometry-volume, leak, RSM and
 // shadow views of a Cornell box lit through its open front, and the errors
 // for cascades and slices out of range.
+#include "FrontSun.h"
 #include "RunLpv.h"
 
 #include "lpv/importers/ImageIO.h"
@@ -23,12 +24,7 @@ class DumpCommand : public ::testing::Test {
     static void SetUpTestSuite() {
         dir_ = freshTempDir("dump-viz");
         lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
-        lpv::scene::Light sun;
-        sun.name = "sun";
-        sun.type = lpv::scene::LightType::Directional;
-        sun.direction = glm::normalize(glm::vec3(0.6f, -0.35f, 0.7f));
-        sun.intensity = 3.0f;
-        project.scene.lights.push_back(sun);
+        project.scene.lights.push_back(lpv::test::cornellFrontSun());
         // Inside the box, so that the small cascades around the camera hold the lit room.
         project.scene.cameras.front().position = {2.78f, 2.73f, 1.5f};
         project.scene.cameras.front().target = {2.78f, 2.73f, 5.0f};

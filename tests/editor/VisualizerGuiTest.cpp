@@ -1,6 +1,7 @@
 // The Visualizers dock in the real window under xvfb (llvmpipe): closed it
 // asks nothing of the renderer; open it shows the slice and follows the slice
 // and step controls; its picture is the one `lpv dump` would write.
+#include "FrontSun.h"
 #include "Autosave.h"
 #include "Document.h"
 #include "MainWindow.h"
@@ -43,14 +44,8 @@ struct LitCornell : test::TestWindow {
         doc.setParameter("lpv.gridSize", lpv::scene::ParameterValue(16));
         doc.setParameter("lpv.cascades", lpv::scene::ParameterValue(2));
         doc.setParameter("rsm.tileSize", lpv::scene::ParameterValue(128));
-        doc.editScene("add sun", Change::Lights, [](lpv::scene::Scene& s) {
-            lpv::scene::Light sun;
-            sun.name = "sun";
-            sun.type = lpv::scene::LightType::Directional;
-            sun.direction = glm::normalize(glm::vec3(0.6f, -0.35f, 0.7f));
-            sun.intensity = 3.0f;
-            s.lights.push_back(sun);
-        });
+        doc.editScene("add sun", Change::Lights,
+                      [](lpv::scene::Scene& s) { s.lights.push_back(lpv::test::cornellFrontSun()); });
         EXPECT_TRUE(show({1280, 900}));
     }
 };

@@ -19,8 +19,6 @@
 #include <cmath>
 
 using namespace lpv;
-using test::reason;
-using test::status;
 using renderer::PassStatus;
 using scene::Pass;
 
@@ -28,9 +26,7 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 56;
 
-class CameraTurnReuseGLTest : public GlTest {
-  protected:
-};
+class CameraTurnReuseGLTest : public GlTest, protected test::GraphReportQueries {};
 
 TEST_F(CameraTurnReuseGLTest, TurningOnSibenikKeepsTheCascadesAndReusesTheLpv) {
     const test::OpeningView view = test::importedScene("4ds/sibenik.4ds");

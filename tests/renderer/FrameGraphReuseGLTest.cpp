@@ -16,8 +16,6 @@
 #include <cmath>
 
 using namespace lpv;
-using test::reason;
-using test::status;
 using renderer::PassStatus;
 using scene::Pass;
 
@@ -41,7 +39,9 @@ struct ReuseCase {
 
 void PrintTo(const ReuseCase& c, std::ostream* os) { *os << scene::passName(c.pass); }
 
-class FrameGraphReuseGLTest : public GlTest, public ::testing::WithParamInterface<ReuseCase> {
+class FrameGraphReuseGLTest : public GlTest,
+                              public ::testing::WithParamInterface<ReuseCase>,
+                              protected test::GraphReportQueries {
   protected:
     scene::Project project = openCornellBoxWithSun();
     scene::ParameterSet params = project.parameters;

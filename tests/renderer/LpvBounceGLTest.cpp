@@ -4,6 +4,7 @@
 // lpv.bounces > 1.
 #include "LpvPassFixture.h"
 #include "LpvRoomScene.h"
+#include "ShGridCompare.h"
 
 #include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
@@ -45,22 +46,6 @@ ref::ShGrid reference(const RoomScene& room, const std::vector<Texel>& texels, i
     const ref::ShGrid injected = ref::injectVpls(room.grid, vpls, 1.0f);
     const ref::GvGrid gv = ref::mergeByMax(ref::injectSurfels(room.grid, surfels), ref::GvGrid(room.grid.n));
     return ref::propagateWithBounces(injected, gv, true, steps, bounces, albedo, perBounce);
-}
-
-double relativeDifference(const ref::ShGrid& expected, const std::array<std::vector<glm::vec4>, 3>& gpu,
-                          float* largest = nullptr) {
-    float maxAbs = 0.0f, maxValue = 0.0f;
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_EQ(gpu[std::size_t(c)].size(), expected.channel[c].size());
-        for (std::size_t i = 0; i < expected.channel[c].size() && i < gpu[std::size_t(c)].size(); ++i)
-            for (int j = 0; j < 4; ++j) {
-                maxAbs = std::max(maxAbs, std::abs(gpu[std::size_t(c)][i][j] - expected.channel[c][i][j]));
-                maxValue = std::max(maxValue, std::abs(expected.channel[c][i][j]));
-            }
-    }
-    if (largest)
-        *largest = maxValue;
-    return maxValue > 0.0f ? double(maxAbs / maxValue) : double(maxAbs);
 }
 
 class LpvBounceTest : public LpvPassGLTest, public ::testing::WithParamInterface<LpvVariant> {

@@ -4,6 +4,7 @@
 // sun at all, and together with a sun tile (one fixed-point scale for both).
 #include "FakeRsm.h"
 #include "GlFixture.h"
+#include "ShGridCompare.h"
 
 #include "passes/lpv/EmissiveVplBuffer.h"
 #include "passes/lpv/LpvPass.h"
@@ -35,16 +36,12 @@ std::vector<ref::Vpl> randomVpls(int count, unsigned seed) {
     return vpls;
 }
 
+// Relative to the CPU's largest coefficient, which must not be zero.
 double relative(const ref::ShGrid& expected, const std::array<std::vector<glm::vec4>, 3>& gpu) {
-    float maxAbs = 0.0f, maxValue = 0.0f;
-    for (int c = 0; c < 3; ++c)
-        for (std::size_t i = 0; i < expected.channel[c].size(); ++i)
-            for (int j = 0; j < 4; ++j) {
-                maxAbs = std::max(maxAbs, std::abs(gpu[std::size_t(c)][i][j] - expected.channel[c][i][j]));
-                maxValue = std::max(maxValue, std::abs(expected.channel[c][i][j]));
-            }
-    EXPECT_GT(maxValue, 0.0f);
-    return double(maxAbs / maxValue);
+    float largest = 0.0f;
+    const double d = relativeDifference(expected, gpu, &largest);
+    EXPECT_GT(largest, 0.0f);
+    return d;
 }
 
 class LpvLocalInjectionGLTest : public GlTest {};

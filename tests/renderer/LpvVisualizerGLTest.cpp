@@ -1,6 +1,7 @@
 // The slice viewer against known light (issue #9): one VPL of known flux in
 // an empty volume, one propagation step of an isotropic point, the read-back
 // that only happens on request, and the RSM flux view of the Cornell box.
+#include "FrontSun.h"
 #include "LpvPassFixture.h"
 
 #include "passes/lpv/LpvPass.h"
@@ -183,12 +184,7 @@ TEST_F(LpvVisualizerGLTest, ReadsBackOnlyOnRequest) {
 TEST_F(GlTest, CornellRsmFluxViewShowsTheRedWallRed) {
     lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
     lpv::scene::Scene& s = project.scene;
-    lpv::scene::Light sun;
-    sun.name = "sun";
-    sun.type = lpv::scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.6f, -0.35f, 0.7f));
-    sun.intensity = 3.0f;
-    s.lights.push_back(sun);
+    s.lights.push_back(lpv::test::cornellFrontSun());
     ASSERT_TRUE(project.parameters.set("rsm.tileSize", 64).has_value());
     auto renderer = ForwardRenderer::create();
     ASSERT_TRUE(renderer.has_value()) << renderer.error().describe();
@@ -224,12 +220,7 @@ TEST_F(GlTest, CornellRsmFluxViewShowsTheRedWallRed) {
 TEST_F(GlTest, ShadowCascadeTintColoursSurfacesByCascade) {
     lpv::scene::Project project = lpv::scene::makeCornellBoxProject();
     lpv::scene::Scene& s = project.scene;
-    lpv::scene::Light sun;
-    sun.name = "sun";
-    sun.type = lpv::scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.6f, -0.35f, 0.7f));
-    sun.intensity = 3.0f;
-    s.lights.push_back(sun);
+    s.lights.push_back(lpv::test::cornellFrontSun());
     ASSERT_TRUE(project.parameters.set("lpv.intensity", 0.0).has_value());
     ASSERT_TRUE(project.parameters.set("shadow.mapSize", 256).has_value());
     // A camera inside the box near the floor, looking at the back wall: the floor under it is in cascade 0.

@@ -2,6 +2,7 @@
 // coarse patches (ray-cast form factors), saved beside a temporary project,
 // loaded back with loadBakedSolution and drawn by the radiosityIndirect pass
 // as the indirect light that shading adds to the direct light it draws.
+#include "CheckerAlpha.h"
 #include "GlFixture.h"
 
 #include "lpv/radiosity/BakedSolution.h"
@@ -323,13 +324,7 @@ TEST_F(RadiosityIndirectGLTest, TheGroundSeenThroughAMaskedLeafReadsItsOwnLight)
     s.objects = {{"ground", 0, -1, {}, true, {}}, {"leaf", 1, -1, {}, true, {}}};
     s.sky.intensity = 0.0f;
     scene::TextureImages textures;
-    scene::Image8 checker{8, 8, 4, {}};
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            const std::uint8_t a = ((x / 2 + y / 2) % 2) ? 255 : 0; // 4x4 cells of 0.5 m
-            checker.pixels.insert(checker.pixels.end(), {a, a, a, 255});
-        }
-    textures["checker.png"] = checker;
+    textures["checker.png"] = test::checkerAlpha(); // 4x4 cells of 0.5 m
     auto solution = std::make_shared<radiosity::BakedSolution>();
     solution->mesh = radiosity::buildPatchMesh(s, {0.25f});
     for (const radiosity::Patch& p : solution->mesh.patches)

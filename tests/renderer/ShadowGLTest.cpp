@@ -1,6 +1,7 @@
 // Shadows on llvmpipe: cascade stabilisation, penumbra growth (PCSS),
 // alpha-masked casters, spot and point light shadows. Test scenes are
 // lit so that a white ground's HDR radiance equals its visibility.
+#include "CheckerAlpha.h"
 #include "GlFixture.h"
 
 #include "passes/direct/ShadowCascades.h"
@@ -273,13 +274,7 @@ TEST_F(ShadowRender, AlphaMaskedFoliageCastsMaskedShadows) {
     leaves.alphaTexture = "checker.png";
     s.materials.push_back(leaves);
     scene::TextureImages textures;
-    scene::Image8 checker{8, 8, 4, {}};
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            const std::uint8_t a = ((x / 2 + y / 2) % 2) ? 255 : 0; // 4x4 cells of 0.5 m
-            checker.pixels.insert(checker.pixels.end(), {a, a, a, 255});
-        }
-    textures["checker.png"] = checker;
+    textures["checker.png"] = test::checkerAlpha(); // 4x4 cells of 0.5 m
     s.lights.push_back(sunTowards({0.0001f, -1.0f, 0.35f}));
     ASSERT_TRUE(params.set("shadow.softness", 0.0).has_value());
     // The camera sees the ground under both quads beside them (the sun shifts the shadows by 0.35 m in z).
