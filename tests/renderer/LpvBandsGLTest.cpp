@@ -183,6 +183,18 @@ TEST_F(LpvThreeBandsGLTest, PropagationWithOcclusionMatchesTheCpuTwin) {
             EXPECT_LT(d.relative(), 2e-5);
         }
     }
+    // lpv.twoSidedOcclusion: a surfel blocks light from behind as well.
+    {
+        LpvSettings s = settings(4, true);
+        s.twoSidedOcclusion = true;
+        run(s);
+        auto twoSided = gv;
+        twoSided.twoSided = true;
+        const Difference d = compareAccumulator(ref::bands::propagateAndAccumulate<3>(cpuInjected(), &twoSided, 4));
+        std::cout << "[ figures ] three-band propagation 8^3, 4 steps, two-sided occlusion: relative " << d.relative()
+                  << "\n";
+        EXPECT_LT(d.relative(), 2e-5);
+    }
     // Occlusion must matter (or the comparison above says nothing about it).
     const auto open = ref::bands::propagateAndAccumulate<3>(cpuInjected(), nullptr, 4);
     const auto walled = ref::bands::propagateAndAccumulate<3>(cpuInjected(), &gv, 4);
