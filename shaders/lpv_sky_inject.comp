@@ -6,12 +6,20 @@
 // RSM's VPLs are resolved; one invocation per column, so no atomics.
 #define LPV_WITH_FIXED_POINT
 #include "sh.glsl"
+#include "sh3.glsl"
 #include "lpv_common.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
+#if LPV_SH_BANDS == 3
+// Three bands: the injected volume interleaved (7 texels per cell, as
+// lpv_resolve.comp writes it) and band 2 of the accumulator (4 planes along x).
+layout(rgba32f, binding = 0) uniform image3D uVolume;
+layout(rgba32f, binding = 6) uniform image3D uAccumHigh;
+#else
 layout(rgba32f, binding = 0) uniform image3D uVolumeR;
 layout(rgba32f, binding = 1) uniform image3D uVolumeG;
 layout(rgba32f, binding = 2) uniform image3D uVolumeB;
+#endif
 layout(rgba32f, binding = 3) uniform image3D uAccumR;
 layout(rgba32f, binding = 4) uniform image3D uAccumG;
 layout(rgba32f, binding = 5) uniform image3D uAccumB;
@@ -61,6 +69,24 @@ void main() {
     if (y >= uGridSize)
         return; // covered above the cascade's top
     ivec3 texel = ivec3(id.x, y, k * uGridSize + id.y);
+#if LPV_SH_BANDS == 3
+    // cosineLobe(-y) of three bands: band 2 has only Y20 and Y22.
+    Sh9 lobe9 = sh9Scale(sh9CosineLobe(vec3(0.0, -1.0, 0.0)), s * s);
+    ivec3 first = ivec3(7 * texel.x, texel.yz), plane = ivec3(uGridSize, 0, 0);
+    for (int c = 0; c < 3; ++c) {
+        imageStore(uVolume, first + ivec3(c, 0, 0), imageLoad(uVolume, first + ivec3(c, 0, 0)) + uSkyRadiance[c] * lobe9.low);
+        imageStore(uVolume, first + ivec3(3 + c, 0, 0),
+                   imageLoad(uVolume, first + ivec3(3 + c, 0, 0)) + uSkyRadiance[c] * lobe9.high);
+        imageStore(uAccumHigh, texel + c * plane, imageLoad(uAccumHigh, texel + c * plane) + uSkyRadiance[c] * lobe9.high);
+    }
+    vec4 last = vec4(uSkyRadiance, 0.0) * lobe9.last;
+    imageStore(uVolume, first + ivec3(6, 0, 0), imageLoad(uVolume, first + ivec3(6, 0, 0)) + last);
+    imageStore(uAccumHigh, texel + 3 * plane, imageLoad(uAccumHigh, texel + 3 * plane) + last);
+    imageStore(uAccumR, texel, imageLoad(uAccumR, texel) + uSkyRadiance.r * lobe9.low);
+    imageStore(uAccumG, texel, imageLoad(uAccumG, texel) + uSkyRadiance.g * lobe9.low);
+    imageStore(uAccumB, texel, imageLoad(uAccumB, texel) + uSkyRadiance.b * lobe9.low);
+    // No scale slot: three bands run the compute gather only.
+#else
     vec4 lobe = shCosineLobe(vec3(0.0, -1.0, 0.0)) * (s * s);
     vec4 r = imageLoad(uVolumeR, texel) + uSkyRadiance.r * lobe;
     vec4 g = imageLoad(uVolumeG, texel) + uSkyRadiance.g * lobe;
@@ -74,4 +100,5 @@ void main() {
     // The compute scatter's fixed-point scale must cover the brighter cell.
     vec4 largest = max(max(abs(r), abs(g)), abs(b));
     lpvRecordMax(k, 0, max(max(largest.x, largest.y), max(largest.z, largest.w)));
+#endif
 }

@@ -223,7 +223,6 @@ EffectDecision decideSkyInjection(const scene::Scene& s, const SceneTraits& t, c
         d.wanted = false;
         d.reason = "forced on by effects.skyInjection, but the sky's intensity is 0";
     }
-    offWithThreeBands(d, params, "sky injection writes two bands only");
     return d;
 }
 

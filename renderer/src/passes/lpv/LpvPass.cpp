@@ -75,7 +75,9 @@ LpvSettings LpvSettings::fromParameters(const scene::ParameterSet& params) {
     s.requestedCascades = params.getInt("lpv.cascades");
     s.rsmCascades = params.getInt("rsm.cascades");
     s.visibility = params.getBool("lpv.visibilityLookup");
-    s.reducedLookup = params.getEnum("lpv.lookupResolution") != "full";
+    // Asked for by name; an automatic choice must pick full for three bands (LpvLookupPass).
+    const std::string lookup = params.getEnum("lpv.lookupResolution");
+    s.reducedLookup = lookup == "half" || lookup == "quarter";
     if (s.shBands == 3) {
         // What reads or writes two bands only is off (docs/lpv.md, "Three bands"),
         // and the note says so; the effects list says it for the sky, the
@@ -111,6 +113,7 @@ ProgramVariant LpvPass::variantOf(LpvKernel kernel) const {
         case LpvKernel::FaceBlocking: return {{"lpv_face_blocking.comp"}, {"LPV_SH_BANDS 3"}};
         case LpvKernel::LocalInject: return {{"lpv_inject_local.comp"}, {"LPV_SH_BANDS 3"}};
         case LpvKernel::ComputeGather: return {{"lpv_gather.comp"}, {"LPV_SH_BANDS 3"}};
+        case LpvKernel::SkyInject: return {{"lpv_sky_inject.comp"}, {"LPV_SH_BANDS 3"}};
         default: break;
         }
     }
@@ -359,9 +362,7 @@ scene::Expected<void> LpvPass::run(const LpvSettings& settings, const LpvRsmInpu
     in.settings = settings;
     in.runs = true;
     in.sun = rsm.position && rsm.tileSize > 0;
-    in.sky = !withSky                  ? skippedBecause("no sky height map was given")
-             : settings.shBands == 3 ? skippedBecause("lpv.shBands = 3: sky injection writes two bands only")
-                                     : runsBecause("a sky height map was given");
+    in.sky = withSky ? runsBecause("a sky height map was given") : skippedBecause("no sky height map was given");
     in.rsm = [&rsm] { return rsm; };
     in.localInputs = [&local] { return local; };
     in.skyInput = [sky] { return *sky; };
@@ -601,9 +602,15 @@ void LpvPass::injectSky(const LpvSkyInput& sky) {
     glUseProgram(p);
     setCascadeUniforms(p);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScalesBinding, volumes_.scales.id());
+    if (volumes_.bands() == 3) {
+        // The injected volume is interleaved[0] (lpv_resolve.comp), band 2 of the accumulator beside it.
+        glBindImageTexture(0, volumes_.interleaved[0].id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(6, volumes_.accumulatorHigh.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    }
     for (int c = 0; c < 3; ++c) {
-        glBindImageTexture(GLuint(c), volumes_.volume[0].channel[std::size_t(c)].id(), 0, GL_TRUE, 0, GL_READ_WRITE,
-                           GL_RGBA32F);
+        if (volumes_.bands() == 2)
+            glBindImageTexture(GLuint(c), volumes_.volume[0].channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
+                               GL_READ_WRITE, GL_RGBA32F);
         glBindImageTexture(GLuint(3 + c), volumes_.accumulator.channel[std::size_t(c)].id(), 0, GL_TRUE, 0,
                            GL_READ_WRITE, GL_RGBA32F);
     }

@@ -42,7 +42,7 @@ struct LpvSettings {
     // (bounces, the visibility-aware lookup) and says so in threeBandsNote.
     int shBands = 2;
     std::string threeBandsNote;
-    bool reducedLookup = false; // lpv.lookupResolution is not full
+    bool reducedLookup = false; // lpv.lookupResolution is half or quarter
     int propagationSteps = 8;
     // lpv.cascadeSteps = byCellSize: cascade k runs propagationSteps >> k steps
     // (at least 1): cells twice as large carry light twice as far per step.
