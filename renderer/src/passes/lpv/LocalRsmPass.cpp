@@ -21,16 +21,6 @@ using scene::makeError;
 
 namespace {
 
-constexpr std::size_t kBytesPerTexel = 16 + 8 + 16 + 4; // position, normal, flux, depth (as RsmPass)
-
-Texture makeArray(GLenum format, int size, int layers) {
-    Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(t.id(), 1, format, size, size, layers);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
-}
-
 // The axis of each face of a point light's cube, in pointShadowView's order; a spot's is its direction.
 constexpr glm::vec3 kCubeAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
@@ -58,21 +48,13 @@ scene::Expected<LocalRsmPass> LocalRsmPass::create() {
     return pass;
 }
 
-std::size_t LocalRsmPass::allocatedBytes() const {
-    return std::size_t(size_) * std::size_t(size_) * std::size_t(layers_) * kBytesPerTexel;
-}
-
 void LocalRsmPass::release() {
-    fbo_.reset();
-    position_.reset();
-    normal_.reset();
-    flux_.reset();
-    depth_.reset();
-    size_ = layers_ = lights_ = 0;
+    targets_.release();
+    lights_ = 0;
 }
 
 scene::Expected<void> LocalRsmPass::ensureTargets(int size, int layers) {
-    if (size == size_ && layers == layers_)
+    if (targets_.holds(size, layers))
         return {};
     release();
     GLint maxLayers = 0, maxSize = 0;
@@ -83,26 +65,10 @@ scene::Expected<void> LocalRsmPass::ensureTargets(int size, int layers) {
                          std::to_string(layers) + " local RSM faces of " + std::to_string(size) +
                              "^2 exceed GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) +
                              " or GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(maxLayers));
-    while (glGetError() == GL_OUT_OF_MEMORY) {
-    } // an earlier failure must not be blamed on these targets
-    position_ = makeArray(GL_RGBA32F, size, layers);
-    normal_ = makeArray(GL_RGBA16F, size, layers);
-    // 32-bit: a texel's flux (W) goes with its area, so it spans the
-    // square of the scene's unit; half floats lost a 2 cm box's light
-    // (below 6e-8 W) and would overflow a kilometre scene's (issue #41).
-    flux_ = makeArray(GL_RGBA32F, size, layers);
-    depth_ = makeArray(GL_DEPTH_COMPONENT32F, size, layers);
-    fbo_ = createFramebuffer();
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
-    if (glGetError() == GL_OUT_OF_MEMORY) {
-        release();
+    if (!targets_.allocate(size, layers))
         return makeError(ErrorCode::OutOfRange, "render", "parameters.lpv.localRsmSize",
                          "the GPU ran out of memory allocating " + std::to_string(layers) +
                              " local RSM faces of " + std::to_string(size) + "^2");
-    }
-    size_ = size;
-    layers_ = layers;
     return {};
 }
 
@@ -123,7 +89,7 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
     const GLuint p = program_.id();
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     const scene::Bounds bounds = frame.sceneBounds;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -156,15 +122,8 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
         glProgramUniform1f(p, loc("uRange"), light.range);
         glProgramUniform3fv(p, loc("uRadiantIntensity"), 1, glm::value_ptr(radiant));
         for (int face = 0; face < view.faces; ++face, ++layer) {
-            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT0, position_.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fbo_.id(), GL_COLOR_ATTACHMENT2, flux_.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0, layer);
-            const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-            const float farDepth = 1.0f;
-            for (GLint b = 0; b < 3; ++b)
-                glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
-            glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
+            targets_.attachLayer(layer);
+            targets_.clear();
             const glm::mat4& viewProj = view.viewProj[std::size_t(face)];
             const glm::vec3 axis = spot ? spotDirection : kCubeAxes[face];
             glProgramUniformMatrix4fv(p, loc("uTileViewProj"), 1, GL_FALSE, glm::value_ptr(viewProj));
@@ -179,30 +138,14 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
 }
 
 std::vector<DebugImage> LocalRsmPass::debugImages() const {
-    std::vector<DebugImage> images;
-    const std::size_t row = std::size_t(size_) * 4;
-    const std::pair<const char*, GLuint> targets[] = {
-        {"position", position_.id()}, {"normal", normal_.id()}, {"flux", flux_.id()}};
-    for (int layer = 0; layer < layers_; ++layer)
-        for (const auto& [what, texture] : targets) {
-            DebugImage image{"localrsm-" + std::to_string(layer) + "-" + what, size_, size_, 4, {}};
-            std::vector<float> raw(row * std::size_t(size_));
-            glGetTextureSubImage(texture, 0, 0, 0, layer, size_, size_, 1, GL_RGBA, GL_FLOAT,
-                                 GLsizei(raw.size() * sizeof(float)), raw.data());
-            image.pixels.resize(raw.size());
-            for (int y = 0; y < size_; ++y) // GL rows bottom to top, DebugImage top to bottom
-                std::copy_n(raw.begin() + std::ptrdiff_t(std::size_t(size_ - 1 - y) * row), row,
-                            image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row));
-            images.push_back(std::move(image));
-        }
-    return images;
+    return targets_.debugImages("localrsm", targets_.layers());
 }
 
 void LocalRsmPass::addGpuMemory(GpuMemoryLedger& ledger) const {
-    ledger.addTexture(resources::LocalRsmPosition.name(), position_.id());
-    ledger.addTexture(resources::LocalRsmNormal.name(), normal_.id());
-    ledger.addTexture(resources::LocalRsmFlux.name(), flux_.id());
-    ledger.addTexture("localRsm.depth", depth_.id());
+    ledger.addTexture(resources::LocalRsmPosition.name(), targets_.position());
+    ledger.addTexture(resources::LocalRsmNormal.name(), targets_.normal());
+    ledger.addTexture(resources::LocalRsmFlux.name(), targets_.flux());
+    ledger.addTexture("localRsm.depth", targets_.depth());
 }
 
 } // namespace lpv::renderer

@@ -6,6 +6,7 @@
 // VPLs the way it injects the sun's. Created by ForwardRenderer only while the
 // scene has a spot or point light: without one nothing is allocated.
 #include "frame/FrameContext.h"
+#include "passes/lpv/RsmTargets.h"
 #include "scenegpu/MaterialGpu.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
@@ -34,14 +35,14 @@ class LocalRsmPass {
     scene::Expected<void> render(const FrameContext& frame, const SceneGpu& geometry,
                                  const MaterialGpu& materials, int size);
 
-    bool active() const { return layers_ > 0; }
-    int size() const { return size_; }
-    int layers() const { return layers_; }
+    bool active() const { return targets_.layers() > 0; }
+    int size() const { return targets_.size(); }
+    int layers() const { return targets_.layers(); }
     int lights() const { return lights_; }
-    GLuint positionArray() const { return position_.id(); }
-    GLuint normalArray() const { return normal_.id(); }
-    GLuint fluxArray() const { return flux_.id(); }
-    std::size_t allocatedBytes() const;
+    GLuint positionArray() const { return targets_.position(); }
+    GLuint normalArray() const { return targets_.normal(); }
+    GLuint fluxArray() const { return targets_.flux(); }
+    std::size_t allocatedBytes() const { return targets_.bytes(); }
     // Names its GL objects for ForwardRenderer::gpuMemory().
     void addGpuMemory(GpuMemoryLedger& ledger) const;
     // "localrsm-L-position", "-normal", "-flux" per layer L.
@@ -53,9 +54,8 @@ class LocalRsmPass {
     void release();
 
     Program program_;
-    int size_ = 0, layers_ = 0, lights_ = 0;
-    Texture position_, normal_, flux_, depth_;
-    Framebuffer fbo_;
+    int lights_ = 0;
+    RsmTargets targets_;
 };
 
 } // namespace lpv::renderer

@@ -16,8 +16,6 @@ using scene::makeError;
 
 namespace {
 
-constexpr std::size_t kBytesPerTexel = 16 + 8 + 16 + 4; // position, normal, flux, depth
-
 std::string hex(GLenum value) {
     char text[16];
     std::snprintf(text, sizeof text, "0x%04X", unsigned(value));
@@ -28,17 +26,6 @@ GLint getInt(GLenum name) {
     GLint v = 0;
     glGetIntegerv(name, &v);
     return v;
-}
-
-Texture makeArray(GLenum format, int size, int layers) {
-    Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(t.id(), 1, format, size, size, layers);
-    // Texel-exact reads: every texel is one VPL.
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
 }
 
 } // namespace
@@ -98,60 +85,28 @@ scene::Expected<RsmPass> RsmPass::create() {
     return pass;
 }
 
-std::size_t RsmPass::allocatedBytes() const {
-    return std::size_t(tileSize_) * std::size_t(tileSize_) * std::size_t(layers_) * kBytesPerTexel;
-}
-
-void RsmPass::releaseTargets() {
-    fbo_.reset();
-    position_.reset();
-    normal_.reset();
-    flux_.reset();
-    depth_.reset();
-    tileSize_ = 0;
-    layers_ = 0;
-}
+void RsmPass::releaseTargets() { targets_.release(); }
 
 scene::Expected<void> RsmPass::ensureTargets(int tileSize, int layers) {
     if (auto ok = checkRsmTargets(tileSize, layers, RsmTargetLimits::query()); !ok)
         return ok;
-    if (tileSize == tileSize_ && layers == layers_)
+    if (targets_.holds(tileSize, layers))
         return {};
-    releaseTargets();
-    while (glGetError() == GL_OUT_OF_MEMORY) {
-    } // an earlier failure must not be blamed on these targets
-    position_ = makeArray(GL_RGBA32F, tileSize, layers);
-    normal_ = makeArray(GL_RGBA16F, tileSize, layers);
-    // 32-bit: a texel's flux (W) goes with its area, so it spans the
-    // square of the scene's unit; half floats lost a 2 cm box's light
-    // (below 6e-8 W) and would overflow a kilometre scene's (issue #41).
-    flux_ = makeArray(GL_RGBA32F, tileSize, layers);
-    depth_ = makeArray(GL_DEPTH_COMPONENT32F, tileSize, layers);
-    fbo_ = createFramebuffer();
-    // Whole arrays attached: a layered framebuffer, gl_Layer picks the tile.
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, position_.id(), 0);
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, normal_.id(), 0);
-    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT2, flux_.id(), 0);
-    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
     const std::string what = std::to_string(layers) + " RSM tiles of " + std::to_string(tileSize) + "^2 (" +
-                             std::to_string(std::size_t(tileSize) * std::size_t(tileSize) *
-                                            std::size_t(layers) * kBytesPerTexel / (1024 * 1024)) +
+                             std::to_string(std::size_t(tileSize) * std::size_t(tileSize) * std::size_t(layers) *
+                                            RsmTargets::kBytesPerTexel / (1024 * 1024)) +
                              " MiB)";
-    if (glGetError() == GL_OUT_OF_MEMORY) {
-        releaseTargets();
+    if (!targets_.allocate(tileSize, layers))
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.tileSize",
                          "the GPU ran out of memory allocating " + what);
-    }
-    if (const GLenum status = glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER);
+    // Whole arrays attached: a layered framebuffer, gl_Layer picks the tile.
+    targets_.attachAllLayers();
+    if (const GLenum status = glCheckNamedFramebufferStatus(targets_.framebuffer(), GL_FRAMEBUFFER);
         status != GL_FRAMEBUFFER_COMPLETE) {
         releaseTargets();
         return makeError(ErrorCode::OutOfRange, "render", "parameters.rsm.tileSize",
                          "the framebuffer of " + what + " is incomplete (status " + hex(status) + ")");
     }
-    tileSize_ = tileSize;
-    layers_ = layers;
     return {};
 }
 
@@ -194,7 +149,7 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
         texelArea[tiles_.size() - 1] = tiles_.back().texelArea;
     }
 
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -202,13 +157,6 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE); // the sun must see single-sided walls from either side
     glDisable(GL_POLYGON_OFFSET_FILL);
-    const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float farDepth = 1.0f;
-    auto clearTargets = [&] {
-        for (GLint b = 0; b < 3; ++b)
-            glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, b, zero);
-        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &farDepth);
-    };
     const glm::vec3 irradiance = sun.color * sun.intensity;
     const GLuint p = *program;
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
@@ -217,22 +165,17 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
     if (perTile) {
         // Each tile attaches its layer of the four arrays, culls with its own
         // box and draws only what it holds: no geometry-shader broadcast.
-        const GLuint targets[] = {position_.id(), normal_.id(), flux_.id(), depth_.id()};
-        const GLenum attachments[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
-                                      GL_DEPTH_ATTACHMENT};
         for (std::size_t k = 0; k < tiles_.size(); ++k) {
-            for (int a = 0; a < 4; ++a)
-                glNamedFramebufferTextureLayer(fbo_.id(), attachments[a], targets[a], 0, GLint(k));
-            clearTargets();
+            targets_.attachLayer(int(k));
+            targets_.clear();
             glProgramUniformMatrix4fv(p, loc("uViewProj"), 1, GL_FALSE, glm::value_ptr(tiles_[k].viewProj));
             glProgramUniform1f(p, loc("uTileTexelArea"), tiles_[k].texelArea);
             const auto items = buildDrawList(geometry.draws(), tiles_[k].viewProj, frame.camera.position);
             geometry.draw(p, items, [&](std::uint32_t m) { materials.bind(p, m, MaterialBindMode::Reflectance); });
         }
-        for (int a = 0; a < 4; ++a)
-            glNamedFramebufferTexture(fbo_.id(), attachments[a], targets[a], 0); // layered again
+        targets_.attachAllLayers(); // layered again
     } else {
-        clearTargets();
+        targets_.clear();
         glProgramUniformMatrix4fv(p, loc("uTileViewProj"), count, GL_FALSE, glm::value_ptr(viewProj[0]));
         glProgramUniform1fv(p, loc("uTexelArea"), count, texelArea.data());
         // Culled once against the box that holds every tile; rsm.geom drops a
@@ -244,27 +187,9 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
 }
 
 std::vector<DebugImage> RsmPass::debugImages() const {
-    std::vector<DebugImage> images;
     if (!active())
-        return images;
-    const std::size_t row = std::size_t(tileSize_) * 4;
-    const std::pair<const char*, GLuint> targets[] = {
-        {"position", position_.id()}, {"normal", normal_.id()}, {"flux", flux_.id()}};
-    for (int k = 0; k < int(tiles_.size()); ++k) {
-        for (const auto& [what, texture] : targets) {
-            DebugImage image{"rsm-" + std::to_string(k) + "-" + what, tileSize_, tileSize_, 4, {}};
-            std::vector<float> raw(row * std::size_t(tileSize_));
-            glGetTextureSubImage(texture, 0, 0, 0, k, tileSize_, tileSize_, 1, GL_RGBA, GL_FLOAT,
-                                 GLsizei(raw.size() * sizeof(float)), raw.data());
-            // GL rows run bottom to top; DebugImage rows top to bottom.
-            image.pixels.resize(raw.size());
-            for (int y = 0; y < tileSize_; ++y)
-                std::copy_n(raw.begin() + std::ptrdiff_t(std::size_t(tileSize_ - 1 - y) * row), row,
-                            image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row));
-            images.push_back(std::move(image));
-        }
-    }
-    return images;
+        return {};
+    return targets_.debugImages("rsm", int(tiles_.size()));
 }
 
 } // namespace lpv::renderer

@@ -22,6 +22,7 @@
 #include "frame/FrameContext.h"
 #include "scenegpu/MaterialGpu.h"
 #include "passes/lpv/RsmCascades.h"
+#include "passes/lpv/RsmTargets.h"
 #include "lpv/renderer/ForwardRenderer.h"
 #include "lpv/renderer/GlHandle.h"
 #include "lpv/renderer/SceneGpu.h"
@@ -72,16 +73,16 @@ class RsmPass {
     // --- For the LPV injection (valid after render(), while active()) ---
     bool active() const { return sunIndex_ >= 0 && !tiles_.empty(); }
     int sunIndex() const { return sunIndex_; }
-    int tileSize() const { return tileSize_; }
+    int tileSize() const { return targets_.size(); }
     // One per LPV cascade: its cube, the tile's matrices and texel size/area.
     const std::vector<RsmTile>& tiles() const { return tiles_; }
     // 2D array textures, layer k = tile k (formats above).
-    GLuint positionArray() const { return position_.id(); }
-    GLuint normalArray() const { return normal_.id(); }
-    GLuint fluxArray() const { return flux_.id(); }
-    GLuint depthArray() const { return depth_.id(); }
+    GLuint positionArray() const { return targets_.position(); }
+    GLuint normalArray() const { return targets_.normal(); }
+    GLuint fluxArray() const { return targets_.flux(); }
+    GLuint depthArray() const { return targets_.depth(); }
     // GPU memory held by the targets (0 when there is no sun).
-    std::size_t allocatedBytes() const;
+    std::size_t allocatedBytes() const { return targets_.bytes(); }
 
   private:
     RsmPass() = default;
@@ -96,10 +97,7 @@ class RsmPass {
     Program perTileProgram_;
     int sunIndex_ = -1;
     std::vector<RsmTile> tiles_;
-    int tileSize_ = 0;
-    int layers_ = 0;
-    Texture position_, normal_, flux_, depth_;
-    Framebuffer fbo_;
+    RsmTargets targets_;
 };
 
 } // namespace lpv::renderer
