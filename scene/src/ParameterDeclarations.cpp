@@ -151,10 +151,12 @@ std::vector<ParameterInfo> declareParameters() {
              P::Shading),
         integer("lpv.cascadeBlendLevels", 2, 1, 6, "cascades", "LPV",
                 "Cascades blended at a lookup (2 = the two nearest; more adds coarser ones)", P::Shading),
-        choice("lpv.lookupResolution", "full", {"full", "half", "quarter"}, "LPV",
+        choice("lpv.lookupResolution", "full", {"full", "half", "quarter", "auto"}, "LPV",
                "Resolution of the LPV's diffuse lookup: full evaluates it at every pixel; half or quarter evaluates "
-               "it once per 2x2 or 4x4 pixels (the lpvLookup pass) and shading upsamples it with depth- and "
-               "normal-aware weights, looking up at full resolution where no neighbour lies on its surface",
+               "it once per 2x2 or 4x4 pixels (the lpvLookup pass) and upsamples it with depth- and normal-aware "
+               "weights (the lpvLookupResolve pass), looking up at full resolution where no neighbour lies on its "
+               "surface; auto takes the cheapest that measured within the reference's noise of full, from how many "
+               "pixels a cell of the LPV spans and how many pixels the view has per triangle",
                P::LpvLookup | P::Shading),
         choice("lpv.directedPropagation", "off", kAutoOnOff, "LPV",
                "Directed propagation: a normals volume keeps light from flowing back onto its emitter",

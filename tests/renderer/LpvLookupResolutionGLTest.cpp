@@ -29,6 +29,7 @@ struct Frame {
     std::vector<float> depth;
     renderer::PassStatus lookup = renderer::PassStatus::Culled;
     renderer::PassStatus resolve = renderer::PassStatus::Culled;
+    std::string lookupReason;
     std::vector<std::string> shadingReads;
 };
 
@@ -36,7 +37,7 @@ struct Frame {
 // irradiance, no albedo) after three frames (the geometry volume reads the
 // previous frame's G-buffer), at `resolution`.
 Frame renderIndirect(const std::string& resolution, scene::Project project = scene::makeCornellBoxProject(),
-                     bool depthPrepass = true) {
+                     bool depthPrepass = true, int size = kSize) {
     EXPECT_TRUE(project.parameters.set("output.view", std::string("indirect")).has_value());
     EXPECT_TRUE(project.parameters.set("output.depthPrepass", depthPrepass).has_value());
     EXPECT_TRUE(project.parameters.set("lpv.lookupResolution", resolution).has_value());
@@ -47,9 +48,12 @@ Frame renderIndirect(const std::string& resolution, scene::Project project = sce
         return frame;
     r->setScene(project.scene);
     for (int i = 0; i < 3; ++i) {
-        auto ok = r->render(project.scene, project.parameters, project.scene.cameras.front(), kSize, kSize);
+        auto ok = r->render(project.scene, project.parameters, project.scene.cameras.front(), size, size);
         EXPECT_TRUE(ok.has_value()) << ok.error().describe();
     }
+    for (const renderer::EffectDecision& effect : r->frameEffects())
+        if (effect.parameter == "lpv.lookupResolution")
+            frame.lookupReason = effect.reason;
     if (const auto* report = r->graphReport().find("lpvLookup"))
         frame.lookup = report->status;
     if (const auto* report = r->graphReport().find("lpvLookupResolve"))
@@ -190,6 +194,27 @@ TEST_F(LpvLookupResolutionGLTest, WithoutTheDepthPrepassTheResolveFindsTheSameSu
     ASSERT_GT(d.pixels, std::size_t(kSize * kSize / 2));
     std::printf("quarter without vs with the depth pre-pass: mean relative difference %.6f\n", d.meanRelative);
     EXPECT_LT(d.meanRelative, 1e-3);
+}
+
+// auto decides from the view: the Cornell box's 36 triangles cost nothing to
+// draw again, so a reduced lookup pays wherever its texels stay within a
+// cell; in a thumbnail a cell spans about a pixel, and the lookup stays full.
+TEST_F(LpvLookupResolutionGLTest, AutoTakesAReducedLookupWhereACellSpansEnoughPixels) {
+    const Frame autoFrame = renderIndirect("auto");
+    const Frame quarter = renderIndirect("quarter");
+    std::printf("auto at %dx%d: %s\n", kSize, kSize, autoFrame.lookupReason.c_str());
+    EXPECT_NE(autoFrame.lookupReason.find("lpv.lookupResolution is auto: quarter"), std::string::npos)
+        << autoFrame.lookupReason;
+    EXPECT_NE(autoFrame.resolve, renderer::PassStatus::Culled);
+    ASSERT_EQ(autoFrame.hdr.size(), quarter.hdr.size());
+    EXPECT_EQ(autoFrame.hdr, quarter.hdr) << "auto's quarter is not the quarter setting's image";
+
+    const Frame thumbnail = renderIndirect("auto", scene::makeCornellBoxProject(), true, 24);
+    std::printf("auto at 24x24: %s\n", thumbnail.lookupReason.c_str());
+    EXPECT_EQ(thumbnail.lookup, renderer::PassStatus::Culled);
+    EXPECT_EQ(thumbnail.resolve, renderer::PassStatus::Culled);
+    EXPECT_NE(thumbnail.lookupReason.find("lpv.lookupResolution is auto: full"), std::string::npos)
+        << thumbnail.lookupReason;
 }
 
 } // namespace

@@ -53,6 +53,15 @@ EffectDecision decide(std::string effect, std::string key, const scene::Paramete
     return d;
 }
 
+
+// lpv.lookupResolution = auto (docs/renderer.md, "The lookup at reduced
+// resolution", measured against the path-traced reference): a reduced
+// lookup's texel spans at most 1/kLookupPixelsPerCellPerTexel of the LPV's
+// cell, and the view has at least kLookupMinPixelsPerTriangle pixels per
+// triangle (below, its three extra draws of the scene cost more than the
+// lookups it saves).
+constexpr double kLookupPixelsPerCellPerTexel = 1.0;
+constexpr double kLookupMinPixelsPerTriangle = 2.0;
 } // namespace
 
 SceneTraits analyseSceneTraits(const scene::Scene& s) {
@@ -264,6 +273,47 @@ EffectDecision decideSunRays(const scene::Scene& s, const scene::ParameterSet& p
         d.wanted = false; // forced on, but there is no sun to draw rays from
         d.reason = "forced on by effects.sunRays, but the scene has no sun";
     }
+    return d;
+}
+
+LookupResolutionDecision decideLookupResolution(const scene::ParameterSet& params, int viewWidth, int viewHeight,
+                                                float fovY, std::size_t triangles) {
+    const std::string setting = params.getEnum("lpv.lookupResolution");
+    if (setting == "full")
+        return {1, "lpv.lookupResolution is full"};
+    if (setting == "half")
+        return {2, "lpv.lookupResolution is half"};
+    if (setting == "quarter")
+        return {4, "lpv.lookupResolution is quarter"};
+    // The fewest pixels one cell of the LPV spans in this view: a cascade of
+    // gridSize cells seen from inside, its far side at most gridSize cells away
+    // (each coarser cascade's cells grow with its distance, so the same bound holds for all).
+    const int grid = params.getInt("lpv.gridSize");
+    const double pixelsPerCell = double(viewHeight) / (2.0 * grid * std::tan(0.5 * double(fovY)));
+    const double pixels = double(viewWidth) * double(viewHeight);
+    const double pixelsPerTriangle = triangles > 0 ? pixels / double(triangles) : pixels;
+    char why[200];
+    std::snprintf(why, sizeof why, "a cell of the LPV spans at least %.1f pixels of this view, %.1f pixels per triangle",
+                  pixelsPerCell, pixelsPerTriangle);
+    LookupResolutionDecision d;
+    if (pixelsPerTriangle < kLookupMinPixelsPerTriangle) {
+        d.reduction = 1;
+        char cost[120];
+        std::snprintf(cost, sizeof cost, " (under %.1f: the reduced lookup's extra draws of the scene cost more than it saves)",
+                      kLookupMinPixelsPerTriangle);
+        d.reason = std::string("lpv.lookupResolution is auto: full, ") + why + cost;
+        return d;
+    }
+    for (const int reduction : {4, 2})
+        if (pixelsPerCell >= kLookupPixelsPerCellPerTexel * reduction) {
+            d.reduction = reduction;
+            break;
+        }
+    char rule[120];
+    std::snprintf(rule, sizeof rule, " (quarter needs %.1f, half %.1f)", 4.0 * kLookupPixelsPerCellPerTexel,
+                  2.0 * kLookupPixelsPerCellPerTexel);
+    d.reason = std::string("lpv.lookupResolution is auto: ") +
+               (d.reduction == 4 ? "quarter, " : d.reduction == 2 ? "half, " : "full, ") + why + rule;
     return d;
 }
 

@@ -83,6 +83,21 @@ EffectDecision decideSubsurface(const SceneTraits& traits, const scene::Paramete
 EffectDecision decideGlossyReflections(const SceneTraits& traits, const scene::ParameterSet& params,
                                        bool lpvRuns, const std::string& lpvReason);
 
+// lpv.lookupResolution (issue #48): the LPV's diffuse lookup once per
+// `reduction` x `reduction` pixels (1 full, 2 half, 4 quarter), and why.
+struct LookupResolutionDecision {
+    int reduction = 1;
+    std::string reason;
+};
+// `auto` takes the cheapest resolution that measured within the path-traced
+// reference's noise of the full lookup (docs/renderer.md, "The lookup at
+// reduced resolution"): a reduced lookup only where a cell of the LPV spans
+// enough pixels of this view for its texels to stay well inside a cell, and
+// where the view has enough pixels per triangle to pay for the extra draws of
+// the scene (the low-resolution lookup's two and the resolve's one).
+LookupResolutionDecision decideLookupResolution(const scene::ParameterSet& params, int viewWidth, int viewHeight,
+                                                float fovY, std::size_t triangles);
+
 // The decisions for every effect; `camera` (may be null) decides the sun rays (sun on screen).
 std::vector<EffectDecision> decideEffects(const scene::Scene& scene, const SceneTraits& traits,
                                           const scene::ParameterSet& params, const scene::Camera* camera,

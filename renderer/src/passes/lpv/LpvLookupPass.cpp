@@ -6,7 +6,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include <stdexcept>
 
 namespace lpv::renderer {
 
@@ -23,28 +22,33 @@ const std::vector<std::string> kLookupParameters{"lpv.intensity",       "lpv.ble
 
 } // namespace
 
-int LpvLookupPass::reduction(const scene::ParameterSet& params) {
-    const std::string value = params.getEnum("lpv.lookupResolution");
-    if (value == "full")
-        return 1;
-    if (value == "half")
-        return 2;
-    if (value == "quarter")
-        return 4;
-    throw std::logic_error("lpv.lookupResolution = '" + value + "' has no reduction");
+LookupResolutionDecision LpvLookupPass::resolution(const FrameState& state) {
+    const FrameContext& frame = state.frame;
+    std::size_t triangles = 0;
+    for (const scene::Object& object : frame.scene.objects)
+        if (object.visible && object.mesh >= 0 && std::size_t(object.mesh) < frame.scene.meshes.size())
+            triangles += frame.scene.meshes[std::size_t(object.mesh)].indices.size() / 3;
+    return decideLookupResolution(frame.params, frame.width, frame.height, frame.camera.fovY, triangles);
 }
 
 void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
     const FrameContext& frame = state.frame;
-    const int reduction = LpvLookupPass::reduction(frame.params);
-    const std::string setting = "lpv.lookupResolution is " + frame.params.getEnum("lpv.lookupResolution");
+    const LookupResolutionDecision resolution = LpvLookupPass::resolution(state);
+    const int reduction = resolution.reduction;
+    reduction_ = reduction;
     if (reduction == 1)
-        pass.decision = skippedBecause(setting + ": shading looks the LPV up at every pixel");
+        pass.decision = skippedBecause(resolution.reason + ": shading looks the LPV up at every pixel");
     else if (!state.lpv.runs)
         pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
     else
-        pass.decision = runsBecause(setting + ": the LPV's lookup once per " + std::to_string(reduction) + "x" +
-                                    std::to_string(reduction) + " pixels, upsampled by lpvLookupResolve");
+        pass.decision = runsBecause(resolution.reason + ": the LPV's lookup once per " + std::to_string(reduction) +
+                                    "x" + std::to_string(reduction) + " pixels, upsampled by lpvLookupResolve");
+    // The frame's effects list (`lpv render`, the editor) says what auto chose and why, run or reused.
+    EffectDecision effect = pass.decision;
+    effect.effect = "LPV lookup at reduced resolution";
+    effect.parameter = "lpv.lookupResolution";
+    effect.setting = frame.params.getEnum("lpv.lookupResolution");
+    state.effects.push_back(std::move(effect));
     pass.writes = {resources::LpvLookup, resources::LpvLookupNormal, resources::LpvLookupDepth};
     if (!pass.decision.runs()) {
         // Named, so the report and --dump can say why they hold nothing; not allocated.
@@ -79,7 +83,7 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
         glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
         attached_ = targets;
     }
-    const int reduction = LpvLookupPass::reduction(frame.params);
+    const int reduction = reduction_;
     // No surface: a negative distance and a zero normal, which no pixel's weights accept.
     const float noSurface[] = {0.0f, 0.0f, 0.0f, -1.0f};
     const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};

@@ -22,9 +22,10 @@ class LpvLookupPass final : public GraphPass {
   public:
     LpvLookupPass() : GraphPass(scene::Pass::LpvLookup) {}
 
-    // lpv.lookupResolution as the number of full-resolution pixels along one
-    // low-resolution texel (1, 2 or 4).
-    static int reduction(const scene::ParameterSet& params);
+    // lpv.lookupResolution for this frame (SceneAnalysis.h's
+    // decideLookupResolution: auto decides from the view and the scene): the
+    // number of full-resolution pixels along one low-resolution texel (1, 2 or 4), and why.
+    static LookupResolutionDecision resolution(const FrameState& state);
 
   protected:
     void setup(graph::PassSpec& pass, FrameState& state) override;
@@ -36,6 +37,7 @@ class LpvLookupPass final : public GraphPass {
     Framebuffer fbo_;
     std::array<GLuint, 3> attached_{};
     bool visibility_ = false; // this frame's LPV has its visibility moments bound
+    int reduction_ = 1;       // this frame's resolution()
 };
 
 } // namespace lpv::renderer

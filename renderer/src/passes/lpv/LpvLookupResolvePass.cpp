@@ -31,15 +31,15 @@ const std::vector<std::string> kParameters{"lpv.lookupResolution", "lpv.intensit
 
 void LpvLookupResolvePass::setup(graph::PassSpec& pass, FrameState& state) {
     const FrameContext& frame = state.frame;
-    const int reduction = LpvLookupPass::reduction(frame.params);
-    const std::string setting = "lpv.lookupResolution is " + frame.params.getEnum("lpv.lookupResolution");
-    if (reduction == 1)
-        pass.decision = skippedBecause(setting + ": shading looks the LPV up at every pixel");
+    const LookupResolutionDecision resolution = LpvLookupPass::resolution(state);
+    reduction_ = resolution.reduction;
+    if (reduction_ == 1)
+        pass.decision = skippedBecause(resolution.reason + ": shading looks the LPV up at every pixel");
     else if (!state.lpv.runs)
         pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
     else
-        pass.decision = runsBecause(setting + ": the lpvLookup image upsampled to every pixel, looked up at full "
-                                              "resolution where no low-resolution neighbour lies on its surface");
+        pass.decision = runsBecause(resolution.reason + ": the lpvLookup image upsampled to every pixel, looked up "
+                                                        "at full resolution where no low-resolution neighbour lies on its surface");
     ownDepth_ = !state.depthPrepass;
     pass.writes = {Resolved, ResolveDepth};
     if (!pass.decision.runs()) {
@@ -151,8 +151,7 @@ scene::Expected<void> LpvLookupResolvePass::execute(graph::PassContext& ctx, Fra
     }
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    const int reduction = LpvLookupPass::reduction(frame.params);
-    const int lowW = (frame.width + reduction - 1) / reduction, lowH = (frame.height + reduction - 1) / reduction;
+    const int lowW = (frame.width + reduction_ - 1) / reduction_, lowH = (frame.height + reduction_ - 1) / reduction_;
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kListBinding, list_.id());
     auto resolvedDraw = drawBoth("forward.vert", "lpv_lookup_resolve.frag", "RESOLVE_OPAQUE", [&](const CachedProgram& shader) {
         const GLuint p = shader.id();

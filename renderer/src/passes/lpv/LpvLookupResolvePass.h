@@ -57,6 +57,7 @@ class LpvLookupResolvePass final : public GraphPass {
     std::size_t listPixels_ = 0;
     bool ownDepth_ = false;   // output.depthPrepass is off: the pass draws its own depth first
     bool visibility_ = false; // this frame's LPV has its visibility moments bound
+    int reduction_ = 1;       // this frame's LpvLookupPass::resolution()
 };
 
 } // namespace lpv::renderer
