@@ -1,4 +1,5 @@
 #include "passes/direct/ShadowPass.h"
+#include "gl/ImageRows.h"
 
 #include "gl/GpuMemoryLedger.h"
 #include "graph/ContentHash.h"
@@ -457,12 +458,7 @@ std::vector<DebugImage> ShadowPass::debugImages() const {
         image.pixels.resize(std::size_t(t.size) * std::size_t(t.size));
         glGetTextureSubImage(t.texture.id(), 0, 0, 0, layer, t.size, t.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                              GLsizei(image.pixels.size() * sizeof(float)), image.pixels.data());
-        // GL rows are bottom to top; DebugImage rows top to bottom.
-        const std::size_t row = std::size_t(t.size);
-        for (int y = 0; y < t.size / 2; ++y)
-            std::swap_ranges(image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                             image.pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                             image.pixels.begin() + std::ptrdiff_t(std::size_t(t.size - 1 - y) * row));
+        flipRows(image.pixels, t.size, t.size, 1);
         images.push_back(std::move(image));
     };
     for (std::size_t k = 0; k < cascades_.size() && cascadeMap_.texture; ++k)

@@ -89,14 +89,7 @@ scene::Expected<void> LocalRsmPass::render(const FrameContext& frame, const Scen
     const GLuint p = program_.id();
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     const scene::Bounds bounds = frame.sceneBounds;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer());
-    glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE); // lights see single-sided walls from either side
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    targets_.bindForDrawing();
     glUseProgram(p);
     int layer = 0;
     for (int index : lights) {

@@ -149,14 +149,7 @@ scene::Expected<void> RsmPass::render(const FrameContext& frame, const SceneGpu&
         texelArea[tiles_.size() - 1] = tiles_.back().texelArea;
     }
 
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer());
-    glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE); // the sun must see single-sided walls from either side
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    targets_.bindForDrawing();
     const glm::vec3 irradiance = sun.color * sun.intensity;
     const GLuint p = *program;
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };

@@ -1,5 +1,7 @@
 #include "passes/lpv/RsmTargets.h"
 
+#include "gl/ImageRows.h"
+
 #include <algorithm>
 
 namespace lpv::renderer {
@@ -65,6 +67,17 @@ void RsmTargets::attachLayer(int layer) {
         glNamedFramebufferTextureLayer(fbo_.id(), kAttachments[a], targets[a], 0, layer);
 }
 
+void RsmTargets::bindForDrawing() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size_, size_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE); // a light sees single-sided walls from either side
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
 void RsmTargets::clear() {
     const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float farDepth = 1.0f;
@@ -81,14 +94,10 @@ std::vector<DebugImage> RsmTargets::debugImages(const std::string& prefix, int c
     for (int layer = 0; layer < std::min(count, layers_); ++layer)
         for (const auto& [what, texture] : targets) {
             DebugImage image{prefix + "-" + std::to_string(layer) + "-" + what, size_, size_, 4, {}};
-            std::vector<float> raw(row * std::size_t(size_));
+            image.pixels.resize(row * std::size_t(size_));
             glGetTextureSubImage(texture, 0, 0, 0, layer, size_, size_, 1, GL_RGBA, GL_FLOAT,
-                                 GLsizei(raw.size() * sizeof(float)), raw.data());
-            // GL rows run bottom to top; DebugImage rows top to bottom.
-            image.pixels.resize(raw.size());
-            for (int y = 0; y < size_; ++y)
-                std::copy_n(raw.begin() + std::ptrdiff_t(std::size_t(size_ - 1 - y) * row), row,
-                            image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row));
+                                 GLsizei(image.pixels.size() * sizeof(float)), image.pixels.data());
+            flipRows(image.pixels, size_, size_, 4);
             images.push_back(std::move(image));
         }
     return images;

@@ -38,6 +38,10 @@ class RsmTargets {
     // All layers attached (a layered framebuffer: gl_Layer picks the tile), or one.
     void attachAllLayers();
     void attachLayer(int layer);
+    // Binds the framebuffer for drawing at its size: depth test (less, written),
+    // no blending, no culling (a light sees single-sided walls from either
+    // side), no polygon offset.
+    void bindForDrawing() const;
     // The attached layer(s) to zero and the depth to far.
     void clear();
     // Each layer's position, normal and flux as `prefix`-LAYER-WHAT images,

@@ -1,4 +1,5 @@
 #include "lpv/renderer/RadiosityView.h"
+#include "gl/ImageRows.h"
 
 #include "passes/radiosity/PatchVertices.h"
 #include "lpv/radiosity/VertexRadiosity.h"
@@ -94,12 +95,7 @@ std::vector<std::uint8_t> RadiosityView::readDisplay() const {
     if (!color_)
         return pixels;
     glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
-    // GL rows run bottom to top.
-    const std::size_t row = std::size_t(width_) * 4;
-    for (int y = 0; y < height_ / 2; ++y)
-        std::swap_ranges(pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(height_ - 1 - y) * row));
+    flipRows(pixels, width_, height_, 4);
     return pixels;
 }
 
@@ -109,11 +105,7 @@ std::vector<float> RadiosityView::readRadiance() const {
         return pixels;
     glGetTextureImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
                       pixels.data());
-    const std::size_t row = std::size_t(width_) * 4;
-    for (int y = 0; y < height_ / 2; ++y)
-        std::swap_ranges(pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
-                         pixels.begin() + std::ptrdiff_t(std::size_t(height_ - 1 - y) * row));
+    flipRows(pixels, width_, height_, 4);
     return pixels;
 }
 
