@@ -9,6 +9,7 @@
 #include "ThinWallRooms.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
+#include "lpv/renderer/SceneAnalysis.h"
 #include "lpv/renderer/lpv/LpvBands.h"
 #include "lpv/scene/CornellBox.h"
 
@@ -51,6 +52,15 @@ TEST_F(GlTest, LpvVariantsOtherThanComputeGatherRefuseThreeShBandsNamingThemselv
     ASSERT_FALSE(refused.has_value());
     EXPECT_NE(refused.error().describe().find("lpv.lookupResolution = full"), std::string::npos)
         << refused.error().describe();
+    // auto picks full for three bands (a view where it picks quarter for two), and renders.
+    ASSERT_TRUE(params.setFromText("lpv.lookupResolution", "auto", "test").has_value());
+    const auto three = renderer::decideLookupResolution(params, 1024, 600, 1.0f, 100);
+    EXPECT_EQ(three.reduction, 1) << three.reason;
+    ASSERT_TRUE(params.setFromText("lpv.shBands", "2", "test").has_value());
+    EXPECT_GT(renderer::decideLookupResolution(params, 1024, 600, 1.0f, 100).reduction, 1);
+    ASSERT_TRUE(params.setFromText("lpv.shBands", "3", "test").has_value());
+    auto automatic = r->render(project.scene, params, camera, 64, 64);
+    EXPECT_TRUE(automatic.has_value()) << (automatic ? "" : automatic.error().describe());
 }
 
 namespace {

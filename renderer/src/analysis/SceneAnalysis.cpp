@@ -285,6 +285,10 @@ LookupResolutionDecision decideLookupResolution(const scene::ParameterSet& param
         return {2, "lpv.lookupResolution is half"};
     if (setting == "quarter")
         return {4, "lpv.lookupResolution is quarter"};
+    // Three SH bands (issue #47): the reduced lookup's passes read two bands
+    // (LpvPass refuses half and quarter by name), so auto keeps full.
+    if (params.getInt("lpv.shBands") == 3)
+        return {1, "lpv.lookupResolution is auto and lpv.shBands is 3: the reduced lookup reads two bands"};
     // The fewest pixels one cell of the LPV spans in this view: a cascade of
     // gridSize cells seen from inside, its far side at most gridSize cells away
     // (each coarser cascade's cells grow with its distance, so the same bound holds for all).
