@@ -31,7 +31,9 @@ vec3 fromOctahedral(vec2 p) {
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i >= fallbackCount)
+    // The last group's spare invocations; past a full list fallbackCount
+    // goes on counting, the entries (and the groups) do not.
+    if (i >= min(fallbackCount, uint(fallback.length())))
         return;
     LpvFallbackEntry entry = fallback[i];
     vec3 x = vec3(entry.x, entry.y, entry.z);

@@ -28,7 +28,9 @@ vec3 lpvViewerSideNormal(vec3 x, vec3 vertexNormal, vec3 cameraPos) {
 }
 
 // The upsampled irradiance at x into e; false where no low-resolution
-// neighbour lies on this surface. nv: lpvViewerSideNormal's.
+// neighbour lies on this surface, and e is then the plain bilinear mean of
+// the neighbours that saw a surface (a stand-in, see lpv_lookup_resolve.frag).
+// nv: lpvViewerSideNormal's.
 bool lpvIrradianceUpsampled(vec3 x, vec3 nv, vec3 cameraPos, out vec3 e) {
     float d = length(cameraPos - x) * uLpvLowDistanceScale;
     // The distance changes this much across one low-resolution texel on this
@@ -41,8 +43,8 @@ bool lpvIrradianceUpsampled(vec3 x, vec3 nv, vec3 cameraPos, out vec3 e) {
     ivec2 i0 = ivec2(floor(p));
     vec2 f = p - vec2(i0);
     ivec2 last = textureSize(uLpvLowIrradiance, 0) - 1;
-    vec3 sum = vec3(0.0);
-    float weights = 0.0;
+    vec3 sum = vec3(0.0), plainSum = vec3(0.0);
+    float weights = 0.0, plainWeights = 0.0;
     for (int k = 0; k < 4; ++k) {
         ivec2 o = ivec2(k & 1, k >> 1);
         ivec2 texel = clamp(i0 + o, ivec2(0), last);
@@ -57,7 +59,12 @@ bool lpvIrradianceUpsampled(vec3 x, vec3 nv, vec3 cameraPos, out vec3 e) {
         float w = b.x * b.y * depthWeight * normalWeight;
         sum += w * low.rgb;
         weights += w;
+        float plain = low.a < 0.0 ? 0.0 : b.x * b.y + 1e-6;
+        plainSum += plain * low.rgb;
+        plainWeights += plain;
     }
-    e = weights < LPV_UPSAMPLE_MIN_WEIGHT ? vec3(0.0) : sum / weights;
+    e = weights >= LPV_UPSAMPLE_MIN_WEIGHT ? sum / weights
+        : plainWeights > 0.0                ? plainSum / plainWeights
+                                            : vec3(0.0);
     return weights >= LPV_UPSAMPLE_MIN_WEIGHT;
 }

@@ -43,18 +43,18 @@ class LpvLookupResolvePass final : public GraphPass {
         fbo_ = {};
         attached_ = {};
         list_ = {};
-        listPixels_ = 0;
+        listEntries_ = 0;
     }
 
   private:
-    // The fallback list for a view of `pixels` pixels (every one could be an edge).
+    // The fallback list for a view of `pixels` pixels.
     void reserveList(std::size_t pixels);
 
     ProgramCache programs_;
     Framebuffer fbo_;
     std::array<GLuint, 2> attached_{};
     Buffer list_;
-    std::size_t listPixels_ = 0;
+    std::size_t listEntries_ = 0;
     bool ownDepth_ = false;   // output.depthPrepass is off: the pass draws its own depth first
     bool visibility_ = false; // this frame's LPV has its visibility moments bound
     int reduction_ = 1;       // this frame's LpvLookupPass::resolution()
