@@ -22,7 +22,8 @@ constexpr const auto& kNear = scene::fieldOf<&Camera::nearPlane>();
 constexpr const auto& kFar = scene::fieldOf<&Camera::farPlane>();
 } // namespace
 
-CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+CameraProperties::CameraProperties(Document* doc, QWidget* parent)
+    : ElementPanel(doc, &scene::Scene::cameras, &Document::setCamera, parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto* group = new QGroupBox(tr("Camera"), this);
@@ -75,27 +76,16 @@ CameraProperties::CameraProperties(Document* doc, QWidget* parent) : QWidget(par
              [&](Camera& c) { kFar.of(c) = rangeGivenOthers(c, kFar.name).clamp(float(v)); });
     });
 
-    setCameraIndex(-1);
-}
-
-void CameraProperties::setCameraIndex(int index) {
-    index_ = index;
-    refresh();
-}
-
-void CameraProperties::edit(const QString& text, const std::function<void(scene::Camera&)>& change) {
-    editElement(doc_, &scene::Scene::cameras, &Document::setCamera, index_, text, change);
+    setIndex(-1);
 }
 
 void CameraProperties::refresh() {
-    const auto& cameras = doc_->scene().cameras;
-    const bool valid = index_ >= 0 && std::size_t(index_) < cameras.size();
-    setEnabled(valid);
-    if (!valid) {
+    const scene::Camera* shown = shownElement();
+    if (!shown) {
         showText(name_, {});
         return;
     }
-    const scene::Camera& c = cameras[std::size_t(index_)];
+    const scene::Camera& c = *shown;
     showText(name_, QString::fromStdString(c.name));
     position_->showValue(glm::dvec3(c.position));
     target_->showValue(glm::dvec3(c.target));

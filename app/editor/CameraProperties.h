@@ -1,37 +1,24 @@
 #pragma once
 // A named camera of the project: where it stands, what it looks at, its
 // field of view and clip planes.
-#include <QWidget>
+#include "ElementPanel.h"
 
-#include <functional>
+#include <QWidget>
 
 class QDoubleSpinBox;
 class QLineEdit;
 
-namespace lpv::scene {
-struct Camera;
-}
-
 namespace lpv::editor {
 
-class Document;
 class Vec3Edit;
 
-class CameraProperties : public QWidget {
+class CameraProperties : public ElementPanel<scene::Camera> {
     Q_OBJECT
   public:
     explicit CameraProperties(Document* doc, QWidget* parent = nullptr);
-
-    // -1 shows nothing.
-    void setCameraIndex(int index);
-    int cameraIndex() const { return index_; }
-    void refresh();
+    void refresh() override;
 
   private:
-    void edit(const QString& text, const std::function<void(scene::Camera&)>& change);
-
-    Document* doc_;
-    int index_ = -1;
     QLineEdit* name_ = nullptr;
     Vec3Edit* position_ = nullptr;
     Vec3Edit* target_ = nullptr;

@@ -30,7 +30,8 @@ constexpr const auto& kSize = scene::fieldOf<&Light::size>();
 constexpr const auto& kRadius = scene::fieldOf<&Light::radius>();
 } // namespace
 
-LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+LightProperties::LightProperties(Document* doc, QWidget* parent)
+    : ElementPanel(doc, &scene::Scene::lights, &Document::setLight, parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto* group = new QGroupBox(tr("Light"), this);
@@ -166,18 +167,11 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
         edit(tr("Toggle light shadows"), [&](scene::Light& l) { l.castShadows = on; });
     });
 
-    setLightIndex(-1);
+    setIndex(-1);
 }
 
-void LightProperties::setLightIndex(int index) {
-    if (index != index_)
-        anglesLight_ = -1;
-    index_ = index;
-    refresh();
-}
-
-void LightProperties::edit(const QString& text, const std::function<void(scene::Light&)>& change) {
-    editElement(doc_, &scene::Scene::lights, &Document::setLight, index_, text, change);
+void LightProperties::forgetLastElement() {
+    anglesLight_ = -1;
 }
 
 void LightProperties::applyColor(const QColor& color) {
@@ -188,20 +182,18 @@ void LightProperties::applyColor(const QColor& color) {
 void LightProperties::editDirection() {
     angles_ = {azimuth_->value(), elevation_->value()};
     anglesDirection_ = directionFrom(angles_);
-    anglesLight_ = index_;
+    anglesLight_ = index();
     const glm::vec3 d = anglesDirection_;
     edit(tr("Edit light direction"), [&](scene::Light& l) { l.direction = d; });
 }
 
 void LightProperties::refresh() {
-    const auto& lights = doc_->scene().lights;
-    const bool valid = index_ >= 0 && std::size_t(index_) < lights.size();
-    setEnabled(valid);
-    if (!valid) {
+    const scene::Light* shown = shownElement();
+    if (!shown) {
         showText(name_, {});
         return;
     }
-    const scene::Light& l = lights[std::size_t(index_)];
+    const scene::Light& l = *shown;
     showText(name_, QString::fromStdString(l.name));
     {
         const QSignalBlocker block(type_);
@@ -242,10 +234,10 @@ void LightProperties::refresh() {
         showValue(areaRadius_, l.radius);
     }
 
-    if (anglesLight_ != index_ || anglesDirection_ != l.direction) {
+    if (anglesLight_ != index() || anglesDirection_ != l.direction) {
         angles_ = azimuthElevationOf(l.direction);
         anglesDirection_ = l.direction;
-        anglesLight_ = index_;
+        anglesLight_ = index();
     }
     showValue(azimuth_, angles_.azimuth);
     showValue(elevation_, angles_.elevation);

@@ -3,6 +3,8 @@
 // Directions are shown as azimuth/elevation of where the light comes from.
 #include "PropertyWidgets.h"
 
+#include "ElementPanel.h"
+
 #include <QWidget>
 
 #include <functional>
@@ -13,34 +15,22 @@ class QDoubleSpinBox;
 class QFormLayout;
 class QLineEdit;
 
-namespace lpv::scene {
-struct Light;
-}
-
 namespace lpv::editor {
 
-class Document;
-
-class LightProperties : public QWidget {
+class LightProperties : public ElementPanel<scene::Light> {
     Q_OBJECT
   public:
     explicit LightProperties(Document* doc, QWidget* parent = nullptr);
-
-    // -1 shows nothing.
-    void setLightIndex(int index);
-    int lightIndex() const { return index_; }
-    void refresh();
+    void refresh() override;
 
   public slots:
     // What the colour button calls once its dialog returns.
     void applyColor(const QColor& color);
 
   private:
-    void edit(const QString& text, const std::function<void(scene::Light&)>& change);
+    void forgetLastElement() override;
     void editDirection();
 
-    Document* doc_;
-    int index_ = -1;
     QFormLayout* form_ = nullptr;
     QLineEdit* name_ = nullptr;
     QComboBox* type_ = nullptr;

@@ -48,7 +48,8 @@ template <class Field> QDoubleSpinBox* unitBox(QWidget* parent, const char* obje
 
 } // namespace
 
-MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+MaterialProperties::MaterialProperties(Document* doc, QWidget* parent)
+    : ElementPanel(doc, &scene::Scene::materials, &Document::setMaterial, parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto* group = new QGroupBox(tr("Material"), this);
@@ -133,18 +134,11 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
         edit(tr("Toggle material two-sided"), [&](scene::Material& m) { m.twoSided = on; });
     });
 
-    setMaterialIndex(-1);
+    setIndex(-1);
 }
 
-void MaterialProperties::setMaterialIndex(int index) {
-    if (index != index_)
-        emissiveColor_ = glm::vec3(1.0f);
-    index_ = index;
-    refresh();
-}
-
-void MaterialProperties::edit(const QString& text, const std::function<void(scene::Material&)>& change) {
-    editElement(doc_, &scene::Scene::materials, &Document::setMaterial, index_, text, change);
+void MaterialProperties::forgetLastElement() {
+    emissiveColor_ = glm::vec3(1.0f);
 }
 
 void MaterialProperties::applyDiffuseColor(const QColor& color) {
@@ -165,16 +159,14 @@ void MaterialProperties::applyEmissiveColor(const QColor& color) {
 }
 
 void MaterialProperties::refresh() {
-    const auto& materials = doc_->scene().materials;
-    const bool valid = index_ >= 0 && std::size_t(index_) < materials.size();
-    setEnabled(valid);
-    if (!valid) {
+    const scene::Material* shown = shownElement();
+    if (!shown) {
         showText(name_, {});
         shading_->clear();
         texturesGroup_->hide();
         return;
     }
-    const scene::Material& m = materials[std::size_t(index_)];
+    const scene::Material& m = *shown;
     showText(name_, QString::fromStdString(m.name));
     const bool pbr = m.shading == scene::ShadingModel::MetallicRoughness;
     shading_->setText(pbr ? tr("Metallic-roughness (glTF)") : tr("Blinn-Phong"));

@@ -2,6 +2,8 @@
 // One material's colours, textures (shown, with a marker for files that are
 // not there) and surface parameters, including the LPV extensions'
 // translucency and glossiness.
+#include "ElementPanel.h"
+
 #include <QWidget>
 
 #include <glm/glm.hpp>
@@ -15,24 +17,15 @@ class QFormLayout;
 class QLabel;
 class QLineEdit;
 
-namespace lpv::scene {
-struct Material;
-}
-
 namespace lpv::editor {
 
 class ColorButton;
-class Document;
 
-class MaterialProperties : public QWidget {
+class MaterialProperties : public ElementPanel<scene::Material> {
     Q_OBJECT
   public:
     explicit MaterialProperties(Document* doc, QWidget* parent = nullptr);
-
-    // -1 shows nothing.
-    void setMaterialIndex(int index);
-    int materialIndex() const { return index_; }
-    void refresh();
+    void refresh() override;
 
   public slots:
     // What the colour buttons call once their dialog returns; public so a
@@ -42,11 +35,9 @@ class MaterialProperties : public QWidget {
     void applyEmissiveColor(const QColor& color);
 
   private:
-    void edit(const QString& text, const std::function<void(scene::Material&)>& change);
+    void forgetLastElement() override;
     void refreshTextures(const scene::Material& m);
 
-    Document* doc_;
-    int index_ = -1;
     QFormLayout* form_ = nullptr;
     QLineEdit* name_ = nullptr;
     QLabel* shading_ = nullptr;

@@ -19,7 +19,8 @@
 
 namespace lpv::editor {
 
-ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+ObjectProperties::ObjectProperties(Document* doc, QWidget* parent)
+    : ElementPanel(doc, &scene::Scene::objects, &Document::setObject, parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
 
@@ -79,18 +80,14 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
     });
     connect(materials_, &QListWidget::currentRowChanged, this, &ObjectProperties::announceMaterial);
 
-    setObjectIndex(-1);
+    setIndex(-1);
 }
 
-void ObjectProperties::setObjectIndex(int index) {
-    if (index != index_) {
-        index_ = index;
-        eulerObject_ = -1;
-        // A new object starts with its first submesh's material.
-        const QSignalBlocker block(materials_);
-        materials_->clear();
-    }
-    refresh();
+void ObjectProperties::forgetLastElement() {
+    eulerObject_ = -1;
+    // A new object starts with its first submesh's material.
+    const QSignalBlocker block(materials_);
+    materials_->clear();
 }
 
 int ObjectProperties::chosenMaterial() const {
@@ -98,39 +95,33 @@ int ObjectProperties::chosenMaterial() const {
     return item ? item->data(Qt::UserRole).toInt() : -1;
 }
 
-void ObjectProperties::edit(const QString& text, const std::function<void(scene::Object&)>& change) {
-    editElement(doc_, &scene::Scene::objects, &Document::setObject, index_, text, change);
-}
-
 void ObjectProperties::editRotation(int axis, double degrees) {
     euler_[axis] = degrees;
     eulerQuat_ = quatFromEulerDegrees(euler_);
-    eulerObject_ = index_;
+    eulerObject_ = index();
     const glm::quat q = eulerQuat_;
     edit(tr("Edit object rotation"), [&](scene::Object& o) { o.transform.rotation = q; });
 }
 
 void ObjectProperties::refresh() {
-    const auto& objects = doc_->scene().objects;
-    const bool valid = index_ >= 0 && std::size_t(index_) < objects.size();
-    setEnabled(valid);
-    if (!valid) {
+    const scene::Object* shown = shownElement();
+    if (!shown) {
         showText(name_, {});
         meshInfo_->clear();
         refreshMaterials();
         return;
     }
-    const scene::Object& o = objects[std::size_t(index_)];
+    const scene::Object& o = *shown;
     showText(name_, QString::fromStdString(o.name));
     {
         const QSignalBlocker block(visible_);
         visible_->setChecked(o.visible);
     }
     translation_->showValue(glm::dvec3(o.transform.translation));
-    if (eulerObject_ != index_ || eulerQuat_ != o.transform.rotation) {
+    if (eulerObject_ != index() || eulerQuat_ != o.transform.rotation) {
         euler_ = eulerDegrees(o.transform.rotation);
         eulerQuat_ = o.transform.rotation;
-        eulerObject_ = index_;
+        eulerObject_ = index();
     }
     rotation_->showValue(euler_);
     scale_->showValue(glm::dvec3(o.transform.scale));
@@ -156,8 +147,8 @@ void ObjectProperties::refreshMaterials() {
     };
     std::vector<Entry> entries;
     const scene::Scene& s = doc_->scene();
-    if (index_ >= 0 && std::size_t(index_) < s.objects.size()) {
-        const int mesh = s.objects[std::size_t(index_)].mesh;
+    if (index() >= 0 && std::size_t(index()) < s.objects.size()) {
+        const int mesh = s.objects[std::size_t(index())].mesh;
         if (mesh >= 0 && std::size_t(mesh) < s.meshes.size()) {
             const auto& submeshes = s.meshes[std::size_t(mesh)].submeshes;
             for (std::size_t i = 0; i < submeshes.size(); ++i) {

@@ -2,6 +2,8 @@
 // The selected object's name, visibility, transform, mesh and the materials
 // of its submeshes. Choosing a submesh in the list tells the property panel
 // which material to show below.
+#include "ElementPanel.h"
+
 #include <QWidget>
 
 #include <glm/glm.hpp>
@@ -14,25 +16,16 @@ class QLabel;
 class QLineEdit;
 class QListWidget;
 
-namespace lpv::scene {
-struct Object;
-}
-
 namespace lpv::editor {
 
-class Document;
 class Vec3Edit;
 
-class ObjectProperties : public QWidget {
+class ObjectProperties : public ElementPanel<scene::Object> {
     Q_OBJECT
   public:
     explicit ObjectProperties(Document* doc, QWidget* parent = nullptr);
+    void refresh() override;
 
-    // -1 shows nothing.
-    void setObjectIndex(int index);
-    int objectIndex() const { return index_; }
-    // Re-reads the object from the document without emitting edits.
-    void refresh();
     // The material of the submesh chosen in the list, or -1.
     int chosenMaterial() const;
 
@@ -40,13 +33,11 @@ class ObjectProperties : public QWidget {
     void materialChosen(int materialIndex);
 
   private:
-    void edit(const QString& text, const std::function<void(scene::Object&)>& change);
+    void forgetLastElement() override;
     void editRotation(int axis, double degrees);
     void refreshMaterials();
     void announceMaterial();
 
-    Document* doc_;
-    int index_ = -1;
     QLineEdit* name_ = nullptr;
     QCheckBox* visible_ = nullptr;
     Vec3Edit* translation_ = nullptr;

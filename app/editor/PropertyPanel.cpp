@@ -49,7 +49,7 @@ PropertyPanel::PropertyPanel(Document* doc, QWidget* parent) : QWidget(parent), 
 
     connect(object_, &ObjectProperties::materialChosen, this, [this](int material) {
         if (doc_->selection().kind == Selection::Kind::Object) {
-            material_->setMaterialIndex(material);
+            material_->setIndex(material);
             material_->setVisible(material >= 0);
         }
     });
@@ -68,15 +68,15 @@ void PropertyPanel::showSelection(const Selection& selection) {
     other_->setVisible(selection.kind == Kind::CameraPath);
 
     // Pages not shown get -1 so they hold no stale index into a changed scene.
-    object_->setObjectIndex(selection.kind == Kind::Object ? selection.index : -1);
-    light_->setLightIndex(selection.kind == Kind::Light ? selection.index : -1);
-    camera_->setCameraIndex(selection.kind == Kind::Camera ? selection.index : -1);
+    object_->setIndex(selection.kind == Kind::Object ? selection.index : -1);
+    light_->setIndex(selection.kind == Kind::Light ? selection.index : -1);
+    camera_->setIndex(selection.kind == Kind::Camera ? selection.index : -1);
     int material = -1;
     if (selection.kind == Kind::Material)
         material = selection.index;
     else if (selection.kind == Kind::Object)
         material = object_->chosenMaterial();
-    material_->setMaterialIndex(material);
+    material_->setIndex(material);
     material_->setVisible(material >= 0);
 
     auto nameOf = [](const auto& list, int index) {

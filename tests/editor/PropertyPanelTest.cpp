@@ -209,7 +209,7 @@ TEST_F(PropertyPanelTest, ObjectListsSubmeshMaterialsAndEditsTheChosenOne) {
     auto* list = panel->findChild<QListWidget*>("objectMaterials");
     ASSERT_NE(list, nullptr);
     ASSERT_EQ(list->count(), 3); // white, red, green
-    EXPECT_EQ(panel->materialProperties()->materialIndex(), 0) << "the first submesh's material";
+    EXPECT_EQ(panel->materialProperties()->index(), 0) << "the first submesh's material";
     EXPECT_TRUE(panel->findChild<QLabel*>("objectMeshInfo")->text().contains("3 submeshes"));
 
     list->setCurrentRow(1);
@@ -217,7 +217,7 @@ TEST_F(PropertyPanelTest, ObjectListsSubmeshMaterialsAndEditsTheChosenOne) {
                             .meshes[std::size_t(doc.scene().objects[std::size_t(room)].mesh)]
                             .submeshes[1]
                             .materialIndex);
-    ASSERT_EQ(panel->materialProperties()->materialIndex(), red);
+    ASSERT_EQ(panel->materialProperties()->index(), red);
     const auto materialsBefore = doc.scene().materials;
 
     panel->materialProperties()->applyDiffuseColor(QColor::fromRgbF(0.25f, 0.5f, 0.75f));
@@ -322,9 +322,9 @@ TEST_F(PropertyPanelTest, SelectionDroppedByUndoEmptiesThePanel) {
     doc.editScene("Add light", editor::Change::Lights,
                   [](scene::Scene& s) { s.lights.push_back(scene::Light{}); });
     doc.select({Selection::Kind::Light, 1});
-    EXPECT_EQ(panel->lightProperties()->lightIndex(), 1);
+    EXPECT_EQ(panel->lightProperties()->index(), 1);
     doc.undoStack()->undo(); // the light is gone; the document drops the selection
-    EXPECT_EQ(panel->lightProperties()->lightIndex(), -1);
+    EXPECT_EQ(panel->lightProperties()->index(), -1);
     EXPECT_TRUE(box("skyIntensity")->isVisibleTo(panel.get()));
 }
 
