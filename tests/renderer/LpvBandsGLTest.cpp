@@ -6,6 +6,7 @@
 // the variant, and render again at 2.
 #include "LookupKernel.h"
 #include "LpvPassFixture.h"
+#include "SkyCourtyard.h"
 #include "ThinWallRooms.h"
 
 #include "lpv/renderer/ForwardRenderer.h"
@@ -65,26 +66,6 @@ TEST_F(GlTest, LpvVariantsOtherThanComputeGatherRefuseThreeShBandsNamingThemselv
 
 namespace {
 
-// VPLs in the lower 45% of x with random normals and colours, and a wall of
-// surfels (no flux) facing -x at 60%, as LpvGLTest's wall scene.
-std::vector<Texel> wallScene(const ref::GridFrame& grid, int vplCount, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    std::vector<Texel> texels;
-    const float extent = grid.cellSize * float(grid.n);
-    for (int i = 0; i < vplCount; ++i) {
-        const glm::vec3 p = grid.origin + glm::vec3(u(rng) * 0.45f, u(rng), u(rng)) * extent;
-        texels.push_back({p, randomUnit(rng), 3.0f * glm::vec3(u(rng), u(rng), u(rng))});
-    }
-    const int side = grid.n * 2;
-    for (int y = 0; y < side; ++y)
-        for (int z = 0; z < side; ++z)
-            texels.push_back({grid.origin + glm::vec3(0.6f * extent, (float(y) + 0.5f) / float(side) * extent,
-                                                      (float(z) + 0.5f) / float(side) * extent),
-                              glm::vec3(-1.0f, 0.0f, 0.0f), glm::vec3(0.0f)});
-    return texels;
-}
-
 struct Difference {
     double maxAbs = 0.0, maxValue = 0.0;
     double relative() const { return maxValue > 0.0 ? maxAbs / maxValue : maxAbs; }
@@ -99,7 +80,7 @@ class LpvThreeBandsGLTest : public LpvPassGLTest {
     const ref::GridFrame grid_{glm::vec3(-2.0f, 0.0f, 1.0f), 0.5f, 8};
     const float texelArea_ = 0.01f;
     const glm::vec3 towardSun_{0.0f, 1.0f, 0.0f};
-    std::vector<Texel> texels_ = wallScene(grid_, 200, 7);
+    std::vector<Texel> texels_ = wallScene(grid_, 200, 3.0f, 7);
     FakeRsm rsm_{int(std::ceil(std::sqrt(double(texels_.size())))), {texels_}};
 
     LpvSettings settings(int steps, bool occlusion) const {
@@ -300,43 +281,11 @@ TEST_F(GlTest, CornellBoxRendersWithThreeShBands) {
 // Sky light in three bands: the injection kernel (LPV_SH_BANDS 3) on a
 // hand-made height map against bands::injectSky<3>, then 4 steps.
 TEST_F(LpvPassGLTest, ThreeBandSkyInjectionMatchesTheCpuTwin) {
-    const ref::GridFrame grid{glm::vec3(-2.0f, -1.0f, 3.0f), 0.5f, 16};
-    // A courtyard (ground 0.1) inside walls 3.3 high, a roof at 9 over one corner, a strip with no surface.
-    ref::HeightMap map;
-    map.size = 32;
-    map.min = {grid.origin.x, grid.origin.z};
-    map.texelSize = grid.cellSize / 2.0f;
-    const float top = 12.0f, bottom = -4.0f;
-    std::vector<float> depth(std::size_t(map.size * map.size));
-    map.height.resize(depth.size());
-    for (int j = 0; j < map.size; ++j)
-        for (int i = 0; i < map.size; ++i) {
-            const float h = (i >= 24 && j >= 24) ? 9.0f : (i < 4 || j < 4 || i >= 28) ? 3.3f : 0.1f;
-            const bool empty = j >= 30;
-            const std::size_t t = std::size_t(i + map.size * j);
-            depth[t] = empty ? 1.0f : (top - h) / (top - bottom);
-            map.height[t] = empty ? -std::numeric_limits<float>::infinity() : h;
-        }
-    auto layer = [](GLenum format, int size, GLenum dataFormat, const void* data) {
-        Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(t.id(), 1, format, size, size, 1);
-        glTextureSubImage3D(t.id(), 0, 0, 0, 0, size, size, 1, dataFormat, GL_FLOAT, data);
-        return t;
-    };
-    const Texture depthTexture = layer(GL_DEPTH_COMPONENT32F, map.size, GL_DEPTH_COMPONENT, depth.data());
-    const float zero[4] = {0, 0, 0, 0}; // an RSM of one dark texel: the sky is the only light
-    const Texture position = layer(GL_RGBA32F, 1, GL_RGBA, zero), normal = layer(GL_RGBA32F, 1, GL_RGBA, zero),
-                  flux = layer(GL_RGBA32F, 1, GL_RGBA, zero);
-    LpvRsmInput rsm;
-    rsm.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-    rsm.texelArea = {0.01f};
-    rsm.tileSize = 1;
-    rsm.position = position.id();
-    rsm.normal = normal.id();
-    rsm.flux = flux.id();
-    const glm::vec3 radiance(0.5f, 0.7f, 1.0f);
-    LpvSkyInput sky{depthTexture.id(), map.size, map.min, map.texelSize, top, bottom, radiance};
-    const auto injected = ref::bands::injectSky<3>(grid, map, radiance);
+    const SkyCourtyard courtyard;
+    const ref::GridFrame& grid = courtyard.grid;
+    const LpvRsmInput rsm = courtyard.rsm();
+    const LpvSkyInput sky = courtyard.sky();
+    const auto injected = ref::bands::injectSky<3>(grid, courtyard.map, courtyard.radiance);
     for (const int steps : {0, 4}) {
         LpvSettings settings;
         settings.shBands = 3;

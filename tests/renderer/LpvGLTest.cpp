@@ -20,28 +20,6 @@ namespace ref = lpv::renderer::lpvref;
 
 namespace {
 
-// A scene in one cascade: VPLs scattered through the lower half, lit with
-// random colours, and a wall of dark surfels across the middle facing -x.
-std::vector<Texel> wallScene(const ref::GridFrame& grid, int vplCount, float fluxScale, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    std::vector<Texel> texels;
-    const float extent = grid.cellSize * float(grid.n);
-    for (int i = 0; i < vplCount; ++i) {
-        const glm::vec3 p = grid.origin + glm::vec3(u(rng) * 0.45f, u(rng), u(rng)) * extent;
-        texels.push_back({p, randomUnit(rng), fluxScale * glm::vec3(u(rng), u(rng), u(rng))});
-    }
-    // The wall: a grid of surfels on the plane x = 0.6 extent.
-    const int side = grid.n * 2;
-    for (int y = 0; y < side; ++y)
-        for (int z = 0; z < side; ++z) {
-            const glm::vec3 p = grid.origin + glm::vec3(0.6f * extent, (float(y) + 0.5f) / float(side) * extent,
-                                                        (float(z) + 0.5f) / float(side) * extent);
-            texels.push_back({p, glm::vec3(-1.0f, 0.0f, 0.0f), glm::vec3(0.0f)});
-        }
-    return texels;
-}
-
 struct LpvCase {
     ref::GridFrame grid;
     float texelArea = 0.0f;

@@ -3,6 +3,7 @@
 // scatter variant (whose fixed-point scale must cover the sky's cells).
 #include "GlFixture.h"
 #include "ShGridCompare.h"
+#include "SkyCourtyard.h"
 
 #include "passes/lpv/LpvPass.h"
 #include "lpv/renderer/GpuTimer.h"
@@ -16,59 +17,17 @@ namespace ref = lpv::renderer::lpvref;
 
 namespace {
 
-Texture layerTexture(GLenum format, int size, GLenum dataFormat, const void* data) {
-    Texture t = createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(t.id(), 1, format, size, size, 1);
-    glTextureSubImage3D(t.id(), 0, 0, 0, 0, size, size, 1, dataFormat, GL_FLOAT, data);
-    return t;
-}
-
 class LpvSkyGLTest : public GlTest, public ::testing::WithParamInterface<LpvVariant> {};
 
 TEST_P(LpvSkyGLTest, InjectionMatchesReference) {
     auto pass = LpvPass::create();
     ASSERT_TRUE(pass.has_value()) << pass.error().describe();
-    const ref::GridFrame grid{glm::vec3(-2.0f, -1.0f, 3.0f), 0.5f, 16};
+    const SkyCourtyard courtyard;
+    const ref::GridFrame& grid = courtyard.grid;
+    const LpvRsmInput rsm = courtyard.rsm();
+    const LpvSkyInput sky = courtyard.sky();
 
-    // A height map of 2 texels per cell: a courtyard (ground at y = 0.1)
-    // inside walls 3.3 high, a roof at 9 (above the cascade) over one corner,
-    // and a strip with no surface at all.
-    ref::HeightMap map;
-    map.size = 32;
-    map.min = {grid.origin.x, grid.origin.z};
-    map.texelSize = grid.cellSize / 2.0f;
-    const float top = 12.0f, bottom = -4.0f;
-    std::vector<float> depth(std::size_t(map.size * map.size));
-    map.height.resize(depth.size());
-    for (int j = 0; j < map.size; ++j)
-        for (int i = 0; i < map.size; ++i) {
-            float h = 0.1f;
-            if (i < 4 || j < 4 || i >= 28)
-                h = 3.3f;
-            if (i >= 24 && j >= 24)
-                h = 9.0f;
-            const bool empty = j >= 30;
-            const std::size_t t = std::size_t(i + map.size * j);
-            depth[t] = empty ? 1.0f : (top - h) / (top - bottom);
-            map.height[t] = empty ? -std::numeric_limits<float>::infinity() : h;
-        }
-    const glm::vec3 radiance(0.5f, 0.7f, 1.0f);
-    const Texture depthTexture = layerTexture(GL_DEPTH_COMPONENT32F, map.size, GL_DEPTH_COMPONENT, depth.data());
-
-    // An RSM with one dark texel: the sky is the only light.
-    const float zero[4] = {0, 0, 0, 0};
-    const Texture position = layerTexture(GL_RGBA32F, 1, GL_RGBA, zero), normal = layerTexture(GL_RGBA32F, 1, GL_RGBA, zero),
-                  flux = layerTexture(GL_RGBA32F, 1, GL_RGBA, zero);
-    LpvRsmInput rsm;
-    rsm.cascades = {LpvCascade{grid.origin, grid.cellSize, grid.n}};
-    rsm.texelArea = {0.01f};
-    rsm.tileSize = 1;
-    rsm.position = position.id();
-    rsm.normal = normal.id();
-    rsm.flux = flux.id();
-    LpvSkyInput sky{depthTexture.id(), map.size, map.min, map.texelSize, top, bottom, radiance};
-
-    const ref::ShGrid injected = ref::injectSky(grid, map, radiance);
+    const ref::ShGrid injected = ref::injectSky(grid, courtyard.map, courtyard.radiance);
     for (int steps : {0, 4}) {
         LpvSettings settings;
         settings.gridSize = grid.n;

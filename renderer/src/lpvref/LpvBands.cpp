@@ -104,11 +104,8 @@ Grid<B> injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& 
     const sh::Coeffs<B> lobe = sh::cosineLobeOf<B>({0.0f, -1.0f, 0.0f}); // light travelling down
     for (int z = 0; z < grid.n; ++z)
         for (int x = 0; x < grid.n; ++x) {
-            const float x0 = grid.origin.x + float(x) * grid.cellSize, z0 = grid.origin.z + float(z) * grid.cellSize;
-            const float top = columnTop(map, x0, z0, x0 + grid.cellSize, z0 + grid.cellSize);
-            const float above = std::floor((top - grid.origin.y) / grid.cellSize) + 1.0f;
-            const int y = int(std::clamp(above, 0.0f, float(grid.n)));
-            if (y >= grid.n)
+            const int y = skyInjectionCell(grid, map, x, z);
+            if (y < 0)
                 continue;
             for (int c = 0; c < 3; ++c)
                 out.at(c, x, y, z) += (radiance[c] * grid.cellSize * grid.cellSize) * lobe;

@@ -226,18 +226,22 @@ float columnTop(const HeightMap& map, float x0, float z0, float x1, float z1) {
     return top;
 }
 
+int skyInjectionCell(const GridFrame& grid, const HeightMap& map, int x, int z) {
+    const float x0 = grid.origin.x + float(x) * grid.cellSize, z0 = grid.origin.z + float(z) * grid.cellSize;
+    const float top = columnTop(map, x0, z0, x0 + grid.cellSize, z0 + grid.cellSize);
+    const float above = std::floor((top - grid.origin.y) / grid.cellSize) + 1.0f;
+    const int y = int(std::clamp(above, 0.0f, float(grid.n)));
+    return y < grid.n ? y : -1;
+}
+
 ShGrid injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& radiance) {
     ShGrid out(grid.n);
     const glm::vec4 lobe = sh::cosineLobe({0.0f, -1.0f, 0.0f}); // light travelling down
     for (int z = 0; z < grid.n; ++z)
         for (int x = 0; x < grid.n; ++x) {
-            const float x0 = grid.origin.x + float(x) * grid.cellSize, z0 = grid.origin.z + float(z) * grid.cellSize;
-            const float top = columnTop(map, x0, z0, x0 + grid.cellSize, z0 + grid.cellSize);
-            // The first cell above the highest surface; cell 0 when it lies below the cascade.
-            const float above = std::floor((top - grid.origin.y) / grid.cellSize) + 1.0f;
-            const int y = int(std::clamp(above, 0.0f, float(grid.n)));
-            if (y >= grid.n)
-                continue; // covered above the cascade's top
+            const int y = skyInjectionCell(grid, map, x, z);
+            if (y < 0)
+                continue;
             // Intensity Phi / pi * cosine lobe, Phi = pi L s^2.
             for (int c = 0; c < 3; ++c)
                 out.at(c, x, y, z) += radiance[c] * grid.cellSize * grid.cellSize * lobe;

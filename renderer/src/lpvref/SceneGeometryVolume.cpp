@@ -252,11 +252,13 @@ GvGrid windowOf(const WorldGv& world, const GridFrame& grid) {
     return out;
 }
 
-void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
+namespace {
+
+// Calls visit(cell, index) for every cell of `world` inside `grid`'s window
+// of (n + 1)^3 corners: `cell` its index in the window (x fastest), `index`
+// its index in world.cells.
+template <typename Visit> void forEachCellInWindow(const WorldGv& world, const GridFrame& grid, Visit visit) {
     const int m = grid.n + 1;
-    std::fill(out.begin(), out.end(), glm::vec4(0.0f));
-    if (out.size() != std::size_t(m) * std::size_t(m) * std::size_t(m))
-        return;
     const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
     for (int z = 0; z < m; ++z)
         for (int y = 0; y < m; ++y) {
@@ -269,33 +271,33 @@ void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4
                                        [](const auto& e, std::uint64_t v) { return e.first < v; });
             const std::size_t row = std::size_t(m) * (std::size_t(y) + std::size_t(m) * std::size_t(z));
             for (; it != world.cells.end() && it->first <= hi; ++it)
-                out[row + std::size_t(it->first - lo)] = it->second;
+                visit(row + std::size_t(it->first - lo), std::size_t(it - world.cells.begin()));
         }
 }
 
-void windowBand2Into(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
-    const int m = grid.n + 1;
+std::size_t windowCells(const GridFrame& grid) {
+    const std::size_t m = std::size_t(grid.n) + 1;
+    return m * m * m;
+}
+
+} // namespace
+
+void windowInto(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
     std::fill(out.begin(), out.end(), glm::vec4(0.0f));
-    if (out.size() != 2 * std::size_t(m) * std::size_t(m) * std::size_t(m) || world.band2.size() != world.cells.size())
+    if (out.size() != windowCells(grid))
         return;
-    const glm::ivec3 base(glm::floor(grid.origin / world.cellSize + 0.5f));
-    for (int z = 0; z < m; ++z)
-        for (int y = 0; y < m; ++y) {
-            const glm::ivec3 first = base + glm::ivec3(0, y, z), last = base + glm::ivec3(grid.n, y, z);
-            if (!WorldGv::representable(first) || !WorldGv::representable(last))
-                continue;
-            // As windowInto: a row of the window is a run of consecutive keys.
-            const std::uint64_t lo = WorldGv::key(first), hi = WorldGv::key(last);
-            auto it = std::lower_bound(world.cells.begin(), world.cells.end(), lo,
-                                       [](const auto& e, std::uint64_t v) { return e.first < v; });
-            const std::size_t row = std::size_t(m) * (std::size_t(y) + std::size_t(m) * std::size_t(z));
-            for (; it != world.cells.end() && it->first <= hi; ++it) {
-                const GvBand2& b = world.band2[std::size_t(it - world.cells.begin())];
-                const std::size_t cell = row + std::size_t(it->first - lo);
-                out[2 * cell] = glm::vec4(b[0], b[1], b[2], b[3]);
-                out[2 * cell + 1] = glm::vec4(b[4], 0.0f, 0.0f, 0.0f);
-            }
-        }
+    forEachCellInWindow(world, grid, [&](std::size_t cell, std::size_t i) { out[cell] = world.cells[i].second; });
+}
+
+void windowBand2Into(const WorldGv& world, const GridFrame& grid, std::span<glm::vec4> out) {
+    std::fill(out.begin(), out.end(), glm::vec4(0.0f));
+    if (out.size() != 2 * windowCells(grid) || world.band2.size() != world.cells.size())
+        return;
+    forEachCellInWindow(world, grid, [&](std::size_t cell, std::size_t i) {
+        const GvBand2& b = world.band2[i];
+        out[2 * cell] = glm::vec4(b[0], b[1], b[2], b[3]);
+        out[2 * cell + 1] = glm::vec4(b[4], 0.0f, 0.0f, 0.0f);
+    });
 }
 
 } // namespace lpv::renderer::lpvref

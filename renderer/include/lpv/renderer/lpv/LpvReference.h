@@ -151,6 +151,10 @@ struct HeightMap {
     std::vector<float> height; // texel (i, j) at i + size * j
 };
 float columnTop(const HeightMap& map, float x0, float z0, float x1, float z1);
+// The cell of column (x, z) the sky's light is injected into: the first
+// above the highest surface of the column (0 when that lies below the
+// cascade), or -1 when the column is covered above the cascade's top.
+int skyInjectionCell(const GridFrame& grid, const HeightMap& map, int x, int z);
 ShGrid injectSky(const GridFrame& grid, const HeightMap& map, const glm::vec3& radiance);
 
 // One propagation step (gather); `gv` null = no occlusion, `normals` null = undirected.
