@@ -48,6 +48,26 @@ double dcTotal(const std::vector<glm::vec4>& v) {
     return sum;
 }
 
+// `count` surfels at random positions within `cells` cells of the origin,
+// kept a tenth of a cell away from the halfway planes where rounding could
+// send one to either neighbour, with random normals and areas.
+std::vector<ref::Surfel> randomSurfels(int count, float cell, int cells, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> cellIndex(-cells, cells);
+    std::uniform_real_distribution<float> fraction(-0.4f, 0.4f), unit(-1.0f, 1.0f), area(0.001f, 0.1f);
+    std::vector<ref::Surfel> surfels;
+    for (int i = 0; i < count; ++i) {
+        ref::Surfel p;
+        for (int a = 0; a < 3; ++a)
+            p.position[a] = (float(cellIndex(rng)) + fraction(rng)) * cell;
+        glm::vec3 n(unit(rng), unit(rng), unit(rng));
+        p.normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
+        p.area = area(rng);
+        surfels.push_back(p);
+    }
+    return surfels;
+}
+
 } // namespace
 
 TEST(SceneSurfels, CoverEveryVisibleTriangleOnceWithItsAreaFacingItsShadingNormals) {
@@ -73,22 +93,8 @@ TEST(SceneSurfels, CoverEveryVisibleTriangleOnceWithItsAreaFacingItsShadingNorma
 }
 
 TEST(WorldGv, ACascadesWindowIsInjectingTheSameSurfelsIntoIt) {
-    // Surfels at random positions, kept a tenth of a cell away from the
-    // halfway planes where rounding could send one to either neighbour.
     const float cell = 0.25f;
-    std::mt19937 rng(7);
-    std::uniform_int_distribution<int> cellIndex(-20, 20);
-    std::uniform_real_distribution<float> fraction(-0.4f, 0.4f), unit(-1.0f, 1.0f), area(0.001f, 0.1f);
-    std::vector<ref::Surfel> surfels;
-    for (int i = 0; i < 5000; ++i) {
-        ref::Surfel p;
-        for (int a = 0; a < 3; ++a)
-            p.position[a] = (float(cellIndex(rng)) + fraction(rng)) * cell;
-        glm::vec3 n(unit(rng), unit(rng), unit(rng));
-        p.normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
-        p.area = area(rng);
-        surfels.push_back(p);
-    }
+    const std::vector<ref::Surfel> surfels = randomSurfels(5000, cell, 20, 7);
     const ref::WorldGv world = ref::buildWorldGv(surfels, cell);
     EXPECT_GT(world.cells.size(), 1000u);
     double worst = 0.0, peak = 0.0;
@@ -112,19 +118,7 @@ TEST(WorldGv, ACascadesWindowIsInjectingTheSameSurfelsIntoIt) {
 // band 2 together are the CPU twin's three-band GV of the same surfels.
 TEST(WorldGv, AThreeBandWindowIsTheThreeBandTwinsInjection) {
     const float cell = 0.25f;
-    std::mt19937 rng(11);
-    std::uniform_int_distribution<int> cellIndex(-12, 12);
-    std::uniform_real_distribution<float> fraction(-0.4f, 0.4f), unit(-1.0f, 1.0f), area(0.001f, 0.1f);
-    std::vector<ref::Surfel> surfels;
-    for (int i = 0; i < 3000; ++i) {
-        ref::Surfel p;
-        for (int a = 0; a < 3; ++a)
-            p.position[a] = (float(cellIndex(rng)) + fraction(rng)) * cell;
-        glm::vec3 n(unit(rng), unit(rng), unit(rng));
-        p.normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
-        p.area = area(rng);
-        surfels.push_back(p);
-    }
+    const std::vector<ref::Surfel> surfels = randomSurfels(3000, cell, 12, 11);
     const ref::WorldGv world = ref::buildWorldGv(surfels, cell, 3);
     ASSERT_EQ(world.band2.size(), world.cells.size());
     EXPECT_TRUE(ref::buildWorldGv(surfels, cell).band2.empty()) << "two bands keep no band 2";
