@@ -61,4 +61,13 @@ std::vector<const DrawItem*> buildDrawList(const std::vector<DrawItem>& items, c
     return out;
 }
 
+SurfaceDraws surfaceDraws(const std::vector<DrawItem>& items, const glm::mat4& viewProj,
+                          const glm::vec3& eye) {
+    SurfaceDraws out;
+    for (const DrawItem* d : buildDrawList(items, viewProj, eye))
+        if (d->bucket != DrawBucket::Blended)
+            (d->bucket == DrawBucket::Opaque ? out.opaque : out.masked).push_back(d);
+    return out;
+}
+
 } // namespace lpv::renderer

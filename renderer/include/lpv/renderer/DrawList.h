@@ -35,4 +35,14 @@ struct DrawListStats {
 std::vector<const DrawItem*> buildDrawList(const std::vector<DrawItem>& items, const glm::mat4& viewProj,
                                            const glm::vec3& eye, DrawListStats* stats = nullptr);
 
+// A frame's draws that hide what lies behind them, split as the passes that
+// write depth draw them: opaque ones through a program that never discards
+// (so llvmpipe tests their depth early), alpha-masked ones through one that
+// cuts their holes. Blended items are left out: they neither hide nor write depth.
+struct SurfaceDraws {
+    std::vector<const DrawItem*> opaque, masked;
+};
+SurfaceDraws surfaceDraws(const std::vector<DrawItem>& items, const glm::mat4& viewProj,
+                          const glm::vec3& eye);
+
 } // namespace lpv::renderer

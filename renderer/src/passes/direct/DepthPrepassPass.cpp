@@ -46,19 +46,19 @@ scene::Expected<void> DepthPrepassPass::execute(graph::PassContext& ctx, FrameSt
     // Opaque and masked surfaces only: blended ones neither hide nor write
     // depth. Opaque ones through the program that never discards, so their
     // depth is tested early (on llvmpipe a discard defers it).
-    const auto items = buildDrawList(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    std::vector<const DrawItem*> opaque, masked;
-    for (const DrawItem* d : items)
-        if (d->bucket != DrawBucket::Blended)
-            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    const SurfaceDraws draws = surfaceDraws(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    const auto& opaque = draws.opaque;
+    const auto& masked = draws.masked;
     for (const auto& [shader, list] : {std::pair{opaque_, &opaque}, std::pair{masked_, &masked}}) {
         if (list->empty())
             continue;
         const GLuint program = shader->id();
         glUseProgram(program);
-        glProgramUniformMatrix4fv(program, shader->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-        state.sceneGpu->draw(program, *list,
-                             [&](std::uint32_t m) { state.materialGpu->bind(program, m, MaterialBindMode::Coverage); });
+        glProgramUniformMatrix4fv(program, shader->uniform("uViewProj"), 1, GL_FALSE,
+                                  glm::value_ptr(frame.viewProj));
+        state.sceneGpu->draw(program, *list, [&](std::uint32_t m) {
+            state.materialGpu->bind(program, m, MaterialBindMode::Coverage);
+        });
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     return {};

@@ -41,8 +41,9 @@ void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
     else if (!state.lpv.runs)
         pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
     else
-        pass.decision = runsBecause(resolution.reason + ": the LPV's lookup once per " + std::to_string(reduction) +
-                                    "x" + std::to_string(reduction) + " pixels, upsampled by lpvLookupResolve");
+        pass.decision =
+            runsBecause(resolution.reason + ": the LPV's lookup once per " + std::to_string(reduction) + "x" +
+                        std::to_string(reduction) + " pixels, upsampled by lpvLookupResolve");
     // The frame's effects list (`lpv render`, the editor) says what auto chose and why, run or reused.
     EffectDecision effect = pass.decision;
     effect.effect = "LPV lookup at reduced resolution";
@@ -57,9 +58,9 @@ void LpvLookupPass::setup(graph::PassSpec& pass, FrameState& state) {
         return;
     }
     const int w = reducedSize(frame.width, reduction), h = reducedSize(frame.height, reduction);
-    for (const auto& [name, format] : {std::pair{resources::LpvLookup, GL_RGBA16F},
-                                       std::pair{resources::LpvLookupNormal, GL_RGBA8},
-                                       std::pair{resources::LpvLookupDepth, GL_DEPTH_COMPONENT32F}})
+    for (const auto& [name, format] :
+         {std::pair{resources::LpvLookup, GL_RGBA16F}, std::pair{resources::LpvLookupNormal, GL_RGBA8},
+          std::pair{resources::LpvLookupDepth, GL_DEPTH_COMPONENT32F}})
         state.graph.createResource(name, {graph::ResourceKind::Texture2D, GLenum(format), w, h},
                                    graph::Lifetime::History);
     pass.reads = {resources::LpvAccumulator};
@@ -100,11 +101,9 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
     glDisable(GL_BLEND);
     // Opaque and masked surfaces, as the depth pre-pass draws them: blended
     // ones find no neighbour on their surface in shading and look up there.
-    const auto items = buildDrawList(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    std::vector<const DrawItem*> opaque, masked;
-    for (const DrawItem* d : items)
-        if (d->bucket != DrawBucket::Blended)
-            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    const SurfaceDraws draws = surfaceDraws(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    const auto& opaque = draws.opaque;
+    const auto& masked = draws.masked;
     // Depth first (depth_prepass.frag, as the camera's pre-pass draws it),
     // then the lookup once per texel with the depth test before the shader:
     // drawn directly, every fragment nearer than what was drawn before it paid for a lookup.
@@ -113,17 +112,19 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
         const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
         if (list.empty())
             continue;
-        auto program = programs_.get({{"forward.vert", "depth_prepass.frag"},
-                                      cutOut ? std::vector<std::string>{} : std::vector<std::string>{"PREPASS_OPAQUE 1"}});
+        auto program = programs_.get(
+            {{"forward.vert", "depth_prepass.frag"},
+             cutOut ? std::vector<std::string>{} : std::vector<std::string>{"PREPASS_OPAQUE 1"}});
         if (!program) {
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             return std::unexpected(program.error());
         }
         const GLuint p = (*program)->id();
         glUseProgram(p);
-        glProgramUniformMatrix4fv(p, (*program)->uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-        state.sceneGpu->draw(p, list,
-                             [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
+        glProgramUniformMatrix4fv(p, (*program)->uniform("uViewProj"), 1, GL_FALSE,
+                                  glm::value_ptr(frame.viewProj));
+        state.sceneGpu->draw(
+            p, list, [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LEQUAL);

@@ -43,8 +43,9 @@ void LpvLookupResolvePass::setup(graph::PassSpec& pass, FrameState& state) {
     else if (!state.lpv.runs)
         pass.decision = skippedBecause("the LPV does not run: " + state.lpv.offReason);
     else
-        pass.decision = runsBecause(resolution.reason + ": the lpvLookup image upsampled to every pixel, looked up "
-                                                        "at full resolution where no low-resolution neighbour lies on its surface");
+        pass.decision = runsBecause(
+            resolution.reason + ": the lpvLookup image upsampled to every pixel, looked up "
+                                "at full resolution where no low-resolution neighbour lies on its surface");
     ownDepth_ = !state.depthPrepass;
     pass.writes = {Resolved, ResolveDepth};
     if (!pass.decision.runs()) {
@@ -57,9 +58,9 @@ void LpvLookupResolvePass::setup(graph::PassSpec& pass, FrameState& state) {
                                {graph::ResourceKind::Texture2D, GL_RGBA16F, frame.width, frame.height},
                                graph::Lifetime::History);
     if (ownDepth_)
-        state.graph.createResource(ResolveDepth,
-                                   {graph::ResourceKind::Texture2D, GL_DEPTH_COMPONENT32F, frame.width, frame.height},
-                                   graph::Lifetime::History);
+        state.graph.createResource(
+            ResolveDepth, {graph::ResourceKind::Texture2D, GL_DEPTH_COMPONENT32F, frame.width, frame.height},
+            graph::Lifetime::History);
     else
         state.graph.importResource(ResolveDepth, [] { return graph::ImportedView{}; });
     pass.reads = {resources::LpvLookup, resources::LpvLookupNormal, resources::LpvAccumulator};
@@ -87,7 +88,8 @@ void LpvLookupResolvePass::reserveList(std::size_t pixels) {
     if (list_.id() != 0 && entries <= listEntries_)
         return;
     list_ = createBuffer();
-    glNamedBufferData(list_.id(), GLsizeiptr(kListHeaderBytes + entries * kEntryBytes), nullptr, GL_DYNAMIC_COPY);
+    glNamedBufferData(list_.id(), GLsizeiptr(kListHeaderBytes + entries * kEntryBytes), nullptr,
+                      GL_DYNAMIC_COPY);
     listEntries_ = entries;
 }
 
@@ -115,11 +117,9 @@ scene::Expected<void> LpvLookupResolvePass::execute(graph::PassContext& ctx, Fra
     glDisable(GL_BLEND);
     // Opaque and masked surfaces, as the depth pre-pass draws them: blended
     // ones look the LPV up in shading.
-    const auto items = buildDrawList(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    std::vector<const DrawItem*> opaque, masked;
-    for (const DrawItem* d : items)
-        if (d->bucket != DrawBucket::Blended)
-            (d->bucket == DrawBucket::Opaque ? opaque : masked).push_back(d);
+    const SurfaceDraws draws = surfaceDraws(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
+    const auto& opaque = draws.opaque;
+    const auto& masked = draws.masked;
     auto drawBoth = [&](const char* vertex, const char* fragment, const char* opaqueDefine,
                         const auto& setUniforms) -> scene::Expected<void> {
         for (const bool cutOut : {false, true}) {
