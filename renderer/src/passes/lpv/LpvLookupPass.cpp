@@ -2,6 +2,7 @@
 
 #include "frame/FrameResources.h"
 #include "frame/FrameState.h"
+#include "frame/SurfaceDrawing.h"
 #include "lpv/renderer/DrawList.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -102,59 +103,31 @@ scene::Expected<void> LpvLookupPass::execute(graph::PassContext& ctx, FrameState
     // Opaque and masked surfaces, as the depth pre-pass draws them: blended
     // ones find no neighbour on their surface in shading and look up there.
     const SurfaceDraws draws = surfaceDraws(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    const auto& opaque = draws.opaque;
-    const auto& masked = draws.masked;
     // Depth first (depth_prepass.frag, as the camera's pre-pass draws it),
     // then the lookup once per texel with the depth test before the shader:
     // drawn directly, every fragment nearer than what was drawn before it paid for a lookup.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    for (const bool cutOut : {false, true}) {
-        const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
-        if (list.empty())
-            continue;
-        auto program = programs_.get(
-            {{"forward.vert", "depth_prepass.frag"},
-             cutOut ? std::vector<std::string>{} : std::vector<std::string>{"PREPASS_OPAQUE 1"}});
-        if (!program) {
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            return std::unexpected(program.error());
-        }
-        const GLuint p = (*program)->id();
-        glUseProgram(p);
-        glProgramUniformMatrix4fv(p, (*program)->uniform("uViewProj"), 1, GL_FALSE,
-                                  glm::value_ptr(frame.viewProj));
-        state.sceneGpu->draw(
-            p, list, [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
-    }
+    auto depthDrawn = drawSurfaces(draws, programs_, {{"forward.vert", "depth_prepass.frag"}, {}},
+                                   "PREPASS_OPAQUE", state, [](const CachedProgram&) {});
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (!depthDrawn)
+        return depthDrawn;
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
     const LpvPass* lpv = state.lpv.lpv;
-    for (const bool cutOut : {false, true}) {
-        const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
-        if (list.empty())
-            continue;
-        ProgramVariant variant{{"forward.vert", "lpv_lookup_reduced.frag"}, {}};
-        if (!cutOut)
-            variant.defines.push_back("LOOKUP_OPAQUE 1");
-        if (!visibility_)
-            variant.defines.push_back("LPV_NO_VISIBILITY 1");
-        auto program = programs_.get(variant);
-        if (!program)
-            return std::unexpected(program.error());
-        const CachedProgram& shader = **program;
-        const GLuint p = shader.id();
-        glUseProgram(p);
-        glProgramUniformMatrix4fv(p, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-        glProgramUniform3fv(p, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
-        glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), 1.0f / frame.camera.farPlane);
-        lpv->bindForShading(shader, frame.params, [&ctx] { return ctx.allocateUnit(); });
-        state.sceneGpu->draw(p, list,
-                             [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
-    }
+    ProgramVariant lookup{{"forward.vert", "lpv_lookup_reduced.frag"}, {}};
+    if (!visibility_)
+        lookup.defines.push_back("LPV_NO_VISIBILITY 1");
+    auto lookedUp =
+        drawSurfaces(draws, programs_, lookup, "LOOKUP_OPAQUE", state, [&](const CachedProgram& shader) {
+            const GLuint p = shader.id();
+            glProgramUniform3fv(p, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+            glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), 1.0f / frame.camera.farPlane);
+            lpv->bindForShading(shader, frame.params, [&ctx] { return ctx.allocateUnit(); });
+        });
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
-    return {};
+    return lookedUp;
 }
 
 } // namespace lpv::renderer

@@ -2,6 +2,7 @@
 
 #include "frame/FrameResources.h"
 #include "frame/FrameState.h"
+#include "frame/SurfaceDrawing.h"
 #include "gl/GpuMemoryLedger.h"
 #include "lpv/renderer/DrawList.h"
 #include "passes/lpv/LpvLookupPass.h"
@@ -118,30 +119,6 @@ scene::Expected<void> LpvLookupResolvePass::execute(graph::PassContext& ctx, Fra
     // Opaque and masked surfaces, as the depth pre-pass draws them: blended
     // ones look the LPV up in shading.
     const SurfaceDraws draws = surfaceDraws(state.sceneGpu->draws(), frame.viewProj, frame.camera.position);
-    const auto& opaque = draws.opaque;
-    const auto& masked = draws.masked;
-    auto drawBoth = [&](const char* vertex, const char* fragment, const char* opaqueDefine,
-                        const auto& setUniforms) -> scene::Expected<void> {
-        for (const bool cutOut : {false, true}) {
-            const std::vector<const DrawItem*>& list = cutOut ? masked : opaque;
-            if (list.empty())
-                continue;
-            ProgramVariant variant{{vertex, fragment}, {}};
-            if (!cutOut)
-                variant.defines.push_back(std::string(opaqueDefine) + " 1");
-            auto program = programs_.get(variant);
-            if (!program)
-                return std::unexpected(program.error());
-            const CachedProgram& shader = **program;
-            const GLuint p = shader.id();
-            glUseProgram(p);
-            glProgramUniformMatrix4fv(p, shader.uniform("uViewProj"), 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-            setUniforms(shader);
-            state.sceneGpu->draw(p, list,
-                                 [&](std::uint32_t m) { state.materialGpu->bind(p, m, MaterialBindMode::Coverage); });
-        }
-        return {};
-    };
     if (ownDepth_) {
         // No pre-pass: depth first (depth_prepass.frag), so that the resolve
         // below runs once per pixel, on the surface shading will light there.
@@ -150,25 +127,29 @@ scene::Expected<void> LpvLookupResolvePass::execute(graph::PassContext& ctx, Fra
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        auto drawn = drawBoth("forward.vert", "depth_prepass.frag", "PREPASS_OPAQUE", [](const CachedProgram&) {});
+        auto drawn = drawSurfaces(draws, programs_, {{"forward.vert", "depth_prepass.frag"}, {}},
+                                  "PREPASS_OPAQUE", state, [](const CachedProgram&) {});
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         if (!drawn)
             return drawn;
     }
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    const int lowW = (frame.width + reduction_ - 1) / reduction_, lowH = (frame.height + reduction_ - 1) / reduction_;
+    const int lowW = (frame.width + reduction_ - 1) / reduction_,
+              lowH = (frame.height + reduction_ - 1) / reduction_;
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kListBinding, list_.id());
-    auto resolvedDraw = drawBoth("forward.vert", "lpv_lookup_resolve.frag", "RESOLVE_OPAQUE", [&](const CachedProgram& shader) {
-        const GLuint p = shader.id();
-        glProgramUniform3fv(p, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
-        glProgramUniform2f(p, shader.uniform("uLpvLowScale"), float(lowW) / float(frame.width),
-                           float(lowH) / float(frame.height));
-        glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), 1.0f / frame.camera.farPlane);
-        glProgramUniform1ui(p, shader.uniform("uLpvFallbackCapacity"), GLuint(listEntries_));
-        ctx.bindTexture(p, shader.uniform("uLpvLowIrradiance"), resources::LpvLookup);
-        ctx.bindTexture(p, shader.uniform("uLpvLowNormal"), resources::LpvLookupNormal);
-    });
+    const ProgramVariant resolve{{"forward.vert", "lpv_lookup_resolve.frag"}, {}};
+    auto resolvedDraw =
+        drawSurfaces(draws, programs_, resolve, "RESOLVE_OPAQUE", state, [&](const CachedProgram& shader) {
+            const GLuint p = shader.id();
+            glProgramUniform3fv(p, shader.uniform("uCameraPos"), 1, glm::value_ptr(frame.camera.position));
+            glProgramUniform2f(p, shader.uniform("uLpvLowScale"), float(lowW) / float(frame.width),
+                               float(lowH) / float(frame.height));
+            glProgramUniform1f(p, shader.uniform("uLpvLowDistanceScale"), 1.0f / frame.camera.farPlane);
+            glProgramUniform1ui(p, shader.uniform("uLpvFallbackCapacity"), GLuint(listEntries_));
+            ctx.bindTexture(p, shader.uniform("uLpvLowIrradiance"), resources::LpvLookup);
+            ctx.bindTexture(p, shader.uniform("uLpvLowNormal"), resources::LpvLookupNormal);
+        });
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     if (!resolvedDraw)
