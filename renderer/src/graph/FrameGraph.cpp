@@ -20,15 +20,22 @@ bool contains(const std::vector<ResourceHandle>& handles, std::string_view name)
 }
 
 // The registry keys whose declaration names this pass's scene::Pass bit
-// (none for a pass named in its own file: it lists what it reads).
+// (none for a pass named in its own file: it lists what it reads). Built
+// whole on first use, which C++ makes thread-safe, and only read after:
+// renderers on several threads (the editor's frame worker, a video export,
+// the A/B view) share it.
 const std::vector<std::string>& invalidatingKeys(const PassId& pass) {
-    static std::map<std::uint32_t, std::vector<std::string>> cache;
-    auto [it, inserted] = cache.try_emplace(std::uint32_t(pass.bit()));
-    if (inserted && pass.bit() != scene::Pass::None)
-        for (const scene::ParameterInfo& info : scene::ParameterRegistry::instance().all())
-            if (scene::any(info.invalidates, pass.bit()))
-                it->second.push_back(info.key);
-    return it->second;
+    static const std::map<std::uint32_t, std::vector<std::string>> byBit = [] {
+        std::map<std::uint32_t, std::vector<std::string>> keys;
+        for (const scene::Pass bit : scene::allPasses())
+            for (const scene::ParameterInfo& info : scene::ParameterRegistry::instance().all())
+                if (scene::any(info.invalidates, bit))
+                    keys[std::uint32_t(bit)].push_back(info.key);
+        return keys;
+    }();
+    static const std::vector<std::string> none;
+    const auto it = byBit.find(std::uint32_t(pass.bit()));
+    return it == byBit.end() ? none : it->second;
 }
 
 // The parameters a pass's output depends on: the keys whose registry entry
