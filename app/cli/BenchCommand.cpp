@@ -29,7 +29,7 @@ void printBenchHelp() {
        lpv bench pack PROJECT -o FILE.lpvpack
        lpv bench render PROJECT|PACK [--width N --height N --frames N --warmup N
                                  --camera NAME --set KEY=VALUE[,VALUE...] --per-frame
-                                 --thesis-settings --turn DEG --csv FILE --markdown FILE
+                                 --thesis-settings [--thesis-run FILE] --turn DEG --csv FILE --markdown FILE
                                  --rounds N --time-budget S --spread-target P]
        lpv bench lpv PROJECT|PACK [--tiles LIST --steps LIST ... see below]
        lpv bench PROJECT --sweep KEY=V1,V2,... [--reference REF.exr --out DIR --shard I/N ... see below]
@@ -61,6 +61,9 @@ the rounds; then a table of the thesis application's phases (shadow maps,
 RSM, injection, propagation, final shading, whole frame, LPV off) with its
 medians beside ours (per round a phase's pass medians summed, then the
 median over the rounds). Use it on Sibenik imported from sibenik.4ds.
+Its figures are those of issue #25's day, another day's machine; --thesis-run
+FILE takes them from tools/thesis-app/run.sh's output saved in this session
+(its "phase NAME MS" lines), the only like-for-like comparison.
 --turn DEG measures the frame where only the camera turned, as the editor
 draws it while the user looks around: the camera yaws by +DEG and back on
 alternate frames about the up axis, the frame graph's reuse stays on (what

@@ -8,6 +8,7 @@
 #include "RenderSetup.h"
 #include "lpv/bench/ThesisSettings.h"
 
+#include "lpv/scene/FileRead.h"
 #include "lpv/scene/Project.h"
 
 #include <algorithm>
@@ -42,6 +43,7 @@ int benchRender(Args args) {
     const auto csvFile = args.option("--csv");
     const auto markdownFile = args.option("--markdown");
     const bool thesis = args.flag("--thesis-settings");
+    const auto thesisRunFile = args.option("--thesis-run");
     const int width = args.integer("--width", thesis ? bench::kThesisWidth : 1280, {1});
     const int height = args.integer("--height", thesis ? bench::kThesisHeight : 720, {1});
     const int frames = args.integer("--frames", 20, {1});
@@ -75,6 +77,23 @@ int benchRender(Args args) {
         return usageError("--thesis-settings sets the thesis application's camera; leave out --camera", "bench");
     if (thesis && !plan.combinations.empty())
         return usageError("--thesis-settings takes no --set lists (one value per key)", "bench");
+    if (thesisRunFile && (!thesis || turn))
+        return usageError("--thesis-run gives the thesis application's figures to --thesis-settings' table of phases "
+                          "(not printed with --turn)",
+                          "bench");
+    // Its figures from this session (tools/thesis-app/run.sh's output), read
+    // before any frame so that a wrong file costs no rendering.
+    bench::ThesisFigures thesisFigures = bench::issue25ThesisFigures();
+    if (thesisRunFile) {
+        const auto text = scene::readFileBytes(*thesisRunFile, {1u << 20, "thesis application run"});
+        auto figures = text ? bench::parseThesisRun(*text, *thesisRunFile + " (tools/thesis-app/run.sh)")
+                            : scene::Expected<bench::ThesisFigures>(std::unexpected(text.error()));
+        if (!figures) {
+            std::cerr << "lpv: " << figures.error().describe() << "\n";
+            return kFailure;
+        }
+        thesisFigures = std::move(*figures);
+    }
     if (thesis)
         request.sets = bench::thesisSettingsSets(); // before the --set values, which win
     for (const auto& [key, value] : plan.fixed)
@@ -211,7 +230,9 @@ int benchRender(Args args) {
         std::printf("\n%s", benchComparison(runs).c_str());
     if (thesis)
         std::printf("\nthe thesis application's phases (--thesis-settings: %dx%d, its start camera):\n%s", width,
-                    height, bench::formatThesisPhases(bench::thesisPhases(roundTables[0], runs[1].total)).c_str());
+                    height, bench::formatThesisPhases(bench::thesisPhases(roundTables[0], runs[1].total, thesisFigures),
+                                              thesisFigures.source)
+                        .c_str());
 
     const renderer::GlInfo& gl = setup->context->info();
     std::string command = "lpv bench render " + request.projectFile + " --width " + std::to_string(width) +

@@ -1,6 +1,7 @@
 #include "lpv/bench/ThesisSettings.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -9,30 +10,98 @@ namespace lpv::bench {
 
 namespace {
 
-// The thesis application's medians (ms) from issue #25: rebuilt and run beside
-// `lpv bench render` on the same kind of 2-core llvmpipe machine, Sibenik from
-// sibenik.4ds at 1024x600, the start camera, the settings above, 4 rounds.
+// Which of our passes each of the thesis application's phases sums.
 struct PhaseSpec {
     const char* name;
     std::set<std::string> passes;
-    std::optional<double> thesisMs;
+    std::optional<double> ThesisFigures::*thesisMs;
 };
 
 const std::vector<PhaseSpec>& phaseSpecs() {
     static const std::vector<PhaseSpec> kSpecs = {
-        {"shadow maps", {"shadowMaps"}, 132.0},
-        {"RSM", {"rsm", "localRsm", "emissiveVpls"}, 75.0},
-        {"injection", {"lpvInjection", "skyInjection", "skyHeight", "lpvNormals", "geometryVolume"}, 15.0},
-        {"propagation", {"lpvPropagation", "lpvBounces", "subsurface"}, 235.0},
-        {"final shading", {"depthPrepass", "shading", "glossyReflections", "sunRays", "exposure", "tonemap"}, 349.0},
+        {"shadow maps", {"shadowMaps"}, &ThesisFigures::shadowMaps},
+        {"RSM", {"rsm", "localRsm", "emissiveVpls"}, &ThesisFigures::rsm},
+        {"injection",
+         {"lpvInjection", "skyInjection", "skyHeight", "lpvNormals", "geometryVolume"},
+         &ThesisFigures::injection},
+        {"propagation", {"lpvPropagation", "lpvBounces", "subsurface"}, &ThesisFigures::propagation},
+        {"final shading",
+         {"depthPrepass", "lpvLookup", "lpvLookupResolve", "shading", "glossyReflections", "sunRays", "exposure",
+          "tonemap"},
+         &ThesisFigures::finalShading},
     };
     return kSpecs;
 }
 
-constexpr double kThesisWholeFrameMs = 839.0;
-constexpr double kThesisLpvOffMs = 649.0;
+// A finite, non-negative number of milliseconds and nothing else.
+std::optional<double> parseMs(std::string_view text) {
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value) || value < 0.0)
+        return std::nullopt;
+    return value;
+}
 
 } // namespace
+
+ThesisFigures issue25ThesisFigures() {
+    // Rebuilt and run beside `lpv bench render` on issue #25's day (4 rounds):
+    // Sibenik from sibenik.4ds at 1024x600, the start camera, the settings above.
+    return {.shadowMaps = 132.0,
+            .rsm = 75.0,
+            .injection = 15.0,
+            .propagation = 235.0,
+            .finalShading = 349.0,
+            .wholeFrame = 839.0,
+            .lpvOff = 649.0,
+            .source = "issue #25's day, another day's machine (--thesis-run FILE takes tools/thesis-app/run.sh's "
+                      "output of this session instead)"};
+}
+
+scene::Expected<ThesisFigures> parseThesisRun(std::string_view text, std::string source) {
+    ThesisFigures figures;
+    figures.source = std::move(source);
+    std::optional<double> clear;
+    int lineNumber = 0;
+    while (!text.empty()) {
+        const std::size_t eol = text.find('\n');
+        std::string_view line = text.substr(0, eol);
+        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
+        ++lineNumber;
+        if (!line.starts_with("phase "))
+            continue;
+        line.remove_prefix(6);
+        const std::size_t space = line.find(' ');
+        const std::string_view name = line.substr(0, space);
+        const auto ms = space == std::string_view::npos ? std::nullopt : parseMs(line.substr(space + 1));
+        if (!ms)
+            return scene::makeError(scene::ErrorCode::InvalidValue, figures.source, "line " + std::to_string(lineNumber),
+                                    "expected \"phase NAME MS\" with a finite, non-negative MS");
+        if (name == "shadow_maps")
+            figures.shadowMaps = ms;
+        else if (name == "rsm")
+            figures.rsm = ms;
+        else if (name == "lpv_clear")
+            clear = ms;
+        else if (name == "injection")
+            figures.injection = ms;
+        else if (name == "propagation")
+            figures.propagation = ms;
+        else if (name == "final_shading")
+            figures.finalShading = ms;
+        else if (name == "whole_frame")
+            figures.wholeFrame = ms;
+        else if (name == "lpv_off_whole_frame")
+            figures.lpvOff = ms;
+    }
+    if (!figures.wholeFrame)
+        return scene::makeError(scene::ErrorCode::MissingField, figures.source, "",
+                                "no \"phase whole_frame MS\" line: is this tools/thesis-app/run.sh's output?");
+    // Its lpv_clear is part of our injection (our passes clear their own volumes).
+    if (figures.injection && clear)
+        *figures.injection += *clear;
+    return figures;
+}
 
 std::vector<std::string> thesisSettingsSets() {
     return {"lpv.cascades=4",       "lpv.gridSize=32",     "rsm.tileSize=128",
@@ -50,7 +119,7 @@ scene::Camera thesisStartCamera() {
 }
 
 std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::PassTiming>>& rounds,
-                                      std::optional<TimingStats> lpvOff) {
+                                      std::optional<TimingStats> lpvOff, const ThesisFigures& figures) {
     // Our passes in the order they first ran, and which phase counts each.
     std::vector<std::string> ran;
     for (const auto& table : rounds)
@@ -81,7 +150,7 @@ std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::Pa
                 counted.insert(pass);
             }
         out.push_back(phaseOf(spec.name, ours, [&](const std::string& pass) { return spec.passes.contains(pass); },
-                              spec.thesisMs));
+                              figures.*spec.thesisMs));
     }
     // The whole frame is every pass that ran, grouped or not.
     std::string others;
@@ -89,13 +158,13 @@ std::vector<ThesisPhase> thesisPhases(const std::vector<std::vector<renderer::Pa
         if (!counted.contains(pass))
             others += (others.empty() ? "" : " + ") + pass;
     out.push_back(phaseOf("whole frame", others.empty() ? "every pass" : "every pass (also " + others + ")",
-                          [](const std::string&) { return true; }, kThesisWholeFrameMs));
+                          [](const std::string&) { return true; }, figures.wholeFrame));
     if (lpvOff)
-        out.push_back({"LPV off (whole frame)", "every pass, gi.method=off", *lpvOff, kThesisLpvOffMs});
+        out.push_back({"LPV off (whole frame)", "every pass, gi.method=off", *lpvOff, figures.lpvOff});
     return out;
 }
 
-std::string formatThesisPhases(const std::vector<ThesisPhase>& phases) {
+std::string formatThesisPhases(const std::vector<ThesisPhase>& phases, const std::string& thesisSource) {
     std::string out = "phase                   ours ms   ±IQR/2  thesis app ms  ours/thesis  our passes\n";
     int rounds = 0;
     for (const ThesisPhase& p : phases) {
@@ -110,8 +179,8 @@ std::string formatThesisPhases(const std::vector<ThesisPhase>& phases) {
                           "-", "-");
         out += line + p.ourPasses + "\n";
     }
-    out += "thesis app: its own phase timer (glFinish and a wall clock), raster gather, on a 2-core llvmpipe machine "
-           "(issue #25); ours: GPU timer queries, per round the medians of a phase's passes summed, then the median "
+    out += "thesis app: its own phase timer (glFinish and a wall clock), raster gather; its figures: " + thesisSource +
+           "; ours: GPU timer queries, per round the medians of a phase's passes summed, then the median "
            "over " +
            std::to_string(rounds) + " round" + (rounds == 1 ? "" : "s") + " and half its interquartile range\n";
     return out;

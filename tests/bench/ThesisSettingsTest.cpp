@@ -62,6 +62,69 @@ TEST(ThesisSettings, PhasesLeaveOutPassesThatDidNotRunAndNameTheUngroupedOnes) {
     EXPECT_TRUE(phases.back().thesisMs.has_value());
 }
 
+// tools/thesis-app/run.sh's output as it prints it (issue #48 item 4's round 1).
+constexpr const char* kRunShOutput = "# thesis application, 5 frames after 2 warm-up, lpv geometry\n"
+                                     "# Renderer: llvmpipe (LLVM 15.0.6, 256 bits)\n"
+                                     "phase shadow_maps 87.7\n"
+                                     "#   shadow_maps min 86.3 max 105.2\n"
+                                     "phase rsm 58.6\n"
+                                     "phase lpv_clear 8.7\n"
+                                     "phase injection 12.9\n"
+                                     "phase propagation 168.1\n"
+                                     "phase final_shading 183.9\n"
+                                     "phase whole_frame 532.4\n"
+                                     "phase lpv_off_whole_frame 393.2\n";
+
+TEST(ThesisSettings, ARunOfTheThesisApplicationGivesTheTableItsFigures) {
+    const auto figures = parseThesisRun(kRunShOutput, "run-1.txt");
+    ASSERT_TRUE(figures) << figures.error().describe();
+    EXPECT_DOUBLE_EQ(*figures->shadowMaps, 87.7);
+    EXPECT_DOUBLE_EQ(*figures->injection, 8.7 + 12.9) << "its clear is part of our injection";
+    EXPECT_DOUBLE_EQ(*figures->finalShading, 183.9);
+    EXPECT_DOUBLE_EQ(*figures->wholeFrame, 532.4);
+    EXPECT_DOUBLE_EQ(*figures->lpvOff, 393.2);
+    const std::vector<std::vector<renderer::PassTiming>> rounds = {
+        {{"shadowMaps", 50.0, 50.0, 50.0, 50.0, 1}, {"shading", 200.0, 200.0, 200.0, 200.0, 1}}};
+    const auto phases = thesisPhases(rounds, timingStatsOf({300.0}), *figures);
+    ASSERT_EQ(phases.size(), 7u);
+    EXPECT_DOUBLE_EQ(*phases[0].thesisMs, 87.7);
+    EXPECT_DOUBLE_EQ(*phases[5].thesisMs, 532.4);
+    EXPECT_DOUBLE_EQ(*phases[6].thesisMs, 393.2);
+    const std::string text = formatThesisPhases(phases, figures->source);
+    EXPECT_NE(text.find("its figures: run-1.txt"), std::string::npos) << text;
+    EXPECT_NE(text.find("0.57x"), std::string::npos) << "ours 50 against its 87.7 ms\n" << text;
+    // Without a run the table says its figures are another day's.
+    EXPECT_NE(formatThesisPhases(thesisPhases(rounds, std::nullopt)).find("issue #25's day"), std::string::npos);
+}
+
+TEST(ThesisSettings, AMalformedRunIsAnErrorNamingItsLine) {
+    const auto bad = parseThesisRun("# header\nphase shadow_maps 87.7\nphase whole_frame fast\n", "run.txt");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().code, scene::ErrorCode::InvalidValue);
+    EXPECT_NE(bad.error().describe().find("line 3"), std::string::npos) << bad.error().describe();
+    for (const char* value : {"nan", "inf", "-1", "12ms", ""}) {
+        const auto refused = parseThesisRun(std::string("phase whole_frame ") + value + "\n", "run.txt");
+        EXPECT_FALSE(refused) << "accepted \"" << value << "\"";
+    }
+    const auto none = parseThesisRun("lpv bench render output, not run.sh's\ntotal 612.0\n", "ours.txt");
+    ASSERT_FALSE(none);
+    EXPECT_EQ(none.error().code, scene::ErrorCode::MissingField);
+    EXPECT_NE(none.error().describe().find("whole_frame"), std::string::npos) << none.error().describe();
+}
+
+TEST(ThesisSettings, FinalShadingCountsTheReducedLookupsPasses) {
+    // At lpv.lookupResolution = half|quarter the diffuse lookup runs in its own
+    // passes; the thesis application does it inside its forward pass.
+    const std::vector<std::vector<renderer::PassTiming>> rounds = {{{"lpvLookup", 20.0, 20.0, 20.0, 20.0, 1},
+                                                                    {"lpvLookupResolve", 30.0, 30.0, 30.0, 30.0, 1},
+                                                                    {"shading", 100.0, 100.0, 100.0, 100.0, 1}}};
+    const auto phases = thesisPhases(rounds, std::nullopt);
+    ASSERT_EQ(phases[4].name, "final shading");
+    EXPECT_DOUBLE_EQ(phases[4].ours.median, 150.0);
+    EXPECT_EQ(phases[4].ourPasses, "lpvLookup + lpvLookupResolve + shading");
+    EXPECT_EQ(phases.back().ourPasses, "every pass") << "nothing left outside the phases";
+}
+
 TEST(ThesisSettings, PresetIsTheThesisGridAndItsStartCamera) {
     const auto sets = thesisSettingsSets();
     for (const char* kv : {"lpv.cascades=4", "lpv.gridSize=32", "rsm.tileSize=128", "lpv.propagationSteps=8"})

@@ -127,6 +127,32 @@ TEST(BenchRender, ThesisSettingsPrintTheThesisPhasesBesideItsFigures) {
     EXPECT_EQ(runLpv("bench render " + cornellProject() + " --thesis-settings --camera main").exitCode, 2);
 }
 
+TEST(BenchRender, ThesisRunPutsThisSessionsFiguresBesideOurs) {
+    const fs::path dir = freshTempDir("bench", "thesis-run");
+    const fs::path run = dir / "thesis-1.txt";
+    std::ofstream(run) << "# thesis application, 5 frames after 2 warm-up\nphase shadow_maps 87.7\n"
+                          "phase whole_frame 532.4\nphase lpv_off_whole_frame 393.2\n";
+    const std::string thesis = " --thesis-settings --width 64 --height 64 --frames 1 --warmup 0 --rounds 1";
+    const RunResult r = runLpv("bench render " + cornellProject() + thesis + " --thesis-run " + run.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("its figures: " + run.string() + " (tools/thesis-app/run.sh)"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("           532 "), std::string::npos) << "its whole frame\n" << r.output;
+    EXPECT_EQ(r.output.find("           839 "), std::string::npos) << "not issue #25's\n" << r.output;
+    // A file that is not run.sh's output fails before any frame, naming itself.
+    const fs::path wrong = dir / "ours.txt";
+    std::ofstream(wrong) << "total 612.0\n";
+    const RunResult bad = runLpv("bench render " + cornellProject() + thesis + " --thesis-run " + wrong.string());
+    EXPECT_EQ(bad.exitCode, 1) << bad.output;
+    EXPECT_NE(bad.output.find(wrong.string()), std::string::npos) << bad.output;
+    EXPECT_EQ(bad.output.find("GPU frame rate"), std::string::npos) << "it rendered first\n" << bad.output;
+    EXPECT_EQ(runLpv("bench render " + cornellProject() + thesis + " --thesis-run " + (dir / "none.txt").string())
+                  .exitCode,
+              1);
+    EXPECT_EQ(runLpv("bench render " + cornellProject() + " --thesis-run " + run.string()).exitCode, 2)
+        << "--thesis-run without --thesis-settings";
+}
+
 TEST(BenchRender, TurnMeasuresFramesWhereOnlyTheCameraTurned) {
     const RunResult r =
         runLpv("bench render " + cornellProject() + " --width 64 --height 64 --frames 4 --warmup 1 --turn 5");
